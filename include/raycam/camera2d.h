@@ -1,0 +1,96 @@
+// The handout's 2D "pseudo camera" (exercises 1 and 2).
+//
+// World plane: x to the right, y up, angles counter-clockwise from +x, in radians.
+// Canonical camera: screen segment (-1,0)–(+1,0) with centre Ω = (0,0); eye E0 = (0,1); view u0 = (0,-1).
+// n = res·N useful pixels; canonical centre of pixel k is P_k^0 = (-1 + (2k+1)/n, 0), k = 0…n-1.
+//
+// Image order: facing -y, the eye's LEFT is +x (v rotated +90°). So the colour bar's column 0 (the eye's
+// left) shows pixel k = n-1, and column c shows pixel k = n-1-c. Drawing k left-to-right mirrors the bar.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+
+namespace raycam {
+
+// How the free placement (P, C) turns the view vector into an angle.
+enum class AngleRoute {
+  stable,          // atan2: well-conditioned everywhere
+  handout_arccos,  // the handout's ±arccos(x_v): an input error ε becomes an angle error ~√(2ε) near ±1
+};
+
+// The handout's classic mistakes, reproducible on purpose (the app shows what each does to the image).
+struct ClassicMistakes {
+  bool printed_rotation_sign = false;  // rotation angle from the view vector PC, as printed: looks away
+  bool pixel_edges = false;            // P_k^0 = -1 + 2k/n as printed: left pixel edges, image shifts
+  bool skip_renormalise = false;       // u_k left scaled by H; the caster assumes |u| = 1
+};
+
+// Orbit placement (exercise 1, step 2): target C, distance d > 0 from C to the screen centre, angle θ of
+// CP (radians), focal distance d_f > 0.
+struct Orbit2D {
+  glm::dvec2 target{0.0, 0.0};
+  double d = 6.0;
+  double theta = 1.5707963267948966;  // above the target, looking down -y like the canonical camera
+  double df = 1.5;
+};
+
+// The factors of M_d = T(OP) · R(α) · H(1, d_f), kept one by one because the app shows them.
+struct Placement2D {
+  glm::dmat3 scale{1.0};        // H(1, d_f)
+  glm::dmat3 rotation{1.0};     // R(α), α = θ - π/2 turns u0 onto v
+  glm::dmat3 translation{1.0};  // T(OP)
+  double alpha = 0.0;
+  glm::dmat3 world_from_camera{1.0};  // T·R·H
+};
+
+// The only place M_d is composed. Throws std::invalid_argument on d ≤ 0, d_f ≤ 0 or non-finite input.
+Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign = false);
+
+// Angle of a non-zero vector (radians, in (-π, π]) by the chosen route.
+double polar_angle(glm::dvec2 v, AngleRoute route);
+
+struct Ray2D {
+  glm::dvec2 origin{0.0};     // on the screen (P_k), not at the eye: hits need t ≥ 0 from here
+  glm::dvec2 direction{0.0};  // unit unless ClassicMistakes::skip_renormalise
+};
+
+class Camera2D {
+ public:
+  // N = max_pixels, in [1, kMaxPixels2D]; res = 1. Throws std::invalid_argument otherwise.
+  explicit Camera2D(int max_pixels = 256);
+
+  int max_pixels() const { return max_pixels_; }
+  double res() const { return res_; }
+  void set_res(double res);  // res ∈ ]0, 1]
+  int pixel_count() const { return pixel_count_; }  // n = clamp(round(res·N), 1, N)
+
+  void set_orbit(const Orbit2D& orbit);
+  // Free placement from the screen centre P and target C (P ≠ C): d = |CP|, θ = angle of CP.
+  void set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route = AngleRoute::stable);
+  const Orbit2D& orbit() const { return orbit_; }
+
+  void set_mistakes(const ClassicMistakes& mistakes);
+  const ClassicMistakes& mistakes() const { return mistakes_; }
+
+  const Placement2D& placement() const { return placement_; }
+  const glm::dmat3& world_from_camera() const { return placement_.world_from_camera; }
+  glm::dvec2 screen_centre() const;   // P = M_d·Ω
+  glm::dvec2 eye() const;             // M_d·E0 = P - d_f·v
+  glm::dvec2 view_direction() const;  // unit M_d·u0 (= v unless printed_rotation_sign)
+
+  glm::dvec2 canonical_pixel(int k) const;  // P_k^0 (a pixel edge under ClassicMistakes::pixel_edges)
+  Ray2D primary_ray(int k) const;           // exercise 2: P_k = M_d·P_k^0, u_k = M_d·(P_k^0 - E0)
+  int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }
+  int pixel_of_column(int column) const { return pixel_count_ - 1 - column; }
+
+ private:
+  int max_pixels_;
+  double res_ = 1.0;
+  int pixel_count_;
+  Orbit2D orbit_;
+  ClassicMistakes mistakes_;
+  Placement2D placement_;
+};
+
+}  // namespace raycam

@@ -1,0 +1,100 @@
+// The handout's 3D camera (exercise 3).
+//
+// World: right-handed, z up (the handout's spherical coordinates take z as the polar axis).
+// Canonical camera: screen square (-1,-1,0)–(+1,+1,0), eye E0 = (0,0,1), view u0 = (0,0,-1); canonical +x
+// is the image's right and +y its up (as an OpenGL camera looking down -z).
+// Pixel centres: column c ↦ x = -1 + (2c+1)/nbc, row r ↦ y = +1 - (2r+1)/nbl; row 0 is the top.
+//
+// Orbit placement: P = C + d·(cos θ sin φ, sin θ sin φ, cos φ) and the camera looks from P at C:
+//   M_d = T(OP) · R_z(θ) · R_y(φ) · R_z(ψ0) · H(1, 1, d_f),  ψ0 = +π/2,
+// with (θ, φ) the spherical angles of CP (those of PC make the camera look away). ψ0 = +π/2 makes the
+// image's up R·(0,1,0) = (-cos θ cos φ, -sin θ cos φ, sin φ): world +z is up for 0 < φ < π. The formula is
+// smooth in (θ, φ), so nothing flips when φ crosses a pole or θ wraps.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "raycam/camera2d.h"  // AngleRoute, ClassicMistakes
+
+namespace raycam {
+
+inline constexpr double kRollPsi0 = 1.5707963267948966;  // +π/2 (see header comment)
+
+struct Orbit3D {
+  glm::dvec3 target{0.0};
+  double d = 8.0;
+  double theta = 0.5235987755982988;  // 30°
+  double phi = 1.0471975511965976;    // 60°
+  double df = 2.0;
+};
+
+// The factors of M_d, kept one by one for display (handout steps 1–4, in the order they apply).
+struct Placement3D {
+  glm::dmat4 scale{1.0};     // step 1: H(1, 1, d_f)
+  glm::dmat4 roll{1.0};      // step 2: R_z(ψ0)
+  glm::dmat4 polar{1.0};     // step 3a: R_y(φ), puts u0 in the plane y = 0
+  glm::dmat4 azimuth{1.0};   // step 3b: R_z(θ), makes u0 collinear with v
+  glm::dmat4 translation{1.0};  // step 4: T(OP)
+  double theta = 0.0, phi = 0.0;  // the angles actually used (differ from the orbit's under the mistake)
+  glm::dmat4 world_from_camera{1.0};  // T · R_z(θ) · R_y(φ) · R_z(ψ0) · H
+};
+
+// The only place the 3D M_d is composed. Throws std::invalid_argument on d ≤ 0, d_f ≤ 0, non-finite input.
+Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign = false);
+
+struct SphericalAngles {
+  double theta = 0.0;  // azimuth, radians, in (-π, π]; 0 at the poles, where it is undefined
+  double phi = 0.0;    // polar angle from +z, radians, in [0, π]
+};
+// Spherical angles of a non-zero vector. handout_arccos: φ = arccos(z/|v|), θ = ±arccos(x/(|v| sin φ)).
+SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route);
+
+struct Ray3D {
+  glm::dvec3 origin{0.0};
+  glm::dvec3 direction{0.0};  // unit unless ClassicMistakes::skip_renormalise
+};
+
+class Camera3D {
+ public:
+  // Maximum columns × rows, each in [1, kMaxSide3D], product ≤ kMaxPixels3D; res = 1.
+  explicit Camera3D(int max_columns = 256, int max_rows = 256);
+
+  int max_columns() const { return max_columns_; }
+  int max_rows() const { return max_rows_; }
+  void set_res(double res) { set_res(res, res); }
+  void set_res(double res_columns, double res_rows);  // each in ]0, 1]
+  double res_columns() const { return res_columns_; }
+  double res_rows() const { return res_rows_; }
+  int columns() const { return columns_; }  // nbc
+  int rows() const { return rows_; }        // nbl
+
+  void set_orbit(const Orbit3D& orbit);
+  // Free placement (the handout's second route): screen centre P, target C (P ≠ C).
+  void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable);
+  const Orbit3D& orbit() const { return orbit_; }
+
+  void set_mistakes(const ClassicMistakes& mistakes);
+  const ClassicMistakes& mistakes() const { return mistakes_; }
+
+  const Placement3D& placement() const { return placement_; }
+  const glm::dmat4& world_from_camera() const { return placement_.world_from_camera; }
+  glm::dvec3 screen_centre() const;
+  glm::dvec3 eye() const;
+  glm::dvec3 view_direction() const;
+  glm::dvec3 image_up() const;     // R·(0,1,0)
+  glm::dvec3 image_right() const;  // R·(1,0,0)
+
+  glm::dvec3 canonical_pixel(int row, int column) const;
+  Ray3D primary_ray(int row, int column) const;
+
+ private:
+  int max_columns_, max_rows_;
+  double res_columns_ = 1.0, res_rows_ = 1.0;
+  int columns_, rows_;
+  Orbit3D orbit_;
+  ClassicMistakes mistakes_;
+  Placement3D placement_;
+};
+
+}  // namespace raycam

@@ -1,0 +1,55 @@
+// Ray / circle and ray / sphere intersection: the nearest t ≥ 0 along a ray with a UNIT direction.
+// Templated on the scalar (float, double, long double) and the dimension (2 for circles, 3 for spheres).
+//
+// naive:  the textbook quadratic t² + 2bt + c = 0 with Δ = b² - c; cancels catastrophically when the
+//         ray starts far away (b² ≈ c) and when the two roots differ greatly in size.
+// stable: Δ from the perpendicular distance (r² - |f - b·u|²), and the smaller root from q = -(b + sign(b)√Δ)
+//         then c/q (Haines, Günther, Akenine-Möller, "Precision Improvements for Ray/Sphere Intersection",
+//         Ray Tracing Gems, 2019).
+// A ray starting inside the ball hits its far side (the smallest non-negative root).
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace raycam {
+
+enum class IntersectFormula { stable, naive };
+
+template <class T>
+inline constexpr T kNoHit = std::numeric_limits<T>::infinity();
+
+template <int D, class T>
+T nearest_hit_t(const glm::vec<D, T>& origin, const glm::vec<D, T>& unit_direction,
+                const glm::vec<D, T>& centre, T radius, IntersectFormula formula) {
+  const glm::vec<D, T> f = origin - centre;
+  const T b = glm::dot(f, unit_direction);
+  const T c = glm::dot(f, f) - radius * radius;  // > 0: origin outside the ball
+  if (c > T(0) && b > T(0)) return kNoHit<T>;    // outside and moving away: both roots negative
+  T t_near, t_far;
+  if (formula == IntersectFormula::naive) {
+    const T disc = b * b - c;
+    if (disc < T(0)) return kNoHit<T>;
+    const T root = std::sqrt(disc);
+    t_near = -b - root;
+    t_far = -b + root;
+  } else {
+    const glm::vec<D, T> perpendicular = f - b * unit_direction;
+    const T disc = radius * radius - glm::dot(perpendicular, perpendicular);
+    if (disc < T(0)) return kNoHit<T>;
+    const T q = -b - std::copysign(std::sqrt(disc), b);
+    if (q == T(0)) return T(0);  // tangent exactly at the origin
+    const T t_other = c / q;     // product of the roots is c
+    t_near = q < t_other ? q : t_other;
+    t_far = q < t_other ? t_other : q;
+  }
+  if (t_near >= T(0)) return t_near;
+  if (t_far >= T(0)) return t_far;
+  return kNoHit<T>;
+}
+
+}  // namespace raycam

@@ -1,0 +1,55 @@
+// Scenes: flat-coloured circles (2D) and spheres (3D), as in the handout's exercise 2.
+// Coordinates are world units; colours are 8-bit sRGB triples. An object's id is its index in the vector.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace raycam {
+
+struct Rgb8 {
+  std::uint8_t r = 0, g = 0, b = 0;
+  friend bool operator==(Rgb8 a, Rgb8 b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
+  friend bool operator!=(Rgb8 a, Rgb8 b) { return !(a == b); }
+};
+
+inline constexpr Rgb8 kDefaultBackground{20, 20, 30};
+
+struct Circle {
+  glm::dvec2 centre{0.0};
+  double radius = 1.0;
+  Rgb8 colour{255, 255, 255};
+  std::string name;
+};
+
+struct Sphere {
+  glm::dvec3 centre{0.0};
+  double radius = 1.0;
+  Rgb8 colour{255, 255, 255};
+  std::string name;
+};
+
+struct Scene2D {
+  Rgb8 background = kDefaultBackground;
+  std::vector<Circle> circles;
+};
+
+struct Scene3D {
+  Rgb8 background = kDefaultBackground;
+  std::vector<Sphere> spheres;
+};
+
+// Throws std::invalid_argument naming the object index and field if a centre or radius is not finite,
+// a radius is not > 0, or there are more than kMaxObjects objects.
+void validate(const Scene2D& scene);
+void validate(const Scene3D& scene);
+
+// Built-in demo scenes used when no scene file is given.
+Scene2D demo_scene_2d();
+Scene3D demo_scene_3d();
+
+}  // namespace raycam

@@ -1,0 +1,38 @@
+// Scene files: JSON, one scene per file, angles in degrees, colours 0–255 (README, "Scene files").
+//   { "dimension": 3, "background": [20,20,30],
+//     "objects": [ {"type": "sphere", "center": [0,0,0], "radius": 1, "color": [230,60,50], "name": "red"} ],
+//     "camera": {"target": [0,0,0], "d": 8, "theta": 30, "phi": 60, "df": 2, "res": 1, "size": [256,256]} }
+// 2D: "dimension": 2, "circle" objects with 2-component centres, "size": N.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raycam/scene.h"
+
+namespace raycam {
+
+// The optional camera preset; every field may be absent. Angles in DEGREES, as in the file.
+struct CameraPreset {
+  std::optional<std::vector<double>> target;  // 2 or 3 components
+  std::optional<double> d, theta_deg, phi_deg, df, res;
+  std::optional<std::vector<int>> size;  // [N] in 2D, [columns, rows] in 3D
+};
+
+struct SceneFile {
+  int dimension = 3;
+  Scene2D scene2d;  // used when dimension == 2
+  Scene3D scene3d;  // used when dimension == 3
+  CameraPreset camera;
+};
+
+// Errors throw std::invalid_argument with "<source>: <field>: <what was expected>" (and line/column for
+// JSON syntax errors). `source` names the file in messages.
+SceneFile parse_scene_json(const std::string& text, const std::string& source);
+SceneFile load_scene_file(const std::string& path);
+std::string scene_to_json(const SceneFile& file);
+// Writes to a temporary file beside `path`, then renames: an existing file is never left truncated.
+void save_scene_file(const SceneFile& file, const std::string& path);
+
+}  // namespace raycam
