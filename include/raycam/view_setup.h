@@ -1,0 +1,48 @@
+// A scene and a placed camera, built from an optional scene file and command-line flags (shared by
+// `raycam-cli render`, `raycam-cli shot` and the app's command line). Precedence: built-in defaults, then
+// the scene file's camera preset, then flags. Angles are in DEGREES here, radians once in the cameras.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
+#include "raycam/scene_file.h"
+
+namespace raycam {
+
+struct ViewFlags {
+  std::optional<std::string> scene_path;
+  std::optional<int> dimension;  // --mode 2d|3d
+  CameraPreset camera;           // --target --d --theta --phi --df --res --size
+};
+
+struct ViewSetup {
+  int dimension = 3;
+  std::string scene_path;  // empty: the built-in demo scene
+  SceneFile file;          // scene and the camera preset in effect (defaults ⊕ file ⊕ flags)
+  Camera2D camera2d{256};
+  Camera3D camera3d{256, 256};
+};
+
+inline constexpr int kDefaultSize2D = 256;
+inline constexpr int kDefaultSize3D = 256;
+
+// If args[i] is one of the view flags, reads it and its value, advances i past them and returns true.
+// Throws std::invalid_argument naming the flag and the accepted range for a bad or missing value.
+bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags);
+
+// Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
+ViewSetup make_view_setup(const ViewFlags& flags);
+
+// The camera preset equivalent to a camera's current state (for saving presets).
+CameraPreset preset_of(const Camera2D& camera);
+CameraPreset preset_of(const Camera3D& camera);
+
+// Help text for the view flags, one per line, for --help screens.
+const char* view_flags_help();
+
+}  // namespace raycam

@@ -1,0 +1,15 @@
+// raycam-cli subcommands. Each takes the arguments after its name and returns the process exit code.
+// Bad arguments throw std::invalid_argument (exit 2, message on stderr); other failures std::runtime_error
+// (exit 1). A new subcommand is one function here and one row in main.cpp's table.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace raycam::cli {
+
+using Args = std::vector<std::string>;
+
+int run_render(const Args& args);
+
+}  // namespace raycam::cli

@@ -1,0 +1,108 @@
+#include "raycam/camera2d.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "raycam/limits.h"
+#include "raycam/transform.h"
+#include "validation.h"
+
+namespace raycam {
+
+namespace {
+constexpr double kHalfPi = 1.5707963267948966;
+const glm::dvec2 kCanonicalEye{0.0, 1.0};   // E0
+const glm::dvec2 kCanonicalView{0.0, -1.0};  // u0
+}  // namespace
+
+Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
+  detail::require_coordinate(orbit.target.x, "target.x");
+  detail::require_coordinate(orbit.target.y, "target.y");
+  detail::require_positive(orbit.d, "d");
+  detail::require_angle(orbit.theta, "theta");
+  detail::require_positive(orbit.df, "df");
+
+  // Step 2: P = C + d·(cos θ, sin θ).
+  const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
+  Placement2D placement;
+  placement.scale = scaling_2d(1.0, orbit.df);
+  // R(α) must turn u0 = (0,-1), at angle -π/2, onto v = PC/|PC|, at angle θ + π: α = θ - π/2 (mod 2π).
+  // The handout prints α = φ_v - π/2 with φ_v the angle of v itself; that is θ + π/2, which turns u0 onto
+  // -v: the camera looks away from its target (kept as a classic mistake).
+  const double view_angle = printed_rotation_sign ? orbit.theta + 2.0 * kHalfPi : orbit.theta;
+  placement.alpha = view_angle - kHalfPi;
+  placement.rotation = rotation_2d(placement.alpha);
+  placement.translation = translation_2d(position);
+  placement.world_from_camera = placement.translation * placement.rotation * placement.scale;
+  return placement;
+}
+
+double polar_angle(glm::dvec2 v, AngleRoute route) {
+  if (route == AngleRoute::stable) return std::atan2(v.y, v.x);
+  // The handout's route: φ_v = ±arccos(x_v) on the normalised vector, + when y_v ≥ 0.
+  const glm::dvec2 unit = v / std::hypot(v.x, v.y);
+  const double angle = std::acos(std::clamp(unit.x, -1.0, 1.0));
+  return unit.y >= 0.0 ? angle : -angle;
+}
+
+Camera2D::Camera2D(int max_pixels) : max_pixels_(max_pixels) {
+  detail::require_int_range(max_pixels, 1, kMaxPixels2D, "size (N)");
+  pixel_count_ = max_pixels_;
+  placement_ = placement_matrix(orbit_);
+}
+
+void Camera2D::set_res(double res) {
+  detail::require_res(res, "res");
+  res_ = res;
+  pixel_count_ = detail::useful_size(res, max_pixels_);  // exercise 1, step 3
+}
+
+void Camera2D::set_orbit(const Orbit2D& orbit) {
+  placement_ = placement_matrix(orbit, mistakes_.printed_rotation_sign);  // throws before anything changes
+  orbit_ = orbit;
+}
+
+void Camera2D::set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route) {
+  detail::require_coordinate(position.x, "position.x");
+  detail::require_coordinate(position.y, "position.y");
+  const glm::dvec2 target_to_position = position - target;
+  const double d = std::hypot(target_to_position.x, target_to_position.y);
+  if (!(d > 0.0))
+    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
+  set_orbit(Orbit2D{target, d, polar_angle(target_to_position, route), df});
+}
+
+void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
+  mistakes_ = mistakes;
+  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+}
+
+glm::dvec2 Camera2D::screen_centre() const { return transform_point(world_from_camera(), {0.0, 0.0}); }
+glm::dvec2 Camera2D::eye() const { return transform_point(world_from_camera(), kCanonicalEye); }
+glm::dvec2 Camera2D::view_direction() const {
+  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView));
+}
+
+glm::dvec2 Camera2D::canonical_pixel(int k) const {
+  assert(k >= 0 && k < pixel_count_ && "pixel index out of range");
+  const double n = pixel_count_;
+  // Exercise 2: the handout prints -1 + 2k/n, the LEFT EDGE of pixel k; the centre is half a pixel on.
+  const double x = mistakes_.pixel_edges ? -1.0 + 2.0 * k / n : -1.0 + (2.0 * k + 1.0) / n;
+  return {x, 0.0};
+}
+
+Ray2D Camera2D::primary_ray(int k) const {
+  const glm::dvec2 canonical = canonical_pixel(k);
+  Ray2D ray;
+  ray.origin = transform_point(world_from_camera(), canonical);
+  // u_k^0 = E0P_k^0 is a vector: transformed without translation, renormalised because H scales.
+  ray.direction = transform_vector(world_from_camera(), canonical - kCanonicalEye);
+  if (!mistakes_.skip_renormalise) ray.direction = glm::normalize(ray.direction);
+  return ray;
+}
+
+}  // namespace raycam

@@ -1,0 +1,136 @@
+#include "raycam/camera3d.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "raycam/limits.h"
+#include "raycam/transform.h"
+#include "validation.h"
+
+namespace raycam {
+
+namespace {
+constexpr double kPi = 3.141592653589793;
+const glm::dvec3 kCanonicalEye{0.0, 0.0, 1.0};   // E0
+const glm::dvec3 kCanonicalView{0.0, 0.0, -1.0};  // u0
+
+glm::dvec3 spherical_direction(double theta, double phi) {
+  return {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)};
+}
+}  // namespace
+
+Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
+  detail::require_coordinate(orbit.target.x, "target.x");
+  detail::require_coordinate(orbit.target.y, "target.y");
+  detail::require_coordinate(orbit.target.z, "target.z");
+  detail::require_positive(orbit.d, "d");
+  detail::require_angle(orbit.theta, "theta");
+  detail::require_angle(orbit.phi, "phi");
+  detail::require_positive(orbit.df, "df");
+
+  const glm::dvec3 position = orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
+  Placement3D placement;
+  // With (θ, φ) the angles of CP, R_z(θ)·R_y(φ) takes u0 = -z to -CP/|CP| = v. The handout's route takes
+  // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
+  placement.theta = printed_rotation_sign ? orbit.theta + kPi : orbit.theta;
+  placement.phi = printed_rotation_sign ? kPi - orbit.phi : orbit.phi;
+  placement.scale = scaling_3d(1.0, 1.0, orbit.df);        // step 1
+  placement.roll = rotation_z(kRollPsi0);                  // step 2
+  placement.polar = rotation_y(placement.phi);             // step 3a
+  placement.azimuth = rotation_z(placement.theta);         // step 3b
+  placement.translation = translation_3d(position);        // step 4
+  placement.world_from_camera =
+      placement.translation * placement.azimuth * placement.polar * placement.roll * placement.scale;
+  return placement;
+}
+
+SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route) {
+  SphericalAngles angles;
+  if (route == AngleRoute::stable) {
+    const double horizontal = std::hypot(v.x, v.y);
+    angles.phi = std::atan2(horizontal, v.z);
+    angles.theta = horizontal > 0.0 ? std::atan2(v.y, v.x) : 0.0;
+    return angles;
+  }
+  // Handout, exercise 3 step 3: φ = arccos(z_v), θ = ±arccos(x_v / sin φ) by the sign of y_v.
+  const glm::dvec3 unit = v / glm::length(v);
+  angles.phi = std::acos(std::clamp(unit.z, -1.0, 1.0));
+  const double sin_phi = std::sin(angles.phi);
+  if (sin_phi > 0.0) {
+    const double theta = std::acos(std::clamp(unit.x / sin_phi, -1.0, 1.0));
+    angles.theta = unit.y >= 0.0 ? theta : -theta;
+  }
+  return angles;
+}
+
+Camera3D::Camera3D(int max_columns, int max_rows) : max_columns_(max_columns), max_rows_(max_rows) {
+  detail::require_int_range(max_columns, 1, kMaxSide3D, "size (columns)");
+  detail::require_int_range(max_rows, 1, kMaxSide3D, "size (rows)");
+  detail::require_int_range(static_cast<long long>(max_columns) * max_rows, 1, kMaxPixels3D,
+                            "size (columns x rows)");
+  columns_ = max_columns_;
+  rows_ = max_rows_;
+  placement_ = placement_matrix(orbit_);
+}
+
+void Camera3D::set_res(double res_columns, double res_rows) {
+  detail::require_res(res_columns, "res (columns)");
+  detail::require_res(res_rows, "res (rows)");
+  res_columns_ = res_columns;
+  res_rows_ = res_rows;
+  columns_ = detail::useful_size(res_columns, max_columns_);
+  rows_ = detail::useful_size(res_rows, max_rows_);
+}
+
+void Camera3D::set_orbit(const Orbit3D& orbit) {
+  placement_ = placement_matrix(orbit, mistakes_.printed_rotation_sign);  // throws before anything changes
+  orbit_ = orbit;
+}
+
+void Camera3D::set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route) {
+  detail::require_coordinate(position.x, "position.x");
+  detail::require_coordinate(position.y, "position.y");
+  detail::require_coordinate(position.z, "position.z");
+  const glm::dvec3 target_to_position = position - target;
+  const double d = glm::length(target_to_position);
+  if (!(d > 0.0))
+    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
+  const SphericalAngles angles = spherical_angles(target_to_position, route);
+  set_orbit(Orbit3D{target, d, angles.theta, angles.phi, df});
+}
+
+void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
+  mistakes_ = mistakes;
+  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+}
+
+glm::dvec3 Camera3D::screen_centre() const { return transform_point(world_from_camera(), glm::dvec3(0.0)); }
+glm::dvec3 Camera3D::eye() const { return transform_point(world_from_camera(), kCanonicalEye); }
+glm::dvec3 Camera3D::view_direction() const {
+  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView));
+}
+glm::dvec3 Camera3D::image_up() const { return transform_vector(world_from_camera(), {0.0, 1.0, 0.0}); }
+glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_camera(), {1.0, 0.0, 0.0}); }
+
+glm::dvec3 Camera3D::canonical_pixel(int row, int column) const {
+  assert(row >= 0 && row < rows_ && column >= 0 && column < columns_ && "pixel index out of range");
+  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
+  const double x = -1.0 + (2.0 * column + offset) / columns_;
+  const double y = 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
+  return {x, y, 0.0};
+}
+
+Ray3D Camera3D::primary_ray(int row, int column) const {
+  const glm::dvec3 canonical = canonical_pixel(row, column);
+  Ray3D ray;
+  ray.origin = transform_point(world_from_camera(), canonical);
+  ray.direction = transform_vector(world_from_camera(), canonical - kCanonicalEye);
+  if (!mistakes_.skip_renormalise) ray.direction = glm::normalize(ray.direction);
+  return ray;
+}
+
+}  // namespace raycam

@@ -1,0 +1,69 @@
+#include "raycam/scene.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "raycam/limits.h"
+#include "validation.h"
+
+namespace raycam {
+
+namespace {
+void require_object_count(std::size_t count) {
+  if (count > kMaxObjects)
+    throw std::invalid_argument("objects: " + std::to_string(count) + " objects is over the limit of " +
+                                std::to_string(kMaxObjects));
+}
+
+std::string object_field(std::size_t index, const char* field) {
+  return "objects[" + std::to_string(index) + "]." + field;
+}
+}  // namespace
+
+void validate(const Scene2D& scene) {
+  require_object_count(scene.circles.size());
+  for (std::size_t i = 0; i < scene.circles.size(); ++i) {
+    const Circle& circle = scene.circles[i];
+    detail::require_coordinate(circle.centre.x, object_field(i, "center[0]"));
+    detail::require_coordinate(circle.centre.y, object_field(i, "center[1]"));
+    detail::require_positive(circle.radius, object_field(i, "radius"));
+  }
+}
+
+void validate(const Scene3D& scene) {
+  require_object_count(scene.spheres.size());
+  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
+    const Sphere& sphere = scene.spheres[i];
+    detail::require_coordinate(sphere.centre.x, object_field(i, "center[0]"));
+    detail::require_coordinate(sphere.centre.y, object_field(i, "center[1]"));
+    detail::require_coordinate(sphere.centre.z, object_field(i, "center[2]"));
+    detail::require_positive(sphere.radius, object_field(i, "radius"));
+  }
+}
+
+Scene2D demo_scene_2d() {
+  // Three circles around the origin; the default camera sits above them (θ = 90°) looking down.
+  Scene2D scene;
+  scene.circles = {
+      {{-1.5, -0.3}, 1.0, {230, 60, 50}, "red"},
+      {{1.3, 0.6}, 0.7, {60, 190, 80}, "green"},
+      {{0.2, -2.6}, 1.2, {60, 110, 230}, "blue"},
+  };
+  return scene;
+}
+
+Scene3D demo_scene_3d() {
+  // A red sphere on the target, three around it, and a large grey "ground" sphere below so that world
+  // up is visible in the image.
+  Scene3D scene;
+  scene.spheres = {
+      {{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"},
+      {{2.2, 0.6, 0.2}, 0.7, {60, 190, 80}, "green"},
+      {{-1.2, 2.0, -0.2}, 0.8, {60, 110, 230}, "blue"},
+      {{0.2, -1.6, 1.3}, 0.5, {240, 200, 60}, "yellow"},
+      {{0.0, 0.0, -101.0}, 100.0, {120, 120, 120}, "ground"},
+  };
+  return scene;
+}
+
+}  // namespace raycam

@@ -1,0 +1,262 @@
+// Scene files (JSON). Section index: field readers · objects · camera preset · parse · write.
+#include "raycam/scene_file.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "raycam/limits.h"
+#include "validation.h"
+
+namespace raycam {
+
+namespace {
+using nlohmann::json;
+
+// ---- field readers: each error names the source, the field path and what was expected ----------------
+class FieldReader {
+ public:
+  explicit FieldReader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& field, const std::string& expected, const json* got = nullptr) const {
+    std::string message = source_ + ": " + field + ": expected " + expected;
+    if (got) message += ", got " + got->dump().substr(0, 60);
+    throw std::invalid_argument(message);
+  }
+
+  void require_known_keys(const json& object, const std::string& field,
+                          std::initializer_list<const char*> keys) const {
+    for (const auto& item : object.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* key : keys) {
+        known = known || item.key() == key;
+        list += std::string(list.empty() ? "" : ", ") + key;
+      }
+      if (!known) fail(field + (field.empty() ? "" : ".") + item.key(), "no such field (known: " + list + ")");
+    }
+  }
+
+  double number(const json& value, const std::string& field) const {
+    if (!value.is_number()) fail(field, "a number", &value);
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) fail(field, "a finite number", &value);
+    return x;
+  }
+
+  double number_in(const json& value, const std::string& field, double lo, double hi, bool lo_open,
+                   const std::string& range) const {
+    const double x = number(value, field);
+    if ((lo_open ? x <= lo : x < lo) || x > hi) fail(field, "a number in " + range, &value);
+    return x;
+  }
+
+  long long integer_in(const json& value, const std::string& field, long long lo, long long hi) const {
+    const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!value.is_number_integer() && !(value.is_number_float() && std::floor(value.get<double>()) == value.get<double>()))
+      fail(field, range, &value);
+    const double x = value.get<double>();
+    if (x < double(lo) || x > double(hi)) fail(field, range, &value);
+    return static_cast<long long>(x);
+  }
+
+  std::vector<double> vector_of(const json& value, const std::string& field, std::size_t count) const {
+    const std::string expected = "an array of " + std::to_string(count) + " numbers";
+    if (!value.is_array() || value.size() != count) fail(field, expected, &value);
+    std::vector<double> out;
+    for (std::size_t i = 0; i < count; ++i) {
+      const double x = number(value[i], field + "[" + std::to_string(i) + "]");
+      if (std::abs(x) > kMaxCoordinate) fail(field + "[" + std::to_string(i) + "]", "|x| <= 1e12", &value[i]);
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  Rgb8 colour(const json& value, const std::string& field) const {
+    if (!value.is_array() || value.size() != 3) fail(field, "an array of 3 integers in [0, 255]", &value);
+    int c[3];
+    for (int i = 0; i < 3; ++i) c[i] = int(integer_in(value[i], field + "[" + std::to_string(i) + "]", 0, 255));
+    return Rgb8{std::uint8_t(c[0]), std::uint8_t(c[1]), std::uint8_t(c[2])};
+  }
+
+  std::string string(const json& value, const std::string& field) const {
+    if (!value.is_string()) fail(field, "a string", &value);
+    return value.get<std::string>();
+  }
+
+  const json& member(const json& object, const char* key, const std::string& field) const {
+    if (!object.contains(key)) fail(field, "a field \"" + std::string(key) + "\" (it is required)");
+    return object.at(key);
+  }
+
+ private:
+  std::string source_;
+};
+
+// ---- objects -----------------------------------------------------------------------------------------
+template <class Object>
+Object read_object(const FieldReader& reader, const json& item, const std::string& field, int dimension) {
+  if (!item.is_object()) reader.fail(field, "an object {\"type\", \"center\", \"radius\", ...}", &item);
+  reader.require_known_keys(item, field, {"type", "center", "radius", "color", "name"});
+  const std::string wanted = dimension == 2 ? "circle" : "sphere";
+  const std::string type = reader.string(reader.member(item, "type", field), field + ".type");
+  if (type != wanted)
+    reader.fail(field + ".type", "\"" + wanted + "\" in a " + std::to_string(dimension) + "D scene", &item["type"]);
+  Object object;
+  const std::vector<double> c = reader.vector_of(reader.member(item, "center", field), field + ".center", dimension);
+  for (int i = 0; i < dimension; ++i) object.centre[i] = c[std::size_t(i)];
+  object.radius = reader.number_in(reader.member(item, "radius", field), field + ".radius", 0.0, kMaxCoordinate, true,
+                                   "]0, 1e12]");
+  if (item.contains("color")) object.colour = reader.colour(item["color"], field + ".color");
+  if (item.contains("name")) object.name = reader.string(item["name"], field + ".name");
+  return object;
+}
+
+// ---- camera preset -----------------------------------------------------------------------------------
+CameraPreset read_camera(const FieldReader& reader, const json& camera, int dimension) {
+  if (!camera.is_object()) reader.fail("camera", "an object", &camera);
+  if (dimension == 2) reader.require_known_keys(camera, "camera", {"target", "d", "theta", "df", "res", "size"});
+  else reader.require_known_keys(camera, "camera", {"target", "d", "theta", "phi", "df", "res", "size"});
+  CameraPreset preset;
+  if (camera.contains("target")) preset.target = reader.vector_of(camera["target"], "camera.target", dimension);
+  if (camera.contains("d")) preset.d = reader.number_in(camera["d"], "camera.d", 0.0, kMaxCoordinate, true, "]0, 1e12]");
+  if (camera.contains("theta")) preset.theta_deg = reader.number_in(camera["theta"], "camera.theta", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
+  if (camera.contains("phi")) preset.phi_deg = reader.number_in(camera["phi"], "camera.phi", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
+  if (camera.contains("df")) preset.df = reader.number_in(camera["df"], "camera.df", 0.0, kMaxCoordinate, true, "]0, 1e12]");
+  if (camera.contains("res")) preset.res = reader.number_in(camera["res"], "camera.res", 0.0, 1.0, true, "]0, 1]");
+  if (camera.contains("size")) {
+    const json& size = camera["size"];
+    if (dimension == 2) {
+      const json& n = size.is_array() && size.size() == 1 ? size[0] : size;
+      preset.size = std::vector<int>{int(reader.integer_in(n, "camera.size", 1, kMaxPixels2D))};
+    } else {
+      if (!size.is_array() || size.size() != 2) reader.fail("camera.size", "[columns, rows]", &size);
+      const int columns = int(reader.integer_in(size[0], "camera.size[0]", 1, kMaxSide3D));
+      const int rows = int(reader.integer_in(size[1], "camera.size[1]", 1, kMaxSide3D));
+      if (static_cast<long long>(columns) * rows > kMaxPixels3D)
+        reader.fail("camera.size", "columns x rows <= " + std::to_string(kMaxPixels3D), &size);
+      preset.size = std::vector<int>{columns, rows};
+    }
+  }
+  return preset;
+}
+
+std::string line_column_of(const std::string& text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+}  // namespace
+
+// ---- parse -------------------------------------------------------------------------------------------
+SceneFile parse_scene_json(const std::string& text, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& error) {
+    // nlohmann's message already says "at line L, column C"; keep it, prefixed by the file.
+    throw std::invalid_argument(source + ": JSON syntax error at " + line_column_of(text, error.byte ? error.byte - 1 : 0) +
+                                ": " + error.what());
+  } catch (const json::exception& error) {
+    throw std::invalid_argument(source + ": invalid JSON: " + error.what());
+  }
+  const FieldReader reader(source);
+  if (!root.is_object()) reader.fail("(top level)", "a JSON object {\"dimension\", \"objects\", ...}", &root);
+  reader.require_known_keys(root, "", {"dimension", "background", "objects", "camera"});
+  SceneFile file;
+  file.dimension = int(reader.integer_in(reader.member(root, "dimension", "dimension"), "dimension", 2, 3));
+  Rgb8 background = kDefaultBackground;
+  if (root.contains("background")) background = reader.colour(root["background"], "background");
+  file.scene2d.background = file.scene3d.background = background;
+
+  const json& objects = reader.member(root, "objects", "objects");
+  if (!objects.is_array()) reader.fail("objects", "an array", &objects);
+  if (objects.size() > kMaxObjects) reader.fail("objects", "at most " + std::to_string(kMaxObjects) + " objects");
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const std::string field = "objects[" + std::to_string(i) + "]";
+    if (file.dimension == 2) file.scene2d.circles.push_back(read_object<Circle>(reader, objects[i], field, 2));
+    else file.scene3d.spheres.push_back(read_object<Sphere>(reader, objects[i], field, 3));
+  }
+  if (root.contains("camera")) file.camera = read_camera(reader, root["camera"], file.dimension);
+  return file;
+}
+
+SceneFile load_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw std::invalid_argument(path + ": cannot open scene file");
+  const std::streamoff size = in.tellg();
+  if (size < 0 || static_cast<unsigned long long>(size) > kMaxSceneFileBytes)
+    throw std::invalid_argument(path + ": file is larger than the limit of " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+  std::string text(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  in.read(text.data(), size);
+  if (!in) throw std::invalid_argument(path + ": cannot read scene file");
+  return parse_scene_json(text, path);
+}
+
+// ---- write -------------------------------------------------------------------------------------------
+namespace {
+json colour_json(Rgb8 c) { return json::array({c.r, c.g, c.b}); }
+
+template <class Object>
+json object_json(const Object& object, const char* type, int dimension) {
+  json centre = json::array();
+  for (int i = 0; i < dimension; ++i) centre.push_back(object.centre[i]);
+  json out = {{"type", type}, {"center", centre}, {"radius", object.radius}, {"color", colour_json(object.colour)}};
+  if (!object.name.empty()) out["name"] = object.name;
+  return out;
+}
+}  // namespace
+
+std::string scene_to_json(const SceneFile& file) {
+  json root;
+  root["dimension"] = file.dimension;
+  json objects = json::array();
+  if (file.dimension == 2) {
+    root["background"] = colour_json(file.scene2d.background);
+    for (const Circle& c : file.scene2d.circles) objects.push_back(object_json(c, "circle", 2));
+  } else {
+    root["background"] = colour_json(file.scene3d.background);
+    for (const Sphere& s : file.scene3d.spheres) objects.push_back(object_json(s, "sphere", 3));
+  }
+  root["objects"] = objects;
+  const CameraPreset& p = file.camera;
+  json camera = json::object();
+  if (p.target) camera["target"] = *p.target;
+  if (p.d) camera["d"] = *p.d;
+  if (p.theta_deg) camera["theta"] = *p.theta_deg;
+  if (p.phi_deg && file.dimension == 3) camera["phi"] = *p.phi_deg;
+  if (p.df) camera["df"] = *p.df;
+  if (p.res) camera["res"] = *p.res;
+  if (p.size) camera["size"] = file.dimension == 2 ? json((*p.size)[0]) : json(*p.size);
+  if (!camera.empty()) root["camera"] = camera;
+  return root.dump(2) + "\n";
+}
+
+void save_scene_file(const SceneFile& file, const std::string& path) {
+  const std::string text = scene_to_json(file);
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out) throw std::runtime_error(temporary + ": cannot open for writing");
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(temporary.c_str());
+      throw std::runtime_error(temporary + ": write failed; " + path + " left unchanged");
+    }
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot replace file; left unchanged");
+  }
+}
+
+}  // namespace raycam

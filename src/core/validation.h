@@ -1,0 +1,22 @@
+// Input checks shared by the core: each throws std::invalid_argument naming the field and the accepted range.
+#pragma once
+
+#include <string>
+
+namespace raycam::detail {
+
+// finite and within ±kMaxCoordinate
+void require_coordinate(double value, const std::string& field);
+// finite, > 0 and ≤ kMaxCoordinate
+void require_positive(double value, const std::string& field);
+// finite angle (radians), |value| ≤ 1e6 so that sin/cos keep meaning
+void require_angle(double value, const std::string& field);
+// 0 < res ≤ 1
+void require_res(double value, const std::string& field);
+// lo ≤ value ≤ hi
+void require_int_range(long long value, long long lo, long long hi, const std::string& field);
+
+// n = clamp(round(res·N), 1, N)
+int useful_size(double res, int max_size);
+
+}  // namespace raycam::detail
