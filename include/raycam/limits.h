@@ -12,5 +12,9 @@ inline constexpr std::size_t kMaxObjects = 2'000'000; // circles or spheres in o
 inline constexpr std::size_t kMaxSceneFileBytes = 256u << 20;  // 256 MiB
 // |coordinate| and radius beyond this lose all precision in double when squared; refused as input.
 inline constexpr double kMaxCoordinate = 1e12;
+// Focal distance d_f: below 1e-9 the ray directions (x, -d_f) lose their y component to underflow when
+// squared; above 1e9 the field of view is under 1e-9 rad and nothing is seen.
+inline constexpr double kMinFocalDistance = 1e-9;
+inline constexpr double kMaxFocalDistance = 1e9;
 
 }  // namespace raycam

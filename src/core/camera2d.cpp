@@ -24,7 +24,7 @@ Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
   detail::require_coordinate(orbit.target.y, "target.y");
   detail::require_positive(orbit.d, "d");
   detail::require_angle(orbit.theta, "theta");
-  detail::require_positive(orbit.df, "df");
+  detail::require_focal_distance(orbit.df, "df");
 
   // Step 2: P = C + d·(cos θ, sin θ).
   const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));

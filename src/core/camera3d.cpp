@@ -30,7 +30,7 @@ Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
   detail::require_positive(orbit.d, "d");
   detail::require_angle(orbit.theta, "theta");
   detail::require_angle(orbit.phi, "phi");
-  detail::require_positive(orbit.df, "df");
+  detail::require_focal_distance(orbit.df, "df");
 
   const glm::dvec3 position = orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
   Placement3D placement;

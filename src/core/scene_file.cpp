@@ -127,7 +127,7 @@ CameraPreset read_camera(const FieldReader& reader, const json& camera, int dime
   if (camera.contains("d")) preset.d = reader.number_in(camera["d"], "camera.d", 0.0, kMaxCoordinate, true, "]0, 1e12]");
   if (camera.contains("theta")) preset.theta_deg = reader.number_in(camera["theta"], "camera.theta", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
   if (camera.contains("phi")) preset.phi_deg = reader.number_in(camera["phi"], "camera.phi", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
-  if (camera.contains("df")) preset.df = reader.number_in(camera["df"], "camera.df", 0.0, kMaxCoordinate, true, "]0, 1e12]");
+  if (camera.contains("df")) preset.df = reader.number_in(camera["df"], "camera.df", kMinFocalDistance, kMaxFocalDistance, false, "[1e-9, 1e9]");
   if (camera.contains("res")) preset.res = reader.number_in(camera["res"], "camera.res", 0.0, 1.0, true, "]0, 1]");
   if (camera.contains("size")) {
     const json& size = camera["size"];

@@ -9,6 +9,8 @@ namespace raycam::detail {
 void require_coordinate(double value, const std::string& field);
 // finite, > 0 and ≤ kMaxCoordinate
 void require_positive(double value, const std::string& field);
+// kMinFocalDistance ≤ value ≤ kMaxFocalDistance
+void require_focal_distance(double value, const std::string& field);
 // finite angle (radians), |value| ≤ 1e6 so that sin/cos keep meaning
 void require_angle(double value, const std::string& field);
 // 0 < res ≤ 1

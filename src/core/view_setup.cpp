@@ -70,10 +70,14 @@ bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewF
       target.push_back(x);
     }
     camera.target = target;
-  } else if (flag == "--d" || flag == "--df") {
+  } else if (flag == "--d") {
     const double x = parse_number(value, flag, "a number in ]0, 1e12]");
     if (x <= 0.0 || x > kMaxCoordinate) bad_flag(flag, "a number in ]0, 1e12]", value);
-    (flag == "--d" ? camera.d : camera.df) = x;
+    camera.d = x;
+  } else if (flag == "--df") {
+    const double x = parse_number(value, flag, "a number in [1e-9, 1e9]");
+    if (!(x >= kMinFocalDistance && x <= kMaxFocalDistance)) bad_flag(flag, "a number in [1e-9, 1e9]", value);
+    camera.df = x;
   } else if (flag == "--theta" || flag == "--phi") {
     const double x = parse_number(value, flag, "an angle in degrees in [-1e6, 1e6]");
     if (std::abs(x) > 1e6) bad_flag(flag, "an angle in degrees in [-1e6, 1e6]", value);
@@ -200,7 +204,7 @@ const char* view_flags_help() {
          "  --d D               distance from C to the screen centre, D in ]0, 1e12] (2D default 6, 3D 8)\n"
          "  --theta DEG         azimuth of the camera around C, degrees (2D default 90, 3D 30)\n"
          "  --phi DEG           3D polar angle from +z, degrees (default 60; 0 = above, 180 = below)\n"
-         "  --df F              focal distance, F in ]0, 1e12]; field of view 2*atan(1/F) (2D 1.5, 3D 2)\n"
+         "  --df F              focal distance, F in [1e-9, 1e9]; field of view 2*atan(1/F) (2D 1.5, 3D 2)\n"
          "  --res R             resolution factor in ]0, 1]; n = round(R*N), at least 1 (default 1)\n"
          "  --size N | WxH      maximum pixels: N for 2D (<= 1048576), WxH for 3D (sides <= 16384, W*H <= 2^26)\n";
 }
