@@ -146,6 +146,16 @@ CameraPreset read_camera(const FieldReader& reader, const json& camera, int dime
   return preset;
 }
 
+// nlohmann's what() is "[json.exception.X] parse error at line L, column C: reason"; keep the reason.
+std::string reason_of(const json::exception& error) {
+  std::string message = error.what();
+  const std::size_t tag_end = message.find("] ");
+  if (tag_end != std::string::npos) message = message.substr(tag_end + 2);
+  const std::size_t column = message.find(", column ");
+  const std::size_t colon = column == std::string::npos ? column : message.find(": ", column);
+  return colon == std::string::npos ? message : message.substr(colon + 2);
+}
+
 std::string line_column_of(const std::string& text, std::size_t byte) {
   std::size_t line = 1, column = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
@@ -161,11 +171,10 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   try {
     root = json::parse(text);
   } catch (const json::parse_error& error) {
-    // nlohmann's message already says "at line L, column C"; keep it, prefixed by the file.
     throw std::invalid_argument(source + ": JSON syntax error at " + line_column_of(text, error.byte ? error.byte - 1 : 0) +
-                                ": " + error.what());
-  } catch (const json::exception& error) {
-    throw std::invalid_argument(source + ": invalid JSON: " + error.what());
+                                ": " + reason_of(error));
+  } catch (const json::exception& error) {  // e.g. a number too large for a double
+    throw std::invalid_argument(source + ": invalid JSON: " + reason_of(error));
   }
   const FieldReader reader(source);
   if (!root.is_object()) reader.fail("(top level)", "a JSON object {\"dimension\", \"objects\", ...}", &root);
