@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs raycam's build and test dependencies from Debian 12's packages (as root, or through sudo).
+set -euo pipefail
+packages=(
+  cmake g++ pkg-config                       # toolchain (named explicitly: a fresh machine may lack them)
+  libglm-dev nlohmann-json3-dev libstb-dev   # core: math, scene files, PNG output
+  catch2                                     # tests
+  libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
+  xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
+  libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
+  clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "ok installed" || missing+=("$package")
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "install-deps: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+fi
