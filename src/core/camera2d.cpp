@@ -9,6 +9,7 @@
 
 #include "raycam/limits.h"
 #include "raycam/transform.h"
+#include "primary_ray.h"
 #include "validation.h"
 
 namespace raycam {
@@ -96,13 +97,8 @@ glm::dvec2 Camera2D::canonical_pixel(int k) const {
 }
 
 Ray2D Camera2D::primary_ray(int k) const {
-  const glm::dvec2 canonical = canonical_pixel(k);
-  Ray2D ray;
-  ray.origin = transform_point(world_from_camera(), canonical);
-  // u_k^0 = E0P_k^0 is a vector: transformed without translation, renormalised because H scales.
-  ray.direction = transform_vector(world_from_camera(), canonical - kCanonicalEye);
-  if (!mistakes_.skip_renormalise) ray.direction = glm::normalize(ray.direction);
-  return ray;
+  return detail::primary_ray_through<Ray2D>(world_from_camera(), canonical_pixel(k), kCanonicalEye,
+                                            !mistakes_.skip_renormalise);
 }
 
 }  // namespace raycam

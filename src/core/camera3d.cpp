@@ -9,6 +9,7 @@
 
 #include "raycam/limits.h"
 #include "raycam/transform.h"
+#include "primary_ray.h"
 #include "validation.h"
 
 namespace raycam {
@@ -125,12 +126,8 @@ glm::dvec3 Camera3D::canonical_pixel(int row, int column) const {
 }
 
 Ray3D Camera3D::primary_ray(int row, int column) const {
-  const glm::dvec3 canonical = canonical_pixel(row, column);
-  Ray3D ray;
-  ray.origin = transform_point(world_from_camera(), canonical);
-  ray.direction = transform_vector(world_from_camera(), canonical - kCanonicalEye);
-  if (!mistakes_.skip_renormalise) ray.direction = glm::normalize(ray.direction);
-  return ray;
+  return detail::primary_ray_through<Ray3D>(world_from_camera(), canonical_pixel(row, column), kCanonicalEye,
+                                            !mistakes_.skip_renormalise);
 }
 
 }  // namespace raycam
