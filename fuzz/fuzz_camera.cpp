@@ -1,5 +1,6 @@
-// libFuzzer target: cameras and the caster fed raw doubles (NaN, infinities, denormals, huge and tiny values).
-// Every input is either refused with std::invalid_argument or gives finite rays, a finite M_d and valid ids.
+// libFuzzer target: cameras and the caster fed raw doubles (NaN, infinities, denormals, huge and tiny
+// values). Every input is either refused with std::invalid_argument or gives finite rays, a finite M_d and
+// valid ids.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -35,7 +36,8 @@ void check(bool condition) {
 
 template <class Ray>
 void check_ray(const Ray& ray) {
-  for (int i = 0; i < ray.origin.length(); ++i) check(std::isfinite(ray.origin[i]) && std::isfinite(ray.direction[i]));
+  for (int i = 0; i < ray.origin.length(); ++i)
+    check(std::isfinite(ray.origin[i]) && std::isfinite(ray.direction[i]));
 }
 }  // namespace
 
@@ -50,13 +52,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       Camera3D camera(columns, rows);
       camera.set_mistakes(mistakes);
       camera.set_res(in.next_double(), in.next_double());
-      Orbit3D orbit{{in.next_double(), in.next_double(), in.next_double()}, in.next_double(), in.next_double(),
-                    in.next_double(), in.next_double()};
-      if (in.next_small(2)) camera.set_free(orbit.target + glm::dvec3(orbit.d, orbit.theta, orbit.phi), orbit.target,
-                                            orbit.df, in.next_small(2) ? AngleRoute::stable : AngleRoute::handout_arccos);
-      else camera.set_orbit(orbit);
+      Orbit3D orbit{{in.next_double(), in.next_double(), in.next_double()},
+                    in.next_double(),
+                    in.next_double(),
+                    in.next_double(),
+                    in.next_double()};
+      if (in.next_small(2))
+        camera.set_free(orbit.target + glm::dvec3(orbit.d, orbit.theta, orbit.phi), orbit.target, orbit.df,
+                        in.next_small(2) ? AngleRoute::stable : AngleRoute::handout_arccos);
+      else
+        camera.set_orbit(orbit);
       Scene3D scene;
-      for (int i = 0; i < 3; ++i) scene.spheres.push_back({{in.next_double(), in.next_double(), in.next_double()}, in.next_double(), {}, ""});
+      for (int i = 0; i < 3; ++i)
+        scene.spheres.push_back(
+            {{in.next_double(), in.next_double(), in.next_double()}, in.next_double(), {}, ""});
       validate(scene);
       for (int c = 0; c < 4; ++c)
         for (int r = 0; r < 4; ++r) check(std::isfinite(camera.world_from_camera()[c][r]));
@@ -67,12 +76,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       Camera2D camera(columns * rows);
       camera.set_mistakes(mistakes);
       camera.set_res(in.next_double());
-      Orbit2D orbit{{in.next_double(), in.next_double()}, in.next_double(), in.next_double(), in.next_double()};
-      if (in.next_small(2)) camera.set_free(orbit.target + glm::dvec2(orbit.d, orbit.theta), orbit.target, orbit.df,
-                                            in.next_small(2) ? AngleRoute::stable : AngleRoute::handout_arccos);
-      else camera.set_orbit(orbit);
+      Orbit2D orbit{
+          {in.next_double(), in.next_double()}, in.next_double(), in.next_double(), in.next_double()};
+      if (in.next_small(2))
+        camera.set_free(orbit.target + glm::dvec2(orbit.d, orbit.theta), orbit.target, orbit.df,
+                        in.next_small(2) ? AngleRoute::stable : AngleRoute::handout_arccos);
+      else
+        camera.set_orbit(orbit);
       Scene2D scene;
-      for (int i = 0; i < 3; ++i) scene.circles.push_back({{in.next_double(), in.next_double()}, in.next_double(), {}, ""});
+      for (int i = 0; i < 3; ++i)
+        scene.circles.push_back({{in.next_double(), in.next_double()}, in.next_double(), {}, ""});
       validate(scene);
       for (int k = 0; k < camera.pixel_count(); ++k) check_ray(camera.primary_ray(k));
       for (int id : cast_primary_rays(camera, scene).ids) check(id >= -1 && id < 3);

@@ -62,7 +62,7 @@ class Camera2D {
 
   int max_pixels() const { return max_pixels_; }
   double res() const { return res_; }
-  void set_res(double res);  // res ∈ ]0, 1]
+  void set_res(double res);                         // res ∈ ]0, 1]
   int pixel_count() const { return pixel_count_; }  // n = clamp(round(res·N), 1, N)
 
   void set_orbit(const Orbit2D& orbit);

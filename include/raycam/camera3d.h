@@ -31,12 +31,12 @@ struct Orbit3D {
 
 // The factors of M_d, kept one by one for display (handout steps 1–4, in the order they apply).
 struct Placement3D {
-  glm::dmat4 scale{1.0};     // step 1: H(1, 1, d_f)
-  glm::dmat4 roll{1.0};      // step 2: R_z(ψ0)
-  glm::dmat4 polar{1.0};     // step 3a: R_y(φ), puts u0 in the plane y = 0
-  glm::dmat4 azimuth{1.0};   // step 3b: R_z(θ), makes u0 collinear with v
-  glm::dmat4 translation{1.0};  // step 4: T(OP)
-  double theta = 0.0, phi = 0.0;  // the angles actually used (differ from the orbit's under the mistake)
+  glm::dmat4 scale{1.0};              // step 1: H(1, 1, d_f)
+  glm::dmat4 roll{1.0};               // step 2: R_z(ψ0)
+  glm::dmat4 polar{1.0};              // step 3a: R_y(φ), puts u0 in the plane y = 0
+  glm::dmat4 azimuth{1.0};            // step 3b: R_z(θ), makes u0 collinear with v
+  glm::dmat4 translation{1.0};        // step 4: T(OP)
+  double theta = 0.0, phi = 0.0;      // the angles actually used (differ from the orbit's under the mistake)
   glm::dmat4 world_from_camera{1.0};  // T · R_z(θ) · R_y(φ) · R_z(ψ0) · H
 };
 

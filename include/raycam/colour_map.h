@@ -16,8 +16,8 @@ struct ColourMap {
   std::vector<int> ids;       // width·height
 
   ColourMap() = default;
-  ColourMap(int w, int h, Rgb8 fill) : width(w), height(h), colours(std::size_t(w) * h, fill),
-                                       ids(std::size_t(w) * h, -1) {}
+  ColourMap(int w, int h, Rgb8 fill)
+      : width(w), height(h), colours(std::size_t(w) * h, fill), ids(std::size_t(w) * h, -1) {}
   std::size_t index(int row, int column) const { return std::size_t(row) * width + column; }
   Rgb8 colour_at(int row, int column) const { return colours[index(row, column)]; }
   int id_at(int row, int column) const { return ids[index(row, column)]; }

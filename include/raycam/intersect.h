@@ -10,11 +10,10 @@
 #pragma once
 
 #include <cmath>
-#include <limits>
-
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 
 namespace raycam {
 

@@ -17,11 +17,14 @@ struct Command {
 
 // One row per subcommand.
 const Command kCommands[] = {
-    {"render", "cast the primary rays and write the colour map (PNG) and object ids (text)", raycam::cli::run_render},
+    {"render", "cast the primary rays and write the colour map (PNG) and object ids (text)",
+     raycam::cli::run_render},
 };
 
 void print_usage(std::FILE* out) {
-  std::fprintf(out, "usage: raycam-cli COMMAND [options]   (raycam-cli COMMAND --help for its options)\n\ncommands:\n");
+  std::fprintf(
+      out,
+      "usage: raycam-cli COMMAND [options]   (raycam-cli COMMAND --help for its options)\n\ncommands:\n");
   for (const Command& command : kCommands) std::fprintf(out, "  %-8s %s\n", command.name, command.summary);
 }
 }  // namespace

@@ -3,20 +3,19 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 
-#include <glm/geometric.hpp>
-
+#include "primary_ray.h"
 #include "raycam/limits.h"
 #include "raycam/transform.h"
-#include "primary_ray.h"
 #include "validation.h"
 
 namespace raycam {
 
 namespace {
 constexpr double kHalfPi = 1.5707963267948966;
-const glm::dvec2 kCanonicalEye{0.0, 1.0};   // E0
+const glm::dvec2 kCanonicalEye{0.0, 1.0};    // E0
 const glm::dvec2 kCanonicalView{0.0, -1.0};  // u0
 }  // namespace
 
@@ -28,7 +27,8 @@ Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
   detail::require_focal_distance(orbit.df, "df");
 
   // Step 2: P = C + d·(cos θ, sin θ).
-  const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
+  const glm::dvec2 position =
+      orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
   Placement2D placement;
   placement.scale = scaling_2d(1.0, orbit.df);
   // R(α) must turn u0 = (0,-1), at angle -π/2, onto v = PC/|PC|, at angle θ + π: α = θ - π/2 (mod 2π).

@@ -3,20 +3,19 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 
-#include <glm/geometric.hpp>
-
+#include "primary_ray.h"
 #include "raycam/limits.h"
 #include "raycam/transform.h"
-#include "primary_ray.h"
 #include "validation.h"
 
 namespace raycam {
 
 namespace {
 constexpr double kPi = 3.141592653589793;
-const glm::dvec3 kCanonicalEye{0.0, 0.0, 1.0};   // E0
+const glm::dvec3 kCanonicalEye{0.0, 0.0, 1.0};    // E0
 const glm::dvec3 kCanonicalView{0.0, 0.0, -1.0};  // u0
 
 glm::dvec3 spherical_direction(double theta, double phi) {
@@ -39,11 +38,11 @@ Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
   // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
   placement.theta = printed_rotation_sign ? orbit.theta + kPi : orbit.theta;
   placement.phi = printed_rotation_sign ? kPi - orbit.phi : orbit.phi;
-  placement.scale = scaling_3d(1.0, 1.0, orbit.df);        // step 1
-  placement.roll = rotation_z(kRollPsi0);                  // step 2
-  placement.polar = rotation_y(placement.phi);             // step 3a
-  placement.azimuth = rotation_z(placement.theta);         // step 3b
-  placement.translation = translation_3d(position);        // step 4
+  placement.scale = scaling_3d(1.0, 1.0, orbit.df);  // step 1
+  placement.roll = rotation_z(kRollPsi0);            // step 2
+  placement.polar = rotation_y(placement.phi);       // step 3a
+  placement.azimuth = rotation_z(placement.theta);   // step 3b
+  placement.translation = translation_3d(position);  // step 4
   placement.world_from_camera =
       placement.translation * placement.azimuth * placement.polar * placement.roll * placement.scale;
   return placement;

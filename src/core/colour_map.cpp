@@ -1,15 +1,16 @@
 #include "raycam/colour_map.h"
 
+#include <stb_image_write.h>  // implementation provided by Debian's libstb
+
 #include <fstream>
 #include <stdexcept>
 #include <vector>
 
-#include <stb_image_write.h>  // implementation provided by Debian's libstb
-
 namespace raycam {
 
 void write_png(const ColourMap& map, const std::string& path, int scale_x, int scale_y) {
-  if (map.width <= 0 || map.height <= 0) throw std::runtime_error(path + ": cannot write an empty colour map");
+  if (map.width <= 0 || map.height <= 0)
+    throw std::runtime_error(path + ": cannot write an empty colour map");
   if (scale_x < 1 || scale_y < 1) throw std::invalid_argument("write_png: scale must be >= 1");
   const int width = map.width * scale_x, height = map.height * scale_y;
   std::vector<unsigned char> pixels(std::size_t(width) * height * 3);

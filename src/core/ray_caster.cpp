@@ -38,7 +38,8 @@ ColourMap cast_primary_rays(const Camera2D& camera, const Scene2D& scene, const 
     const Hit hit = nearest_hit(scene.circles, camera.primary_ray(k), options.formula);
     store(map, map.index(0, camera.column_of_pixel(k)), hit, scene.circles);
   }
-  if (stats) *stats = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0};
+  if (stats)
+    *stats = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0};
   return map;
 }
 

@@ -5,10 +5,9 @@
 #include <cstdio>
 #include <fstream>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
-
-#include <nlohmann/json.hpp>
 
 #include "raycam/limits.h"
 #include "validation.h"
@@ -23,7 +22,8 @@ class FieldReader {
  public:
   explicit FieldReader(std::string source) : source_(std::move(source)) {}
 
-  [[noreturn]] void fail(const std::string& field, const std::string& expected, const json* got = nullptr) const {
+  [[noreturn]] void fail(const std::string& field, const std::string& expected,
+                         const json* got = nullptr) const {
     std::string message = source_ + ": " + field + ": expected " + expected;
     if (got) message += ", got " + got->dump().substr(0, 60);
     throw std::invalid_argument(message);
@@ -38,7 +38,8 @@ class FieldReader {
         known = known || item.key() == key;
         list += std::string(list.empty() ? "" : ", ") + key;
       }
-      if (!known) fail(field + (field.empty() ? "" : ".") + item.key(), "no such field (known: " + list + ")");
+      if (!known)
+        fail(field + (field.empty() ? "" : ".") + item.key(), "no such field (known: " + list + ")");
     }
   }
 
@@ -58,7 +59,8 @@ class FieldReader {
 
   long long integer_in(const json& value, const std::string& field, long long lo, long long hi) const {
     const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (!value.is_number_integer() && !(value.is_number_float() && std::floor(value.get<double>()) == value.get<double>()))
+    if (!value.is_number_integer() &&
+        !(value.is_number_float() && std::floor(value.get<double>()) == value.get<double>()))
       fail(field, range, &value);
     const double x = value.get<double>();
     if (x < double(lo) || x > double(hi)) fail(field, range, &value);
@@ -80,7 +82,8 @@ class FieldReader {
   Rgb8 colour(const json& value, const std::string& field) const {
     if (!value.is_array() || value.size() != 3) fail(field, "an array of 3 integers in [0, 255]", &value);
     int c[3];
-    for (int i = 0; i < 3; ++i) c[i] = int(integer_in(value[i], field + "[" + std::to_string(i) + "]", 0, 255));
+    for (int i = 0; i < 3; ++i)
+      c[i] = int(integer_in(value[i], field + "[" + std::to_string(i) + "]", 0, 255));
     return Rgb8{std::uint8_t(c[0]), std::uint8_t(c[1]), std::uint8_t(c[2])};
   }
 
@@ -106,12 +109,14 @@ Object read_object(const FieldReader& reader, const json& item, const std::strin
   const std::string wanted = dimension == 2 ? "circle" : "sphere";
   const std::string type = reader.string(reader.member(item, "type", field), field + ".type");
   if (type != wanted)
-    reader.fail(field + ".type", "\"" + wanted + "\" in a " + std::to_string(dimension) + "D scene", &item["type"]);
+    reader.fail(field + ".type", "\"" + wanted + "\" in a " + std::to_string(dimension) + "D scene",
+                &item["type"]);
   Object object;
-  const std::vector<double> c = reader.vector_of(reader.member(item, "center", field), field + ".center", dimension);
+  const std::vector<double> c =
+      reader.vector_of(reader.member(item, "center", field), field + ".center", dimension);
   for (int i = 0; i < dimension; ++i) object.centre[i] = c[std::size_t(i)];
-  object.radius = reader.number_in(reader.member(item, "radius", field), field + ".radius", 0.0, kMaxCoordinate, true,
-                                   "]0, 1e12]");
+  object.radius = reader.number_in(reader.member(item, "radius", field), field + ".radius", 0.0,
+                                   kMaxCoordinate, true, "]0, 1e12]");
   if (item.contains("color")) object.colour = reader.colour(item["color"], field + ".color");
   if (item.contains("name")) object.name = reader.string(item["name"], field + ".name");
   return object;
@@ -120,15 +125,25 @@ Object read_object(const FieldReader& reader, const json& item, const std::strin
 // ---- camera preset -----------------------------------------------------------------------------------
 CameraPreset read_camera(const FieldReader& reader, const json& camera, int dimension) {
   if (!camera.is_object()) reader.fail("camera", "an object", &camera);
-  if (dimension == 2) reader.require_known_keys(camera, "camera", {"target", "d", "theta", "df", "res", "size"});
-  else reader.require_known_keys(camera, "camera", {"target", "d", "theta", "phi", "df", "res", "size"});
+  if (dimension == 2)
+    reader.require_known_keys(camera, "camera", {"target", "d", "theta", "df", "res", "size"});
+  else
+    reader.require_known_keys(camera, "camera", {"target", "d", "theta", "phi", "df", "res", "size"});
   CameraPreset preset;
-  if (camera.contains("target")) preset.target = reader.vector_of(camera["target"], "camera.target", dimension);
-  if (camera.contains("d")) preset.d = reader.number_in(camera["d"], "camera.d", 0.0, kMaxCoordinate, true, "]0, 1e12]");
-  if (camera.contains("theta")) preset.theta_deg = reader.number_in(camera["theta"], "camera.theta", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
-  if (camera.contains("phi")) preset.phi_deg = reader.number_in(camera["phi"], "camera.phi", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
-  if (camera.contains("df")) preset.df = reader.number_in(camera["df"], "camera.df", kMinFocalDistance, kMaxFocalDistance, false, "[1e-9, 1e9]");
-  if (camera.contains("res")) preset.res = reader.number_in(camera["res"], "camera.res", 0.0, 1.0, true, "]0, 1]");
+  if (camera.contains("target"))
+    preset.target = reader.vector_of(camera["target"], "camera.target", dimension);
+  if (camera.contains("d"))
+    preset.d = reader.number_in(camera["d"], "camera.d", 0.0, kMaxCoordinate, true, "]0, 1e12]");
+  if (camera.contains("theta"))
+    preset.theta_deg =
+        reader.number_in(camera["theta"], "camera.theta", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
+  if (camera.contains("phi"))
+    preset.phi_deg = reader.number_in(camera["phi"], "camera.phi", -1e6, 1e6, false, "[-1e6, 1e6] degrees");
+  if (camera.contains("df"))
+    preset.df = reader.number_in(camera["df"], "camera.df", kMinFocalDistance, kMaxFocalDistance, false,
+                                 "[1e-9, 1e9]");
+  if (camera.contains("res"))
+    preset.res = reader.number_in(camera["res"], "camera.res", 0.0, 1.0, true, "]0, 1]");
   if (camera.contains("size")) {
     const json& size = camera["size"];
     if (dimension == 2) {
@@ -159,7 +174,12 @@ std::string reason_of(const json::exception& error) {
 std::string line_column_of(const std::string& text, std::size_t byte) {
   std::size_t line = 1, column = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') { ++line; column = 1; } else { ++column; }
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
@@ -171,8 +191,9 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   try {
     root = json::parse(text);
   } catch (const json::parse_error& error) {
-    throw std::invalid_argument(source + ": JSON syntax error at " + line_column_of(text, error.byte ? error.byte - 1 : 0) +
-                                ": " + reason_of(error));
+    throw std::invalid_argument(source + ": JSON syntax error at " +
+                                line_column_of(text, error.byte ? error.byte - 1 : 0) + ": " +
+                                reason_of(error));
   } catch (const json::exception& error) {  // e.g. a number too large for a double
     throw std::invalid_argument(source + ": invalid JSON: " + reason_of(error));
   }
@@ -187,11 +208,14 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
 
   const json& objects = reader.member(root, "objects", "objects");
   if (!objects.is_array()) reader.fail("objects", "an array", &objects);
-  if (objects.size() > kMaxObjects) reader.fail("objects", "at most " + std::to_string(kMaxObjects) + " objects");
+  if (objects.size() > kMaxObjects)
+    reader.fail("objects", "at most " + std::to_string(kMaxObjects) + " objects");
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const std::string field = "objects[" + std::to_string(i) + "]";
-    if (file.dimension == 2) file.scene2d.circles.push_back(read_object<Circle>(reader, objects[i], field, 2));
-    else file.scene3d.spheres.push_back(read_object<Sphere>(reader, objects[i], field, 3));
+    if (file.dimension == 2)
+      file.scene2d.circles.push_back(read_object<Circle>(reader, objects[i], field, 2));
+    else
+      file.scene3d.spheres.push_back(read_object<Sphere>(reader, objects[i], field, 3));
   }
   if (root.contains("camera")) file.camera = read_camera(reader, root["camera"], file.dimension);
   return file;
@@ -202,7 +226,8 @@ SceneFile load_scene_file(const std::string& path) {
   if (!in) throw std::invalid_argument(path + ": cannot open scene file");
   const std::streamoff size = in.tellg();
   if (size < 0 || static_cast<unsigned long long>(size) > kMaxSceneFileBytes)
-    throw std::invalid_argument(path + ": file is larger than the limit of " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+    throw std::invalid_argument(path + ": file is larger than the limit of " +
+                                std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
   std::string text(static_cast<std::size_t>(size), '\0');
   in.seekg(0);
   in.read(text.data(), size);
@@ -218,7 +243,8 @@ template <class Object>
 json object_json(const Object& object, const char* type, int dimension) {
   json centre = json::array();
   for (int i = 0; i < dimension; ++i) centre.push_back(object.centre[i]);
-  json out = {{"type", type}, {"center", centre}, {"radius", object.radius}, {"color", colour_json(object.colour)}};
+  json out = {
+      {"type", type}, {"center", centre}, {"radius", object.radius}, {"color", colour_json(object.colour)}};
   if (!object.name.empty()) out["name"] = object.name;
   return out;
 }

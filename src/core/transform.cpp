@@ -6,9 +6,7 @@ namespace raycam {
 
 // GLM matrices are built column by column: dmat3(col0, col1, col2).
 
-glm::dmat3 scaling_2d(double sx, double sy) {
-  return glm::dmat3({sx, 0, 0}, {0, sy, 0}, {0, 0, 1});
-}
+glm::dmat3 scaling_2d(double sx, double sy) { return glm::dmat3({sx, 0, 0}, {0, sy, 0}, {0, 0, 1}); }
 
 glm::dmat3 rotation_2d(double angle) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -18,19 +18,23 @@ namespace {
 }  // namespace
 
 void require_coordinate(double value, const std::string& field) {
-  if (!std::isfinite(value) || std::abs(value) > kMaxCoordinate) fail(field, value, "a finite number in [-1e12, 1e12]");
+  if (!std::isfinite(value) || std::abs(value) > kMaxCoordinate)
+    fail(field, value, "a finite number in [-1e12, 1e12]");
 }
 
 void require_positive(double value, const std::string& field) {
-  if (!std::isfinite(value) || value <= 0.0 || value > kMaxCoordinate) fail(field, value, "a finite number in ]0, 1e12]");
+  if (!std::isfinite(value) || value <= 0.0 || value > kMaxCoordinate)
+    fail(field, value, "a finite number in ]0, 1e12]");
 }
 
 void require_focal_distance(double value, const std::string& field) {
-  if (!(value >= kMinFocalDistance && value <= kMaxFocalDistance)) fail(field, value, "a number in [1e-9, 1e9]");
+  if (!(value >= kMinFocalDistance && value <= kMaxFocalDistance))
+    fail(field, value, "a number in [1e-9, 1e9]");
 }
 
 void require_angle(double value, const std::string& field) {
-  if (!std::isfinite(value) || std::abs(value) > 1e6) fail(field, value, "a finite angle with |angle| <= 1e6 rad");
+  if (!std::isfinite(value) || std::abs(value) > 1e6)
+    fail(field, value, "a finite angle with |angle| <= 1e6 rad");
 }
 
 void require_res(double value, const std::string& field) {

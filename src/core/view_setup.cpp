@@ -45,8 +45,8 @@ int parse_size_component(const std::string& text, const std::string& flag, int m
 }  // namespace
 
 bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags) {
-  static const char* const kFlags[] = {"--scene", "--mode", "--target", "--d", "--theta", "--phi",
-                                       "--df",    "--res",  "--size"};
+  static const char* const kFlags[] = {"--scene", "--mode", "--target", "--d",   "--theta",
+                                       "--phi",   "--df",   "--res",    "--size"};
   const std::string& flag = args[i];
   bool known = false;
   for (const char* f : kFlags) known = known || flag == f;
@@ -89,9 +89,11 @@ bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewF
   } else {  // --size N | WxH
     const std::vector<std::string> parts = split(value, 'x');
     if (parts.size() == 1) {
-      camera.size = std::vector<int>{parse_size_component(parts[0], flag, kMaxSide3D > kMaxPixels2D ? kMaxSide3D : kMaxPixels2D)};
+      camera.size = std::vector<int>{
+          parse_size_component(parts[0], flag, kMaxSide3D > kMaxPixels2D ? kMaxSide3D : kMaxPixels2D)};
     } else if (parts.size() == 2) {
-      const int w = parse_size_component(parts[0], flag, kMaxSide3D), h = parse_size_component(parts[1], flag, kMaxSide3D);
+      const int w = parse_size_component(parts[0], flag, kMaxSide3D),
+                h = parse_size_component(parts[1], flag, kMaxSide3D);
       if (static_cast<long long>(w) * h > kMaxPixels3D)
         bad_flag(flag, "W x H <= " + std::to_string(kMaxPixels3D) + " pixels", value);
       camera.size = std::vector<int>{w, h};
@@ -122,8 +124,9 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     setup.scene_path = *flags.scene_path;
     setup.file = load_scene_file(*flags.scene_path);
     if (flags.dimension && *flags.dimension != setup.file.dimension)
-      throw std::invalid_argument("--mode: " + std::to_string(*flags.dimension) + "d does not match the scene file " +
-                                  *flags.scene_path + ", which is " + std::to_string(setup.file.dimension) + "D");
+      throw std::invalid_argument("--mode: " + std::to_string(*flags.dimension) +
+                                  "d does not match the scene file " + *flags.scene_path + ", which is " +
+                                  std::to_string(setup.file.dimension) + "D");
   } else {
     setup.file.dimension = flags.dimension.value_or(3);
     setup.file.scene2d = demo_scene_2d();
@@ -137,12 +140,15 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
   if (preset.target && preset.target->size() != std::size_t(setup.dimension))
     throw std::invalid_argument("--target: expected " + std::string(is_2d ? "x,y" : "x,y,z") + " for a " +
                                 std::to_string(setup.dimension) + "D scene");
-  if (is_2d && flags.camera.phi_deg) throw std::invalid_argument("--phi: only for 3D scenes (this one is 2D)");
+  if (is_2d && flags.camera.phi_deg)
+    throw std::invalid_argument("--phi: only for 3D scenes (this one is 2D)");
 
   if (is_2d) {
-    if (preset.size && preset.size->size() != 1) throw std::invalid_argument("--size: expected N for a 2D scene");
+    if (preset.size && preset.size->size() != 1)
+      throw std::invalid_argument("--size: expected N for a 2D scene");
     if (preset.size && (*preset.size)[0] > kMaxPixels2D)
-      throw std::invalid_argument("--size: expected N in [1, " + std::to_string(kMaxPixels2D) + "] for a 2D scene");
+      throw std::invalid_argument("--size: expected N in [1, " + std::to_string(kMaxPixels2D) +
+                                  "] for a 2D scene");
     setup.camera2d = Camera2D(preset.size ? (*preset.size)[0] : kDefaultSize2D);
     Orbit2D orbit;
     if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1]};
@@ -155,7 +161,8 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     int columns = kDefaultSize3D, rows = kDefaultSize3D;
     if (preset.size) {
       if (preset.size->size() == 1 && (*preset.size)[0] > kMaxSide3D)
-        throw std::invalid_argument("--size: expected N or WxH with sides in [1, " + std::to_string(kMaxSide3D) + "]");
+        throw std::invalid_argument("--size: expected N or WxH with sides in [1, " +
+                                    std::to_string(kMaxSide3D) + "]");
       columns = (*preset.size)[0];
       rows = preset.size->size() == 2 ? (*preset.size)[1] : columns;
     }
@@ -206,7 +213,8 @@ const char* view_flags_help() {
          "  --phi DEG           3D polar angle from +z, degrees (default 60; 0 = above, 180 = below)\n"
          "  --df F              focal distance, F in [1e-9, 1e9]; field of view 2*atan(1/F) (2D 1.5, 3D 2)\n"
          "  --res R             resolution factor in ]0, 1]; n = round(R*N), at least 1 (default 1)\n"
-         "  --size N | WxH      maximum pixels: N for 2D (<= 1048576), WxH for 3D (sides <= 16384, W*H <= 2^26)\n";
+         "  --size N | WxH      maximum pixels: N for 2D (<= 1048576), WxH for 3D (sides <= 16384, W*H <= "
+         "2^26)\n";
 }
 
 }  // namespace raycam

@@ -1,7 +1,6 @@
 // `raycam-cli render` end to end: the ids it writes equal the core's colour map for the same camera (set
 // here directly in radians, so the CLI's degree conversion and flag handling are checked too).
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -43,14 +42,17 @@ void check_same(const std::vector<std::vector<int>>& rows, const ColourMap& map)
 }  // namespace
 
 TEST_CASE("render --ids matches the core in 3D", "[cli]") {
-  REQUIRE(run("render --mode 3d --size 40x30 --theta 120 --phi 70 --d 7 --df 1.7 --target 0.5,0,0.2 --ids cli3d.txt") == 0);
+  REQUIRE(run("render --mode 3d --size 40x30 --theta 120 --phi 70 --d 7 --df 1.7 --target 0.5,0,0.2 --ids "
+              "cli3d.txt") == 0);
   Camera3D camera(40, 30);
   camera.set_orbit({{0.5, 0, 0.2}, 7.0, 120 * kDegree, 70 * kDegree, 1.7});
   check_same(read_ids("cli3d.txt"), cast_primary_rays(camera, demo_scene_3d()));
 }
 
 TEST_CASE("render --ids matches the core in 2D, with res", "[cli]") {
-  REQUIRE(run("render --mode 2d --size 200 --res 0.5 --theta -30 --d 5 --df 1 --ids cli2d.txt --out cli2d.png") == 0);
+  REQUIRE(
+      run("render --mode 2d --size 200 --res 0.5 --theta -30 --d 5 --df 1 --ids cli2d.txt --out cli2d.png") ==
+      0);
   Camera2D camera(200);
   camera.set_res(0.5);
   camera.set_orbit({{0, 0}, 5.0, -30 * kDegree, 1.0});
@@ -63,7 +65,8 @@ TEST_CASE("render --ids matches the core in 2D, with res", "[cli]") {
 TEST_CASE("render with a scene file uses its preset, flags override it", "[cli]") {
   {
     std::ofstream scene("cli_scene.json");
-    scene << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "color": [255, 0, 0]}],
+    scene
+        << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "color": [255, 0, 0]}],
                  "camera": {"d": 5, "theta": 0, "phi": 90, "df": 1, "size": [16, 16]}})";
   }
   REQUIRE(run("render --scene cli_scene.json --theta 45 --ids cli_scene.txt") == 0);

@@ -1,6 +1,5 @@
 // Camera2D: MISSION.md invariants 1–7 in 2D and the handout's analytic expectations.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <limits>
 
@@ -40,7 +39,8 @@ TEST_CASE("2D invariants 1-3 hold over random placements", "[camera2d][invariant
     const Orbit2D orbit = random_orbit(random);
     Camera2D camera(65);  // odd: pixel 32 is the screen centre
     camera.set_orbit(orbit);
-    const glm::dvec2 expected_position = orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
+    const glm::dvec2 expected_position =
+        orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
     const double scale = glm::length(orbit.target) + orbit.d + orbit.df;
     // 1. screen centre at P; eye at P - d_f·v, so at distance d + d_f from C.
     CHECK(glm::length(camera.screen_centre() - expected_position) <= 1e-12 * scale);
@@ -58,7 +58,8 @@ TEST_CASE("2D invariants 1-3 hold over random placements", "[camera2d][invariant
 
 TEST_CASE("2D edge angles and extreme focal distances give finite, correct placements", "[camera2d][edge]") {
   const double ulp = std::numeric_limits<double>::epsilon();
-  for (double theta : {0.0, kPi, -kPi, std::nextafter(kPi, 0.0), std::nextafter(-kPi, 0.0), 2 * kPi, ulp, -ulp}) {
+  for (double theta :
+       {0.0, kPi, -kPi, std::nextafter(kPi, 0.0), std::nextafter(-kPi, 0.0), 2 * kPi, ulp, -ulp}) {
     for (double df : {1e-9, 1e-3, 1.0, 1e3, 1e9}) {
       Camera2D camera(3);  // odd n: the middle ray is the axis itself
       camera.set_orbit({{1.0, -2.0}, 5.0, theta, df});
@@ -90,7 +91,8 @@ TEST_CASE("pixel centres are symmetric and res controls n", "[camera2d]") {
   camera.set_res(0.37);
   const int n = camera.pixel_count();
   CHECK(n == 37);
-  for (int k = 0; k < n; ++k) CHECK(camera.canonical_pixel(k).x == Approx(-camera.canonical_pixel(n - 1 - k).x).margin(1e-15));
+  for (int k = 0; k < n; ++k)
+    CHECK(camera.canonical_pixel(k).x == Approx(-camera.canonical_pixel(n - 1 - k).x).margin(1e-15));
   CHECK(camera.canonical_pixel(0).x == Approx(-1.0 + 1.0 / n));
   CHECK_THROWS_WITH(camera.set_res(0.0), Catch::Contains("res") && Catch::Contains("]0, 1]"));
   CHECK_THROWS_WITH(camera.set_res(1.5), Catch::Contains("res"));
@@ -116,7 +118,8 @@ TEST_CASE("field of view is 2·atan(1/d_f)", "[camera2d][analytic]") {
       Camera2D camera(n);
       camera.set_orbit({{0, 0}, 3.0, 0.7, df});
       // The extreme pixel centres sit at ±(1 - 1/n) on the screen, d_f in front of the eye.
-      const double spread = std::acos(glm::dot(camera.primary_ray(0).direction, camera.primary_ray(n - 1).direction));
+      const double spread =
+          std::acos(glm::dot(camera.primary_ray(0).direction, camera.primary_ray(n - 1).direction));
       CHECK(spread == Approx(2 * std::atan((1.0 - 1.0 / n) / df)).epsilon(1e-12));
     }
     // A circle centred on the axis fills the whole bar iff it subtends more than the field of view.
@@ -125,7 +128,8 @@ TEST_CASE("field of view is 2·atan(1/d_f)", "[camera2d][analytic]") {
     const double eye_distance = 10.0 + df, half_fov = std::atan(1.0 / df);
     Scene2D wide, narrow;
     wide.circles = {{{0, 0}, eye_distance * std::sin(half_fov) * 1.001, {1, 2, 3}, ""}};
-    narrow.circles = {{{0, 0}, eye_distance * std::sin(std::atan((1.0 - 1.0 / 200) / df)) * 0.999, {1, 2, 3}, ""}};
+    narrow.circles = {
+        {{0, 0}, eye_distance * std::sin(std::atan((1.0 - 1.0 / 200) / df)) * 0.999, {1, 2, 3}, ""}};
     if (wide.circles[0].radius < 10.0) {  // the screen must stay outside the circle for this argument
       const ColourMap full = cast_primary_rays(camera, wide);
       for (int id : full.ids) CHECK(id == 0);
@@ -137,25 +141,32 @@ TEST_CASE("field of view is 2·atan(1/d_f)", "[camera2d][analytic]") {
   }
 }
 
-TEST_CASE("an object at a known angle lands in the predicted pixel, on the eye's side", "[camera2d][analytic][invariant]") {
+TEST_CASE("an object at a known angle lands in the predicted pixel, on the eye's side",
+          "[camera2d][analytic][invariant]") {
   test::Random random(7);
   for (int trial = 0; trial < 300; ++trial) {
     const int n = random.integer(2, 400);
     Camera2D camera(n);
-    const Orbit2D orbit{{random.uniform(-5, 5), random.uniform(-5, 5)}, random.uniform(0.5, 20), random.uniform(-kPi, kPi),
+    const Orbit2D orbit{{random.uniform(-5, 5), random.uniform(-5, 5)},
+                        random.uniform(0.5, 20),
+                        random.uniform(-kPi, kPi),
                         random.uniform(0.3, 3)};
     camera.set_orbit(orbit);
     // Independent geometry: forward f from the eye to C, left = f turned +90° (counter-clockwise).
-    const glm::dvec2 eye = orbit.target + (orbit.d + orbit.df) * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
+    const glm::dvec2 eye =
+        orbit.target + (orbit.d + orbit.df) * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
     const glm::dvec2 forward = glm::normalize(orbit.target - eye);
     const glm::dvec2 left{-forward.y, forward.x};
     const int k = random.integer(0, n - 1);
-    const double x = -1.0 + (2.0 * k + 1.0) / n;  // canonical +x is the eye's left
+    const double x = -1.0 + (2.0 * k + 1.0) / n;   // canonical +x is the eye's left
     const double angle = std::atan(x / orbit.df);  // from the axis, towards the left
     const double range = orbit.d + orbit.df + random.uniform(1, 10);
     Scene2D scene;
     const double pixel_angle = 2.0 / n * orbit.df / (orbit.df * orbit.df + x * x);  // d(angle)/dk
-    scene.circles = {{eye + range * (std::cos(angle) * forward + std::sin(angle) * left), range * pixel_angle * 0.2, {9, 9, 9}, ""}};
+    scene.circles = {{eye + range * (std::cos(angle) * forward + std::sin(angle) * left),
+                      range * pixel_angle * 0.2,
+                      {9, 9, 9},
+                      ""}};
     const ColourMap map = cast_primary_rays(camera, scene);
     const int expected_column = n - 1 - k;  // column 0 is the eye's left
     for (int c = 0; c < n; ++c) CHECK(map.ids[c] == (c == expected_column ? 0 : -1));
@@ -170,7 +181,8 @@ TEST_CASE("the bar is not mirrored: what is on the eye's left is on the left", "
   scene.circles = {{{2.0, 0.0}, 0.5, {255, 0, 0}, "on +x"}};
   const ColourMap map = cast_primary_rays(camera, scene);
   int first_hit = -1;
-  for (int c = 0; c < map.width; ++c) if (map.ids[c] == 0 && first_hit < 0) first_hit = c;
+  for (int c = 0; c < map.width; ++c)
+    if (map.ids[c] == 0 && first_hit < 0) first_hit = c;
   CHECK(first_hit >= 0);
   CHECK(first_hit < map.width / 2);
 }
@@ -178,7 +190,9 @@ TEST_CASE("the bar is not mirrored: what is on the eye's left is on the left", "
 TEST_CASE("a scene symmetric about the view axis gives a symmetric bar", "[camera2d][invariant]") {
   test::Random random(11);
   for (int trial = 0; trial < 100; ++trial) {
-    const Orbit2D orbit{{random.uniform(-10, 10), random.uniform(-10, 10)}, random.uniform(1, 10), random.uniform(-kPi, kPi),
+    const Orbit2D orbit{{random.uniform(-10, 10), random.uniform(-10, 10)},
+                        random.uniform(1, 10),
+                        random.uniform(-kPi, kPi),
                         random.uniform(0.5, 2)};
     Camera2D camera(random.integer(1, 300));
     camera.set_orbit(orbit);
@@ -196,20 +210,28 @@ TEST_CASE("a scene symmetric about the view axis gives a symmetric bar", "[camer
     for (int c = 0; c < n; ++c) {
       if (map.colours[c] == map.colours[n - 1 - c]) continue;
       // Only a ray that grazes a circle may disagree with its mirror image.
-      const bool grazing = test::ray_grazes_any(camera.primary_ray(camera.pixel_of_column(c)), scene.circles, 1e-9) ||
-                           test::ray_grazes_any(camera.primary_ray(camera.pixel_of_column(n - 1 - c)), scene.circles, 1e-9);
+      const bool grazing =
+          test::ray_grazes_any(camera.primary_ray(camera.pixel_of_column(c)), scene.circles, 1e-9) ||
+          test::ray_grazes_any(camera.primary_ray(camera.pixel_of_column(n - 1 - c)), scene.circles, 1e-9);
       CHECK(grazing);
     }
   }
 }
 
-TEST_CASE("rotating or translating scene and camera together leaves the bar unchanged", "[camera2d][invariant]") {
+TEST_CASE("rotating or translating scene and camera together leaves the bar unchanged",
+          "[camera2d][invariant]") {
   test::Random random(5);
   for (int trial = 0; trial < 100; ++trial) {
     Scene2D scene;
     for (int i = 0; i < 6; ++i)
-      scene.circles.push_back({{random.uniform(-5, 5), random.uniform(-5, 5)}, random.uniform(0.2, 1.5), {std::uint8_t(i), 0, 0}, ""});
-    const Orbit2D orbit{{random.uniform(-2, 2), random.uniform(-2, 2)}, random.uniform(4, 12), random.uniform(-kPi, kPi), random.uniform(0.5, 2)};
+      scene.circles.push_back({{random.uniform(-5, 5), random.uniform(-5, 5)},
+                               random.uniform(0.2, 1.5),
+                               {std::uint8_t(i), 0, 0},
+                               ""});
+    const Orbit2D orbit{{random.uniform(-2, 2), random.uniform(-2, 2)},
+                        random.uniform(4, 12),
+                        random.uniform(-kPi, kPi),
+                        random.uniform(0.5, 2)};
     Camera2D camera(128);
     camera.set_orbit(orbit);
     const ColourMap reference = cast_primary_rays(camera, scene);
@@ -219,7 +241,8 @@ TEST_CASE("rotating or translating scene and camera together leaves the bar unch
     Scene2D moved = scene;
     for (Circle& c : moved.circles) c.centre = test::rotated(c.centre, turn) + shift;
     Camera2D moved_camera(128);
-    moved_camera.set_orbit({test::rotated(orbit.target, turn) + shift, orbit.d, orbit.theta + turn, orbit.df});
+    moved_camera.set_orbit(
+        {test::rotated(orbit.target, turn) + shift, orbit.d, orbit.theta + turn, orbit.df});
     const ColourMap map = cast_primary_rays(moved_camera, moved);
     for (int c = 0; c < map.width; ++c) {
       if (map.ids[c] == reference.ids[c]) continue;
@@ -248,16 +271,19 @@ TEST_CASE("the handout's printed rotation looks away from the target", "[camera2
   CHECK(glm::dot(camera.view_direction(), towards_target) == Approx(1.0));
   camera.set_mistakes({true, false, false});
   CHECK(glm::dot(camera.view_direction(), towards_target) == Approx(-1.0));
-  CHECK(glm::length(camera.screen_centre() - (glm::dvec2(1, 2) + 4.0 * glm::dvec2(std::cos(0.9), std::sin(0.9)))) < 1e-12);
+  CHECK(glm::length(camera.screen_centre() -
+                    (glm::dvec2(1, 2) + 4.0 * glm::dvec2(std::cos(0.9), std::sin(0.9)))) < 1e-12);
 }
 
-TEST_CASE("free placement: atan2 and the handout's arccos agree away from ±1, arccos loses digits near it", "[camera2d]") {
+TEST_CASE("free placement: atan2 and the handout's arccos agree away from ±1, arccos loses digits near it",
+          "[camera2d]") {
   test::Random random(3);
   for (int trial = 0; trial < 200; ++trial) {
     const glm::dvec2 v{random.uniform(-1, 1), random.uniform(-1, 1)};
     const double reference = std::atan2(v.y, v.x);
     CHECK(polar_angle(v, AngleRoute::stable) == Approx(reference).margin(1e-15));
-    if (std::abs(v.y) > 0.1 * glm::length(v)) CHECK(polar_angle(v, AngleRoute::handout_arccos) == Approx(reference).margin(1e-13));
+    if (std::abs(v.y) > 0.1 * glm::length(v))
+      CHECK(polar_angle(v, AngleRoute::handout_arccos) == Approx(reference).margin(1e-13));
   }
   // Near x_v = 1 (the view vector almost along +x) a tiny angle is recovered by atan2, not by arccos.
   const double tiny = 1e-9;

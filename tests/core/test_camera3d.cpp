@@ -1,10 +1,8 @@
 // Camera3D: MISSION.md invariants 1–7 in 3D, the poles, and analytic expectations.
 #include <catch2/catch.hpp>
-
 #include <cmath>
-#include <limits>
-
 #include <glm/gtc/matrix_access.hpp>
+#include <limits>
 
 #include "raycam/ray_caster.h"
 #include "test_support.h"
@@ -36,12 +34,16 @@ void check_linear_part(const glm::dmat4& m, double df) {
 Scene3D random_scene(test::Random& random, int count, double spread) {
   Scene3D scene;
   for (int i = 0; i < count; ++i)
-    scene.spheres.push_back({{random.uniform(-spread, spread), random.uniform(-spread, spread), random.uniform(-spread, spread)},
-                             random.uniform(0.2, 1.2), {std::uint8_t(i * 40), 0, 0}, ""});
+    scene.spheres.push_back(
+        {{random.uniform(-spread, spread), random.uniform(-spread, spread), random.uniform(-spread, spread)},
+         random.uniform(0.2, 1.2),
+         {std::uint8_t(i * 40), 0, 0},
+         ""});
   return scene;
 }
 
-int count_non_grazing_differences(const ColourMap& a, const ColourMap& b, const Camera3D& camera, const Scene3D& scene) {
+int count_non_grazing_differences(const ColourMap& a, const ColourMap& b, const Camera3D& camera,
+                                  const Scene3D& scene) {
   int bad = 0;
   for (int row = 0; row < a.height; ++row)
     for (int column = 0; column < a.width; ++column)
@@ -77,7 +79,8 @@ TEST_CASE("3D invariants 1-3 hold over random placements", "[camera3d][invariant
 
 TEST_CASE("the poles: phi = 0 and π exactly and within a few ulp", "[camera3d][edge]") {
   const double ulp = std::numeric_limits<double>::epsilon();
-  for (double phi : {0.0, 4 * ulp, -4 * ulp, kPi, std::nextafter(kPi, 0.0), std::nextafter(kPi, 4.0), kPi + 8 * ulp}) {
+  for (double phi :
+       {0.0, 4 * ulp, -4 * ulp, kPi, std::nextafter(kPi, 0.0), std::nextafter(kPi, 4.0), kPi + 8 * ulp}) {
     for (double theta : {0.0, kPi, -kPi, 1.0}) {
       for (double df : {1e-9, 1.0, 1e9}) {
         Camera3D camera(3, 3);
@@ -134,8 +137,11 @@ TEST_CASE("an object at a known direction lands in the predicted pixel", "[camer
   test::Random random(23);
   for (int trial = 0; trial < 200; ++trial) {
     const int columns = random.integer(2, 80), rows = random.integer(2, 80);
-    const Orbit3D orbit{{random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3)}, random.uniform(1, 20),
-                        random.uniform(-kPi, kPi), random.uniform(0.1, kPi - 0.1), random.uniform(0.5, 3)};
+    const Orbit3D orbit{{random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3)},
+                        random.uniform(1, 20),
+                        random.uniform(-kPi, kPi),
+                        random.uniform(0.1, kPi - 0.1),
+                        random.uniform(0.5, 3)};
     Camera3D camera(columns, rows);
     camera.set_orbit(orbit);
     const glm::dvec3 forward = -spherical(orbit.theta, orbit.phi);
@@ -159,7 +165,8 @@ TEST_CASE("a scene symmetric about the vertical plane through the view axis give
           "[camera3d][invariant]") {
   test::Random random(31);
   for (int trial = 0; trial < 30; ++trial) {
-    const Orbit3D orbit{{0, 0, 0}, random.uniform(5, 10), random.uniform(-kPi, kPi), random.uniform(0.3, kPi - 0.3), 1.5};
+    const Orbit3D orbit{
+        {0, 0, 0}, random.uniform(5, 10), random.uniform(-kPi, kPi), random.uniform(0.3, kPi - 0.3), 1.5};
     Camera3D camera(48, 40);
     camera.set_orbit(orbit);
     const glm::dvec3 right = camera.image_right();
@@ -187,7 +194,11 @@ TEST_CASE("rotating about z or translating scene and camera together leaves the 
   test::Random random(41);
   for (int trial = 0; trial < 20; ++trial) {
     const Scene3D scene = random_scene(random, 8, 4);
-    const Orbit3D orbit{{0.5, -0.5, 0.2}, random.uniform(6, 12), random.uniform(-kPi, kPi), random.uniform(0.2, kPi - 0.2), 1.5};
+    const Orbit3D orbit{{0.5, -0.5, 0.2},
+                        random.uniform(6, 12),
+                        random.uniform(-kPi, kPi),
+                        random.uniform(0.2, kPi - 0.2),
+                        1.5};
     Camera3D camera(40, 40);
     camera.set_orbit(orbit);
     const ColourMap reference = cast_primary_rays(camera, scene);
@@ -202,7 +213,8 @@ TEST_CASE("rotating about z or translating scene and camera together leaves the 
     for (Sphere& s : moved.spheres) s.centre = move(s.centre);
     Camera3D moved_camera(40, 40);
     moved_camera.set_orbit({move(orbit.target), orbit.d, orbit.theta + turn, orbit.phi, orbit.df});
-    CHECK(count_non_grazing_differences(cast_primary_rays(moved_camera, moved), reference, camera, scene) == 0);
+    CHECK(count_non_grazing_differences(cast_primary_rays(moved_camera, moved), reference, camera, scene) ==
+          0);
   }
 }
 
@@ -259,8 +271,10 @@ TEST_CASE("free placement puts the screen at P looking at C", "[camera3d]") {
   test::Random random(4);
   for (int trial = 0; trial < 200; ++trial) {
     const glm::dvec3 target{random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5)};
-    glm::dvec3 position = target + glm::dvec3(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5));
-    if (trial % 10 == 0) position = target + glm::dvec3(0, 0, trial % 20 == 0 ? 3.0 : -3.0);  // straight above / below
+    glm::dvec3 position =
+        target + glm::dvec3(random.uniform(-5, 5), random.uniform(-5, 5), random.uniform(-5, 5));
+    if (trial % 10 == 0)
+      position = target + glm::dvec3(0, 0, trial % 20 == 0 ? 3.0 : -3.0);  // straight above / below
     Camera3D camera(9, 9);
     camera.set_free(position, target, 1.2, AngleRoute::stable);
     CHECK(glm::length(camera.screen_centre() - position) <= 1e-12 * (glm::length(position) + 1));
@@ -271,7 +285,8 @@ TEST_CASE("free placement puts the screen at P looking at C", "[camera3d]") {
   CHECK_THROWS_WITH(camera.set_free({1, 1, 1}, {1, 1, 1}, 1.0), Catch::Contains("sits on its target"));
 }
 
-TEST_CASE("the printed angle convention looks away; sizes and res are checked", "[camera3d][input][mistake]") {
+TEST_CASE("the printed angle convention looks away; sizes and res are checked",
+          "[camera3d][input][mistake]") {
   Camera3D camera(10, 6);
   camera.set_orbit({{1, 2, 3}, 5.0, 0.4, 1.1, 1.0});
   const glm::dvec3 towards_target = glm::normalize(glm::dvec3(1, 2, 3) - camera.screen_centre());

@@ -1,6 +1,5 @@
 // Ray / ball intersection against analytic roots, and the naive and stable formulas against each other.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "raycam/intersect.h"
@@ -21,7 +20,8 @@ TEST_CASE("a ray through the centre hits at distance - radius", "[intersect][ana
     CHECK(nearest_hit_t<2>(glm::dvec2(h, 10), glm::dvec2(0, -1), glm::dvec2(0.0), 2.0, formula) ==
           Approx(10.0 - std::sqrt(4.0 - h * h)));
     // Just outside: a miss.
-    CHECK(nearest_hit_t<2>(glm::dvec2(2.0000001, 10), glm::dvec2(0, -1), glm::dvec2(0.0), 2.0, formula) == kNoHit<double>);
+    CHECK(nearest_hit_t<2>(glm::dvec2(2.0000001, 10), glm::dvec2(0, -1), glm::dvec2(0.0), 2.0, formula) ==
+          kNoHit<double>);
   }
 }
 
@@ -29,7 +29,8 @@ TEST_CASE("stable and naive formulas agree on ordinary rays", "[intersect]") {
   test::Random random(12);
   for (int trial = 0; trial < 20000; ++trial) {
     const glm::dvec3 origin{random.uniform(-10, 10), random.uniform(-10, 10), random.uniform(-10, 10)};
-    const glm::dvec3 direction = glm::normalize(glm::dvec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)));
+    const glm::dvec3 direction =
+        glm::normalize(glm::dvec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)));
     const glm::dvec3 centre{random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3)};
     const double radius = random.uniform(0.1, 3);
     const double a = nearest_hit_t<3>(origin, direction, centre, radius, IntersectFormula::stable);

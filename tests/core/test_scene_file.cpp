@@ -1,6 +1,5 @@
 // Scene files: round trip, and every kind of bad input refused with the file, the field and the expectation.
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <fstream>
 
@@ -60,38 +59,53 @@ TEST_CASE("scene files round-trip through scene_to_json", "[scene_file]") {
 }
 
 TEST_CASE("bad scene files name the file, the field and what was expected", "[scene_file][input]") {
-  CHECK_THAT(error_of("{ \"dimension\": 3, \"objects\": [ }"), Catch::Contains("scene.json") && Catch::Contains("line 1"));
+  CHECK_THAT(error_of("{ \"dimension\": 3, \"objects\": [ }"),
+             Catch::Contains("scene.json") && Catch::Contains("line 1"));
   CHECK_THAT(error_of("{\n  \"dimension\": 3,\n  \"objects\": [,]\n}"), Catch::Contains("line 3"));
   CHECK_THAT(error_of("[]"), Catch::Contains("JSON object"));
   CHECK_THAT(error_of("{\"objects\": []}"), Catch::Contains("dimension") && Catch::Contains("required"));
-  CHECK_THAT(error_of("{\"dimension\": 4, \"objects\": []}"), Catch::Contains("dimension") && Catch::Contains("[2, 3]"));
+  CHECK_THAT(error_of("{\"dimension\": 4, \"objects\": []}"),
+             Catch::Contains("dimension") && Catch::Contains("[2, 3]"));
   CHECK_THAT(error_of("{\"dimension\": \"3\", \"objects\": []}"), Catch::Contains("dimension"));
   CHECK_THAT(error_of("{\"dimension\": 3}"), Catch::Contains("objects"));
   CHECK_THAT(error_of("{\"dimension\": 3, \"objects\": {}}"), Catch::Contains("objects: expected an array"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": -1}]})"),
-             Catch::Contains("objects[0].radius") && Catch::Contains("]0, 1e12]"));
+  CHECK_THAT(
+      error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": -1}]})"),
+      Catch::Contains("objects[0].radius") && Catch::Contains("]0, 1e12]"));
   CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0], "radius": 1}]})"),
              Catch::Contains("objects[0].center") && Catch::Contains("3 numbers"));
   CHECK_THAT(error_of(R"({"dimension": 2, "objects": [{"type": "sphere", "center": [0,0], "radius": 1}]})"),
              Catch::Contains("objects[0].type") && Catch::Contains("circle"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,"x",0], "radius": 1}]})"),
-             Catch::Contains("objects[0].center[1]"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "color": [0, 300, 0]}]})"),
-             Catch::Contains("objects[0].color[1]") && Catch::Contains("[0, 255]"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "colour": [0, 0, 0]}]})"),
-             Catch::Contains("objects[0].colour") && Catch::Contains("no such field"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,1e999], "radius": 1}]})"),
-             Catch::Contains("scene.json"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"df": 0}})"), Catch::Contains("camera.df"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"res": 1.5}})"), Catch::Contains("camera.res"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"size": [0, 10]}})"), Catch::Contains("camera.size[0]"));
-  CHECK_THAT(error_of(R"({"dimension": 2, "objects": [], "camera": {"phi": 10}})"), Catch::Contains("camera.phi"));
-  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"target": [0, 0]}})"), Catch::Contains("camera.target"));
+  CHECK_THAT(
+      error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,"x",0], "radius": 1}]})"),
+      Catch::Contains("objects[0].center[1]"));
+  CHECK_THAT(
+      error_of(
+          R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "color": [0, 300, 0]}]})"),
+      Catch::Contains("objects[0].color[1]") && Catch::Contains("[0, 255]"));
+  CHECK_THAT(
+      error_of(
+          R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1, "colour": [0, 0, 0]}]})"),
+      Catch::Contains("objects[0].colour") && Catch::Contains("no such field"));
+  CHECK_THAT(
+      error_of(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,1e999], "radius": 1}]})"),
+      Catch::Contains("scene.json"));
+  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"df": 0}})"),
+             Catch::Contains("camera.df"));
+  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"res": 1.5}})"),
+             Catch::Contains("camera.res"));
+  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"size": [0, 10]}})"),
+             Catch::Contains("camera.size[0]"));
+  CHECK_THAT(error_of(R"({"dimension": 2, "objects": [], "camera": {"phi": 10}})"),
+             Catch::Contains("camera.phi"));
+  CHECK_THAT(error_of(R"({"dimension": 3, "objects": [], "camera": {"target": [0, 0]}})"),
+             Catch::Contains("camera.target"));
   CHECK_THAT(error_of(""), Catch::Contains("scene.json"));
 }
 
 TEST_CASE("loading names a missing file; saving replaces atomically", "[scene_file][input]") {
-  CHECK_THROWS_WITH(load_scene_file("/nonexistent/dir/scene.json"), Catch::Contains("/nonexistent/dir/scene.json"));
+  CHECK_THROWS_WITH(load_scene_file("/nonexistent/dir/scene.json"),
+                    Catch::Contains("/nonexistent/dir/scene.json"));
   const std::string path = "raycam_test_scene.json";
   SceneFile file = parse_scene_json(kValid3D, "scene.json");
   save_scene_file(file, path);
@@ -110,7 +124,8 @@ TEST_CASE("view flags: precedence, degrees, and errors naming the flag", "[view_
       if (!parse_view_flag(args, i, flags)) throw std::logic_error("unknown flag " + args[i]);
     return make_view_setup(flags);
   };
-  const ViewSetup setup = parse({"--mode", "3d", "--theta", "90", "--phi", "90", "--d", "4", "--size", "20x10"});
+  const ViewSetup setup =
+      parse({"--mode", "3d", "--theta", "90", "--phi", "90", "--d", "4", "--size", "20x10"});
   CHECK(setup.camera3d.orbit().theta == Approx(3.141592653589793 / 2));
   CHECK(setup.camera3d.columns() == 20);
   CHECK(setup.camera3d.rows() == 10);

@@ -2,10 +2,9 @@
 #pragma once
 
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <random>
 #include <vector>
-
-#include <glm/geometric.hpp>
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
