@@ -44,7 +44,12 @@ struct Placement2D {
   glm::dmat3 world_from_camera{1.0};  // T·R·H
 };
 
-// The only place M_d is composed. Throws std::invalid_argument on d ≤ 0, d_f ≤ 0 or non-finite input.
+// The handout's frames a → d: the product of the first `step` factors in the order they apply.
+// 0: identity (frame a), 1: H, 2: R·H, 3: T·R·H = world_from_camera (frame d). Throws outside [0, 3].
+inline constexpr int kConstructionSteps2D = 3;
+glm::dmat3 construction_step(const Placement2D& placement, int step);
+
+// The only place M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0, d_f ≤ 0 or non-finite input.
 Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign = false);
 
 // Angle of a non-zero vector (radians, in (-π, π]) by the chosen route.

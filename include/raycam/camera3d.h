@@ -40,7 +40,12 @@ struct Placement3D {
   glm::dmat4 world_from_camera{1.0};  // T · R_z(θ) · R_y(φ) · R_z(ψ0) · H
 };
 
-// The only place the 3D M_d is composed. Throws std::invalid_argument on d ≤ 0, d_f ≤ 0, non-finite input.
+// The product of the first `step` factors in the order they apply: 0: identity, 1: H, 2: R_z(ψ0)·H,
+// 3: R_y(φ)·…, 4: R_z(θ)·…, 5: T·… = world_from_camera. Throws outside [0, 5].
+inline constexpr int kConstructionSteps3D = 5;
+glm::dmat4 construction_step(const Placement3D& placement, int step);
+
+// The only place the 3D M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0, d_f ≤ 0, non-finite input.
 Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign = false);
 
 struct SphericalAngles {

@@ -38,8 +38,16 @@ Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
   placement.alpha = view_angle - kHalfPi;
   placement.rotation = rotation_2d(placement.alpha);
   placement.translation = translation_2d(position);
-  placement.world_from_camera = placement.translation * placement.rotation * placement.scale;
+  placement.world_from_camera = construction_step(placement, kConstructionSteps2D);
   return placement;
+}
+
+glm::dmat3 construction_step(const Placement2D& placement, int step) {
+  detail::require_int_range(step, 0, kConstructionSteps2D, "construction step");
+  const glm::dmat3 factors[] = {placement.scale, placement.rotation, placement.translation};
+  glm::dmat3 product(1.0);
+  for (int i = 0; i < step; ++i) product = factors[i] * product;  // each new factor applies after the others
+  return product;
 }
 
 double polar_angle(glm::dvec2 v, AngleRoute route) {

@@ -43,9 +43,17 @@ Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
   placement.polar = rotation_y(placement.phi);       // step 3a
   placement.azimuth = rotation_z(placement.theta);   // step 3b
   placement.translation = translation_3d(position);  // step 4
-  placement.world_from_camera =
-      placement.translation * placement.azimuth * placement.polar * placement.roll * placement.scale;
+  placement.world_from_camera = construction_step(placement, kConstructionSteps3D);
   return placement;
+}
+
+glm::dmat4 construction_step(const Placement3D& placement, int step) {
+  detail::require_int_range(step, 0, kConstructionSteps3D, "construction step");
+  const glm::dmat4 factors[] = {placement.scale, placement.roll, placement.polar, placement.azimuth,
+                                placement.translation};
+  glm::dmat4 product(1.0);
+  for (int i = 0; i < step; ++i) product = factors[i] * product;  // each new factor applies after the others
+  return product;
 }
 
 SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "raycam/ray_caster.h"
+#include "raycam/transform.h"
 #include "test_support.h"
 
 using namespace raycam;
@@ -304,4 +305,16 @@ TEST_CASE("the printed angle convention looks away; sizes and res are checked",
   CHECK_THROWS_WITH(Camera3D(16384, 16384), Catch::Contains("columns x rows"));
   CHECK_THROWS_WITH(camera.set_orbit({{0, 0, 0}, 1.0, 0.0, std::numeric_limits<double>::infinity(), 1.0}),
                     Catch::Contains("phi"));
+}
+
+TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[camera3d]") {
+  Camera3D camera(4, 4);
+  camera.set_orbit({{1, 2, 3}, 5.0, 0.4, 1.1, 2.0});
+  const Placement3D& p = camera.placement();
+  CHECK(construction_step(p, 0) == glm::dmat4(1.0));
+  CHECK(construction_step(p, 1) == p.scale);
+  // After H and the roll, the canonical eye is still on the z axis at height d_f.
+  CHECK(glm::length(transform_point(construction_step(p, 2), glm::dvec3(0, 0, 1)) - glm::dvec3(0, 0, 2.0)) < 1e-12);
+  CHECK(construction_step(p, 5) == camera.world_from_camera());
+  CHECK_THROWS_WITH(construction_step(p, 6), Catch::Contains("construction step"));
 }
