@@ -11,5 +11,6 @@ namespace raycam::cli {
 using Args = std::vector<std::string>;
 
 int run_render(const Args& args);
+int run_shot(const Args& args);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
 
 }  // namespace raycam::cli

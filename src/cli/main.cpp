@@ -19,6 +19,10 @@ struct Command {
 const Command kCommands[] = {
     {"render", "cast the primary rays and write the colour map (PNG) and object ids (text)",
      raycam::cli::run_render},
+#ifdef RAYCAM_HAVE_SHOT
+    {"shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run",
+     raycam::cli::run_shot},
+#endif
 };
 
 void print_usage(std::FILE* out) {

@@ -1,0 +1,9 @@
+// The one place raycam includes OpenGL. Core-profile 3.3 prototypes, called directly: libGL (GLFW app) and
+// libOSMesa (headless) both export every entry point, so no loader is needed. Neither library is linked
+// here: each executable links the one that matches its context (see TOOLCHAIN.md on link order).
+#pragma once
+
+#ifndef GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES
+#endif
+#include <GL/glcorearb.h>

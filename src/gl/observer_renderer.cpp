@@ -1,0 +1,182 @@
+#include "observer_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "embedded_shaders.h"
+
+namespace raycam::gl {
+
+namespace {
+constexpr int kSphereSlices = 24, kSphereStacks = 16;
+
+// Unit sphere as (position) vertices and triangle indices, z the polar axis.
+void make_unit_sphere(std::vector<float>& vertices, std::vector<unsigned>& indices) {
+  const float pi = 3.14159265f;
+  for (int stack = 0; stack <= kSphereStacks; ++stack) {
+    const float phi = pi * float(stack) / kSphereStacks;
+    for (int slice = 0; slice <= kSphereSlices; ++slice) {
+      const float theta = 2.0f * pi * float(slice) / kSphereSlices;
+      vertices.insert(vertices.end(), {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)});
+    }
+  }
+  for (int stack = 0; stack < kSphereStacks; ++stack)
+    for (int slice = 0; slice < kSphereSlices; ++slice) {
+      const unsigned a = stack * (kSphereSlices + 1) + slice, b = a + kSphereSlices + 1;
+      indices.insert(indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+    }
+}
+}  // namespace
+
+ObserverRenderer::ObserverRenderer()
+    : sphere_program_(shaders::k_sphere_vert, shaders::k_sphere_frag, "sphere"),
+      line_program_(shaders::k_lines_vert, shaders::k_lines_frag, "lines"),
+      quad_program_(shaders::k_image_quad_vert, shaders::k_image_quad_frag, "image_quad") {
+  std::vector<float> vertices;
+  std::vector<unsigned> indices;
+  make_unit_sphere(vertices, indices);
+  sphere_index_count_ = GLsizei(indices.size());
+  glGenVertexArrays(1, &sphere_vao_);
+  glBindVertexArray(sphere_vao_);
+  glGenBuffers(1, &sphere_mesh_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
+  glGenBuffers(1, &sphere_index_vbo_);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  // Per-instance: centre + radius (vec4), colour (vec3).
+  glGenBuffers(1, &sphere_instance_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, sphere_instance_vbo_);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+  glVertexAttribDivisor(1, 1);
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), reinterpret_cast<void*>(4 * sizeof(float)));
+  glVertexAttribDivisor(2, 1);
+
+  glGenVertexArrays(1, &line_vao_);
+  glBindVertexArray(line_vao_);
+  glGenBuffers(1, &line_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, line_vbo_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+
+  glGenVertexArrays(1, &quad_vao_);
+  glBindVertexArray(quad_vao_);
+  glGenBuffers(1, &quad_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glBindVertexArray(0);
+}
+
+ObserverRenderer::~ObserverRenderer() {
+  const GLuint buffers[] = {sphere_mesh_vbo_, sphere_index_vbo_, sphere_instance_vbo_, line_vbo_, quad_vbo_};
+  glDeleteBuffers(5, buffers);
+  const GLuint arrays[] = {sphere_vao_, line_vao_, quad_vao_};
+  glDeleteVertexArrays(3, arrays);
+  if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
+  if (colour_texture_) glDeleteTextures(1, &colour_texture_);
+  if (depth_buffer_) glDeleteRenderbuffers(1, &depth_buffer_);
+}
+
+void ObserverRenderer::set_spheres(const std::vector<Sphere>& spheres) {
+  const std::size_t count = std::min(spheres.size(), kMaxSpheresDrawn);
+  std::vector<float> instances;
+  instances.reserve(count * 7);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Sphere& s = spheres[i];
+    instances.insert(instances.end(), {float(s.centre.x), float(s.centre.y), float(s.centre.z), float(s.radius),
+                                       s.colour.r / 255.0f, s.colour.g / 255.0f, s.colour.b / 255.0f});
+  }
+  glBindBuffer(GL_ARRAY_BUFFER, sphere_instance_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(float)), instances.data(), GL_STATIC_DRAW);
+  sphere_count_ = GLsizei(count);
+}
+
+void ObserverRenderer::resize_target(int width, int height) {
+  if (width == width_ && height == height_ && framebuffer_) return;
+  if (!framebuffer_) {
+    glGenFramebuffers(1, &framebuffer_);
+    glGenTextures(1, &colour_texture_);
+    glGenRenderbuffers(1, &depth_buffer_);
+  }
+  glBindTexture(GL_TEXTURE_2D, colour_texture_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindRenderbuffer(GL_RENDERBUFFER, depth_buffer_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour_texture_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_buffer_);
+  width_ = width;
+  height_ = height;
+}
+
+GLuint ObserverRenderer::render(const ObserverFrame& frame, int width, int height) {
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+  resize_target(width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glViewport(0, 0, width, height);
+  glClearColor(frame.background.r / 255.0f, frame.background.g / 255.0f, frame.background.b / 255.0f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+
+  sphere_program_.use();
+  sphere_program_.set("view_projection", frame.view_projection);
+  sphere_program_.set("light_direction", glm::normalize(glm::vec3(0.4f, 0.3f, 0.85f)));
+  glBindVertexArray(sphere_vao_);
+  glDrawElementsInstanced(GL_TRIANGLES, sphere_index_count_, GL_UNSIGNED_INT, nullptr, sphere_count_);
+
+  if (frame.image_texture) {
+    // Image order corners → uv with (0,0) at the top-left texel row 0.
+    const auto& c = frame.screen_corners;
+    const float quad[] = {c[0].x, c[0].y, c[0].z, 0, 0, c[1].x, c[1].y, c[1].z, 1, 0, c[2].x, c[2].y, c[2].z, 1, 1,
+                          c[0].x, c[0].y, c[0].z, 0, 0, c[2].x, c[2].y, c[2].z, 1, 1, c[3].x, c[3].y, c[3].z, 0, 1};
+    quad_program_.use();
+    quad_program_.set("view_projection", frame.view_projection);
+    quad_program_.set("colour_map", 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, frame.image_texture);
+    glBindVertexArray(quad_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+  }
+
+  if (!frame.lines.empty()) {
+    std::vector<float> vertices;
+    vertices.reserve(frame.lines.size() * 14);
+    for (const ObserverLine& line : frame.lines) {
+      for (const glm::vec3& p : {line.from, line.to})
+        vertices.insert(vertices.end(), {p.x, p.y, p.z, line.colour.r, line.colour.g, line.colour.b, line.colour.a});
+    }
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    line_program_.use();
+    line_program_.set("view_projection", frame.view_projection);
+    glBindVertexArray(line_vao_);
+    glBindBuffer(GL_ARRAY_BUFFER, line_vbo_);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STREAM_DRAW);
+    glDrawArrays(GL_LINES, 0, GLsizei(frame.lines.size() * 2));
+  }
+
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return colour_texture_;
+}
+
+}  // namespace raycam::gl

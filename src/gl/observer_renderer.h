@@ -1,0 +1,62 @@
+// The observer's 3D view: the scene's spheres (instanced, lightly shaded), coloured lines (the camera's
+// frustum, screen, rays, axes) and the camera's colour map on its screen square, rasterised into an
+// offscreen texture that the UI shows as an image. World: z up, as everywhere in raycam.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl.h"
+#include "raycam/scene.h"
+#include "shader_program.h"
+
+namespace raycam::gl {
+
+struct ObserverLine {
+  glm::vec3 from{0.0f}, to{0.0f};
+  glm::vec4 colour{1.0f};
+};
+
+struct ObserverFrame {
+  glm::mat4 view_projection{1.0f};
+  Rgb8 background{};
+  std::vector<ObserverLine> lines;
+  // The camera's screen, corners in image order (top-left, top-right, bottom-right, bottom-left), and the
+  // texture to show on it (0: none).
+  std::array<glm::vec3, 4> screen_corners{};
+  GLuint image_texture = 0;
+};
+
+class ObserverRenderer {
+ public:
+  // Spheres beyond this count are not drawn in the observer view (the ray caster still sees them all).
+  static constexpr std::size_t kMaxSpheresDrawn = 100000;
+
+  ObserverRenderer();
+  ~ObserverRenderer();
+  ObserverRenderer(const ObserverRenderer&) = delete;
+  ObserverRenderer& operator=(const ObserverRenderer&) = delete;
+
+  // Uploads the spheres' instance data; call only when the scene changed.
+  void set_spheres(const std::vector<Sphere>& spheres);
+  // Draws into a width × height offscreen target and returns its colour texture (rows bottom-up, as GL).
+  GLuint render(const ObserverFrame& frame, int width, int height);
+
+ private:
+  void resize_target(int width, int height);
+
+  ShaderProgram sphere_program_, line_program_, quad_program_;
+  GLuint sphere_vao_ = 0, sphere_mesh_vbo_ = 0, sphere_index_vbo_ = 0, sphere_instance_vbo_ = 0;
+  GLsizei sphere_index_count_ = 0, sphere_count_ = 0;
+  GLuint line_vao_ = 0, line_vbo_ = 0;
+  GLuint quad_vao_ = 0, quad_vbo_ = 0;
+  GLuint framebuffer_ = 0, colour_texture_ = 0, depth_buffer_ = 0;
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace raycam::gl

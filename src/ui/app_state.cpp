@@ -1,0 +1,113 @@
+#include "app_state.h"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include "raycam/view_setup.h"
+
+namespace raycam::ui {
+
+void place_cameras(AppState& state) {
+  if (state.dimension == 2) {
+    Camera2D camera(state.max_pixels_2d);
+    camera.set_res(state.res);
+    camera.set_mistakes(state.mistakes);
+    if (state.arccos_route) {
+      const Orbit2D& o = state.orbit2d;
+      camera.set_free(o.target + o.d * glm::dvec2(std::cos(o.theta), std::sin(o.theta)), o.target, o.df,
+                      AngleRoute::handout_arccos);
+    } else {
+      camera.set_orbit(state.orbit2d);
+    }
+    state.camera2d = camera;
+  } else {
+    Camera3D camera(state.max_columns_3d, state.max_rows_3d);
+    camera.set_res(state.res);
+    camera.set_mistakes(state.mistakes);
+    if (state.arccos_route) {
+      const Orbit3D& o = state.orbit3d;
+      const glm::dvec3 direction{std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi)};
+      camera.set_free(o.target + o.d * direction, o.target, o.df, AngleRoute::handout_arccos);
+    } else {
+      camera.set_orbit(state.orbit3d);
+    }
+    state.camera3d = camera;
+  }
+}
+
+bool recast_if_needed(AppState& state) {
+  if (!state.cameras_dirty) return false;
+  try {
+    place_cameras(state);
+  } catch (const std::exception& error) {  // a parameter out of range: keep the last image, say why
+    state.message = error.what();
+    state.message_is_error = true;
+    state.cameras_dirty = false;
+    return false;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  state.map = state.dimension == 2 ? cast_primary_rays(state.camera2d, state.file.scene2d, {}, &state.stats)
+                                   : cast_primary_rays(state.camera3d, state.file.scene3d, {}, &state.stats);
+  state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  state.cameras_dirty = false;
+  ++state.map_version;
+  ++state.cast_count;
+  return true;
+}
+
+bool open_scene(AppState& state, const std::string& path) {
+  try {
+    ViewFlags flags;
+    flags.scene_path = path;
+    const ViewSetup setup = make_view_setup(flags);
+    if (setup.dimension == 2) validate(setup.file.scene2d);
+    else validate(setup.file.scene3d);
+    state.file = setup.file;
+    state.scene_path = path;
+    state.dimension = setup.dimension;
+    state.orbit2d = setup.camera2d.orbit();
+    state.orbit3d = setup.camera3d.orbit();
+    state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
+    state.max_pixels_2d = setup.camera2d.max_pixels();
+    state.max_columns_3d = setup.camera3d.max_columns();
+    state.max_rows_3d = setup.camera3d.max_rows();
+    state.pinned_pixel.reset();
+    state.construction_step = -1;
+    ++state.scene_version;
+    state.cameras_dirty = true;
+    state.message = "opened " + path;
+    state.message_is_error = false;
+    return true;
+  } catch (const std::exception& error) {
+    state.message = error.what();  // the scene on screen stays as it was
+    state.message_is_error = true;
+    return false;
+  }
+}
+
+bool save_preset(AppState& state, const std::string& path) {
+  try {
+    place_cameras(state);
+    SceneFile file = state.file;
+    file.camera = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
+    if (state.arccos_route) {  // save what the student set, not what the mistake produced
+      file.camera.theta_deg = (state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta) * 180.0 / 3.141592653589793;
+      if (state.dimension == 3) file.camera.phi_deg = state.orbit3d.phi * 180.0 / 3.141592653589793;
+    }
+    save_scene_file(file, path);
+    state.message = "saved the camera preset to " + path;
+    state.message_is_error = false;
+    return true;
+  } catch (const std::exception& error) {
+    state.message = error.what();
+    state.message_is_error = true;
+    return false;
+  }
+}
+
+int construction_steps(const AppState& state) {
+  return state.dimension == 2 ? kConstructionSteps2D : kConstructionSteps3D;
+}
+
+}  // namespace raycam::ui

@@ -1,0 +1,91 @@
+// Everything the window shows, as plain data. Panels are functions of this state; the orbit parameters
+// here are the source of truth and the cameras are derived from them (place_cameras), so that a mistake
+// toggle or the arccos route can be switched on and off without losing the student's settings.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
+#include "raycam/colour_map.h"
+#include "raycam/ray_caster.h"
+#include "raycam/scene_file.h"
+
+namespace raycam::ui {
+
+struct PixelIndex {
+  int row = 0;
+  int column = 0;
+};
+
+// The observer's own orbit around the camera's target in the 3D observer view (degrees; zoom multiplies a
+// distance fitted to the camera).
+struct ObserverOrbit {
+  float yaw_deg = -60.0f;
+  float pitch_deg = 30.0f;
+  float zoom = 1.0f;
+};
+
+struct AppState {
+  // ---- scene and camera parameters (the sliders' model) ----
+  int dimension = 3;
+  std::string scene_path;  // empty: built-in demo
+  SceneFile file;
+  Orbit2D orbit2d;
+  Orbit3D orbit3d;
+  double res = 1.0;
+  int max_pixels_2d = 256;
+  int max_columns_3d = 256, max_rows_3d = 256;
+  Camera2D camera2d{256};
+  Camera3D camera3d{256, 256};
+
+  // ---- the lesson ----
+  ClassicMistakes mistakes;
+  bool arccos_route = false;  // free placement through the handout's arccos (the mistake near a pole)
+  int construction_step = -1;  // -1: the final camera; 0..steps: the handout's frames a → d
+  std::optional<PixelIndex> pinned_pixel;   // clicked, or --inspect
+  std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
+
+  // ---- display ----
+  float font_scale = 1.0f;
+  bool high_contrast = false;
+  bool show_help = false;
+  ObserverOrbit observer;
+
+  // ---- results: recomputed only when something they depend on changed ----
+  bool cameras_dirty = true;
+  std::uint64_t scene_version = 1;  // bumped when the objects change
+  std::uint64_t map_version = 0;    // bumped at every cast
+  ColourMap map;
+  CastStats stats;
+  double cast_ms = 0.0;
+  long long frame_count = 0, cast_count = 0;
+  double frame_ms = 0.0;
+
+  // ---- requests to the executable (only it knows about windows and files of pixels) ----
+  bool request_screenshot = false;
+  bool request_fullscreen = false;
+  bool request_quit = false;
+
+  // ---- messages and text inputs ----
+  std::string message;
+  bool message_is_error = false;
+  char path_input[512] = {};
+  char export_path[512] = "raycam-colour-map.png";
+};
+
+// Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
+void place_cameras(AppState& state);
+// Re-casts the primary rays if anything changed since the last cast. Returns true if it cast.
+bool recast_if_needed(AppState& state);
+// Loads a scene file; on error keeps the current scene and sets an error message. Returns success.
+bool open_scene(AppState& state, const std::string& path);
+// Saves the current camera as the scene file's preset (written atomically). Returns success.
+bool save_preset(AppState& state, const std::string& path);
+
+// Number of construction steps of the current mode (3 in 2D, 5 in 3D).
+int construction_steps(const AppState& state);
+
+}  // namespace raycam::ui

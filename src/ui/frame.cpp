@@ -1,0 +1,261 @@
+// Section index: theme · layout and build · image window · overhead window · observer window.
+#include "frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <imgui.h>
+
+#include "inspection.h"
+#include "observer_renderer.h"
+#include "panels.h"
+#include "raycam/transform.h"
+
+namespace raycam::ui {
+
+namespace {
+constexpr double kPi = 3.141592653589793;
+constexpr ImGuiWindowFlags kFixedWindow =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
+  ImGui::SetNextWindowPos({r.x, r.y});
+  ImGui::SetNextWindowSize({r.w, r.h});
+  return ImGui::Begin(title, nullptr, kFixedWindow | extra);
+}
+
+ImVec4 rgba(Rgb8 c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f}; }
+
+// Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
+// a double-click on an object makes it the target.
+void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const OverheadMapping* mapping) {
+  ImGuiIO& io = ImGui::GetIO();
+  const bool is_2d = state.dimension == 2;
+  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+    if (drag_turns_around_target && mapping) {  // the camera follows the mouse around the target
+      const glm::dvec2 target = is_2d ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
+      const glm::dvec2 towards = mapping->to_world(io.MousePos) - target;
+      if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
+    } else {
+      theta -= io.MouseDelta.x * 0.01;
+      if (!is_2d) state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, kPi);
+    }
+    state.cameras_dirty = true;
+  }
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f && !io.KeyCtrl) {
+    double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
+    double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+    if (io.KeyShift) df = std::clamp(df * std::pow(1.1, io.MouseWheel), 0.05, 20.0);
+    else d = std::clamp(d * std::pow(0.9, io.MouseWheel), 0.1, 200.0);
+    state.cameras_dirty = true;
+  }
+  if (mapping && ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+    const int id = object_under(*mapping, state, io.MousePos);
+    if (id >= 0) {
+      if (is_2d) state.orbit2d.target = state.file.scene2d.circles[std::size_t(id)].centre;
+      else state.orbit3d.target = state.file.scene3d.spheres[std::size_t(id)].centre;
+      state.cameras_dirty = true;
+    }
+  }
+}
+}  // namespace
+
+// ---- theme ---------------------------------------------------------------------------------------------
+void apply_theme(const AppState& state) {
+  static bool applied_contrast = false;
+  static bool first = true;
+  if (first || applied_contrast != state.high_contrast) {
+    ImGuiStyle& style = ImGui::GetStyle();
+    if (state.high_contrast) {
+      ImGui::StyleColorsLight();
+      style.Colors[ImGuiCol_Text] = {0, 0, 0, 1};
+      style.Colors[ImGuiCol_WindowBg] = {1, 1, 1, 1};
+      style.FrameBorderSize = 1.0f;
+    } else {
+      ImGui::StyleColorsDark();
+      style.FrameBorderSize = 0.0f;
+    }
+    applied_contrast = state.high_contrast;
+    first = false;
+  }
+  ImGui::GetIO().FontGlobalScale = state.font_scale;
+}
+
+// ---- layout and build ----------------------------------------------------------------------------------
+FrameRenderer::FrameRenderer() : observer_(std::make_unique<gl::ObserverRenderer>()) {}
+FrameRenderer::~FrameRenderer() = default;
+
+FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
+  apply_theme(state);
+  handle_shortcuts(state);
+  recast_if_needed(state);
+  if (state.map_version != uploaded_map_version_) {
+    texture_.upload(state.map);
+    uploaded_map_version_ = state.map_version;
+  }
+  if (state.dimension == 3 && state.scene_version != uploaded_scene_version_) {
+    observer_->set_spheres(state.file.scene3d.spheres);
+    uploaded_scene_version_ = state.scene_version;
+  }
+  state.hovered_pixel.reset();
+
+  const float scale = state.font_scale;
+  const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
+  FrameLayout layout;
+  layout.panel = {0, 0, std::clamp(390.0f * scale, 300.0f, width * 0.45f), float(height)};
+  const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
+  Rect image_area, overhead_area, observer_area;
+  if (state.dimension == 2) {
+    const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
+    image_area = {right_x, 0, right_w, bar_h};
+    overhead_area = {right_x, bar_h, right_w, body_h - bar_h};
+  } else {
+    const float top_h = body_h * 0.5f;
+    const float image_w = std::min(right_w * 0.5f, top_h - ImGui::GetFrameHeightWithSpacing() + 16.0f);
+    image_area = {right_x, 0, image_w, top_h};
+    overhead_area = {right_x + image_w, 0, right_w - image_w, top_h};
+    observer_area = {right_x, top_h, right_w, body_h - top_h};
+  }
+  image_window(state, image_area, layout);  // first: it decides which pixel is hovered
+  overhead_window(state, overhead_area, layout);
+  if (state.dimension == 3) observer_window(state, observer_area, layout);
+
+  if (begin_fixed_window("raycam", layout.panel)) {
+    camera_section(state);
+    construction_section(state);
+    inspector_section(state);
+    mistakes_section(state);
+    files_section(state);
+    lecture_section(state);
+  }
+  ImGui::End();
+  if (begin_fixed_window("##status", {right_x, body_h, right_w, status_height}, ImGuiWindowFlags_NoTitleBar)) status_line(state);
+  ImGui::End();
+  help_overlay(state);
+  ++state.frame_count;
+  return layout;
+}
+
+// ---- image window --------------------------------------------------------------------------------------
+void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
+  const bool is_2d = state.dimension == 2;
+  const std::string title = is_2d ? "Colour bar: n = " + std::to_string(state.map.width) + " pixels, column 0 = the eye's left###image"
+                                  : "Image: " + std::to_string(state.map.width) + " x " + std::to_string(state.map.height) + "###image";
+  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+    const ImVec2 avail = ImGui::GetContentRegionAvail();
+    // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
+    const ImVec2 size = is_2d ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
+                              : ImVec2(std::floor(std::min(avail.x, avail.y)), std::floor(std::min(avail.x, avail.y)));
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_.id())), size, {0, 0}, {1, 1});
+    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+    layout.image = {low.x, low.y, high.x - low.x, high.y - low.y};
+    if (ImGui::IsItemHovered() && state.map.width > 0) {
+      const ImVec2 mouse = ImGui::GetIO().MousePos;
+      PixelIndex pixel;
+      pixel.column = std::clamp(int((mouse.x - low.x) / (high.x - low.x) * state.map.width), 0, state.map.width - 1);
+      pixel.row = std::clamp(int((mouse.y - low.y) / (high.y - low.y) * state.map.height), 0, state.map.height - 1);
+      state.hovered_pixel = pixel;
+      if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
+    }
+    if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
+      const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
+      const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
+      ImGui::GetWindowDrawList()->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
+    }
+  }
+  ImGui::End();
+}
+
+// ---- overhead window -----------------------------------------------------------------------------------
+void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
+  const char* title = state.dimension == 2 ? "Overhead view: the plane, the camera and its rays###overhead"
+                                           : "Overhead view: looking down the z axis###overhead";
+  if (begin_fixed_window(title, area, ImGuiWindowFlags_NoScrollbar)) {
+    const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
+    if (size.x > 4 && size.y > 4) {
+      ImGui::InvisibleButton("##overhead_input", size);
+      layout.overhead = {top_left.x, top_left.y, size.x, size.y};
+      layout.overhead_mapping = fit_overhead(state, top_left, size);
+      orbit_with_mouse(state, true, &layout.overhead_mapping);
+      ImDrawList* draw = ImGui::GetWindowDrawList();
+      draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
+      std::optional<InspectedRay> inspected;
+      if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected);
+      draw->PopClipRect();
+    }
+  }
+  ImGui::End();
+}
+
+// ---- observer window -----------------------------------------------------------------------------------
+void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
+  if (begin_fixed_window("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+                         "turn the observer, ctrl+wheel: zoom)###observer",
+                         area, ImGuiWindowFlags_NoScrollbar)) {
+    const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
+    if (size.x > 4 && size.y > 4) {
+      ImGui::InvisibleButton("##observer_input", size);
+      layout.observer = {top_left.x, top_left.y, size.x, size.y};
+      orbit_with_mouse(state, false, nullptr);
+      ImGuiIO& io = ImGui::GetIO();
+      if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+        state.observer.yaw_deg -= io.MouseDelta.x * 0.4f;
+        state.observer.pitch_deg = std::clamp(state.observer.pitch_deg + io.MouseDelta.y * 0.4f, -89.0f, 89.0f);
+      }
+      if (ImGui::IsItemHovered() && io.KeyCtrl && io.MouseWheel != 0.0f)
+        state.observer.zoom = std::clamp(state.observer.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
+
+      const Camera3D& camera = state.camera3d;
+      const glm::dvec3 target = state.orbit3d.target;
+      const double reach = state.orbit3d.d + state.orbit3d.df;
+      const double distance = 2.6 * reach * state.observer.zoom;
+      const double yaw = state.observer.yaw_deg * kPi / 180, pitch = state.observer.pitch_deg * kPi / 180;
+      const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+      const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));
+      const glm::mat4 projection = glm::perspective(glm::radians(45.0f), size.x / size.y, float(distance * 0.01), float(distance * 50));
+
+      gl::ObserverFrame frame;
+      frame.view_projection = projection * view;
+      frame.background = state.file.scene3d.background;
+      const glm::dmat4& m = camera.world_from_camera();
+      const glm::dvec3 eye = camera.eye();
+      const glm::dvec3 canonical[4] = {{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
+      const glm::vec4 cyan{0, 0.9f, 1, 1}, faint_cyan{0, 0.9f, 1, 0.45f};
+      for (int i = 0; i < 4; ++i) {
+        const glm::dvec3 corner = transform_point(m, canonical[i]), next = transform_point(m, canonical[(i + 1) % 4]);
+        frame.screen_corners[std::size_t(i)] = glm::vec3(corner);
+        frame.lines.push_back({glm::vec3(corner), glm::vec3(next), cyan});
+        frame.lines.push_back({glm::vec3(eye), glm::vec3(eye + glm::normalize(corner - eye) * (1.4 * reach)), faint_cyan});
+      }
+      frame.image_texture = texture_.id();
+      const float axis = float(reach * 0.3);
+      frame.lines.push_back({{0, 0, 0}, {axis, 0, 0}, {1, 0.3f, 0.3f, 1}});
+      frame.lines.push_back({{0, 0, 0}, {0, axis, 0}, {0.3f, 1, 0.3f, 1}});
+      frame.lines.push_back({{0, 0, 0}, {0, 0, axis}, {0.4f, 0.5f, 1, 1}});
+      const glm::vec3 t(target);
+      const float cross = float(reach * 0.05);
+      const glm::vec4 yellow{1, 0.9f, 0, 1};
+      for (int a = 0; a < 3; ++a) {
+        glm::vec3 offset(0.0f);
+        offset[a] = cross;
+        frame.lines.push_back({t - offset, t + offset, yellow});
+      }
+      if (const auto pixel = active_pixel(state)) {
+        const InspectedRay ray = inspect_pixel(state, *pixel);
+        const double length = ray.hit.id >= 0 ? ray.hit.t : 2.0 * reach;
+        frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
+        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.origin + length * ray.direction), {1, 0, 1, 1}});
+      }
+      const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
+      // GL textures are bottom-up: flip v.
+      ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,
+                                           {top_left.x + size.x, top_left.y + size.y}, {0, 1}, {1, 0});
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace raycam::ui

@@ -1,0 +1,210 @@
+// Section index: fitting · primary-ray fan · drawing (2D, 3D) · picking.
+#include "overhead_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "raycam/transform.h"
+
+namespace raycam::ui {
+
+namespace {
+constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
+constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
+
+ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
+glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }
+
+double camera_reach(const AppState& state) {
+  return state.dimension == 2 ? state.orbit2d.d + state.orbit2d.df : state.orbit3d.d + state.orbit3d.df;
+}
+
+// The camera's eye and screen corners in the world (2D: the two screen ends), seen from above.
+std::vector<glm::dvec2> camera_outline(const AppState& state, glm::dvec2* eye) {
+  if (state.dimension == 2) {
+    const glm::dmat3& m = state.camera2d.world_from_camera();
+    *eye = transform_point(m, glm::dvec2(0.0, 1.0));
+    return {transform_point(m, glm::dvec2(-1.0, 0.0)), transform_point(m, glm::dvec2(1.0, 0.0))};
+  }
+  const glm::dmat4& m = state.camera3d.world_from_camera();
+  *eye = xy(transform_point(m, glm::dvec3(0.0, 0.0, 1.0)));
+  return {xy(transform_point(m, glm::dvec3(-1, 1, 0))), xy(transform_point(m, glm::dvec3(1, 1, 0))),
+          xy(transform_point(m, glm::dvec3(1, -1, 0))), xy(transform_point(m, glm::dvec3(-1, -1, 0)))};
+}
+}  // namespace
+
+// ---- fitting -------------------------------------------------------------------------------------------
+OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size) {
+  glm::dvec2 eye;
+  std::vector<glm::dvec2> points = camera_outline(state, &eye);
+  points.push_back(eye);
+  const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
+  points.push_back(target);
+  // Objects near the action count; a huge "ground" sphere or a far outlier would shrink everything else.
+  const double reach = 2.5 * camera_reach(state);
+  auto include = [&](glm::dvec2 centre, double radius) {
+    if (glm::length(centre - target) + radius > reach || radius > reach) return;
+    points.push_back(centre - glm::dvec2(radius));
+    points.push_back(centre + glm::dvec2(radius));
+  };
+  if (state.dimension == 2)
+    for (const Circle& c : state.file.scene2d.circles) include(c.centre, c.radius);
+  else
+    for (std::size_t i = 0; i < std::min(state.file.scene3d.spheres.size(), kMaxDiscs); ++i)
+      include(xy(state.file.scene3d.spheres[i].centre), state.file.scene3d.spheres[i].radius);
+  glm::dvec2 low = points[0], high = points[0];
+  for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
+  const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));
+  const double margin = 0.08;
+  OverheadMapping mapping;
+  mapping.scale = float(std::min(size.x / extent.x, size.y / extent.y) * (1.0 - 2 * margin));
+  const glm::dvec2 middle = 0.5 * (low + high);
+  mapping.origin = {top_left.x + size.x * 0.5f - mapping.scale * float(middle.x),
+                    top_left.y + size.y * 0.5f + mapping.scale * float(middle.y)};
+  return mapping;
+}
+
+// ---- drawing -------------------------------------------------------------------------------------------
+namespace {
+void draw_cross(ImDrawList* draw, ImVec2 p, float size, ImU32 colour) {
+  draw->AddLine({p.x - size, p.y}, {p.x + size, p.y}, colour, 2.0f);
+  draw->AddLine({p.x, p.y - size}, {p.x, p.y + size}, colour, 2.0f);
+}
+
+void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVec2 clip_max) {
+  const ImU32 axis = IM_COL32(255, 255, 255, 40);
+  draw->AddLine({clip_min.x, m.origin.y}, {clip_max.x, m.origin.y}, axis);
+  draw->AddLine({m.origin.x, clip_min.y}, {m.origin.x, clip_max.y}, axis);
+  draw->AddText({clip_max.x - 14, m.origin.y - 16}, IM_COL32(255, 255, 255, 90), "x");
+  draw->AddText({m.origin.x + 4, clip_min.y + 2}, IM_COL32(255, 255, 255, 90), "y");
+}
+
+// The camera (screen, eye, field-of-view edges) through a matrix: the final M_d or a construction step.
+template <class Matrix>
+void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world_from_camera, ImU32 colour,
+                 double fov_length, bool draw_fov) {
+  std::vector<glm::dvec2> corners;
+  glm::dvec2 eye;
+  if constexpr (std::is_same_v<Matrix, glm::dmat3>) {
+    eye = transform_point(world_from_camera, glm::dvec2(0.0, 1.0));
+    corners = {transform_point(world_from_camera, glm::dvec2(-1.0, 0.0)), transform_point(world_from_camera, glm::dvec2(1.0, 0.0))};
+    draw->AddLine(m.to_screen(corners[0]), m.to_screen(corners[1]), colour, 4.0f);
+  } else {
+    eye = xy(transform_point(world_from_camera, glm::dvec3(0.0, 0.0, 1.0)));
+    for (const glm::dvec3& c : {glm::dvec3(-1, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 0)})
+      corners.push_back(xy(transform_point(world_from_camera, c)));
+    for (int i = 0; i < 4; ++i) draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % 4]), colour, 3.0f);
+  }
+  if (draw_fov)
+    for (const glm::dvec2& corner : corners) {
+      const glm::dvec2 along = corner - eye;
+      const double length = glm::length(along);
+      if (length > 0) draw->AddLine(m.to_screen(eye), m.to_screen(eye + along * (fov_length / length)), (colour & 0x00FFFFFF) | 0x70000000, 1.0f);
+    }
+  draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
+}
+
+template <class Objects>
+void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects, const std::vector<std::size_t>& order) {
+  for (std::size_t i : order) {
+    const auto& object = objects[i];
+    const float radius = std::max(1.0f, float(object.radius) * m.scale);
+    draw->AddCircleFilled(m.to_screen(xy(glm::dvec3(object.centre, 0.0))), radius, colour_of(object.colour),
+                          std::clamp(int(radius), 12, 64));
+  }
+}
+
+// Primary rays of the 2D bar (or of the middle image row in 3D), each drawn to its hit in the colour it
+// returns; misses faint, to the edge of the view.
+void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state, double far_length) {
+  const int n = state.map.width;
+  const int stride = std::max(1, (n + kMaxFanRays - 1) / kMaxFanRays);
+  const int row = state.map.height / 2;
+  for (int column = stride / 2; column < n; column += stride) {
+    glm::dvec2 from, direction;
+    Hit hit;
+    if (state.dimension == 2) {
+      const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
+      from = ray.origin;
+      direction = ray.direction;
+      hit = nearest_hit(state.file.scene2d.circles, ray, IntersectFormula::stable);
+    } else {
+      const Ray3D ray = state.camera3d.primary_ray(row, column);
+      from = xy(ray.origin);
+      direction = xy(ray.direction);
+      hit = nearest_hit(state.file.scene3d.spheres, ray, IntersectFormula::stable);
+    }
+    const bool missed = hit.id < 0;
+    const glm::dvec2 to = from + direction * (missed ? far_length : hit.t);
+    const Rgb8 colour = missed ? Rgb8{200, 200, 200} : state.map.colour_at(row, column);
+    draw->AddLine(m.to_screen(from), m.to_screen(to), colour_of(colour, missed ? 50 : 200), 1.0f);
+  }
+}
+}  // namespace
+
+void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
+                   const std::optional<InspectedRay>& inspected) {
+  const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
+  draw->AddRectFilled(clip_min, clip_max, colour_of(state.dimension == 2 ? state.file.scene2d.background : state.file.scene3d.background));
+  draw_axes(draw, m, clip_min, clip_max);
+  const double far_length = 3.0 * camera_reach(state);
+
+  if (state.dimension == 2) {
+    std::vector<std::size_t> order(state.file.scene2d.circles.size());
+    std::iota(order.begin(), order.end(), 0);
+    draw_discs(draw, m, state.file.scene2d.circles, order);
+  } else {
+    // From above, the highest sphere top hides the others: draw from the lowest top up.
+    const auto& spheres = state.file.scene3d.spheres;
+    std::vector<std::size_t> order(std::min(spheres.size(), kMaxDiscs));
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
+    });
+    std::vector<Circle> discs;  // the spheres' silhouettes from above
+    for (const Sphere& s : spheres) discs.push_back({xy(s.centre), s.radius, s.colour, {}});
+    draw_discs(draw, m, discs, order);
+  }
+
+  const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
+  if (final_camera) draw_fan(draw, m, state, far_length);
+  if (state.dimension == 2) draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
+  else draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
+  if (!final_camera) {
+    // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
+    if (state.dimension == 2) draw_camera(draw, m, construction_step(state.camera2d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
+    else draw_camera(draw, m, construction_step(state.camera3d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
+  }
+  const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
+  draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
+
+  if (inspected) {
+    const glm::dvec2 from = xy(inspected->origin), direction = xy(inspected->direction);
+    const double length = inspected->hit.id >= 0 ? inspected->hit.t : far_length;
+    const ImVec2 end = m.to_screen(from + direction * length);
+    draw->AddLine(m.to_screen(from), end, kInspectedRayColour, 3.0f);
+    if (inspected->hit.id >= 0) draw->AddCircle(end, 6.0f, kInspectedRayColour, 16, 2.0f);
+  }
+}
+
+// ---- picking -------------------------------------------------------------------------------------------
+int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_point) {
+  const glm::dvec2 p = m.to_world(screen_point);
+  int best = -1;
+  double best_top = -1e300;
+  if (state.dimension == 2) {
+    for (std::size_t i = 0; i < state.file.scene2d.circles.size(); ++i)
+      if (glm::length(state.file.scene2d.circles[i].centre - p) <= state.file.scene2d.circles[i].radius) best = int(i);
+    return best;
+  }
+  const auto& spheres = state.file.scene3d.spheres;
+  for (std::size_t i = 0; i < std::min(spheres.size(), kMaxDiscs); ++i) {
+    const double top = spheres[i].centre.z + spheres[i].radius;
+    if (glm::length(xy(spheres[i].centre) - p) <= spheres[i].radius && top > best_top) best = int(i), best_top = top;
+  }
+  return best;
+}
+
+}  // namespace raycam::ui

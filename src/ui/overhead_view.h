@@ -1,0 +1,40 @@
+// The overhead views: the world seen from above (2D: the plane itself; 3D: looking down -z), with x to the
+// right and y up, drawn with ImGui's draw list so that they look the same in a window and headless.
+#pragma once
+
+#include <optional>
+
+#include <glm/vec2.hpp>
+#include <imgui.h>
+
+#include "app_state.h"
+#include "inspection.h"
+
+namespace raycam::ui {
+
+// World xy ↦ screen pixels: uniform scale, y flipped (screen y grows downwards).
+struct OverheadMapping {
+  ImVec2 origin{0.0f, 0.0f};  // screen position of the world origin
+  float scale = 1.0f;         // pixels per world unit
+  ImVec2 to_screen(glm::dvec2 p) const { return {origin.x + scale * float(p.x), origin.y - scale * float(p.y)}; }
+  glm::dvec2 to_world(ImVec2 s) const { return {(s.x - origin.x) / scale, (origin.y - s.y) / scale}; }
+};
+
+// Fits the scene's objects, the target and the camera (eye and screen) into the rectangle, with a margin.
+OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size);
+
+// Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray.
+void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const AppState& state,
+                   const std::optional<InspectedRay>& inspected);
+
+// The object whose disc is under a screen point (topmost), or -1.
+int object_under(const OverheadMapping& mapping, const AppState& state, ImVec2 screen_point);
+
+// Marker colours, shared with the tests that look for them.
+inline constexpr ImU32 kEyeColour = IM_COL32(255, 255, 255, 255);
+inline constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
+inline constexpr ImU32 kScreenColour = IM_COL32(0, 230, 255, 255);
+inline constexpr ImU32 kInspectedRayColour = IM_COL32(255, 0, 255, 255);
+inline constexpr ImU32 kConstructionColour = IM_COL32(255, 150, 40, 255);
+
+}  // namespace raycam::ui

@@ -1,0 +1,305 @@
+// Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
+// status line · help · shortcuts. (ImGui's default font is ASCII: "theta", not θ.)
+#include "panels.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "inspection.h"
+#include "raycam/view_setup.h"
+
+namespace raycam::ui {
+
+namespace {
+constexpr double kDegree = 3.141592653589793 / 180.0;
+const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
+const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
+
+bool slider_double(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
+  float v = float(value);
+  const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+  if (!ImGui::SliderFloat(label, &v, float(lo), float(hi), format, flags)) return false;
+  value = v;
+  return true;
+}
+
+bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
+  double degrees = radians / kDegree;
+  if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
+  if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f deg")) return false;
+  radians = degrees * kDegree;
+  return true;
+}
+
+void explain(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+  ImGui::TextWrapped("%s", text);
+  ImGui::PopStyleColor();
+}
+
+template <int N, class Matrix>
+void matrix_table(const char* id, const Matrix& m) {
+  if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame)) return;
+  for (int row = 0; row < N; ++row)
+    for (int column = 0; column < N; ++column) {
+      ImGui::TableNextColumn();
+      ImGui::Text("%8.3f", m[column][row]);  // GLM is column-major
+    }
+  ImGui::EndTable();
+}
+
+void switch_dimension(AppState& state, int dimension) {
+  if (dimension == state.dimension) return;
+  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
+    state.scene_path.clear();
+    state.message = "switched to the built-in " + std::to_string(dimension) + "D demo scene";
+    state.message_is_error = false;
+  }
+  state.file.dimension = dimension;
+  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
+  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
+  state.dimension = dimension;
+  state.construction_step = -1;
+  state.pinned_pixel.reset();
+  ++state.scene_version;
+  state.cameras_dirty = true;
+}
+}  // namespace
+
+// ---- camera --------------------------------------------------------------------------------------------
+void camera_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  int dimension = state.dimension;
+  bool mode_changed = ImGui::RadioButton("2D camera", &dimension, 2);
+  ImGui::SameLine();
+  mode_changed |= ImGui::RadioButton("3D camera", &dimension, 3);
+  if (mode_changed) switch_dimension(state, dimension);
+
+  const bool is_2d = state.dimension == 2;
+  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
+  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  bool changed = slider_double("d_f (focal)", df, 0.05, 20.0, "%.3f", true);
+  changed |= slider_double("d (distance)", d, 0.1, 200.0, "%.2f", true);
+  changed |= slider_degrees("theta", theta, -180.0, 180.0);
+  if (!is_2d) changed |= slider_degrees("phi", state.orbit3d.phi, 0.0, 180.0);
+  const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
+  changed |= slider_double("res", state.res, 1.0 / max_size, 1.0, "%.4f", true);
+  if (is_2d) {
+    float target[2] = {float(state.orbit2d.target.x), float(state.orbit2d.target.y)};
+    if (ImGui::DragFloat2("target C", target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+      state.orbit2d.target = {target[0], target[1]};
+      changed = true;
+    }
+    int n = state.max_pixels_2d;
+    if (ImGui::InputInt("N (max pixels)", &n, 16, 256)) {
+      state.max_pixels_2d = std::clamp(n, 1, 4096);
+      changed = true;
+    }
+  } else {
+    float target[3] = {float(state.orbit3d.target.x), float(state.orbit3d.target.y), float(state.orbit3d.target.z)};
+    if (ImGui::DragFloat3("target C", target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+      state.orbit3d.target = {target[0], target[1], target[2]};
+      changed = true;
+    }
+    int size[2] = {state.max_columns_3d, state.max_rows_3d};
+    if (ImGui::InputInt2("max size W, H", size)) {
+      state.max_columns_3d = std::clamp(size[0], 1, 2048);
+      state.max_rows_3d = std::clamp(size[1], 1, 2048);
+      changed = true;
+    }
+  }
+  ImGui::Text("n = %d x %d, field of view %.1f deg", state.map.width, state.map.height,
+              2.0 * std::atan(1.0 / df) / kDegree);
+  if (ImGui::Button("Reset camera")) {
+    if (is_2d) state.orbit2d = Orbit2D{};
+    else state.orbit3d = Orbit3D{};
+    state.res = 1.0;
+    changed = true;
+  }
+  ImGui::SameLine();
+  explain("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target");
+  if (changed) state.cameras_dirty = true;
+}
+
+// ---- construction of M_d -------------------------------------------------------------------------------
+void construction_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Construction of M_d", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const int steps = construction_steps(state);
+  int step = state.construction_step < 0 ? steps : state.construction_step;
+  static const char* const k2D[] = {"a: the canonical camera (identity)", "b: H(1, d_f) sets the focal distance",
+                                    "c: R(theta - 90 deg) turns u0 onto v", "d: T(OP) moves the screen to P"};
+  static const char* const k3D[] = {"the canonical camera (identity)", "1: H(1, 1, d_f) sets the focal distance",
+                                    "2: Rz(+90 deg) rolls the image upright", "3: Ry(phi) tilts u0 into the plane y = 0",
+                                    "4: Rz(theta) turns u0 onto v", "5: T(OP) moves the screen to P"};
+  if (ImGui::SliderInt("step", &step, 0, steps, "%d")) state.construction_step = step == steps ? -1 : step;
+  explain(state.dimension == 2 ? k2D[step] : k3D[step]);
+  if (state.dimension == 2) {
+    const Placement2D& p = state.camera2d.placement();
+    ImGui::Text("M_d = T(OP) . R(alpha) . H(1, d_f),  alpha = %.2f deg", p.alpha / kDegree);
+    if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
+    if (ImGui::TreeNode("R(alpha)")) { matrix_table<3>("R", p.rotation); ImGui::TreePop(); }
+    if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
+    ImGui::Text(step == steps ? "M_d" : "product of the first %d factors", step);
+    matrix_table<3>("M", construction_step(p, step));
+  } else {
+    const Placement3D& p = state.camera3d.placement();
+    ImGui::Text("M_d = T . Rz(theta) . Ry(phi) . Rz(90) . H");
+    if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
+    if (ImGui::TreeNode("Rz(psi0 = 90 deg)")) { matrix_table<4>("Roll", p.roll); ImGui::TreePop(); }
+    if (ImGui::TreeNode("Ry(phi)")) { matrix_table<4>("Ry", p.polar); ImGui::TreePop(); }
+    if (ImGui::TreeNode("Rz(theta)")) { matrix_table<4>("Rz", p.azimuth); ImGui::TreePop(); }
+    if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
+    ImGui::Text(step == steps ? "M_d" : "product of the first %d factors", step);
+    matrix_table<4>("M", construction_step(p, step));
+  }
+}
+
+// ---- ray inspector -------------------------------------------------------------------------------------
+void inspector_section(const AppState& state) {
+  if (!ImGui::CollapsingHeader("Ray inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const auto pixel = active_pixel(state);
+  if (!pixel) {
+    explain("Hover a pixel of the colour bar or image to see its ray; click to pin it.");
+    return;
+  }
+  const InspectedRay ray = inspect_pixel(state, *pixel);
+  if (state.dimension == 2) {
+    ImGui::Text("column %d = pixel k = %d (k = n-1-column)", pixel->column, ray.k);
+    ImGui::Text("P_k^0 = (%.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y);
+    ImGui::Text("u_k^0 = (%.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y);
+    ImGui::Text("P_k   = (%.4f, %.4f)", ray.origin.x, ray.origin.y);
+    ImGui::Text("u_k   = (%.4f, %.4f)", ray.direction.x, ray.direction.y);
+  } else {
+    ImGui::Text("row %d, column %d", pixel->row, pixel->column);
+    ImGui::Text("P^0 = (%.4f, %.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y, ray.canonical_pixel.z);
+    ImGui::Text("u^0 = (%.4f, %.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y, ray.canonical_direction.z);
+    ImGui::Text("P   = (%.4f, %.4f, %.4f)", ray.origin.x, ray.origin.y, ray.origin.z);
+    ImGui::Text("u   = (%.4f, %.4f, %.4f)", ray.direction.x, ray.direction.y, ray.direction.z);
+  }
+  if (ray.hit.id < 0) {
+    ImGui::Text("hit: nothing (background)");
+  } else {
+    const std::string& name = state.dimension == 2 ? state.file.scene2d.circles[std::size_t(ray.hit.id)].name
+                                                   : state.file.scene3d.spheres[std::size_t(ray.hit.id)].name;
+    ImGui::Text("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t);
+  }
+}
+
+// ---- classic mistakes ----------------------------------------------------------------------------------
+void mistakes_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Classic mistakes")) return;
+  bool changed = ImGui::Checkbox("printed rotation sign", &state.mistakes.printed_rotation_sign);
+  explain("alpha = phi_v - 90 deg with phi_v the angle of v = PC turns u0 onto -v: the camera turns its back to the "
+          "target and shows what is behind it.");
+  changed |= ImGui::Checkbox("pixel edges instead of centres", &state.mistakes.pixel_edges);
+  explain("-1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no longer "
+          "symmetric.");
+  changed |= ImGui::Checkbox("forgot to renormalise u_k", &state.mistakes.skip_renormalise);
+  explain("H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong.");
+  changed |= ImGui::Checkbox("arccos route near a pole", &state.arccos_route);
+  explain("placing the camera from P and C with the handout's arccos: near theta = 0 (2D) or phi = 0 (3D) arccos "
+          "loses half the digits and the camera snaps to the axis.");
+  if (changed) state.cameras_dirty = true;
+}
+
+// ---- files ---------------------------------------------------------------------------------------------
+void files_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Scene file")) return;
+  ImGui::InputText("path", state.path_input, sizeof state.path_input);
+  if (ImGui::Button("Open")) open_scene(state, state.path_input);
+  ImGui::SameLine();
+  if (ImGui::Button("Save camera preset")) save_preset(state, state.path_input);
+  explain("or drop a scene file on the window");
+  ImGui::InputText("export", state.export_path, sizeof state.export_path);
+  if (ImGui::Button("Export colour map PNG")) {
+    try {
+      write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
+      state.message = std::string("wrote ") + state.export_path;
+      state.message_is_error = false;
+    } catch (const std::exception& error) {
+      state.message = error.what();
+      state.message_is_error = true;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (F12)")) state.request_screenshot = true;
+}
+
+// ---- lecture -------------------------------------------------------------------------------------------
+void lecture_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Lecture mode")) return;
+  ImGui::SliderFloat("font scale", &state.font_scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::Checkbox("high contrast", &state.high_contrast);
+  if (ImGui::Button("Fullscreen (F11)")) state.request_fullscreen = true;
+  ImGui::SameLine();
+  if (ImGui::Button("Help (F1)")) state.show_help = !state.show_help;
+}
+
+// ---- status line ---------------------------------------------------------------------------------------
+void status_line(const AppState& state) {
+  ImGui::Text("frame %.1f ms | cast %.2f ms, %lld casts in %lld frames | rays %lld | tests %lld | culled %lld", state.frame_ms,
+              state.cast_ms, state.cast_count, state.frame_count, state.stats.rays, state.stats.intersection_tests,
+              state.stats.objects_culled);
+  if (!state.message.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(state.message_is_error ? kError : kDim, "| %s", state.message.c_str());
+  }
+}
+
+// ---- help ----------------------------------------------------------------------------------------------
+void help_overlay(AppState& state) {
+  if (!state.show_help) return;
+  ImGui::SetNextWindowPos({ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  if (ImGui::Begin("Keyboard and mouse (F1 closes)", &state.show_help,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    static const char* const kLines[] = {
+        "F1            this help",           "F11           fullscreen",
+        "F12           screenshot (raycam-screenshot.png)",
+        "Left/Right    theta -/+ 5 deg",     "Up/Down       phi -/+ 5 deg (3D)",
+        "+ / -         d closer / further",  "PgUp / PgDn   d_f larger / smaller",
+        "[ / ]         construction step back / forward", "Tab           2D / 3D",
+        "Esc           unpin the inspected pixel",
+        "mouse drag    orbit the camera (overhead: around the target)",
+        "wheel         d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom",
+        "right drag    turn the observer (3D)", "double-click  make an object the target",
+        "click a pixel pin the ray inspector"};
+    for (const char* line : kLines) ImGui::TextUnformatted(line);
+  }
+  ImGui::End();
+}
+
+// ---- shortcuts -----------------------------------------------------------------------------------------
+void handle_shortcuts(AppState& state) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  const bool is_2d = state.dimension == 2;
+  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
+  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+  auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
+  bool changed = false;
+  if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
+  if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+  if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
+  if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
+  if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();
+  if (pressed(ImGuiKey_Tab)) switch_dimension(state, is_2d ? 3 : 2);
+  const int steps = construction_steps(state);
+  for (ImWchar c : io.InputQueueCharacters) {
+    if (c == '+' || c == '=') d = std::max(0.1, d / 1.1), changed = true;
+    if (c == '-') d = std::min(200.0, d * 1.1), changed = true;
+    int step = state.construction_step < 0 ? steps : state.construction_step;
+    if (c == '[') step = std::max(0, step - 1);
+    if (c == ']') step = std::min(steps, step + 1);
+    if (c == '[' || c == ']') state.construction_step = step == steps ? -1 : step;
+  }
+  if (changed) state.cameras_dirty = true;
+}
+
+}  // namespace raycam::ui
