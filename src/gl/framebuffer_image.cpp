@@ -3,8 +3,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include <stb_image_write.h>
-
 #include "gl.h"
 
 namespace raycam::gl {
@@ -22,12 +20,6 @@ RgbaImage read_framebuffer(int width, int height) {
     std::memcpy(&image.pixels[std::size_t(y) * row_bytes], &bottom_up[std::size_t(height - 1 - y) * row_bytes], row_bytes);
   for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 255;  // the window is opaque
   return image;
-}
-
-void write_png(const RgbaImage& image, const std::string& path) {
-  stbi_flip_vertically_on_write(0);
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
-    throw std::runtime_error(path + ": cannot write PNG (does the directory exist and is it writable?)");
 }
 
 }  // namespace raycam::gl

@@ -211,7 +211,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const Camera3D& camera = state.camera3d;
       const glm::dvec3 target = state.orbit3d.target;
       const double reach = state.orbit3d.d + state.orbit3d.df;
-      const double distance = 2.6 * reach * state.observer.zoom;
+      const double distance = 1.7 * reach * state.observer.zoom;
       const double yaw = state.observer.yaw_deg * kPi / 180, pitch = state.observer.pitch_deg * kPi / 180;
       const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
       const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));

@@ -1,0 +1,164 @@
+// The app's frame rendered headless: what it shows is checked against what can be known independently —
+// the core's colour map (recomputed here from the same parameters in radians), the overhead mapping's
+// positions of the eye, target and screen, and the inspected ray's hit point — plus reviewed reference PNGs.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "app_options.h"
+#include "headless_renderer.h"
+#include "image_compare.h"
+#include "raycam/ray_caster.h"
+#include "raycam/transform.h"
+
+using namespace raycam;
+
+namespace {
+constexpr double kDegree = 3.141592653589793 / 180.0;
+
+struct Shot {
+  ui::AppState state;
+  gl::RgbaImage image;
+  ui::FrameLayout layout;
+};
+
+Shot shoot(const std::vector<std::string>& args, int width = 1280, int height = 720) {
+  ui::AppOptions options;
+  for (std::size_t i = 0; i < args.size();) REQUIRE(ui::parse_app_option(args, i, options));
+  options.width = width;
+  options.height = height;
+  Shot shot{ui::make_app_state(options), {}, {}};
+  headless::HeadlessRenderer renderer(width, height);
+  shot.image = renderer.render_settled(shot.state);
+  shot.layout = renderer.layout();
+  return shot;
+}
+
+Rgb8 pixel(const gl::RgbaImage& image, double x, double y) {
+  const std::uint8_t* p = image.at(int(std::floor(x)), int(std::floor(y)));
+  return {p[0], p[1], p[2]};
+}
+
+// Is a pixel close to `colour` within a few pixels of (x, y)? (Markers are anti-aliased.)
+bool colour_near(const gl::RgbaImage& image, ImVec2 at, ImU32 colour, int radius = 2, int tolerance = 40) {
+  const int r = colour & 0xFF, g = (colour >> 8) & 0xFF, b = (colour >> 16) & 0xFF;
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx) {
+      const int x = int(at.x) + dx, y = int(at.y) + dy;
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+      const std::uint8_t* p = image.at(x, y);
+      if (std::abs(p[0] - r) <= tolerance && std::abs(p[1] - g) <= tolerance && std::abs(p[2] - b) <= tolerance) return true;
+    }
+  return false;
+}
+
+void check_image_region_holds(const Shot& shot, const ColourMap& expected) {
+  const ui::Rect& r = shot.layout.image;
+  REQUIRE(r.w >= 2 * expected.width);  // at least 2 screen pixels per map pixel: centres are unambiguous
+  REQUIRE(r.h >= 2 * expected.height);
+  int wrong = 0;
+  for (int row = 0; row < expected.height; ++row)
+    for (int column = 0; column < expected.width; ++column) {
+      const Rgb8 seen = pixel(shot.image, r.x + (column + 0.5) * r.w / expected.width, r.y + (row + 0.5) * r.h / expected.height);
+      wrong += seen != expected.colour_at(row, column);
+    }
+  CHECK(wrong == 0);
+}
+}  // namespace
+
+TEST_CASE("the 2D colour bar on screen is the core's colour map, pixel for pixel", "[render][2d]") {
+  for (double theta : {90.0, 20.0, -135.0}) {
+    const Shot shot = shoot({"--view", "2d", "--size", "200", "--theta", std::to_string(theta), "--df", "1.2", "--d", "7"});
+    Camera2D camera(200);
+    camera.set_orbit({{0, 0}, 7.0, theta * kDegree, 1.2});
+    check_image_region_holds(shot, cast_primary_rays(camera, demo_scene_2d()));
+  }
+}
+
+TEST_CASE("the 3D image on screen is the core's colour map, pixel for pixel", "[render][3d]") {
+  const Shot shot = shoot({"--size", "64x48", "--theta", "200", "--phi", "70", "--d", "6", "--df", "1.5"});
+  Camera3D camera(64, 48);
+  camera.set_orbit({{0, 0, 0}, 6.0, 200 * kDegree, 70 * kDegree, 1.5});
+  check_image_region_holds(shot, cast_primary_rays(camera, demo_scene_3d()));
+}
+
+TEST_CASE("eye, target and screen are drawn where the overhead mapping puts them", "[render][overhead]") {
+  const Shot two = shoot({"--view", "2d", "--theta", "60", "--target", "0.5,-0.5"});
+  const ui::OverheadMapping& m2 = two.layout.overhead_mapping;
+  const Camera2D& c2 = two.state.camera2d;
+  CHECK(colour_near(two.image, m2.to_screen(c2.eye()), ui::kEyeColour));
+  CHECK(colour_near(two.image, m2.to_screen({0.5, -0.5}), ui::kTargetColour));
+  CHECK(colour_near(two.image, m2.to_screen(c2.screen_centre()), ui::kScreenColour));
+  // The markers are not everywhere: far from the eye there is no eye colour.
+  CHECK_FALSE(colour_near(two.image, {two.layout.overhead.x + 3, two.layout.overhead.y + two.layout.overhead.h - 3}, ui::kEyeColour));
+
+  const Shot three = shoot({"--theta", "-40", "--phi", "50"});
+  const ui::OverheadMapping& m3 = three.layout.overhead_mapping;
+  const glm::dvec3 corner = transform_point(three.state.camera3d.world_from_camera(), glm::dvec3(1, 1, 0));
+  CHECK(colour_near(three.image, m3.to_screen({corner.x, corner.y}), ui::kScreenColour));
+  const glm::dvec3 eye = three.state.camera3d.eye();
+  CHECK(colour_near(three.image, m3.to_screen({eye.x, eye.y}), ui::kEyeColour));
+}
+
+TEST_CASE("the inspected ray ends at its hit point", "[render][inspector]") {
+  for (const char* view : {"2d", "3d"}) {
+    const bool is_2d = std::string(view) == "2d";
+    const Shot shot = shoot({"--view", view, "--inspect", is_2d ? "90,0" : "120,140"});
+    glm::dvec2 origin, end;
+    if (is_2d) {
+      const Camera2D& camera = shot.state.camera2d;
+      const Ray2D ray = camera.primary_ray(camera.pixel_of_column(90));
+      const Hit hit = nearest_hit(shot.state.file.scene2d.circles, ray, IntersectFormula::stable);
+      REQUIRE(hit.id >= 0);
+      origin = ray.origin;
+      end = ray.origin + hit.t * ray.direction;
+    } else {
+      const Ray3D ray = shot.state.camera3d.primary_ray(140, 120);
+      const Hit hit = nearest_hit(shot.state.file.scene3d.spheres, ray, IntersectFormula::stable);
+      REQUIRE(hit.id >= 0);
+      origin = {ray.origin.x, ray.origin.y};
+      end = glm::dvec2(ray.origin + hit.t * ray.direction);
+    }
+    const ui::OverheadMapping& m = shot.layout.overhead_mapping;
+    const ImVec2 end_on_screen = m.to_screen(end), origin_on_screen = m.to_screen(origin);
+    CHECK(colour_near(shot.image, {end_on_screen.x + 6, end_on_screen.y}, ui::kInspectedRayColour));  // the hit ring
+    CHECK(colour_near(shot.image, {(end_on_screen.x + origin_on_screen.x) / 2, (end_on_screen.y + origin_on_screen.y) / 2},
+                      ui::kInspectedRayColour));
+  }
+}
+
+TEST_CASE("no region of the window is blank", "[render]") {
+  const Shot shot = shoot({});
+  for (const ui::Rect& r : {shot.layout.panel, shot.layout.image, shot.layout.overhead, shot.layout.observer}) {
+    std::set<std::uint32_t> colours;
+    for (int y = int(r.y); y < int(r.y + r.h); y += 3)
+      for (int x = int(r.x); x < int(r.x + r.w); x += 3) {
+        const std::uint8_t* p = shot.image.at(x, y);
+        colours.insert(std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2]);
+      }
+    CHECK(colours.size() >= 4);
+  }
+}
+
+TEST_CASE("the window matches the reviewed reference screenshots", "[render][reference]") {
+  for (const char* name : {"ui2d", "ui3d"}) {
+    const bool is_2d = std::string(name) == "ui2d";
+    const Shot shot = shoot(is_2d ? std::vector<std::string>{"--view", "2d", "--inspect", "100,0"}
+                                  : std::vector<std::string>{"--inspect", "120,140", "--step", "3"});
+    const std::string reference_path = std::string(RAYCAM_REFERENCE_DIR) + "/" + name + ".png";
+    const gl::RgbaImage reference = test::load_png(reference_path);
+    const int status_top = int(shot.layout.image.y + 0.5f) + int(shot.image.height) - 40;  // timings vary
+    const test::Difference d = test::compare(shot.image, reference, 24, status_top, shot.image.height);
+    const bool ok = reference.width > 0 && d.differing <= d.compared / 500;  // ≤ 0.2% of the pixels
+    if (!ok) {
+      gl::write_png(shot.image, std::string(name) + ".actual.png");
+      if (reference.width > 0) test::write_diff(shot.image, reference, 24, std::string(name) + ".diff.png");
+    }
+    INFO(name << ": " << d.differing << " of " << d.compared << " pixels differ; actual and diff written to the build "
+              << "directory (a missing reference: review " << name << ".actual.png and copy it to " << reference_path << ")");
+    CHECK(ok);
+  }
+}
