@@ -12,5 +12,7 @@ using Args = std::vector<std::string>;
 
 int run_render(const Args& args);
 int run_shot(const Args& args);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
+// `bench accuracy` (bench_accuracy.cpp); registered as `bench-accuracy` until the `bench` dispatcher lands.
+int run_bench_accuracy(const Args& args);
 
 }  // namespace raycam::cli

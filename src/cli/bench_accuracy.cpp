@@ -1,0 +1,443 @@
+// `raycam-cli bench accuracy`: run time against error (MISSION.md, "Fast and accurate").
+// Sections: options; standard scenes and their references; the sweep; Pareto fronts; CSV and gnuplot.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+#include "accuracy_sweep.h"
+#include "commands.h"
+#include "raycam/exact_bar.h"
+#include "raycam/ray_caster.h"
+#include "raycam/reference_caster.h"
+
+namespace raycam::cli {
+
+namespace {
+constexpr double kPi = 3.141592653589793;
+
+// ---- Options --------------------------------------------------------------------------------------------
+enum class Placement { orbit, arccos, stable };
+
+struct BenchOptions {
+  std::vector<Scalar> scalars{Scalar::float32, Scalar::float64, Scalar::extended};
+  std::vector<IntersectFormula> formulas{IntersectFormula::naive, IntersectFormula::stable};
+  std::vector<int> spps{1, 4, 16, 64};
+  std::vector<bool> frames{false, true};  // camera_relative
+  std::vector<Placement> placements{Placement::orbit};
+  int repeats = 5;
+  bool quick = false;
+  std::string csv_path = "accuracy.csv";
+  std::string png_path = "accuracy.png";
+  bool stress = false, long_sweep = false, angles = false;
+};
+
+void print_help() {
+  std::printf(
+      "usage: raycam-cli bench accuracy [--precision LIST] [--intersect LIST] [--spp LIST] [--frame LIST]\n"
+      "                                 [--placement LIST] [--repeats R] [--quick] [--csv FILE] [--png FILE]\n"
+      "       raycam-cli bench accuracy --stress [--long] [--csv FILE]\n"
+      "       raycam-cli bench accuracy --angles [--csv FILE]\n\n"
+      "Sweeps the caster's knobs on standard scenes and measures median run time against error:\n"
+      "  id error     fraction of pixel-centre ids differing from the exact reference\n"
+      "  colour error mean |colour - exact coverage colour| per channel, 8-bit units\n"
+      "References: 2D, the exact bar (analytic footprints); 3D, long double, stable, camera-relative,\n"
+      "1024 stratified samples per pixel (256 with --quick). LISTs are comma-separated:\n"
+      "  --precision float,double,long-double   scalar of the per-ray arithmetic\n"
+      "  --intersect naive,stable               ray/circle formula (textbook b^2-c, or Ray Tracing Gems)\n"
+      "  --spp 1,4,16,64                        stratified samples per pixel (3D: perfect squares)\n"
+      "  --frame world,relative                 world coordinates or relative to the eye\n"
+      "  --placement orbit,arccos,stable        camera from (d, theta, phi), or from P and C by the\n"
+      "                                         handout's arccos route or atan2 (default: orbit)\n"
+      "  --repeats R      timing repeats, the median is kept (default 5)\n"
+      "  --quick          smaller images and reference (for CI)\n"
+      "  --csv FILE       default accuracy.csv (stress: stress.csv, angles: angles.csv)\n"
+      "  --png FILE       gnuplot PNG of time against error with the Pareto front (default accuracy.png;\n"
+      "                   needs gnuplot on PATH; skipped with a message otherwise)\n"
+      "  --stress         the numerical stress table (worst id error per setting, float/double,\n"
+      "                   naive/stable, world/relative); exit 1 if anything is non-finite\n"
+      "  --long           the long stress list (more values, larger images)\n"
+      "  --angles         the arccos-vs-atan2 angle error table\n");
+}
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  for (std::string item; std::getline(stream, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  if (items.empty()) throw std::invalid_argument("empty list '" + list + "'");
+  return items;
+}
+
+Placement parse_placement(const std::string& text) {
+  if (text == "orbit") return Placement::orbit;
+  if (text == "arccos") return Placement::arccos;
+  if (text == "stable") return Placement::stable;
+  throw std::invalid_argument("--placement must be orbit, arccos or stable, got '" + text + "'");
+}
+const char* placement_name(Placement p) {
+  return p == Placement::orbit ? "orbit" : p == Placement::arccos ? "arccos" : "stable";
+}
+
+BenchOptions parse_options(const Args& args, bool& help) {
+  BenchOptions o;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& flag = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(flag + ": missing value");
+      return args[++i];
+    };
+    if (flag == "--help" || flag == "-h") {
+      help = true;
+    } else if (flag == "--precision") {
+      o.scalars.clear();
+      for (const auto& s : split(value())) o.scalars.push_back(parse_scalar(s, "--precision"));
+    } else if (flag == "--intersect") {
+      o.formulas.clear();
+      for (const auto& s : split(value())) o.formulas.push_back(parse_formula(s, "--intersect"));
+    } else if (flag == "--spp") {
+      o.spps.clear();
+      for (const auto& s : split(value())) {
+        int spp = 0;
+        try {
+          spp = std::stoi(s);
+        } catch (const std::exception&) {
+          throw std::invalid_argument("--spp must be integers in [1, " + std::to_string(kMaxSamplesPerPixel) + "], got '" + s + "'");
+        }
+        if (spp < 1 || spp > kMaxSamplesPerPixel)
+          throw std::invalid_argument("--spp must be in [1, " + std::to_string(kMaxSamplesPerPixel) + "], got " + s);
+        o.spps.push_back(spp);
+      }
+    } else if (flag == "--frame") {
+      o.frames.clear();
+      for (const auto& s : split(value())) {
+        if (s != "world" && s != "relative") throw std::invalid_argument("--frame must be world or relative, got '" + s + "'");
+        o.frames.push_back(s == "relative");
+      }
+    } else if (flag == "--placement") {
+      o.placements.clear();
+      for (const auto& s : split(value())) o.placements.push_back(parse_placement(s));
+    } else if (flag == "--repeats") {
+      o.repeats = std::stoi(value());
+      if (o.repeats < 1 || o.repeats > 1000) throw std::invalid_argument("--repeats must be in [1, 1000]");
+    } else if (flag == "--quick") {
+      o.quick = true;
+    } else if (flag == "--csv") {
+      o.csv_path = value();
+    } else if (flag == "--png") {
+      o.png_path = value();
+    } else if (flag == "--stress") {
+      o.stress = true;
+    } else if (flag == "--long") {
+      o.long_sweep = true;
+    } else if (flag == "--angles") {
+      o.angles = true;
+    } else {
+      throw std::invalid_argument("unknown option '" + flag + "' (see raycam-cli bench accuracy --help)");
+    }
+  }
+  return o;
+}
+
+// ---- Standard scenes ------------------------------------------------------------------------------------
+struct StandardScene {
+  std::string name;
+  int dimension = 2;
+  Scene2D scene2d;
+  Scene3D scene3d;
+  Orbit2D orbit2d;
+  Orbit3D orbit3d;
+  int size = 0;
+  CoverageImage reference;
+};
+
+Scene2D cluster_2d(glm::dvec2 t) {
+  return Scene2D{kDefaultBackground,
+                 {Circle{t + glm::dvec2(-1.5, -0.3), 1.0, Rgb8{230, 60, 50}, "red"},
+                  Circle{t + glm::dvec2(1.3, 0.6), 0.7, Rgb8{60, 190, 80}, "green"},
+                  Circle{t + glm::dvec2(0.2, -2.6), 1.2, Rgb8{60, 110, 230}, "blue"},
+                  Circle{t + glm::dvec2(3.5, -2.0), 0.5, Rgb8{240, 200, 60}, "yellow"}}};
+}
+Scene3D cluster_3d(glm::dvec3 t) {
+  return Scene3D{kDefaultBackground,
+                 {Sphere{t + glm::dvec3(0, 0, 0), 1.0, Rgb8{230, 60, 50}, "red"},
+                  Sphere{t + glm::dvec3(2.2, 0.6, 0.2), 0.7, Rgb8{60, 190, 80}, "green"},
+                  Sphere{t + glm::dvec3(-1.2, 2.0, -0.2), 0.8, Rgb8{60, 110, 230}, "blue"},
+                  Sphere{t + glm::dvec3(0.2, -1.6, 1.3), 0.5, Rgb8{240, 200, 60}, "yellow"}}};
+}
+
+Camera2D make_camera(const StandardScene& s, Placement placement) {
+  Camera2D camera(s.size);
+  if (placement == Placement::orbit) {
+    camera.set_orbit(s.orbit2d);
+  } else {
+    const Orbit2D& o = s.orbit2d;
+    const glm::dvec2 position = o.target + o.d * glm::dvec2(std::cos(o.theta), std::sin(o.theta));
+    camera.set_free(position, o.target, o.df,
+                    placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
+  }
+  return camera;
+}
+Camera3D make_camera_3d(const StandardScene& s, Placement placement) {
+  Camera3D camera(s.size, s.size);
+  if (placement == Placement::orbit) {
+    camera.set_orbit(s.orbit3d);
+  } else {
+    const Orbit3D& o = s.orbit3d;
+    const glm::dvec3 position =
+        o.target + o.d * glm::dvec3(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    camera.set_free(position, o.target, o.df,
+                    placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
+  }
+  return camera;
+}
+
+std::vector<StandardScene> standard_scenes(bool quick) {
+  std::vector<StandardScene> scenes;
+  const int size2d = quick ? 256 : 1024, size3d = quick ? 48 : 96;
+  // Ordinary view; the same scene 10 000 away, zoomed in (d_f ∝ d); the same moved 1e6 from the origin.
+  StandardScene s;
+  s.dimension = 2;
+  s.size = size2d;
+  s.name = "2d-classic";
+  s.scene2d = cluster_2d({0, 0});
+  s.orbit2d = Orbit2D{{0, 0}, 6.0, kPi / 2, 1.5};
+  scenes.push_back(s);
+  s.name = "2d-far";
+  s.orbit2d = Orbit2D{{0, 0}, 1e4, kPi / 2 + 0.3, 2500.0};
+  scenes.push_back(s);
+  s.name = "2d-translated";
+  s.scene2d = cluster_2d({1e6, -7e5});
+  s.orbit2d = Orbit2D{{1e6, -7e5}, 6.0, kPi / 2, 1.5};
+  scenes.push_back(s);
+  StandardScene t;
+  t.dimension = 3;
+  t.size = size3d;
+  t.name = "3d-classic";
+  t.scene3d = cluster_3d({0, 0, 0});
+  t.orbit3d = Orbit3D{{0, 0, 0}, 8.0, 0.5, 1.0, 2.0};
+  scenes.push_back(t);
+  t.name = "3d-far";
+  t.orbit3d = Orbit3D{{0, 0, 0}, 1e4, 0.5, 1.0, 2500.0};
+  scenes.push_back(t);
+  t.name = "3d-translated";
+  t.scene3d = cluster_3d({1e6, 1e6, -1e6});
+  t.orbit3d = Orbit3D{{1e6, 1e6, -1e6}, 8.0, 0.5, 1.0, 2.0};
+  scenes.push_back(t);
+  for (StandardScene& scene : scenes) {
+    if (scene.dimension == 2) {
+      scene.reference = exact_bar_image(exact_bar(make_camera(scene, Placement::orbit), scene.scene2d), scene.scene2d);
+    } else {
+      scene.reference = reference_cast(make_camera_3d(scene, Placement::orbit), scene.scene3d,
+                                       ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
+    }
+  }
+  return scenes;
+}
+
+// ---- The sweep ------------------------------------------------------------------------------------------
+struct Point {
+  std::string scene, label, precision, intersect, frame, placement;
+  int spp = 1;
+  double median_ms = 0, id_error = 0, colour_error = 0;
+  bool pareto_colour = false, pareto_id = false;
+};
+
+template <class Cast>
+double median_ms(int repeats, Cast&& cast) {
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    cast();
+    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+CoverageImage from_colour_map(const ColourMap& map) {
+  CoverageImage image{map.width, map.height, map.ids, {}};
+  for (Rgb8 c : map.colours) image.colours.push_back(to_dvec3(c));
+  return image;
+}
+
+// A point is on the front when no other point of its scene is at least as fast and at least as accurate,
+// and strictly better in one of the two.
+void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*flag) {
+  for (Point& p : points) {
+    p.*flag = true;
+    for (const Point& q : points) {
+      if (&p == &q || q.scene != p.scene) continue;
+      if (q.median_ms <= p.median_ms && q.*error <= p.*error && (q.median_ms < p.median_ms || q.*error < p.*error)) {
+        p.*flag = false;
+        break;
+      }
+    }
+  }
+}
+
+std::string short_label(Scalar scalar, IntersectFormula formula, bool relative, int spp, Placement placement) {
+  std::string label = std::string(1, scalar_name(scalar)[0]) + (formula == IntersectFormula::naive ? "n" : "s") +
+                      (relative ? "r" : "w") + std::to_string(spp);
+  if (placement != Placement::orbit) label += placement == Placement::arccos ? "-acos" : "-atan2";
+  return label;
+}
+
+std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>& scenes) {
+  std::vector<Point> points;
+  for (const StandardScene& s : scenes) {
+    const std::size_t first_of_scene = points.size();
+    {  // The plain core caster, for comparison: double, stable, world, 1 spp.
+      Point p{s.name, "core", "double", "stable", "world", "orbit", 1};
+      CoverageImage image;
+      if (s.dimension == 2) {
+        const Camera2D camera = make_camera(s, Placement::orbit);
+        p.median_ms = median_ms(o.repeats, [&] { image = from_colour_map(cast_primary_rays(camera, s.scene2d)); });
+      } else {
+        const Camera3D camera = make_camera_3d(s, Placement::orbit);
+        p.median_ms = median_ms(o.repeats, [&] { image = from_colour_map(cast_primary_rays(camera, s.scene3d)); });
+      }
+      p.id_error = id_disagreement(image, s.reference);
+      p.colour_error = mean_colour_error(image, s.reference);
+      points.push_back(p);
+    }
+    for (Placement placement : o.placements)
+      for (Scalar scalar : o.scalars)
+        for (IntersectFormula formula : o.formulas)
+          for (bool relative : o.frames)
+            for (int spp : o.spps) {
+              if (s.dimension == 3 && int(std::lround(std::sqrt(double(spp)))) * int(std::lround(std::sqrt(double(spp)))) != spp)
+                continue;  // 3D takes square grids only
+              const ReferenceOptions options{scalar, formula, spp, relative};
+              Point p{s.name, short_label(scalar, formula, relative, spp, placement), scalar_name(scalar),
+                      formula_name(formula), relative ? "relative" : "world", placement_name(placement), spp};
+              CoverageImage image;
+              if (s.dimension == 2) {
+                const Camera2D camera = make_camera(s, placement);
+                p.median_ms = median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene2d, options); });
+              } else {
+                const Camera3D camera = make_camera_3d(s, placement);
+                p.median_ms = median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene3d, options); });
+              }
+              p.id_error = id_disagreement(image, s.reference);
+              p.colour_error = mean_colour_error(image, s.reference);
+              points.push_back(p);
+            }
+    std::sort(points.begin() + std::ptrdiff_t(first_of_scene), points.end(),
+              [](const Point& a, const Point& b) { return a.median_ms < b.median_ms; });  // for the front's line
+    std::fprintf(stderr, "bench accuracy: %s done\n", s.name.c_str());
+  }
+  mark_pareto(points, &Point::colour_error, &Point::pareto_colour);
+  mark_pareto(points, &Point::id_error, &Point::pareto_id);
+  return points;
+}
+
+// ---- Output ---------------------------------------------------------------------------------------------
+void write_csv(const std::vector<Point>& points, const std::string& path) {
+  std::ofstream csv(path);
+  if (!csv) throw std::runtime_error("cannot write " + path);
+  csv << "scene,label,precision,intersect,frame,placement,spp,median_ms,id_error,colour_error,pareto_colour,pareto_id\n";
+  for (const Point& p : points)
+    csv << p.scene << ',' << p.label << ',' << p.precision << ',' << p.intersect << ',' << p.frame << ','
+        << p.placement << ',' << p.spp << ',' << p.median_ms << ',' << p.id_error << ',' << p.colour_error << ','
+        << p.pareto_colour << ',' << p.pareto_id << '\n';
+}
+
+// Errors of exactly 0 cannot go on a log axis: they are drawn at these floors (stated on the plot).
+constexpr double kColourFloor = 1e-3, kIdFloor = 1e-5;
+
+// accuracy.png -> accuracy_ids.png
+std::string id_plot_path(const std::string& png_path) {
+  const std::size_t dot = png_path.rfind('.');
+  return dot == std::string::npos ? png_path + "_ids" : png_path.substr(0, dot) + "_ids" + png_path.substr(dot);
+}
+
+// gnuplot data: for each scene and metric, one block of all points then one block of the Pareto front
+// (sorted by time), separated by two blank lines so that `index` picks them.
+void write_plot(const std::vector<Point>& points, const std::vector<std::string>& scene_names,
+                const std::string& png_path) {
+  const std::string data_path = png_path + ".dat", script_path = png_path + ".gp";
+  std::ofstream data(data_path);
+  if (!data) throw std::runtime_error("cannot write " + data_path);
+  for (const std::string& scene : scene_names)
+    for (int metric = 0; metric < 2; ++metric)
+      for (int front = 0; front < 2; ++front) {
+        data << "# " << scene << (metric == 0 ? " colour" : " id") << (front ? " pareto" : " all") << '\n';
+        for (const Point& p : points) {
+          if (p.scene != scene) continue;
+          if (front && !(metric == 0 ? p.pareto_colour : p.pareto_id)) continue;
+          const double error = metric == 0 ? std::max(p.colour_error, kColourFloor) : std::max(p.id_error, kIdFloor);
+          data << p.median_ms << ' ' << error << ' ' << p.label << '\n';
+        }
+        data << "\n\n";
+      }
+  data.close();
+  std::ofstream gp(script_path);
+  // One PNG per metric, one panel per scene (3 per row): the colour error at png_path, the id error beside it.
+  const int count = int(scene_names.size()), per_row = std::min(3, count), rows = (count + per_row - 1) / per_row;
+  const std::string id_png = id_plot_path(png_path);
+  for (int metric = 0; metric < 2; ++metric) {
+    gp << "set terminal pngcairo size " << 700 * per_row << "," << 520 * rows + 40 << " font 'DejaVu Sans,11'\n"
+       << "set output '" << (metric == 0 ? png_path : id_png) << "'\n"
+       << "set multiplot layout " << rows << "," << per_row << " title 'raycam: median time per frame against "
+       << (metric == 0 ? "mean colour error vs exact coverage" : "fraction of pixel ids differing from the exact reference")
+       << " (labels: precision f/d/l, intersect n/s, frame w/r, spp; line: Pareto front; 0 drawn at "
+       << (metric == 0 ? kColourFloor : kIdFloor) << ")'\n"
+       << "set logscale xy\nset grid\nset key top right\nset xlabel 'median time per frame (ms)'\n"
+       << "set ylabel '" << (metric == 0 ? "mean colour error (8-bit units)" : "fraction of ids wrong") << "'\n";
+    for (int s = 0; s < count; ++s) {
+      const int block = (s * 2 + metric) * 2;
+      gp << "set title '" << scene_names[std::size_t(s)] << "'\n"
+         << "plot '" << data_path << "' index " << block << " using 1:2 with points pt 7 ps 0.7 title 'setting', "
+         << "'' index " << block << " using 1:2:3 with labels font ',7' offset 0.2,0.5 left notitle, "
+         << "'' index " << block + 1 << " using 1:2 with linespoints lw 2 pt 6 ps 1.5 title 'Pareto front'\n";
+    }
+    gp << "unset multiplot\n";
+  }
+  gp.close();
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+    std::fprintf(stderr, "bench accuracy: gnuplot not found, PNG skipped (script: %s)\n", script_path.c_str());
+    return;
+  }
+  const std::string command = "gnuplot '" + script_path + "'";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + script_path);
+  std::printf("plots: %s (colour error), %s (id error)\n", png_path.c_str(), id_png.c_str());
+}
+}  // namespace
+
+int run_bench_accuracy(const Args& args) {
+  bool help = false;
+  BenchOptions o = parse_options(args, help);
+  if (help) {
+    print_help();
+    return 0;
+  }
+  if (o.stress) {
+    if (o.csv_path == "accuracy.csv") o.csv_path = "stress.csv";
+    return run_stress_table(o.long_sweep, o.csv_path) == 0 ? 0 : 1;
+  }
+  if (o.angles) {
+    if (o.csv_path == "accuracy.csv") o.csv_path = "angles.csv";
+    run_angle_table(o.csv_path);
+    return 0;
+  }
+  const std::vector<StandardScene> scenes = standard_scenes(o.quick);
+  const std::vector<Point> points = sweep(o, scenes);
+  write_csv(points, o.csv_path);
+  std::printf("| scene | setting | median ms | id error | colour error | Pareto (colour / id) |\n|---|---|---|---|---|---|\n");
+  for (const Point& p : points)
+    std::printf("| %s | %s | %.3f | %.3g | %.3g | %s / %s |\n", p.scene.c_str(), p.label.c_str(), p.median_ms,
+                p.id_error, p.colour_error, p.pareto_colour ? "yes" : "", p.pareto_id ? "yes" : "");
+  std::printf("csv: %s\n", o.csv_path.c_str());
+  std::vector<std::string> names;
+  for (const StandardScene& s : scenes) names.push_back(s.name);
+  if (!o.png_path.empty()) write_plot(points, names, o.png_path);
+  return 0;
+}
+
+}  // namespace raycam::cli
