@@ -9,21 +9,19 @@
 namespace raycam::gl {
 
 namespace {
-constexpr int kSphereSlices = 24, kSphereStacks = 16;
-
 // Unit sphere as (position) vertices and triangle indices, z the polar axis.
-void make_unit_sphere(std::vector<float>& vertices, std::vector<unsigned>& indices) {
+void make_unit_sphere(int slices, int stacks, std::vector<float>& vertices, std::vector<unsigned>& indices) {
   const float pi = 3.14159265f;
-  for (int stack = 0; stack <= kSphereStacks; ++stack) {
-    const float phi = pi * float(stack) / kSphereStacks;
-    for (int slice = 0; slice <= kSphereSlices; ++slice) {
-      const float theta = 2.0f * pi * float(slice) / kSphereSlices;
+  for (int stack = 0; stack <= stacks; ++stack) {
+    const float phi = pi * float(stack) / stacks;
+    for (int slice = 0; slice <= slices; ++slice) {
+      const float theta = 2.0f * pi * float(slice) / slices;
       vertices.insert(vertices.end(), {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)});
     }
   }
-  for (int stack = 0; stack < kSphereStacks; ++stack)
-    for (int slice = 0; slice < kSphereSlices; ++slice) {
-      const unsigned a = stack * (kSphereSlices + 1) + slice, b = a + kSphereSlices + 1;
+  for (int stack = 0; stack < stacks; ++stack)
+    for (int slice = 0; slice < slices; ++slice) {
+      const unsigned a = stack * (slices + 1) + slice, b = a + slices + 1;
       indices.insert(indices.end(), {a, b, a + 1, a + 1, b, b + 1});
     }
 }
@@ -33,20 +31,14 @@ ObserverRenderer::ObserverRenderer()
     : sphere_program_(shaders::k_sphere_vert, shaders::k_sphere_frag, "sphere"),
       line_program_(shaders::k_lines_vert, shaders::k_lines_frag, "lines"),
       quad_program_(shaders::k_image_quad_vert, shaders::k_image_quad_frag, "image_quad") {
-  std::vector<float> vertices;
-  std::vector<unsigned> indices;
-  make_unit_sphere(vertices, indices);
-  sphere_index_count_ = GLsizei(indices.size());
   glGenVertexArrays(1, &sphere_vao_);
   glBindVertexArray(sphere_vao_);
   glGenBuffers(1, &sphere_mesh_vbo_);
   glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glGenBuffers(1, &sphere_index_vbo_);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
   // Per-instance: centre + radius (vec4), colour (vec3).
   glGenBuffers(1, &sphere_instance_vbo_);
   glBindBuffer(GL_ARRAY_BUFFER, sphere_instance_vbo_);
@@ -89,6 +81,19 @@ ObserverRenderer::~ObserverRenderer() {
 
 void ObserverRenderer::set_spheres(const std::vector<Sphere>& spheres) {
   const std::size_t count = std::min(spheres.size(), kMaxSpheresDrawn);
+  // Fewer triangles per sphere when there are many: llvmpipe rasterises on the CPU, and a thousand small
+  // spheres need no more than a coarse mesh each.
+  const int slices = count <= 100 ? 32 : count <= 1000 ? 16 : 8, stacks = slices * 2 / 3;
+  std::vector<float> vertices;
+  std::vector<unsigned> indices;
+  make_unit_sphere(slices, stacks, vertices, indices);
+  sphere_index_count_ = GLsizei(indices.size());
+  glBindVertexArray(sphere_vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
   std::vector<float> instances;
   instances.reserve(count * 7);
   for (std::size_t i = 0; i < count; ++i) {

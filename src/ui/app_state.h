@@ -63,6 +63,8 @@ struct AppState {
   double cast_ms = 0.0;
   long long frame_count = 0, cast_count = 0;
   double frame_ms = 0.0;
+  double ns_per_test = 2.0;     // measured at every full cast; predicts the next cast's cost
+  bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
 
   // ---- requests to the executable (only it knows about windows and files of pixels) ----
   bool request_screenshot = false;
@@ -78,8 +80,11 @@ struct AppState {
 
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
 void place_cameras(AppState& state);
-// Re-casts the primary rays if anything changed since the last cast. Returns true if it cast.
-bool recast_if_needed(AppState& state);
+// Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the
+// user is interacting, a cast predicted to take longer than kInteractiveBudgetMs is done at a coarser res
+// (a preview), and refined to full resolution once the interaction stops: the UI never freezes.
+inline constexpr double kInteractiveBudgetMs = 25.0;
+bool recast_if_needed(AppState& state, bool interacting = false);
 // Loads a scene file; on error keeps the current scene and sets an error message. Returns success.
 bool open_scene(AppState& state, const std::string& path);
 // Saves the current camera as the scene file's preset (written atomically). Returns success.

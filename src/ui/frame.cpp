@@ -90,7 +90,7 @@ FrameRenderer::~FrameRenderer() = default;
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state);
   handle_shortcuts(state);
-  recast_if_needed(state);
+  recast_if_needed(state, ImGui::IsAnyMouseDown());
   if (state.map_version != uploaded_map_version_) {
     texture_.upload(state.map);
     uploaded_map_version_ = state.map_version;

@@ -112,7 +112,7 @@ void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objec
     const auto& object = objects[i];
     const float radius = std::max(1.0f, float(object.radius) * m.scale);
     draw->AddCircleFilled(m.to_screen(xy(glm::dvec3(object.centre, 0.0))), radius, colour_of(object.colour),
-                          std::clamp(int(radius), 12, 64));
+                          std::clamp(int(radius), 8, 48));
   }
 }
 

@@ -139,7 +139,7 @@ void construction_section(AppState& state) {
   explain(state.dimension == 2 ? k2D[step] : k3D[step]);
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text("M_d = T(OP) . R(alpha) . H(1, d_f),  alpha = %.2f deg", p.alpha / kDegree);
+    ImGui::Text("M_d = T(OP) . R(alpha) . H(1, d_f), alpha = %.1f", p.alpha / kDegree);
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("R(alpha)")) { matrix_table<3>("R", p.rotation); ImGui::TreePop(); }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
@@ -191,7 +191,9 @@ void inspector_section(const AppState& state) {
 
 // ---- classic mistakes ----------------------------------------------------------------------------------
 void mistakes_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Classic mistakes")) return;
+  const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
+                   state.mistakes.skip_renormalise || state.arccos_route;
+  if (!ImGui::CollapsingHeader("Classic mistakes", any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
   bool changed = ImGui::Checkbox("printed rotation sign", &state.mistakes.printed_rotation_sign);
   explain("alpha = phi_v - 90 deg with phi_v the angle of v = PC turns u0 onto -v: the camera turns its back to the "
           "target and shows what is behind it.");
@@ -244,6 +246,10 @@ void status_line(const AppState& state) {
   ImGui::Text("frame %.1f ms | cast %.2f ms, %lld casts in %lld frames | rays %lld | tests %lld | culled %lld", state.frame_ms,
               state.cast_ms, state.cast_count, state.frame_count, state.stats.rays, state.stats.intersection_tests,
               state.stats.objects_culled);
+  if (state.refine_pending) {
+    ImGui::SameLine();
+    ImGui::TextColored(kDim, "| coarse preview while dragging");
+  }
   if (!state.message.empty()) {
     ImGui::SameLine();
     ImGui::TextColored(state.message_is_error ? kError : kDim, "| %s", state.message.c_str());
