@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Time against error: builds raycam-cli, sweeps the caster's knobs on the standard scenes and writes
+# docs/accuracy.csv, docs/accuracy.png (colour error) and docs/accuracy_ids.png (id error), Pareto fronts
+# marked. Extra arguments go to the bench (e.g. --quick, --repeats 9, --precision float,double).
+# Needs gnuplot (Debian: gnuplot-nox). Takes about a minute on 2 cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${RAYCAM_BUILD_DIR:-build}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j2 --target raycam-cli
+mkdir -p docs
+# `bench accuracy` once the bench dispatcher is in; `bench-accuracy` until then.
+if "$build/raycam-cli" bench accuracy --help >/dev/null 2>&1; then bench=(bench accuracy); else bench=(bench-accuracy); fi
+"$build/raycam-cli" "${bench[@]}" --csv docs/accuracy.csv --png docs/accuracy.png "$@" | tee docs/accuracy_table.md
+rm -f docs/accuracy.png.dat docs/accuracy.png.gp
