@@ -268,11 +268,13 @@ CoverageImage from_colour_map(const ColourMap& map) {
 
 // A point is on the front when no other point of its scene is at least as fast and at least as accurate,
 // and strictly better in one of the two.
-void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*flag) {
+// Ids come from the pixel-centre ray whatever the spp, so the id front considers 1-spp settings only.
+void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*flag, bool single_sample_only) {
   for (Point& p : points) {
-    p.*flag = true;
+    p.*flag = !single_sample_only || p.spp == 1;
+    if (!(p.*flag)) continue;
     for (const Point& q : points) {
-      if (&p == &q || q.scene != p.scene) continue;
+      if (&p == &q || q.scene != p.scene || (single_sample_only && q.spp != 1)) continue;
       if (q.median_ms <= p.median_ms && q.*error <= p.*error && (q.median_ms < p.median_ms || q.*error < p.*error)) {
         p.*flag = false;
         break;
@@ -292,16 +294,26 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
   std::vector<Point> points;
   for (const StandardScene& s : scenes) {
     const std::size_t first_of_scene = points.size();
-    {  // The plain core caster, for comparison: double, stable, world, 1 spp.
+    {  // The plain core caster, for comparison: double, stable, world, 1 spp (conversion not timed).
       Point p{s.name, "core", "double", "stable", "world", "orbit", 1};
-      CoverageImage image;
+      ColourMap map;
       if (s.dimension == 2) {
         const Camera2D camera = make_camera(s, Placement::orbit);
-        p.median_ms = median_ms(o.repeats, [&] { image = from_colour_map(cast_primary_rays(camera, s.scene2d)); });
+        p.median_ms = median_ms(o.repeats, [&] { map = cast_primary_rays(camera, s.scene2d); });
       } else {
         const Camera3D camera = make_camera_3d(s, Placement::orbit);
-        p.median_ms = median_ms(o.repeats, [&] { image = from_colour_map(cast_primary_rays(camera, s.scene3d)); });
+        p.median_ms = median_ms(o.repeats, [&] { map = cast_primary_rays(camera, s.scene3d); });
       }
+      const CoverageImage image = from_colour_map(map);
+      p.id_error = id_disagreement(image, s.reference);
+      p.colour_error = mean_colour_error(image, s.reference);
+      points.push_back(p);
+    }
+    if (s.dimension == 2) {  // The exact bar itself: the reference, so its errors are 0 by definition.
+      Point p{s.name, "exact", "long-double", "exact", "world", "orbit", 1};
+      const Camera2D camera = make_camera(s, Placement::orbit);
+      CoverageImage image;
+      p.median_ms = median_ms(o.repeats, [&] { image = exact_bar_image(exact_bar(camera, s.scene2d), s.scene2d); });
       p.id_error = id_disagreement(image, s.reference);
       p.colour_error = mean_colour_error(image, s.reference);
       points.push_back(p);
@@ -332,8 +344,8 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
               [](const Point& a, const Point& b) { return a.median_ms < b.median_ms; });  // for the front's line
     std::fprintf(stderr, "bench accuracy: %s done\n", s.name.c_str());
   }
-  mark_pareto(points, &Point::colour_error, &Point::pareto_colour);
-  mark_pareto(points, &Point::id_error, &Point::pareto_id);
+  mark_pareto(points, &Point::colour_error, &Point::pareto_colour, false);
+  mark_pareto(points, &Point::id_error, &Point::pareto_id, true);
   return points;
 }
 
@@ -369,7 +381,7 @@ void write_plot(const std::vector<Point>& points, const std::vector<std::string>
       for (int front = 0; front < 2; ++front) {
         data << "# " << scene << (metric == 0 ? " colour" : " id") << (front ? " pareto" : " all") << '\n';
         for (const Point& p : points) {
-          if (p.scene != scene) continue;
+          if (p.scene != scene || (metric == 1 && p.spp != 1)) continue;  // ids do not depend on spp
           if (front && !(metric == 0 ? p.pareto_colour : p.pareto_id)) continue;
           const double error = metric == 0 ? std::max(p.colour_error, kColourFloor) : std::max(p.id_error, kIdFloor);
           data << p.median_ms << ' ' << error << ' ' << p.label << '\n';
@@ -385,10 +397,11 @@ void write_plot(const std::vector<Point>& points, const std::vector<std::string>
     gp << "set terminal pngcairo size " << 700 * per_row << "," << 520 * rows + 40 << " font 'DejaVu Sans,11'\n"
        << "set output '" << (metric == 0 ? png_path : id_png) << "'\n"
        << "set multiplot layout " << rows << "," << per_row << " title 'raycam: median time per frame against "
-       << (metric == 0 ? "mean colour error vs exact coverage" : "fraction of pixel ids differing from the exact reference")
+       << (metric == 0 ? "mean colour error vs exact coverage" : "fraction of pixel ids differing from the exact reference (1 spp)")
        << " (labels: precision f/d/l, intersect n/s, frame w/r, spp; line: Pareto front; 0 drawn at "
        << (metric == 0 ? kColourFloor : kIdFloor) << ")'\n"
        << "set logscale xy\nset grid\nset key top right\nset xlabel 'median time per frame (ms)'\n"
+       << (metric == 0 ? "set autoscale y\n" : "set yrange [5e-6:2]\n")
        << "set ylabel '" << (metric == 0 ? "mean colour error (8-bit units)" : "fraction of ids wrong") << "'\n";
     for (int s = 0; s < count; ++s) {
       const int block = (s * 2 + metric) * 2;
