@@ -12,9 +12,11 @@
 //     starts inside and sees the far side, or nothing if the circle lies between eye and screen).
 // Between consecutive breakpoints the visible object is found by one ray cast in long double.
 // Everything is computed in long double from the camera's double-precision M_d. The classic mistakes other
-// than the printed rotation sign (which is inside M_d) are ignored: this is the reference for the right camera.
+// than the printed rotation sign (which is inside M_d) are ignored: this is the reference for the right
+// camera.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "raycam/camera2d.h"
@@ -23,6 +25,10 @@
 #include "raycam/scene.h"
 
 namespace raycam {
+
+// The breakpoints and the casts between them cost O(m²) for m circles: the exact bar is a reference for
+// scenes a person composes, not for the 100k-object stress scenes (std::invalid_argument above this).
+inline constexpr std::size_t kMaxExactBarCircles = 4096;
 
 // A maximal interval of the screen where one object (or the background, id -1) is visible.
 struct VisibleInterval {
@@ -34,16 +40,18 @@ struct VisibleInterval {
 struct ExactBar {
   int pixels = 0;   // n, the camera's useful pixel count
   int objects = 0;  // number of circles; coverage slot `objects` is the background
-  std::vector<VisibleInterval> footprint;  // sorted by s, adjacent intervals have different ids, covers [-1, 1]
-  std::vector<double> coverage;            // (objects + 1) fractions per column, image order; each sums to 1
-  std::vector<int> centre_ids;             // exact id of each pixel-centre ray, image order
+  std::vector<VisibleInterval>
+      footprint;                 // sorted by s, adjacent intervals have different ids, covers [-1, 1]
+  std::vector<double> coverage;  // (objects + 1) fractions per column, image order; each sums to 1
+  std::vector<int> centre_ids;   // exact id of each pixel-centre ray, image order
 
   double coverage_of(int column, int id) const {
     return coverage[std::size_t(column) * (objects + 1) + std::size_t(id < 0 ? objects : id)];
   }
 };
 
-// The visible intervals of the whole screen segment [-1, 1].
+// The visible intervals of the whole screen segment [-1, 1]. Throws std::invalid_argument naming
+// "circles" if the scene has more than kMaxExactBarCircles.
 std::vector<VisibleInterval> exact_footprint(const Camera2D& camera, const Scene2D& scene);
 
 // Footprint, per-pixel coverage and exact centre ids.

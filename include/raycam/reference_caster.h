@@ -41,9 +41,11 @@ inline constexpr int kMaxSamplesPerPixel = 1 << 16;
 // Throws std::invalid_argument if samples_per_pixel is outside [1, kMaxSamplesPerPixel] (or, in 3D, not a
 // perfect square).
 template <class T>
-CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options);
+CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene,
+                                const ReferenceOptions& options);
 template <class T>
-CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene, const ReferenceOptions& options);
+CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene,
+                                const ReferenceOptions& options);
 
 // Dispatch on options.scalar.
 CoverageImage reference_cast(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options);

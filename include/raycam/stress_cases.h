@@ -44,10 +44,12 @@ CoverageImage stress_reference(const StressCase2D& stress_case);
 CoverageImage stress_reference(const StressCase3D& stress_case);
 
 struct StressResult {
-  double id_error = 0.0;  // fraction of pixel ids differing from the reference
+  double id_error = 0.0;   // fraction of pixel ids differing from the reference
   bool all_finite = true;  // M_d, the eye and every primary ray finite; every id in [-1, objects)
 };
-StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference, const ReferenceOptions& options);
-StressResult measure(const StressCase3D& stress_case, const CoverageImage& reference, const ReferenceOptions& options);
+StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference,
+                     const ReferenceOptions& options);
+StressResult measure(const StressCase3D& stress_case, const CoverageImage& reference,
+                     const ReferenceOptions& options);
 
 }  // namespace raycam

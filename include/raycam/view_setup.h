@@ -35,6 +35,9 @@ inline constexpr int kDefaultSize3D = 256;
 // Throws std::invalid_argument naming the flag and the accepted range for a bad or missing value.
 bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags);
 
+// An integer flag value in [lo, hi]; throws std::invalid_argument naming the flag and the range.
+int parse_integer_flag(const std::string& text, const std::string& flag, int lo, int hi);
+
 // Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
 ViewSetup make_view_setup(const ViewFlags& flags);
 

@@ -80,11 +80,7 @@ int main(int argc, char** argv) {
         if (args[i] == "--screenshot") {
           run.screenshot = args[i + 1];
         } else {
-          char* end = nullptr;
-          const long n = std::strtol(args[i + 1].c_str(), &end, 10);
-          if (*end != '\0' || n < 1 || n > 100000)
-            throw std::invalid_argument("--frames: expected an integer in [1, 100000], got '" + args[i + 1] + "'");
-          run.frames = int(n);
+          run.frames = raycam::parse_integer_flag(args[i + 1], "--frames", 1, 100000);
         }
         i += 2;
       } else if (args[i].rfind("--", 0) != 0 && !options.view.scene_path) {

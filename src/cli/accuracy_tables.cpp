@@ -32,7 +32,8 @@ std::vector<Config> stress_configs() {
 }
 
 std::string config_name(const Config& c) {
-  return std::string(scalar_name(c.scalar)) + " " + formula_name(c.formula) + (c.relative ? " rel" : " world");
+  return std::string(scalar_name(c.scalar)) + " " + formula_name(c.formula) +
+         (c.relative ? " rel" : " world");
 }
 
 std::ofstream open_csv(const std::string& path) {
@@ -54,8 +55,8 @@ int run_stress_table(bool long_sweep, const std::string& csv_path) {
                     const StressResult& result) {
     const Config& c = configs[index];
     csv << dimension << "D," << group << ",\"" << name << "\"," << scalar_name(c.scalar) << ','
-        << formula_name(c.formula) << ',' << (c.relative ? "camera-relative" : "world") << ',' << result.id_error
-        << ',' << (result.all_finite ? 1 : 0) << '\n';
+        << formula_name(c.formula) << ',' << (c.relative ? "camera-relative" : "world") << ','
+        << result.id_error << ',' << (result.all_finite ? 1 : 0) << '\n';
     const std::string key = std::to_string(dimension) + "D " + group;
     if (!worst.count(key)) {
       worst[key].assign(configs.size(), 0.0);
@@ -71,13 +72,15 @@ int run_stress_table(bool long_sweep, const std::string& csv_path) {
     const CoverageImage reference = stress_reference(stress_case);
     for (std::size_t i = 0; i < configs.size(); ++i)
       record(stress_case.group, stress_case.name, 2, i,
-             measure(stress_case, reference, ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
+             measure(stress_case, reference,
+                     ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
   }
   for (const StressCase3D& stress_case : stress_cases_3d(long_sweep)) {
     const CoverageImage reference = stress_reference(stress_case);
     for (std::size_t i = 0; i < configs.size(); ++i)
       record(stress_case.group, stress_case.name, 3, i,
-             measure(stress_case, reference, ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
+             measure(stress_case, reference,
+                     ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
   }
   std::printf("Worst fraction of pixel ids differing from the exact reference (%s sweep):\n\n| setting |",
               long_sweep ? "long" : "short");
@@ -138,7 +141,8 @@ void run_angle_table(const std::string& csv_path) {
     sweep(std::string("3D phi near ") + (base == 0.0 ? "0 (pole +z)" : "pi (pole -z)"),
           [&](double delta, double& truth, double& a, double& s) {
             truth = base == 0.0 ? delta : kPi - delta;
-            const glm::dvec3 v(std::cos(0.7) * std::sin(truth), std::sin(0.7) * std::sin(truth), std::cos(truth));
+            const glm::dvec3 v(std::cos(0.7) * std::sin(truth), std::sin(0.7) * std::sin(truth),
+                               std::cos(truth));
             a = spherical_angles(v, AngleRoute::handout_arccos).phi;
             s = spherical_angles(v, AngleRoute::stable).phi;
           });
@@ -147,14 +151,16 @@ void run_angle_table(const std::string& csv_path) {
     sweep(std::string("3D theta near ") + (base == 0.0 ? "0" : "pi") + " at phi=1",
           [&](double delta, double& truth, double& a, double& s) {
             truth = base == 0.0 ? delta : kPi - delta;
-            const glm::dvec3 v(std::cos(truth) * std::sin(1.0), std::sin(truth) * std::sin(1.0), std::cos(1.0));
+            const glm::dvec3 v(std::cos(truth) * std::sin(1.0), std::sin(truth) * std::sin(1.0),
+                               std::cos(1.0));
             a = spherical_angles(v, AngleRoute::handout_arccos).theta;
             s = spherical_angles(v, AngleRoute::stable).theta;
           });
   }
-  std::printf("Angle recovered from a unit vector, worst absolute error over offsets 0 and 1e-12…1e-2 rad from "
-              "the ill-conditioned spot:\n\n| where | arccos (handout) | at offset | atan2 (stable) |\n"
-              "|---|---|---|---|\n");
+  std::printf(
+      "Angle recovered from a unit vector, worst absolute error over offsets 0 and 1e-12…1e-2 rad from "
+      "the ill-conditioned spot:\n\n| where | arccos (handout) | at offset | atan2 (stable) |\n"
+      "|---|---|---|---|\n");
   for (const Row& row : rows)
     std::printf("| %s | %.2g rad | %.2g | %.2g rad |\n", row.where.c_str(), row.worst_arccos, row.at_arccos,
                 row.worst_stable);

@@ -40,7 +40,8 @@ struct BenchOptions {
 void print_help() {
   std::printf(
       "usage: raycam-cli bench accuracy [--precision LIST] [--intersect LIST] [--spp LIST] [--frame LIST]\n"
-      "                                 [--placement LIST] [--repeats R] [--quick] [--csv FILE] [--png FILE]\n"
+      "                                 [--placement LIST] [--repeats R] [--quick] [--csv FILE] [--png "
+      "FILE]\n"
       "       raycam-cli bench accuracy --stress [--long] [--csv FILE]\n"
       "       raycam-cli bench accuracy --angles [--csv FILE]\n\n"
       "Sweeps the caster's knobs on standard scenes and measures median run time against error:\n"
@@ -107,16 +108,19 @@ BenchOptions parse_options(const Args& args, bool& help) {
         try {
           spp = std::stoi(s);
         } catch (const std::exception&) {
-          throw std::invalid_argument("--spp must be integers in [1, " + std::to_string(kMaxSamplesPerPixel) + "], got '" + s + "'");
+          throw std::invalid_argument("--spp must be integers in [1, " + std::to_string(kMaxSamplesPerPixel) +
+                                      "], got '" + s + "'");
         }
         if (spp < 1 || spp > kMaxSamplesPerPixel)
-          throw std::invalid_argument("--spp must be in [1, " + std::to_string(kMaxSamplesPerPixel) + "], got " + s);
+          throw std::invalid_argument("--spp must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
+                                      "], got " + s);
         o.spps.push_back(spp);
       }
     } else if (flag == "--frame") {
       o.frames.clear();
       for (const auto& s : split(value())) {
-        if (s != "world" && s != "relative") throw std::invalid_argument("--frame must be world or relative, got '" + s + "'");
+        if (s != "world" && s != "relative")
+          throw std::invalid_argument("--frame must be world or relative, got '" + s + "'");
         o.frames.push_back(s == "relative");
       }
     } else if (flag == "--placement") {
@@ -190,7 +194,8 @@ Camera3D make_camera_3d(const StandardScene& s, Placement placement) {
   } else {
     const Orbit3D& o = s.orbit3d;
     const glm::dvec3 position =
-        o.target + o.d * glm::dvec3(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+        o.target + o.d * glm::dvec3(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi),
+                                    std::cos(o.phi));
     camera.set_free(position, o.target, o.df,
                     placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
   }
@@ -231,10 +236,12 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   scenes.push_back(t);
   for (StandardScene& scene : scenes) {
     if (scene.dimension == 2) {
-      scene.reference = exact_bar_image(exact_bar(make_camera(scene, Placement::orbit), scene.scene2d), scene.scene2d);
+      scene.reference =
+          exact_bar_image(exact_bar(make_camera(scene, Placement::orbit), scene.scene2d), scene.scene2d);
     } else {
-      scene.reference = reference_cast(make_camera_3d(scene, Placement::orbit), scene.scene3d,
-                                       ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
+      scene.reference = reference_cast(
+          make_camera_3d(scene, Placement::orbit), scene.scene3d,
+          ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
     }
   }
   return scenes;
@@ -254,7 +261,8 @@ double median_ms(int repeats, Cast&& cast) {
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
     cast();
-    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
@@ -269,13 +277,15 @@ CoverageImage from_colour_map(const ColourMap& map) {
 // A point is on the front when no other point of its scene is at least as fast and at least as accurate,
 // and strictly better in one of the two.
 // Ids come from the pixel-centre ray whatever the spp, so the id front considers 1-spp settings only.
-void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*flag, bool single_sample_only) {
+void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*flag,
+                 bool single_sample_only) {
   for (Point& p : points) {
     p.*flag = !single_sample_only || p.spp == 1;
     if (!(p.*flag)) continue;
     for (const Point& q : points) {
       if (&p == &q || q.scene != p.scene || (single_sample_only && q.spp != 1)) continue;
-      if (q.median_ms <= p.median_ms && q.*error <= p.*error && (q.median_ms < p.median_ms || q.*error < p.*error)) {
+      if (q.median_ms <= p.median_ms && q.*error <= p.*error &&
+          (q.median_ms < p.median_ms || q.*error < p.*error)) {
         p.*flag = false;
         break;
       }
@@ -283,9 +293,11 @@ void mark_pareto(std::vector<Point>& points, double Point::*error, bool Point::*
   }
 }
 
-std::string short_label(Scalar scalar, IntersectFormula formula, bool relative, int spp, Placement placement) {
-  std::string label = std::string(1, scalar_name(scalar)[0]) + (formula == IntersectFormula::naive ? "n" : "s") +
-                      (relative ? "r" : "w") + std::to_string(spp);
+std::string short_label(Scalar scalar, IntersectFormula formula, bool relative, int spp,
+                        Placement placement) {
+  std::string label = std::string(1, scalar_name(scalar)[0]) +
+                      (formula == IntersectFormula::naive ? "n" : "s") + (relative ? "r" : "w") +
+                      std::to_string(spp);
   if (placement != Placement::orbit) label += placement == Placement::arccos ? "-acos" : "-atan2";
   return label;
 }
@@ -313,7 +325,8 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
       Point p{s.name, "exact", "long-double", "exact", "world", "orbit", 1};
       const Camera2D camera = make_camera(s, Placement::orbit);
       CoverageImage image;
-      p.median_ms = median_ms(o.repeats, [&] { image = exact_bar_image(exact_bar(camera, s.scene2d), s.scene2d); });
+      p.median_ms =
+          median_ms(o.repeats, [&] { image = exact_bar_image(exact_bar(camera, s.scene2d), s.scene2d); });
       p.id_error = id_disagreement(image, s.reference);
       p.colour_error = mean_colour_error(image, s.reference);
       points.push_back(p);
@@ -323,25 +336,34 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
         for (IntersectFormula formula : o.formulas)
           for (bool relative : o.frames)
             for (int spp : o.spps) {
-              if (s.dimension == 3 && int(std::lround(std::sqrt(double(spp)))) * int(std::lround(std::sqrt(double(spp)))) != spp)
+              if (s.dimension == 3 &&
+                  int(std::lround(std::sqrt(double(spp)))) * int(std::lround(std::sqrt(double(spp)))) != spp)
                 continue;  // 3D takes square grids only
               const ReferenceOptions options{scalar, formula, spp, relative};
-              Point p{s.name, short_label(scalar, formula, relative, spp, placement), scalar_name(scalar),
-                      formula_name(formula), relative ? "relative" : "world", placement_name(placement), spp};
+              Point p{s.name,
+                      short_label(scalar, formula, relative, spp, placement),
+                      scalar_name(scalar),
+                      formula_name(formula),
+                      relative ? "relative" : "world",
+                      placement_name(placement),
+                      spp};
               CoverageImage image;
               if (s.dimension == 2) {
                 const Camera2D camera = make_camera(s, placement);
-                p.median_ms = median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene2d, options); });
+                p.median_ms =
+                    median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene2d, options); });
               } else {
                 const Camera3D camera = make_camera_3d(s, placement);
-                p.median_ms = median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene3d, options); });
+                p.median_ms =
+                    median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene3d, options); });
               }
               p.id_error = id_disagreement(image, s.reference);
               p.colour_error = mean_colour_error(image, s.reference);
               points.push_back(p);
             }
-    std::sort(points.begin() + std::ptrdiff_t(first_of_scene), points.end(),
-              [](const Point& a, const Point& b) { return a.median_ms < b.median_ms; });  // for the front's line
+    std::sort(
+        points.begin() + std::ptrdiff_t(first_of_scene), points.end(),
+        [](const Point& a, const Point& b) { return a.median_ms < b.median_ms; });  // for the front's line
     std::fprintf(stderr, "bench accuracy: %s done\n", s.name.c_str());
   }
   mark_pareto(points, &Point::colour_error, &Point::pareto_colour, false);
@@ -353,11 +375,12 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
 void write_csv(const std::vector<Point>& points, const std::string& path) {
   std::ofstream csv(path);
   if (!csv) throw std::runtime_error("cannot write " + path);
-  csv << "scene,label,precision,intersect,frame,placement,spp,median_ms,id_error,colour_error,pareto_colour,pareto_id\n";
+  csv << "scene,label,precision,intersect,frame,placement,spp,median_ms,id_error,colour_error,pareto_colour,"
+         "pareto_id\n";
   for (const Point& p : points)
     csv << p.scene << ',' << p.label << ',' << p.precision << ',' << p.intersect << ',' << p.frame << ','
-        << p.placement << ',' << p.spp << ',' << p.median_ms << ',' << p.id_error << ',' << p.colour_error << ','
-        << p.pareto_colour << ',' << p.pareto_id << '\n';
+        << p.placement << ',' << p.spp << ',' << p.median_ms << ',' << p.id_error << ',' << p.colour_error
+        << ',' << p.pareto_colour << ',' << p.pareto_id << '\n';
 }
 
 // Errors of exactly 0 cannot go on a log axis: they are drawn at these floors (stated on the plot).
@@ -366,7 +389,8 @@ constexpr double kColourFloor = 1e-3, kIdFloor = 1e-5;
 // accuracy.png -> accuracy_ids.png
 std::string id_plot_path(const std::string& png_path) {
   const std::size_t dot = png_path.rfind('.');
-  return dot == std::string::npos ? png_path + "_ids" : png_path.substr(0, dot) + "_ids" + png_path.substr(dot);
+  return dot == std::string::npos ? png_path + "_ids"
+                                  : png_path.substr(0, dot) + "_ids" + png_path.substr(dot);
 }
 
 // gnuplot data: for each scene and metric, one block of all points then one block of the Pareto front
@@ -383,30 +407,37 @@ void write_plot(const std::vector<Point>& points, const std::vector<std::string>
         for (const Point& p : points) {
           if (p.scene != scene || (metric == 1 && p.spp != 1)) continue;  // ids do not depend on spp
           if (front && !(metric == 0 ? p.pareto_colour : p.pareto_id)) continue;
-          const double error = metric == 0 ? std::max(p.colour_error, kColourFloor) : std::max(p.id_error, kIdFloor);
+          const double error =
+              metric == 0 ? std::max(p.colour_error, kColourFloor) : std::max(p.id_error, kIdFloor);
           data << p.median_ms << ' ' << error << ' ' << p.label << '\n';
         }
         data << "\n\n";
       }
   data.close();
   std::ofstream gp(script_path);
-  // One PNG per metric, one panel per scene (3 per row): the colour error at png_path, the id error beside it.
-  const int count = int(scene_names.size()), per_row = std::min(3, count), rows = (count + per_row - 1) / per_row;
+  // One PNG per metric, one panel per scene (3 per row): the colour error at png_path, the id error beside
+  // it.
+  const int count = int(scene_names.size()), per_row = std::min(3, count),
+            rows = (count + per_row - 1) / per_row;
   const std::string id_png = id_plot_path(png_path);
   for (int metric = 0; metric < 2; ++metric) {
-    gp << "set terminal pngcairo size " << 700 * per_row << "," << 520 * rows + 40 << " font 'DejaVu Sans,11'\n"
+    gp << "set terminal pngcairo size " << 700 * per_row << "," << 520 * rows + 40
+       << " font 'DejaVu Sans,11'\n"
        << "set output '" << (metric == 0 ? png_path : id_png) << "'\n"
-       << "set multiplot layout " << rows << "," << per_row << " title 'raycam: median time per frame against "
-       << (metric == 0 ? "mean colour error vs exact coverage" : "fraction of pixel ids differing from the exact reference (1 spp)")
+       << "set multiplot layout " << rows << "," << per_row
+       << " title 'raycam: median time per frame against "
+       << (metric == 0 ? "mean colour error vs exact coverage"
+                       : "fraction of pixel ids differing from the exact reference (1 spp)")
        << " (labels: precision f/d/l, intersect n/s, frame w/r, spp; line: Pareto front; 0 drawn at "
        << (metric == 0 ? kColourFloor : kIdFloor) << ")'\n"
        << "set logscale xy\nset grid\nset key top right\nset xlabel 'median time per frame (ms)'\n"
-       << (metric == 0 ? "set autoscale y\n" : "set yrange [5e-6:2]\n")
-       << "set ylabel '" << (metric == 0 ? "mean colour error (8-bit units)" : "fraction of ids wrong") << "'\n";
+       << (metric == 0 ? "set autoscale y\n" : "set yrange [5e-6:2]\n") << "set ylabel '"
+       << (metric == 0 ? "mean colour error (8-bit units)" : "fraction of ids wrong") << "'\n";
     for (int s = 0; s < count; ++s) {
       const int block = (s * 2 + metric) * 2;
       gp << "set title '" << scene_names[std::size_t(s)] << "'\n"
-         << "plot '" << data_path << "' index " << block << " using 1:2 with points pt 7 ps 0.7 title 'setting', "
+         << "plot '" << data_path << "' index " << block
+         << " using 1:2 with points pt 7 ps 0.7 title 'setting', "
          << "'' index " << block << " using 1:2:3 with labels font ',7' offset 0.2,0.5 left notitle, "
          << "'' index " << block + 1 << " using 1:2 with linespoints lw 2 pt 6 ps 1.5 title 'Pareto front'\n";
     }
@@ -414,7 +445,8 @@ void write_plot(const std::vector<Point>& points, const std::vector<std::string>
   }
   gp.close();
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    std::fprintf(stderr, "bench accuracy: gnuplot not found, PNG skipped (script: %s)\n", script_path.c_str());
+    std::fprintf(stderr, "bench accuracy: gnuplot not found, PNG skipped (script: %s)\n",
+                 script_path.c_str());
     return;
   }
   const std::string command = "gnuplot '" + script_path + "'";
@@ -442,7 +474,9 @@ int run_bench_accuracy(const Args& args) {
   const std::vector<StandardScene> scenes = standard_scenes(o.quick);
   const std::vector<Point> points = sweep(o, scenes);
   write_csv(points, o.csv_path);
-  std::printf("| scene | setting | median ms | id error | colour error | Pareto (colour / id) |\n|---|---|---|---|---|---|\n");
+  std::printf(
+      "| scene | setting | median ms | id error | colour error | Pareto (colour / id) "
+      "|\n|---|---|---|---|---|---|\n");
   for (const Point& p : points)
     std::printf("| %s | %s | %.3f | %.3g | %.3g | %s / %s |\n", p.scene.c_str(), p.label.c_str(), p.median_ms,
                 p.id_error, p.colour_error, p.pareto_colour ? "yes" : "", p.pareto_id ? "yes" : "");

@@ -39,15 +39,6 @@ long resident_kb(const char* field) {  // VmRSS or VmHWM from /proc/self/status
   return -1;
 }
 
-int parse_count(const std::string& flag, const std::string& text, int lo, int hi) {
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < lo || value > hi)
-    throw std::invalid_argument(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                                "], got '" + text + "'");
-  return int(value);
-}
-
 // Every id is -1 or a real object, every colour is the background or that object's: a NaN anywhere in the
 // camera would break this (NaN compares false and leaves garbage ids or all-background maps with hits).
 bool colour_map_is_consistent(const ui::AppState& state) {
@@ -112,8 +103,8 @@ int run_shot(const Args& args) {
     if (ui::parse_app_option(args, i, options)) continue;
     if (i + 1 >= args.size()) throw std::invalid_argument("unknown option or missing value: '" + args[i] + "' (see raycam-cli shot --help)");
     if (args[i] == "--out") out_path = args[i + 1];
-    else if (args[i] == "--frames") frames = parse_count("--frames", args[i + 1], 2, 1000);
-    else if (args[i] == "--soak") soak_frames = parse_count("--soak", args[i + 1], 1, 1000000);
+    else if (args[i] == "--frames") frames = parse_integer_flag(args[i + 1], "--frames", 2, 1000);
+    else if (args[i] == "--soak") soak_frames = parse_integer_flag(args[i + 1], "--soak", 1, 1000000);
     else throw std::invalid_argument("unknown option '" + args[i] + "' (see raycam-cli shot --help)");
     i += 2;
   }

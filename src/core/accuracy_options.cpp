@@ -40,10 +40,14 @@ bool parse_accuracy_flag(const std::vector<std::string>& args, std::size_t& i, A
       throw std::invalid_argument("--frame must be world or relative, got '" + value + "'");
     flags.options.camera_relative = value == "relative";
   } else {
-    if (value == "orbit") flags.placement = PlacementRoute::orbit;
-    else if (value == "arccos") flags.placement = PlacementRoute::arccos;
-    else if (value == "stable") flags.placement = PlacementRoute::stable;
-    else throw std::invalid_argument("--placement must be orbit, arccos or stable, got '" + value + "'");
+    if (value == "orbit")
+      flags.placement = PlacementRoute::orbit;
+    else if (value == "arccos")
+      flags.placement = PlacementRoute::arccos;
+    else if (value == "stable")
+      flags.placement = PlacementRoute::stable;
+    else
+      throw std::invalid_argument("--placement must be orbit, arccos or stable, got '" + value + "'");
   }
   flags.given = true;
   i += 2;
@@ -54,9 +58,11 @@ const char* accuracy_flags_help() {
   return "accuracy knobs (README, \"Accuracy\"):\n"
          "  --precision P       float | double | long-double arithmetic per ray (default double)\n"
          "  --intersect F       naive (textbook b^2 - c) | stable (Ray Tracing Gems 2019; default)\n"
-         "  --spp N             stratified samples per pixel, colours averaged (3D: a square, 1, 4, 9, 16...)\n"
+         "  --spp N             stratified samples per pixel, colours averaged (3D: a square, 1, 4, 9, "
+         "16...)\n"
          "  --frame F           world (default) | relative: coordinates relative to the eye\n"
-         "  --placement R       orbit (default) | arccos (handout) | stable (atan2): free placement from P, C\n"
+         "  --placement R       orbit (default) | arccos (handout) | stable (atan2): free placement from P, "
+         "C\n"
          "  --exact             2D: the exact bar, each pixel's colour weighted by exact coverage\n";
 }
 

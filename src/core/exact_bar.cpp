@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "raycam/intersect.h"
 
@@ -127,6 +129,10 @@ int exact_id_at(const Camera2D& camera, const Scene2D& scene, long double s) {
 }
 
 std::vector<VisibleInterval> exact_footprint(const Camera2D& camera, const Scene2D& scene) {
+  if (scene.circles.size() > kMaxExactBarCircles)
+    throw std::invalid_argument(
+        "circles: the exact bar takes at most " + std::to_string(kMaxExactBarCircles) +
+        " circles (its cost is quadratic), got " + std::to_string(scene.circles.size()));
   const ScreenFrame frame(camera);
   const std::vector<Real> points = breakpoints(frame, scene);
   std::vector<VisibleInterval> footprint;
@@ -159,7 +165,8 @@ ExactBar exact_bar(const Camera2D& camera, const Scene2D& scene) {
     for (int k = first; k <= last; ++k) {
       const Real edge_lo = -1 + k * pixel_width, edge_hi = -1 + (k + 1) * pixel_width;
       const Real overlap = std::min(hi, edge_hi) - std::max(lo, edge_lo);
-      if (overlap > 0) bar.coverage[std::size_t(camera.column_of_pixel(k)) * slots + slot] += double(overlap / pixel_width);
+      if (overlap > 0)
+        bar.coverage[std::size_t(camera.column_of_pixel(k)) * slots + slot] += double(overlap / pixel_width);
     }
   }
   const ScreenFrame frame(camera);

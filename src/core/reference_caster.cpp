@@ -95,7 +95,8 @@ int grid_side(int spp) {
 }  // namespace
 
 template <class T>
-CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options) {
+CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene,
+                                const ReferenceOptions& options) {
   require_samples(options.samples_per_pixel);
   const int n = camera.pixel_count();
   const int spp = options.samples_per_pixel;
@@ -112,7 +113,8 @@ CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene, co
   image.colours.assign(std::size_t(n), glm::dvec3(0.0));
   auto id_at = [&](double x) {
     glm::vec<2, T> origin, direction;
-    primary_ray<2, T>(m, glm::vec<2, T>(T(x), T(0)), canonical_eye, options.camera_relative, origin, direction);
+    primary_ray<2, T>(m, glm::vec<2, T>(T(x), T(0)), canonical_eye, options.camera_relative, origin,
+                      direction);
     return nearest_id(objects, origin, direction, options.formula);
   };
   for (int k = 0; k < n; ++k) {
@@ -132,7 +134,8 @@ CoverageImage reference_cast_as(const Camera2D& camera, const Scene2D& scene, co
 }
 
 template <class T>
-CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene, const ReferenceOptions& options) {
+CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene,
+                                const ReferenceOptions& options) {
   const int side = grid_side(options.samples_per_pixel);
   const int columns = camera.columns(), rows = camera.rows();
   const glm::mat<4, 4, T> m(camera.world_from_camera());
@@ -174,18 +177,23 @@ CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene, co
 
 template CoverageImage reference_cast_as<float>(const Camera2D&, const Scene2D&, const ReferenceOptions&);
 template CoverageImage reference_cast_as<double>(const Camera2D&, const Scene2D&, const ReferenceOptions&);
-template CoverageImage reference_cast_as<long double>(const Camera2D&, const Scene2D&, const ReferenceOptions&);
+template CoverageImage reference_cast_as<long double>(const Camera2D&, const Scene2D&,
+                                                      const ReferenceOptions&);
 template CoverageImage reference_cast_as<float>(const Camera3D&, const Scene3D&, const ReferenceOptions&);
 template CoverageImage reference_cast_as<double>(const Camera3D&, const Scene3D&, const ReferenceOptions&);
-template CoverageImage reference_cast_as<long double>(const Camera3D&, const Scene3D&, const ReferenceOptions&);
+template CoverageImage reference_cast_as<long double>(const Camera3D&, const Scene3D&,
+                                                      const ReferenceOptions&);
 
 namespace {
 template <class Camera, class Scene>
 CoverageImage dispatch(const Camera& camera, const Scene& scene, const ReferenceOptions& options) {
   switch (options.scalar) {
-    case Scalar::float32: return reference_cast_as<float>(camera, scene, options);
-    case Scalar::float64: return reference_cast_as<double>(camera, scene, options);
-    case Scalar::extended: return reference_cast_as<long double>(camera, scene, options);
+    case Scalar::float32:
+      return reference_cast_as<float>(camera, scene, options);
+    case Scalar::float64:
+      return reference_cast_as<double>(camera, scene, options);
+    case Scalar::extended:
+      return reference_cast_as<long double>(camera, scene, options);
   }
   throw std::invalid_argument("scalar: unknown value");
 }
@@ -200,9 +208,12 @@ CoverageImage reference_cast(const Camera3D& camera, const Scene3D& scene, const
 
 const char* scalar_name(Scalar scalar) {
   switch (scalar) {
-    case Scalar::float32: return "float";
-    case Scalar::float64: return "double";
-    case Scalar::extended: return "long-double";
+    case Scalar::float32:
+      return "float";
+    case Scalar::float64:
+      return "double";
+    case Scalar::extended:
+      return "long-double";
   }
   return "?";
 }

@@ -27,7 +27,8 @@ Scene2D cluster_2d(glm::dvec2 target, double rotation = 0.0) {
   const double c = std::cos(rotation), s = std::sin(rotation);
   for (int i = 0; i < 4; ++i) {
     const glm::dvec2 o = offsets[i];
-    scene.circles.push_back(Circle{target + glm::dvec2(c * o.x - s * o.y, s * o.x + c * o.y), radii[i], colours[i], ""});
+    scene.circles.push_back(
+        Circle{target + glm::dvec2(c * o.x - s * o.y, s * o.x + c * o.y), radii[i], colours[i], ""});
   }
   return scene;
 }
@@ -68,32 +69,37 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
   const glm::dvec2 origin(0.0);
   const Orbit2D base{origin, 6.0, kPi / 2, 1.5};
 
-  const std::vector<double> distances = long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7}
-                                                   : std::vector<double>{1e-3, 1, 1e3, 1e5, 1e7};
-  for (double d : distances) b.add("d", label("d", d), Orbit2D{origin, d, kPi / 2, zoomed_df(d, 1.5)}, cluster_2d(origin));
+  const std::vector<double> distances =
+      long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7}
+                 : std::vector<double>{1e-3, 1, 1e3, 1e5, 1e7};
+  for (double d : distances)
+    b.add("d", label("d", d), Orbit2D{origin, d, kPi / 2, zoomed_df(d, 1.5)}, cluster_2d(origin));
 
-  const std::vector<double> focals = long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3}
-                                                : std::vector<double>{1e-3, 1, 1e3};
-  for (double df : focals) b.add("df", label("df", df), Orbit2D{origin, 6.0, kPi / 2, df}, cluster_2d(origin));
+  const std::vector<double> focals =
+      long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3} : std::vector<double>{1e-3, 1, 1e3};
+  for (double df : focals)
+    b.add("df", label("df", df), Orbit2D{origin, 6.0, kPi / 2, df}, cluster_2d(origin));
 
   std::vector<double> thetas = {kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0), 2 * kPi};
   if (long_sweep) thetas.insert(thetas.end(), {3 * kPi, -5 * kPi, 1e6, std::nextafter(2 * kPi, 0.0)});
-  for (double theta : thetas) b.add("theta", label("theta", theta), Orbit2D{origin, 6.0, theta, 1.5}, cluster_2d(origin));
+  for (double theta : thetas)
+    b.add("theta", label("theta", theta), Orbit2D{origin, 6.0, theta, 1.5}, cluster_2d(origin));
 
   const double n = b.pixels;
-  for (double res : {1.0 / n, 2.0 / n, 0.1})
-    b.add("res", label("res", res), base, cluster_2d(origin), res);
+  for (double res : {1.0 / n, 2.0 / n, 0.1}) b.add("res", label("res", res), base, cluster_2d(origin), res);
 
-  const std::vector<double> shifts = long_sweep ? std::vector<double>{1e2, 1e3, 1e4, 1e5, 1e6, 1e7}
-                                                : std::vector<double>{1e3, 1e5, 1e7};
+  const std::vector<double> shifts =
+      long_sweep ? std::vector<double>{1e2, 1e3, 1e4, 1e5, 1e6, 1e7} : std::vector<double>{1e3, 1e5, 1e7};
   for (double shift : shifts) {
     const glm::dvec2 target(shift, -0.7 * shift);
     b.add("translate", label("shift", shift), Orbit2D{target, 6.0, kPi / 2, 1.5}, cluster_2d(target));
   }
   for (double angle : long_sweep ? std::vector<double>{0.3, 1.0, 2.5, -2.0} : std::vector<double>{1.0, 2.5}) {
-    b.add("rotate", label("angle", angle), Orbit2D{origin, 6.0, kPi / 2 + angle, 1.5}, cluster_2d(origin, angle));
+    b.add("rotate", label("angle", angle), Orbit2D{origin, 6.0, kPi / 2 + angle, 1.5},
+          cluster_2d(origin, angle));
     const glm::dvec2 far(1e6, 1e6);
-    b.add("rotate", label("angle@1e6", angle), Orbit2D{far, 6.0, kPi / 2 + angle, 1.5}, cluster_2d(far, angle));
+    b.add("rotate", label("angle@1e6", angle), Orbit2D{far, 6.0, kPi / 2 + angle, 1.5},
+          cluster_2d(far, angle));
   }
 
   {  // Grazing: circles exactly tangent (to rounding) to two pixel-centre rays.
@@ -150,32 +156,42 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
   const glm::dvec3 origin(0.0);
   const Orbit3D base{origin, 8.0, 0.5, 1.0, 2.0};
 
-  const std::vector<double> distances = long_sweep ? std::vector<double>{1e-3, 0.1, 1, 10, 1e3, 1e4, 1e5, 1e6, 1e7}
-                                                   : std::vector<double>{1e-3, 1e3, 1e5, 1e7};
-  for (double d : distances) b.add("d", label("d", d), Orbit3D{origin, d, 0.5, 1.0, zoomed_df(d, 2.0)}, cluster_3d(origin));
+  const std::vector<double> distances = long_sweep
+                                            ? std::vector<double>{1e-3, 0.1, 1, 10, 1e3, 1e4, 1e5, 1e6, 1e7}
+                                            : std::vector<double>{1e-3, 1e3, 1e5, 1e7};
+  for (double d : distances)
+    b.add("d", label("d", d), Orbit3D{origin, d, 0.5, 1.0, zoomed_df(d, 2.0)}, cluster_3d(origin));
 
-  for (double df : long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3} : std::vector<double>{1e-3, 1e3})
+  for (double df :
+       long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3} : std::vector<double>{1e-3, 1e3})
     b.add("df", label("df", df), Orbit3D{origin, 8.0, 0.5, 1.0, df}, cluster_3d(origin));
 
   const double tiny = std::nextafter(0.0, 1.0);
-  std::vector<double> phis = {0.0, kPi, std::nextafter(kPi, 0.0), std::nextafter(kPi, 4.0), 4 * tiny, -4 * tiny};
+  std::vector<double> phis = {0.0,      kPi,      std::nextafter(kPi, 0.0), std::nextafter(kPi, 4.0),
+                              4 * tiny, -4 * tiny};
   if (long_sweep) phis.insert(phis.end(), {1e-300, 1e-16, 1e-8, -1e-8, kPi - 1e-8, kPi + 1e-8});
-  for (double phi : phis) b.add("phi", label("phi", phi), Orbit3D{origin, 8.0, 0.5, phi, 2.0}, cluster_3d(origin));
+  for (double phi : phis)
+    b.add("phi", label("phi", phi), Orbit3D{origin, 8.0, 0.5, phi, 2.0}, cluster_3d(origin));
 
   std::vector<double> thetas = {kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0)};
   if (long_sweep) thetas.insert(thetas.end(), {2 * kPi, 3 * kPi, 1e6});
-  for (double theta : thetas) b.add("theta", label("theta", theta), Orbit3D{origin, 8.0, theta, 1.0, 2.0}, cluster_3d(origin));
+  for (double theta : thetas)
+    b.add("theta", label("theta", theta), Orbit3D{origin, 8.0, theta, 1.0, 2.0}, cluster_3d(origin));
 
-  for (double res : {1.0 / b.side, 2.0 / b.side}) b.add("res", label("res", res), base, cluster_3d(origin), res);
+  for (double res : {1.0 / b.side, 2.0 / b.side})
+    b.add("res", label("res", res), base, cluster_3d(origin), res);
 
-  for (double shift : long_sweep ? std::vector<double>{1e3, 1e4, 1e5, 1e6, 1e7} : std::vector<double>{1e3, 1e5, 1e7}) {
+  for (double shift :
+       long_sweep ? std::vector<double>{1e3, 1e4, 1e5, 1e6, 1e7} : std::vector<double>{1e3, 1e5, 1e7}) {
     const glm::dvec3 target(shift, -0.7 * shift, 0.3 * shift);
     b.add("translate", label("shift", shift), Orbit3D{target, 8.0, 0.5, 1.0, 2.0}, cluster_3d(target));
   }
   for (double angle : {1.0, 2.5}) {
-    b.add("rotate", label("angle", angle), Orbit3D{origin, 8.0, 0.5 + angle, 1.0, 2.0}, cluster_3d(origin, angle));
+    b.add("rotate", label("angle", angle), Orbit3D{origin, 8.0, 0.5 + angle, 1.0, 2.0},
+          cluster_3d(origin, angle));
     const glm::dvec3 far(1e6, 1e6, -1e6);
-    b.add("rotate", label("angle@1e6", angle), Orbit3D{far, 8.0, 0.5 + angle, 1.0, 2.0}, cluster_3d(far, angle));
+    b.add("rotate", label("angle@1e6", angle), Orbit3D{far, 8.0, 0.5 + angle, 1.0, 2.0},
+          cluster_3d(far, angle));
   }
   {  // Grazing: a sphere tangent to one pixel-centre ray.
     Camera3D camera(b.side, b.side);
@@ -183,7 +199,8 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
     const Ray3D ray = camera.primary_ray(b.side / 3, b.side / 2);
     const glm::dvec3 side = glm::normalize(glm::cross(ray.direction, glm::dvec3(0, 0, 1)));
     Scene3D scene;
-    scene.spheres.push_back(Sphere{ray.origin + 6.0 * ray.direction + 0.7 * side, 0.7, Rgb8{200, 200, 40}, ""});
+    scene.spheres.push_back(
+        Sphere{ray.origin + 6.0 * ray.direction + 0.7 * side, 0.7, Rgb8{200, 200, 40}, ""});
     b.cases.push_back(StressCase3D{"grazing", "tangent to a pixel ray", camera, scene});
   }
   {  // The screen cuts through a sphere centred on the screen centre.
@@ -200,8 +217,9 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
     b.add("equal depth", "identical spheres", base, scene);
     Builder3D odd{b.side + 1, {}};
     odd.add("equal depth", "crossing pair", Orbit3D{origin, 8.0, 0.0, kPi / 2, 2.0},
-            Scene3D{kDefaultBackground, {Sphere{{0, -0.5, 0}, 1.5, Rgb8{0, 0, 255}, ""},
-                                         Sphere{{0, 0.5, 0}, 1.5, Rgb8{0, 255, 255}, ""}}});
+            Scene3D{kDefaultBackground,
+                    {Sphere{{0, -0.5, 0}, 1.5, Rgb8{0, 0, 255}, ""},
+                     Sphere{{0, 0.5, 0}, 1.5, Rgb8{0, 255, 255}, ""}}});
     for (auto& c : odd.cases) b.cases.push_back(std::move(c));
   }
   return b.cases;
@@ -242,7 +260,8 @@ bool image_valid(const CoverageImage& image, std::size_t objects) {
 }
 }  // namespace
 
-StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference, const ReferenceOptions& options) {
+StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference,
+                     const ReferenceOptions& options) {
   const Camera2D& camera = stress_case.camera;
   const CoverageImage image = reference_cast(camera, stress_case.scene, options);
   StressResult result;
@@ -256,7 +275,8 @@ StressResult measure(const StressCase2D& stress_case, const CoverageImage& refer
   return result;
 }
 
-StressResult measure(const StressCase3D& stress_case, const CoverageImage& reference, const ReferenceOptions& options) {
+StressResult measure(const StressCase3D& stress_case, const CoverageImage& reference,
+                     const ReferenceOptions& options) {
   const Camera3D& camera = stress_case.camera;
   const CoverageImage image = reference_cast(camera, stress_case.scene, options);
   StressResult result;

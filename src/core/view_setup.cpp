@@ -44,6 +44,15 @@ int parse_size_component(const std::string& text, const std::string& flag, int m
 }
 }  // namespace
 
+int parse_integer_flag(const std::string& text, const std::string& flag, int lo, int hi) {
+  errno = 0;
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno == ERANGE || value < lo || value > hi)
+    bad_flag(flag, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", text);
+  return int(value);
+}
+
 bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags) {
   static const char* const kFlags[] = {"--scene", "--mode", "--target", "--d",   "--theta",
                                        "--phi",   "--df",   "--res",    "--size"};

@@ -8,15 +8,6 @@
 namespace raycam::ui {
 
 namespace {
-int parse_int(const std::string& text, const std::string& flag, int lo, int hi) {
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < lo || value > hi)
-    throw std::invalid_argument(flag + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                                "], got '" + text + "'");
-  return int(value);
-}
-
 std::string next_value(const std::vector<std::string>& args, std::size_t& i) {
   if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + ": missing value (see --help)");
   i += 2;
@@ -36,18 +27,18 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
   if (parse_view_flag(args, i, options.view)) return true;
   const std::string flag = args[i];
   if (flag == "--width") {
-    options.width = parse_int(next_value(args, i), flag, 320, 7680);
+    options.width = parse_integer_flag(next_value(args, i), flag, 320, 7680);
   } else if (flag == "--height") {
-    options.height = parse_int(next_value(args, i), flag, 240, 4320);
+    options.height = parse_integer_flag(next_value(args, i), flag, 240, 4320);
   } else if (flag == "--inspect") {
     const std::string value = next_value(args, i);
     const std::size_t comma = value.find(',');
     PixelIndex pixel;
-    pixel.column = parse_int(value.substr(0, comma), flag + " (column)", 0, 1 << 20);
-    pixel.row = comma == std::string::npos ? 0 : parse_int(value.substr(comma + 1), flag + " (row)", 0, 1 << 20);
+    pixel.column = parse_integer_flag(value.substr(0, comma), flag + " (column)", 0, 1 << 20);
+    pixel.row = comma == std::string::npos ? 0 : parse_integer_flag(value.substr(comma + 1), flag + " (row)", 0, 1 << 20);
     options.inspect = pixel;
   } else if (flag == "--step") {
-    options.step = parse_int(next_value(args, i), flag, 0, 5);
+    options.step = parse_integer_flag(next_value(args, i), flag, 0, 5);
   } else if (flag == "--mistake") {
     const std::string name = next_value(args, i);
     if (name == "printed-rotation") options.mistakes.printed_rotation_sign = true;
@@ -78,15 +69,7 @@ AppState make_app_state(const AppOptions& options) {
   if (setup.dimension == 2) validate(setup.file.scene2d);
   else validate(setup.file.scene3d);
   AppState state;
-  state.file = setup.file;
-  state.scene_path = setup.scene_path;
-  state.dimension = setup.dimension;
-  state.orbit2d = setup.camera2d.orbit();
-  state.orbit3d = setup.camera3d.orbit();
-  state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
-  state.max_pixels_2d = setup.camera2d.max_pixels();
-  state.max_columns_3d = setup.camera3d.max_columns();
-  state.max_rows_3d = setup.camera3d.max_rows();
+  adopt_view_setup(state, setup);
   state.mistakes = options.mistakes;
   state.arccos_route = options.arccos_route;
   if (options.step) {

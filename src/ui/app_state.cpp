@@ -8,6 +8,18 @@
 
 namespace raycam::ui {
 
+void adopt_view_setup(AppState& state, const ViewSetup& setup) {
+  state.file = setup.file;
+  state.scene_path = setup.scene_path;
+  state.dimension = setup.dimension;
+  state.orbit2d = setup.camera2d.orbit();
+  state.orbit3d = setup.camera3d.orbit();
+  state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
+  state.max_pixels_2d = setup.camera2d.max_pixels();
+  state.max_columns_3d = setup.camera3d.max_columns();
+  state.max_rows_3d = setup.camera3d.max_rows();
+}
+
 void place_cameras(AppState& state) {
   if (state.dimension == 2) {
     Camera2D camera(state.max_pixels_2d);
@@ -75,15 +87,7 @@ bool open_scene(AppState& state, const std::string& path) {
     const ViewSetup setup = make_view_setup(flags);
     if (setup.dimension == 2) validate(setup.file.scene2d);
     else validate(setup.file.scene3d);
-    state.file = setup.file;
-    state.scene_path = path;
-    state.dimension = setup.dimension;
-    state.orbit2d = setup.camera2d.orbit();
-    state.orbit3d = setup.camera3d.orbit();
-    state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
-    state.max_pixels_2d = setup.camera2d.max_pixels();
-    state.max_columns_3d = setup.camera3d.max_columns();
-    state.max_rows_3d = setup.camera3d.max_rows();
+    adopt_view_setup(state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
     ++state.scene_version;

@@ -12,6 +12,7 @@
 #include "raycam/colour_map.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
+#include "raycam/view_setup.h"
 
 namespace raycam::ui {
 
@@ -78,6 +79,8 @@ struct AppState {
   char export_path[512] = "raycam-colour-map.png";
 };
 
+// Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
+void adopt_view_setup(AppState& state, const ViewSetup& setup);
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
 void place_cameras(AppState& state);
 // Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the

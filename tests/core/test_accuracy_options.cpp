@@ -47,7 +47,8 @@ TEST_CASE("bad accuracy flags name the flag and the accepted values", "[accuracy
     std::size_t i = 0;
     parse_accuracy_flag(args, i, flags);
   };
-  CHECK_THROWS_WITH(fails({"--precision", "half"}), Catch::Contains("--precision") && Catch::Contains("float"));
+  CHECK_THROWS_WITH(fails({"--precision", "half"}),
+                    Catch::Contains("--precision") && Catch::Contains("float"));
   CHECK_THROWS_WITH(fails({"--intersect", "quick"}), Catch::Contains("--intersect"));
   CHECK_THROWS_WITH(fails({"--spp", "0"}), Catch::Contains("--spp"));
   CHECK_THROWS_WITH(fails({"--spp", "4x"}), Catch::Contains("--spp"));

@@ -1,7 +1,6 @@
 // The exact 2D bar checked against independent facts: a circle's angular size seen from the eye, dense
 // sampling by the plain caster, mirror symmetry, a screen cutting a circle, and coverage summing to one.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "raycam/exact_bar.h"
@@ -43,7 +42,8 @@ TEST_CASE("a lone circle's footprint spans 2·asin(r/D) as seen from the eye", "
     const glm::dvec2 v = camera.view_direction();
     Scene2D scene;
     Circle c;
-    c.centre = camera.orbit().target + distance_beyond * v + random.uniform(-0.3, 0.3) * glm::dvec2(-v.y, v.x);
+    c.centre =
+        camera.orbit().target + distance_beyond * v + random.uniform(-0.3, 0.3) * glm::dvec2(-v.y, v.x);
     const double eye_distance = glm::length(c.centre - camera.eye());
     c.radius = random.uniform(0.05, 0.4) * eye_distance * std::tan(std::atan(1.0 / df) / 2);
     scene.circles.push_back(c);
@@ -57,12 +57,14 @@ TEST_CASE("a lone circle's footprint spans 2·asin(r/D) as seen from the eye", "
   }
 }
 
-TEST_CASE("coverage fractions sum to one and match dense sampling by the plain caster", "[exact][crosscheck]") {
+TEST_CASE("coverage fractions sum to one and match dense sampling by the plain caster",
+          "[exact][crosscheck]") {
   Random random(12);
   const int n = 24, m = 401;  // m sub-pixels per pixel: their centres are stratified samples of the pixel
   for (int trial = 0; trial < 40; ++trial) {
     const Scene2D scene = random_scene(random, random.integer(1, 7), 3.0);  // overlaps are common
-    const double d = random.uniform(0.5, 8), theta = random.uniform(-kPi, kPi), df = random.log_uniform(0.3, 3);
+    const double d = random.uniform(0.5, 8), theta = random.uniform(-kPi, kPi),
+                 df = random.log_uniform(0.3, 3);
     const Camera2D coarse = camera_at(n, d, theta, df);
     const Camera2D fine = camera_at(n * m, d, theta, df);
     const ExactBar bar = exact_bar(coarse, scene);
@@ -88,7 +90,8 @@ TEST_CASE("exact centre ids agree with the plain caster away from grazing rays",
   Random random(13);
   for (int trial = 0; trial < 50; ++trial) {
     const Scene2D scene = random_scene(random, random.integer(1, 8), 4.0);
-    const Camera2D camera = camera_at(128, random.uniform(0.5, 10), random.uniform(-kPi, kPi), random.uniform(0.5, 3));
+    const Camera2D camera =
+        camera_at(128, random.uniform(0.5, 10), random.uniform(-kPi, kPi), random.uniform(0.5, 3));
     const ExactBar bar = exact_bar(camera, scene);
     const ColourMap map = cast_primary_rays(camera, scene);
     for (int k = 0; k < camera.pixel_count(); ++k) {
@@ -101,7 +104,8 @@ TEST_CASE("exact centre ids agree with the plain caster away from grazing rays",
 
 TEST_CASE("a scene symmetric about the view axis gives mirror-symmetric coverage", "[exact][invariant]") {
   Scene2D scene;
-  const double x[] = {0.0, -2.0, 2.0, -3.5, 3.5}, y[] = {0.0, -1.0, -1.0, -4.0, -4.0}, r[] = {0.8, 0.6, 0.6, 1, 1};
+  const double x[] = {0.0, -2.0, 2.0, -3.5, 3.5}, y[] = {0.0, -1.0, -1.0, -4.0, -4.0},
+               r[] = {0.8, 0.6, 0.6, 1, 1};
   for (int i = 0; i < 5; ++i) scene.circles.push_back(Circle{{x[i], y[i]}, r[i], Rgb8{}, ""});
   const int mirror_of[] = {0, 2, 1, 4, 3};
   const Camera2D camera = camera_at(101, 5.0, kPi / 2, 1.0);
@@ -110,7 +114,8 @@ TEST_CASE("a scene symmetric about the view axis gives mirror-symmetric coverage
   for (int column = 0; column < n; ++column) {
     CHECK(bar.coverage_of(column, -1) == Approx(bar.coverage_of(n - 1 - column, -1)).margin(1e-9));
     for (int id = 0; id < 5; ++id)
-      CHECK(bar.coverage_of(column, id) == Approx(bar.coverage_of(n - 1 - column, mirror_of[id])).margin(1e-9));
+      CHECK(bar.coverage_of(column, id) ==
+            Approx(bar.coverage_of(n - 1 - column, mirror_of[id])).margin(1e-9));
   }
 }
 
@@ -141,4 +146,11 @@ TEST_CASE("the exact bar image averages colours by coverage", "[exact]") {
     CHECK(image.colours[std::size_t(column)].x == Approx(200 * w).margin(1e-9));
     CHECK(image.colours[std::size_t(column)].z == Approx(50 * w).margin(1e-9));
   }
+}
+
+TEST_CASE("the exact bar refuses scenes beyond its quadratic budget", "[exact]") {
+  Random random(14);
+  const Camera2D camera = camera_at(16, 6.0, kPi / 2, 1.5);
+  const Scene2D scene = random_scene(random, int(kMaxExactBarCircles) + 1, 50.0);
+  CHECK_THROWS_WITH(exact_bar(camera, scene), Catch::Contains("circles"));
 }

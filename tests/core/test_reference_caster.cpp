@@ -1,7 +1,6 @@
 // The configurable caster: it reproduces the plain caster exactly at its default knobs, converges to the
 // exact 2D bar with samples, and rejects bad knobs.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "raycam/exact_bar.h"
@@ -17,20 +16,20 @@ namespace {
 Scene2D random_scene_2d(Random& random, int count, double spread, glm::dvec2 offset = {0, 0}) {
   Scene2D scene;
   for (int i = 0; i < count; ++i)
-    scene.circles.push_back(Circle{offset + glm::dvec2(random.uniform(-spread, spread), random.uniform(-spread, spread)),
-                                   random.uniform(0.2, 1.5),
-                                   Rgb8{std::uint8_t(random.integer(0, 255)), std::uint8_t(random.integer(0, 255)), 7},
-                                   ""});
+    scene.circles.push_back(
+        Circle{offset + glm::dvec2(random.uniform(-spread, spread), random.uniform(-spread, spread)),
+               random.uniform(0.2, 1.5),
+               Rgb8{std::uint8_t(random.integer(0, 255)), std::uint8_t(random.integer(0, 255)), 7}, ""});
   return scene;
 }
 Scene3D random_scene_3d(Random& random, int count, double spread) {
   Scene3D scene;
   for (int i = 0; i < count; ++i)
-    scene.spheres.push_back(Sphere{{random.uniform(-spread, spread), random.uniform(-spread, spread),
-                                    random.uniform(-spread, spread)},
-                                   random.uniform(0.2, 1.5),
-                                   Rgb8{std::uint8_t(random.integer(0, 255)), 3, std::uint8_t(random.integer(0, 255))},
-                                   ""});
+    scene.spheres.push_back(Sphere{
+        {random.uniform(-spread, spread), random.uniform(-spread, spread), random.uniform(-spread, spread)},
+        random.uniform(0.2, 1.5),
+        Rgb8{std::uint8_t(random.integer(0, 255)), 3, std::uint8_t(random.integer(0, 255))},
+        ""});
   return scene;
 }
 }  // namespace
@@ -50,8 +49,11 @@ TEST_CASE("spp 1, double, stable, world coordinates equals cast_primary_rays id 
   for (int trial = 0; trial < 15; ++trial) {
     const Scene3D scene = random_scene_3d(random, random.integer(1, 8), 3.0);
     Camera3D camera(random.integer(1, 40), random.integer(1, 40));
-    camera.set_orbit(Orbit3D{{0, 0, 0}, random.log_uniform(0.5, 1e4), random.uniform(-kPi, kPi),
-                             random.uniform(0, kPi), random.log_uniform(0.1, 10)});
+    camera.set_orbit(Orbit3D{{0, 0, 0},
+                             random.log_uniform(0.5, 1e4),
+                             random.uniform(-kPi, kPi),
+                             random.uniform(0, kPi),
+                             random.log_uniform(0.1, 10)});
     CHECK(reference_cast(camera, scene, defaults).ids == cast_primary_rays(camera, scene).ids);
   }
 }
@@ -62,11 +64,13 @@ TEST_CASE("every scalar and frame agrees with the plain caster on ordinary scene
   for (int trial = 0; trial < 20; ++trial) {
     const Scene2D scene = random_scene_2d(random, random.integer(1, 6), 3.0);
     Camera2D camera(97);
-    camera.set_orbit(Orbit2D{{0, 0}, random.uniform(3, 10), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
+    camera.set_orbit(
+        Orbit2D{{0, 0}, random.uniform(3, 10), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
     const ColourMap plain = cast_primary_rays(camera, scene);
     for (Scalar scalar : {Scalar::float32, Scalar::float64, Scalar::extended})
       for (bool relative : {false, true}) {
-        const CoverageImage image = reference_cast(camera, scene, ReferenceOptions{scalar, IntersectFormula::stable, 1, relative});
+        const CoverageImage image =
+            reference_cast(camera, scene, ReferenceOptions{scalar, IntersectFormula::stable, 1, relative});
         for (int k = 0; k < camera.pixel_count(); ++k) {
           const std::size_t column = std::size_t(camera.column_of_pixel(k));
           // float rounds at ~6e-8 relative; treat rays within 1e-5 of a silhouette as grazing.
@@ -82,13 +86,15 @@ TEST_CASE("stratified samples converge to the exact bar's coverage colours", "[r
   for (int trial = 0; trial < 10; ++trial) {
     const Scene2D scene = random_scene_2d(random, random.integer(2, 6), 3.0);
     Camera2D camera(40);
-    camera.set_orbit(Orbit2D{{0, 0}, random.uniform(3, 8), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
+    camera.set_orbit(
+        Orbit2D{{0, 0}, random.uniform(3, 8), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
     const ExactBar bar = exact_bar(camera, scene);
     const CoverageImage exact = exact_bar_image(bar, scene);
     const double breakpoints = double(bar.footprint.size() - 1);
     for (int spp : {1, 16, 256}) {
       const double error = mean_colour_error(
-          reference_cast(camera, scene, ReferenceOptions{Scalar::float64, IntersectFormula::stable, spp, false}),
+          reference_cast(camera, scene,
+                         ReferenceOptions{Scalar::float64, IntersectFormula::stable, spp, false}),
           exact);
       // Each visibility change inside a pixel misclassifies at most one stratum of it (colour error ≤ 255
       // per channel over 1/spp of that pixel): the mean falls like 1/spp.
@@ -108,8 +114,8 @@ TEST_CASE("3D supersampling of a sphere seen head-on converges to its disc area"
   const double eye_distance = 4.0 + 2.0;
   const double disc = 2.0 * std::tan(std::asin(1.0 / eye_distance));
   const double expected = kPi * disc * disc / 4.0;
-  const CoverageImage image =
-      reference_cast(camera, scene, ReferenceOptions{Scalar::float64, IntersectFormula::stable, 256 * 256, true});
+  const CoverageImage image = reference_cast(
+      camera, scene, ReferenceOptions{Scalar::float64, IntersectFormula::stable, 256 * 256, true});
   CHECK(image.colours[0].x / 255.0 == Approx(expected).margin(2e-4));
   CHECK(image.ids[0] == 0);
 }
@@ -117,10 +123,12 @@ TEST_CASE("3D supersampling of a sphere seen head-on converges to its disc area"
 TEST_CASE("bad knobs are refused with the field named", "[reference]") {
   Camera3D camera(4, 4);
   Scene3D scene;
-  CHECK_THROWS_WITH(reference_cast(camera, scene, ReferenceOptions{Scalar::float64, IntersectFormula::stable, 8, false}),
-                    Catch::Contains("perfect square"));
+  CHECK_THROWS_WITH(
+      reference_cast(camera, scene, ReferenceOptions{Scalar::float64, IntersectFormula::stable, 8, false}),
+      Catch::Contains("perfect square"));
   Camera2D camera2d(4);
-  CHECK_THROWS_WITH(reference_cast(camera2d, Scene2D{}, ReferenceOptions{Scalar::float64, IntersectFormula::stable, 0, false}),
+  CHECK_THROWS_WITH(reference_cast(camera2d, Scene2D{},
+                                   ReferenceOptions{Scalar::float64, IntersectFormula::stable, 0, false}),
                     Catch::Contains("samples_per_pixel"));
   CHECK_THROWS_WITH(parse_scalar("half", "--precision"), Catch::Contains("--precision"));
   CHECK_THROWS_WITH(parse_formula("fast", "--intersect"), Catch::Contains("--intersect"));

@@ -1,7 +1,6 @@
 // MISSION.md invariants under stress: far, tiny and huge cameras, the poles and ±π, huge translations.
 // Also the handout's arccos route against atan2 near ±1 and near the poles.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -21,7 +20,8 @@ bool grazes_any(const Ray2D& ray, const std::vector<Circle>& circles, double tol
   for (const Circle& c : circles) {
     const glm::dvec2 f = c.centre - ray.origin;
     const glm::dvec2 perpendicular = f - glm::dot(f, ray.direction) * ray.direction;
-    if (std::abs(glm::length(perpendicular) - c.radius) <= tolerance * (c.radius + glm::length(f))) return true;
+    if (std::abs(glm::length(perpendicular) - c.radius) <= tolerance * (c.radius + glm::length(f)))
+      return true;
   }
   return false;
 }
@@ -79,7 +79,8 @@ TEST_CASE("invariant 7: nothing flips across the poles or when θ wraps", "[stre
     CHECK(ids_at(theta, 1.0) == at_pi);
 }
 
-TEST_CASE("invariants 5 and 6: symmetric scenes stay symmetric when translated by up to 1e7", "[stress][invariant]") {
+TEST_CASE("invariants 5 and 6: symmetric scenes stay symmetric when translated by up to 1e7",
+          "[stress][invariant]") {
   for (double shift : {0.0, 1e3, 1e5, 1e7}) {
     for (double theta : {kPi / 2, kPi, -kPi, 0.7}) {
       const glm::dvec2 target(shift, -0.3 * shift);
@@ -128,11 +129,12 @@ TEST_CASE("the handout's arccos route loses ~sqrt(2 eps) near ±1; atan2 does no
     worst_arccos = std::max(worst_arccos, std::abs(polar_angle(v2, AngleRoute::handout_arccos) - delta));
     worst_stable = std::max(worst_stable, std::abs(polar_angle(v2, AngleRoute::stable) - delta));
     const glm::dvec3 v3(std::cos(0.7) * std::sin(delta), std::sin(0.7) * std::sin(delta), std::cos(delta));
-    worst_arccos = std::max(worst_arccos, std::abs(spherical_angles(v3, AngleRoute::handout_arccos).phi - delta));
+    worst_arccos =
+        std::max(worst_arccos, std::abs(spherical_angles(v3, AngleRoute::handout_arccos).phi - delta));
     worst_stable = std::max(worst_stable, std::abs(spherical_angles(v3, AngleRoute::stable).phi - delta));
   }
   const double eps = std::numeric_limits<double>::epsilon();
-  CHECK(worst_stable <= 1e-18);                   // relative error of a few ulp of δ ≤ 1e-2
-  CHECK(worst_arccos > 0.1 * std::sqrt(eps));     // the √ε loss is real …
+  CHECK(worst_stable <= 1e-18);                     // relative error of a few ulp of δ ≤ 1e-2
+  CHECK(worst_arccos > 0.1 * std::sqrt(eps));       // the √ε loss is real …
   CHECK(worst_arccos <= 2.0 * std::sqrt(2 * eps));  // … and no worse than √(2ε) (≈ 2.1e-8)
 }

@@ -1,9 +1,8 @@
 // The short stress sweep for CI (the long one: scripts/stress_sweep.sh). Every case × {float, double} ×
 // {naive, stable} × {world, camera-relative}: nothing non-finite, double+stable within one pixel of the
 // exact reference, and float+stable under a stated bound where float+naive is not.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 
 #include "raycam/stress_cases.h"
 
@@ -35,7 +34,8 @@ void check_case(const Case& stress_case, int pixels, int line_pixels) {
   for (Scalar scalar : kScalars)
     for (IntersectFormula formula : kFormulas)
       for (bool relative : {false, true}) {
-        const StressResult result = measure(stress_case, reference, ReferenceOptions{scalar, formula, 1, relative});
+        const StressResult result =
+            measure(stress_case, reference, ReferenceOptions{scalar, formula, 1, relative});
         INFO(stress_case.group << " " << stress_case.name << " " << scalar_name(scalar) << " "
                                << formula_name(formula) << (relative ? " relative" : " world") << " id error "
                                << result.id_error);
