@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "commands.h"
+#include "raycam/accuracy_options.h"
 #include "raycam/ray_caster.h"
 #include "raycam/view_setup.h"
 
@@ -15,26 +16,37 @@ void print_help() {
   std::printf(
       "usage: raycam-cli render [--scene FILE] [--mode 2d|3d] [--target x,y[,z]] [--d D] [--theta DEG]\n"
       "                         [--phi DEG] [--df F] [--res R] [--size N | --size WxH]\n"
-      "                         [--out image.png] [--ids ids.txt]\n\n"
+      "                         [--method M] [--threads T] [accuracy knobs] [--out image.png] [--ids ids.txt]\n\n"
       "Casts one primary ray per pixel (nearest object wins, ties to the lower index) and writes the colour\n"
       "map. Flags override the scene file's camera preset. Angles in degrees.\n\n%s"
+      "  --method M          automatic (default) | plain | culled | footprint | binned: the caster (README,\n"
+      "                      \"Speed\"); every method gives the plain loop's ids\n"
+      "  --threads T         worker threads in [1, 256] (default: every hardware thread)\n%s"
       "  --out FILE          PNG of the colour map (2D: the bar as an n x %d image; column 0 = the eye's\n"
       "                      left). Default: render.png, unless only --ids is given\n"
       "  --ids FILE          object ids as text: one image row per line, space-separated, -1 = background\n"
       "  --help              this text\n",
-      view_flags_help(), kBarHeight);
+      view_flags_help(), accuracy_flags_help(), kBarHeight);
 }
 }  // namespace
 
 int run_render(const Args& args) {
   ViewFlags flags;
+  AccuracyFlags accuracy;
+  CastOptions cast_options;
   std::string out_path, ids_path;
   for (std::size_t i = 0; i < args.size();) {
     if (args[i] == "--help" || args[i] == "-h") {
       print_help();
       return 0;
     }
-    if (parse_view_flag(args, i, flags)) continue;
+    if (parse_view_flag(args, i, flags) || parse_accuracy_flag(args, i, accuracy)) continue;
+    if ((args[i] == "--method" || args[i] == "--threads") && i + 1 < args.size()) {
+      if (args[i] == "--method") cast_options.method = parse_cast_method(args[i + 1], args[i]);
+      else cast_options.threads = parse_integer_flag(args[i + 1], args[i], 1, 256);
+      i += 2;
+      continue;
+    }
     if (args[i] == "--out" || args[i] == "--ids") {
       if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + ": missing file name");
       (args[i] == "--out" ? out_path : ids_path) = args[i + 1];
@@ -47,12 +59,14 @@ int run_render(const Args& args) {
 
   const ViewSetup setup = make_view_setup(flags);
   ColourMap map;
-  if (setup.dimension == 2) {
+  if (accuracy.given) {
+    map = render_with_accuracy(setup, accuracy);
+  } else if (setup.dimension == 2) {
     validate(setup.file.scene2d);
-    map = cast_primary_rays(setup.camera2d, setup.file.scene2d);
+    map = cast_primary_rays(setup.camera2d, setup.file.scene2d, cast_options);
   } else {
     validate(setup.file.scene3d);
-    map = cast_primary_rays(setup.camera3d, setup.file.scene3d);
+    map = cast_primary_rays(setup.camera3d, setup.file.scene3d, cast_options);
   }
   long long background = 0;
   for (int id : map.ids) background += id < 0;

@@ -1,5 +1,11 @@
 #include "raycam/ray_caster.h"
 
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+
+#include "footprint_caster.h"
+
 namespace raycam {
 
 namespace {
@@ -14,11 +20,13 @@ Hit nearest_of(const std::vector<Object>& objects, const Ray& ray, IntersectForm
   return hit;
 }
 
-template <class Object>
-void store(ColourMap& map, std::size_t index, const Hit& hit, const std::vector<Object>& objects) {
-  if (hit.id < 0) return;  // the map is pre-filled with the background
+template <class Scene>
+void store(ColourMap& map, std::size_t index, const Hit& hit, const Scene& scene) {
   map.ids[index] = hit.id;
-  map.colours[index] = objects[std::size_t(hit.id)].colour;
+  if constexpr (std::is_same_v<Scene, Scene2D>)
+    map.colours[index] = hit.id < 0 ? scene.background : scene.circles[std::size_t(hit.id)].colour;
+  else
+    map.colours[index] = hit.id < 0 ? scene.background : scene.spheres[std::size_t(hit.id)].colour;
 }
 }  // namespace
 
@@ -30,33 +38,84 @@ Hit nearest_hit(const std::vector<Sphere>& spheres, const Ray3D& ray, IntersectF
   return nearest_of(spheres, ray, formula);
 }
 
+namespace {
+// The accelerated casters assume the camera's rays are the right ones: pixel centres and unit directions.
+// The classic mistakes that change that (edges, no renormalising) are on-screen lessons: the plain loop.
+bool plain_only(const ClassicMistakes& mistakes) { return mistakes.pixel_edges || mistakes.skip_renormalise; }
+
+void resize(ColourMap& map, int width, int height) {
+  map.width = width;
+  map.height = height;
+  map.colours.resize(std::size_t(width) * height);
+  map.ids.resize(std::size_t(width) * height);
+}
+}  // namespace
+
+void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
+                       CastStats* stats) {
+  const int n = camera.pixel_count();
+  resize(out, n, 1);
+  CastStats work;
+  if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
+    detail::cast_accelerated(camera, scene, out, options, work);
+  } else {
+    for (int k = 0; k < n; ++k) {
+      const Hit hit = nearest_hit(scene.circles, camera.primary_ray(k), options.formula);
+      store(out, out.index(0, camera.column_of_pixel(k)), hit, scene);
+    }
+    work = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0, 0};
+  }
+  if (stats) *stats = work;
+}
+
+void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
+                       CastStats* stats) {
+  resize(out, camera.columns(), camera.rows());
+  CastStats work;
+  if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
+    detail::cast_accelerated(camera, scene, out, options, work);
+  } else {
+    for (int row = 0; row < camera.rows(); ++row)
+      for (int column = 0; column < camera.columns(); ++column)
+        store(out, out.index(row, column), nearest_hit(scene.spheres, camera.primary_ray(row, column), options.formula),
+              scene);
+    const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
+    work = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0, 0};
+  }
+  if (stats) *stats = work;
+}
+
 ColourMap cast_primary_rays(const Camera2D& camera, const Scene2D& scene, const CastOptions& options,
                             CastStats* stats) {
-  const int n = camera.pixel_count();
-  ColourMap map(n, 1, scene.background);
-  for (int k = 0; k < n; ++k) {
-    const Hit hit = nearest_hit(scene.circles, camera.primary_ray(k), options.formula);
-    store(map, map.index(0, camera.column_of_pixel(k)), hit, scene.circles);
-  }
-  if (stats)
-    *stats = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0};
+  ColourMap map;
+  cast_primary_rays(camera, scene, map, options, stats);
   return map;
 }
 
 ColourMap cast_primary_rays(const Camera3D& camera, const Scene3D& scene, const CastOptions& options,
                             CastStats* stats) {
-  ColourMap map(camera.columns(), camera.rows(), scene.background);
-  for (int row = 0; row < camera.rows(); ++row) {
-    for (int column = 0; column < camera.columns(); ++column) {
-      const Hit hit = nearest_hit(scene.spheres, camera.primary_ray(row, column), options.formula);
-      store(map, map.index(row, column), hit, scene.spheres);
-    }
-  }
-  if (stats) {
-    const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
-    *stats = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0};
-  }
+  ColourMap map;
+  cast_primary_rays(camera, scene, map, options, stats);
   return map;
+}
+
+namespace {
+constexpr std::pair<CastMethod, const char*> kMethodNames[] = {
+    {CastMethod::automatic, "automatic"}, {CastMethod::plain, "plain"},   {CastMethod::culled, "culled"},
+    {CastMethod::footprint, "footprint"}, {CastMethod::binned, "binned"},
+};
+}  // namespace
+
+const char* cast_method_name(CastMethod method) {
+  for (const auto& [value, name] : kMethodNames)
+    if (value == method) return name;
+  return "?";
+}
+
+CastMethod parse_cast_method(const std::string& name, const std::string& flag) {
+  for (const auto& [value, known] : kMethodNames)
+    if (name == known) return value;
+  throw std::invalid_argument(flag + ": expected automatic, plain, culled, footprint or binned, got '" + name + "'");
 }
 
 }  // namespace raycam

@@ -59,9 +59,9 @@ bool recast_if_needed(AppState& state, bool interacting) {
     return false;
   }
   const bool is_2d = state.dimension == 2;
-  const double objects = double(is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
   const double rays = is_2d ? state.camera2d.pixel_count() : double(state.camera3d.columns()) * state.camera3d.rows();
-  const double predicted_ms = rays * std::max(objects, 1.0) * state.ns_per_test * 1e-6;
+  // Per ray, not per object: the accelerated casters' cost follows what the pixels see, not the object count.
+  const double predicted_ms = rays * state.ns_per_ray * 1e-6;
   state.refine_pending = interacting && predicted_ms > kInteractiveBudgetMs;
   if (state.refine_pending) {  // fewer rays in proportion: res scales both sides in 3D
     const double factor = is_2d ? kInteractiveBudgetMs / predicted_ms : std::sqrt(kInteractiveBudgetMs / predicted_ms);
@@ -69,11 +69,10 @@ bool recast_if_needed(AppState& state, bool interacting) {
     else state.camera3d.set_res(std::max(state.res * factor, 1.0 / std::max(state.max_columns_3d, state.max_rows_3d)));
   }
   const auto start = std::chrono::steady_clock::now();
-  state.map = is_2d ? cast_primary_rays(state.camera2d, state.file.scene2d, {}, &state.stats)
-                    : cast_primary_rays(state.camera3d, state.file.scene3d, {}, &state.stats);
+  if (is_2d) cast_primary_rays(state.camera2d, state.file.scene2d, state.map, state.cast_options, &state.stats);
+  else cast_primary_rays(state.camera3d, state.file.scene3d, state.map, state.cast_options, &state.stats);
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (state.stats.intersection_tests > 100000)
-    state.ns_per_test = state.cast_ms * 1e6 / double(state.stats.intersection_tests);
+  if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);
   state.cameras_dirty = false;
   ++state.map_version;
   ++state.cast_count;

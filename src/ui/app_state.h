@@ -60,11 +60,12 @@ struct AppState {
   std::uint64_t scene_version = 1;  // bumped when the objects change
   std::uint64_t map_version = 0;    // bumped at every cast
   ColourMap map;
+  CastOptions cast_options;  // the caster's method (the app's "Caster" combo); same ids whatever it is
   CastStats stats;
   double cast_ms = 0.0;
   long long frame_count = 0, cast_count = 0;
   double frame_ms = 0.0;
-  double ns_per_test = 2.0;     // measured at every full cast; predicts the next cast's cost
+  double ns_per_ray = 20.0;     // measured at every full cast; predicts the next cast's cost
   bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
 
   // ---- requests to the executable (only it knows about windows and files of pixels) ----

@@ -25,8 +25,6 @@ bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
 }
 
-ImVec4 rgba(Rgb8 c) { return {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, 1.0f}; }
-
 // Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
 // a double-click on an object makes it the target.
 void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const OverheadMapping* mapping) {
@@ -127,11 +125,13 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     construction_section(state);
     inspector_section(state);
     mistakes_section(state);
+    caster_section(state);
     files_section(state);
     lecture_section(state);
   }
   ImGui::End();
-  if (begin_fixed_window("##status", {right_x, body_h, right_w, status_height}, ImGuiWindowFlags_NoTitleBar)) status_line(state);
+  layout.status = {right_x, body_h, right_w, status_height};
+  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state);
   ImGui::End();
   help_overlay(state);
   ++state.frame_count;

@@ -29,6 +29,7 @@ struct FrameLayout {
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only
+  Rect status;    // the status line (frame time, work done and skipped)
 };
 
 class FrameRenderer {

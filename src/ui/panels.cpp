@@ -208,6 +208,24 @@ void mistakes_section(AppState& state) {
   if (changed) state.cameras_dirty = true;
 }
 
+// ---- caster ---------------------------------------------------------------------------------------------
+void caster_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Caster (speed)")) return;
+  static constexpr CastMethod kMethods[] = {CastMethod::automatic, CastMethod::plain, CastMethod::culled,
+                                            CastMethod::footprint, CastMethod::binned};
+  if (ImGui::BeginCombo("method", cast_method_name(state.cast_options.method))) {
+    for (CastMethod method : kMethods)
+      if (ImGui::Selectable(cast_method_name(method), method == state.cast_options.method)) {
+        state.cast_options.method = method;
+        state.cameras_dirty = true;
+      }
+    ImGui::EndCombo();
+  }
+  explain("Every method gives the same image as the handout's plain loop; the faster ones skip objects behind the "
+          "screen or out of view, and test each object only on the pixels its projection can cover. The status "
+          "line shows the work done and skipped.");
+}
+
 // ---- files ---------------------------------------------------------------------------------------------
 void files_section(AppState& state) {
   if (!ImGui::CollapsingHeader("Scene file")) return;
@@ -243,9 +261,14 @@ void lecture_section(AppState& state) {
 
 // ---- status line ---------------------------------------------------------------------------------------
 void status_line(const AppState& state) {
-  ImGui::Text("frame %.1f ms | cast %.2f ms, %lld casts in %lld frames | rays %lld | tests %lld | culled %lld", state.frame_ms,
-              state.cast_ms, state.cast_count, state.frame_count, state.stats.rays, state.stats.intersection_tests,
-              state.stats.objects_culled);
+  // Work skipped, against what the handout's plain loop would do (every object for every pixel).
+  const CastStats& w = state.stats;
+  const double objects = double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
+  const double plain_tests = double(w.rays) * objects;
+  ImGui::Text("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld (%.1f%% of plain) | culled %lld",
+              state.frame_ms, state.cast_ms, cast_method_name(state.cast_options.method), state.cast_count,
+              state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
+              plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0, w.objects_culled);
   if (state.refine_pending) {
     ImGui::SameLine();
     ImGui::TextColored(kDim, "| coarse preview while dragging");

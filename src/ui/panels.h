@@ -10,6 +10,7 @@ void camera_section(AppState& state);
 void construction_section(AppState& state);
 void inspector_section(const AppState& state);
 void mistakes_section(AppState& state);
+void caster_section(AppState& state);
 void files_section(AppState& state);
 void lecture_section(AppState& state);
 void status_line(const AppState& state);

@@ -92,7 +92,11 @@ TEST_CASE("the caster agrees with an independent angular visibility test", "[cas
 TEST_CASE("stats count rays and tests", "[caster]") {
   Camera3D camera(10, 7);
   CastStats stats;
-  cast_primary_rays(camera, demo_scene_3d(), {}, &stats);
+  CastOptions plain;
+  plain.method = CastMethod::plain;
+  cast_primary_rays(camera, demo_scene_3d(), plain, &stats);
   CHECK(stats.rays == 70);
   CHECK(stats.intersection_tests == 70 * 5);
+  CHECK(stats.objects_culled == 0);
+  CHECK(stats.pixels_skipped == 0);
 }

@@ -57,12 +57,12 @@ TEST_CASE("options outside their range are refused before any window opens", "[u
 
 TEST_CASE("while dragging, an expensive cast is a coarse preview, refined when the drag ends", "[ui][preview]") {
   ui::AppState state = state_for({"--size", "512x512"});
-  state.ns_per_test = 50.0;  // pretend a slow machine: 512² rays × 5 spheres × 50 ns ≈ 66 ms > the budget
+  state.ns_per_ray = 250.0;  // pretend a slow machine: 512² rays × 250 ns ≈ 66 ms > the budget
   state.cameras_dirty = true;
   REQUIRE(ui::recast_if_needed(state, true));
   CHECK(state.refine_pending);
   CHECK(state.map.width < 512);
-  CHECK(double(state.map.width) * state.map.height * 5 * 50e-6 <= ui::kInteractiveBudgetMs * 1.1);
+  CHECK(double(state.map.width) * state.map.height * 250e-6 <= ui::kInteractiveBudgetMs * 1.1);
   CHECK_FALSE(ui::recast_if_needed(state, true));  // nothing changed and still dragging: no work
   REQUIRE(ui::recast_if_needed(state, false));      // released: the full image
   CHECK_FALSE(state.refine_pending);

@@ -1,0 +1,205 @@
+#include "footprint_caster.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "parallel.h"
+#include "screen_footprint.h"
+
+namespace raycam::detail {
+
+namespace {
+constexpr int kBandRows = 8;              // a band's depth buffer stays in cache at any width
+constexpr int kObjectsPerChunk = 4096;    // projection work handed out per item
+constexpr long long kThreadedPixels = 128 * 128;  // below this one thread finishes before others start
+
+// The objects that survive culling, in index order, with the pixels each can cover.
+template <class Box>
+struct Visible {
+  std::vector<int> index;
+  std::vector<Box> box;
+};
+
+Visible<PixelBox> visible_spheres(const Camera3D& camera, const Scene3D& scene, int workers) {
+  const EyeFrame3D frame(camera);
+  const int count = int(scene.spheres.size());
+  std::vector<PixelBox> boxes(static_cast<std::size_t>(count));
+  const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
+  parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
+    const int end = std::min(count, (chunk + 1) * kObjectsPerChunk);
+    for (int i = chunk * kObjectsPerChunk; i < end; ++i)
+      boxes[std::size_t(i)] = sphere_pixels(frame, scene.spheres[std::size_t(i)], camera.rows(), camera.columns());
+  });
+  Visible<PixelBox> visible;
+  for (int i = 0; i < count; ++i) {
+    if (boxes[std::size_t(i)].empty()) continue;
+    visible.index.push_back(i);
+    visible.box.push_back(boxes[std::size_t(i)]);
+  }
+  return visible;
+}
+
+// Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
+// object order because objects are appended in order.
+struct Bands {
+  std::vector<int> start, entries;
+};
+
+Bands bin_by_band(const Visible<PixelBox>& visible, int bands) {
+  Bands binned;
+  binned.start.assign(std::size_t(bands) + 1, 0);
+  for (const PixelBox& box : visible.box)
+    for (int b = box.rows.first / kBandRows; b <= box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
+  for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
+  binned.entries.resize(std::size_t(binned.start.back()));
+  std::vector<int> fill(binned.start.begin(), binned.start.end() - 1);
+  for (int j = 0; j < int(visible.box.size()); ++j) {
+    const PixelBox& box = visible.box[std::size_t(j)];
+    for (int b = box.rows.first / kBandRows; b <= box.rows.last / kBandRows; ++b)
+      binned.entries[std::size_t(fill[std::size_t(b)]++)] = j;
+  }
+  return binned;
+}
+
+// One worker's depth buffer for the band it is casting.
+struct BandScratch {
+  std::vector<double> depth;
+  std::vector<int> id;
+  std::vector<unsigned char> touched;
+  long long tests = 0, touched_pixels = 0;
+  void reset(std::size_t pixels) {
+    depth.assign(pixels, kNoHit<double>);
+    id.assign(pixels, -1);
+    touched.assign(pixels, 0);
+  }
+  // The plain loop's depth test: strict '<' in object order keeps the lower index on a tie.
+  void test(std::size_t p, int object, const Ray3D& ray, const Sphere& s, IntersectFormula formula) {
+    const double t = nearest_hit_t(ray.origin, ray.direction, s.centre, s.radius, formula);
+    ++tests;
+    if (t < depth[p]) {
+      depth[p] = t;
+      id[p] = object;
+    }
+  }
+};
+
+// Splats candidate j's box (clipped to the band's rows) into the band's depth buffer.
+void splat(const Camera3D& camera, const Scene3D& scene, const Visible<PixelBox>& visible, int j, int row_begin,
+           int row_end, IntersectFormula formula, BandScratch& scratch) {
+  const PixelBox& box = visible.box[std::size_t(j)];
+  const int object = visible.index[std::size_t(j)];
+  const Sphere& sphere = scene.spheres[std::size_t(object)];
+  const int first = std::max(box.rows.first, row_begin), last = std::min(box.rows.last, row_end - 1);
+  for (int row = first; row <= last; ++row) {
+    const std::size_t line = std::size_t(row - row_begin) * camera.columns();
+    for (int column = box.columns.first; column <= box.columns.last; ++column) {
+      const std::size_t p = line + std::size_t(column);
+      scratch.touched_pixels += scratch.touched[p] == 0;
+      scratch.touched[p] = 1;
+      scratch.test(p, object, camera.primary_ray(row, column), sphere, formula);
+    }
+  }
+}
+
+void write_band(const Scene3D& scene, int row_begin, int row_end, const BandScratch& scratch, ColourMap& out) {
+  const std::size_t offset = out.index(row_begin, 0);
+  const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const int id = scratch.id[p];
+    out.ids[offset + p] = id;
+    out.colours[offset + p] = id < 0 ? scene.background : scene.spheres[std::size_t(id)].colour;
+  }
+}
+}  // namespace
+
+void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
+                      CastStats& stats) {
+  const int rows = camera.rows(), columns = camera.columns();
+  const long long pixels = static_cast<long long>(rows) * columns;
+  const int workers = pixels >= kThreadedPixels ? resolve_threads(options.threads) : 1;
+  const Visible<PixelBox> visible = visible_spheres(camera, scene, workers);
+
+  CastMethod method = options.method;
+  if (method == CastMethod::automatic)
+    method = int(visible.index.size()) <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
+  const int bands = (rows + kBandRows - 1) / kBandRows;
+  const Bands binned = method == CastMethod::binned ? bin_by_band(visible, bands) : Bands{};
+
+  std::vector<BandScratch> scratch(std::size_t(std::min(workers, bands)));
+  parallel_items(bands, workers, [&](int worker, int band) {
+    BandScratch& s = scratch[std::size_t(worker)];
+    const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
+    s.reset(std::size_t(row_end - row_begin) * columns);
+    if (method == CastMethod::culled) {  // every pixel, every object that survived culling
+      for (int row = row_begin; row < row_end; ++row)
+        for (int column = 0; column < columns; ++column) {
+          const Ray3D ray = camera.primary_ray(row, column);
+          const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
+          for (int object : visible.index) s.test(p, object, ray, scene.spheres[std::size_t(object)], options.formula);
+        }
+      s.touched_pixels += static_cast<long long>(row_end - row_begin) * columns;
+    } else if (method == CastMethod::binned) {
+      for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
+        splat(camera, scene, visible, binned.entries[std::size_t(e)], row_begin, row_end, options.formula, s);
+    } else {  // footprint: every visible object's box checked against the band
+      for (int j = 0; j < int(visible.index.size()); ++j) {
+        const PixelRange& box_rows = visible.box[std::size_t(j)].rows;
+        if (box_rows.last >= row_begin && box_rows.first < row_end)
+          splat(camera, scene, visible, j, row_begin, row_end, options.formula, s);
+      }
+    }
+    write_band(scene, row_begin, row_end, s, out);
+  });
+
+  stats.rays = pixels;
+  stats.objects_culled = static_cast<long long>(scene.spheres.size() - visible.index.size());
+  stats.intersection_tests = 0;
+  long long touched = 0;
+  for (const BandScratch& s : scratch) {
+    stats.intersection_tests += s.tests;
+    touched += s.touched_pixels;
+  }
+  stats.pixels_skipped = pixels - touched;
+}
+
+void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
+                      CastStats& stats) {
+  // The 3D algorithm on one row, on one thread: a bar of a few thousand pixels takes microseconds.
+  const EyeFrame2D frame(camera);
+  const int n = camera.pixel_count();
+  std::vector<int> visible;
+  std::vector<PixelRange> range;
+  for (int i = 0; i < int(scene.circles.size()); ++i) {
+    const PixelRange r = circle_pixels(frame, scene.circles[std::size_t(i)], n);
+    if (r.empty()) continue;
+    visible.push_back(i);
+    range.push_back(options.method == CastMethod::culled ? PixelRange{0, n - 1} : r);
+  }
+  std::vector<double> depth(std::size_t(n), kNoHit<double>);
+  std::vector<int> id(std::size_t(n), -1);
+  std::vector<unsigned char> touched(std::size_t(n), 0);
+  long long tests = 0, touched_pixels = 0;
+  for (std::size_t j = 0; j < visible.size(); ++j) {  // object order, strict '<': ties to the lower index
+    const Circle& circle = scene.circles[std::size_t(visible[j])];
+    for (int k = range[j].first; k <= range[j].last; ++k) {
+      const Ray2D ray = camera.primary_ray(k);
+      const double t = nearest_hit_t(ray.origin, ray.direction, circle.centre, circle.radius, options.formula);
+      ++tests;
+      touched_pixels += touched[std::size_t(k)] == 0;
+      touched[std::size_t(k)] = 1;
+      if (t < depth[std::size_t(k)]) {
+        depth[std::size_t(k)] = t;
+        id[std::size_t(k)] = visible[j];
+      }
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    const std::size_t column = std::size_t(camera.column_of_pixel(k));
+    const int object = id[std::size_t(k)];
+    out.ids[column] = object;
+    out.colours[column] = object < 0 ? scene.background : scene.circles[std::size_t(object)].colour;
+  }
+  stats = CastStats{n, tests, static_cast<long long>(scene.circles.size() - visible.size()), n - touched_pixels};
+}
+
+}  // namespace raycam::detail

@@ -1,0 +1,19 @@
+// The accelerated casters (CastMethod culled, footprint, binned). Same ids as the plain loop: each pixel
+// runs the camera's own primary_ray and the same nearest_hit_t, in object order with a strict '<' depth
+// test, over a superset of the objects that can hit it.
+#pragma once
+
+#include "raycam/ray_caster.h"
+
+namespace raycam::detail {
+
+// Crossover measured by `raycam-cli bench speed` (README, "Speed"): below it, scanning every visible
+// object's box per band beats sorting the objects into bands first.
+inline constexpr int kBinnedCrossover = 64;
+
+void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out,
+                      const CastOptions& options, CastStats& stats);
+void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& out,
+                      const CastOptions& options, CastStats& stats);
+
+}  // namespace raycam::detail

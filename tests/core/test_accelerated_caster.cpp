@@ -1,0 +1,173 @@
+// The accelerated casters (culled, footprint, binned, automatic) against the plain loop: the same ids and
+// colours, pixel for pixel, on random scenes, on rays built to graze a sphere, on the numerical stress
+// cases, with 1 to 3 threads; and the work they skip, against what geometry says they must skip.
+#include <catch2/catch.hpp>
+
+#include "raycam/ray_caster.h"
+#include "raycam/stress_cases.h"
+#include "test_support.h"
+
+using namespace raycam;
+using test::kPi;
+
+namespace {
+constexpr CastMethod kAccelerated[] = {CastMethod::culled, CastMethod::footprint, CastMethod::binned,
+                                       CastMethod::automatic};
+
+CastOptions with(CastMethod method, int threads = 1) {
+  CastOptions options;
+  options.method = method;
+  options.threads = threads;
+  return options;
+}
+
+// Number of pixels whose id or colour differs.
+int differences(const ColourMap& a, const ColourMap& b) {
+  if (a.width != b.width || a.height != b.height) return -1;
+  int count = 0;
+  for (std::size_t i = 0; i < a.ids.size(); ++i) count += a.ids[i] != b.ids[i] || a.colours[i] != b.colours[i];
+  return count;
+}
+
+template <class Camera, class Scene>
+void check_every_method_matches_plain(const Camera& camera, const Scene& scene) {
+  const ColourMap plain = cast_primary_rays(camera, scene, with(CastMethod::plain));
+  for (CastMethod method : kAccelerated)
+    for (int threads : {1, 2, 3}) {
+      INFO(cast_method_name(method) << ", " << threads << " threads");
+      CHECK(differences(cast_primary_rays(camera, scene, with(method, threads)), plain) == 0);
+    }
+}
+
+Scene3D random_spheres(test::Random& random, int count, double spread, double max_radius) {
+  Scene3D scene;
+  scene.background = {1, 2, 3};
+  for (int i = 0; i < count; ++i)
+    scene.spheres.push_back({{random.uniform(-spread, spread), random.uniform(-spread, spread),
+                              random.uniform(-spread, spread)},
+                             random.log_uniform(max_radius / 30, max_radius),
+                             {std::uint8_t(i * 37), std::uint8_t(i * 11), std::uint8_t(i)},
+                             ""});
+  return scene;
+}
+}  // namespace
+
+TEST_CASE("every method gives the plain loop's ids on random 3D scenes", "[caster][accelerated]") {
+  test::Random random(2024);
+  for (int trial = 0; trial < 60; ++trial) {
+    // Near cameras put spheres across the screen, around the eye and behind it; far ones shrink them.
+    const int count = random.integer(1, trial % 3 == 0 ? 400 : 40);
+    const Scene3D scene = random_spheres(random, count, 6.0, 3.0);
+    Camera3D camera(random.integer(1, 70), random.integer(1, 50));
+    camera.set_orbit({{random.uniform(-2, 2), random.uniform(-2, 2), random.uniform(-2, 2)},
+                      random.log_uniform(0.05, 40),
+                      random.uniform(-kPi, kPi),
+                      random.uniform(0, kPi),
+                      random.log_uniform(0.05, 20)});
+    INFO("trial " << trial << ", " << count << " spheres");
+    check_every_method_matches_plain(camera, scene);
+  }
+}
+
+TEST_CASE("every method gives the plain loop's ids on random 2D bars", "[caster][accelerated]") {
+  test::Random random(2025);
+  for (int trial = 0; trial < 200; ++trial) {
+    Scene2D scene;
+    for (int i = 0, count = random.integer(1, 60); i < count; ++i)
+      scene.circles.push_back({{random.uniform(-6, 6), random.uniform(-6, 6)},
+                               random.log_uniform(0.05, 3),
+                               {std::uint8_t(i), 9, 9},
+                               ""});
+    Camera2D camera(random.integer(1, 600));
+    camera.set_orbit({{random.uniform(-2, 2), random.uniform(-2, 2)},
+                      random.log_uniform(0.05, 40),
+                      random.uniform(-kPi, kPi),
+                      random.log_uniform(0.05, 20)});
+    INFO("trial " << trial);
+    check_every_method_matches_plain(camera, scene);
+  }
+}
+
+TEST_CASE("spheres built to graze pixel-centre rays give the plain loop's ids", "[caster][accelerated]") {
+  // A sphere whose surface passes through a point of a pixel's ray, perpendicular to it: that ray is
+  // tangent, to rounding, and the box edge falls right on that pixel.
+  test::Random random(7);
+  for (int trial = 0; trial < 40; ++trial) {
+    Camera3D camera(48, 40);
+    camera.set_orbit({{0, 0, 0}, random.uniform(3, 12), random.uniform(-kPi, kPi), random.uniform(0.1, 3.0),
+                      random.uniform(0.5, 3)});
+    Scene3D scene;
+    for (int i = 0; i < 12; ++i) {
+      const Ray3D ray = camera.primary_ray(random.integer(0, 39), random.integer(0, 47));
+      const glm::dvec3 side = glm::normalize(glm::cross(ray.direction, glm::dvec3(0.3, -0.5, 0.8)));
+      const double radius = random.log_uniform(0.01, 2);
+      const glm::dvec3 touch = ray.origin + random.uniform(0.5, 15) * ray.direction;
+      scene.spheres.push_back({touch + radius * side, radius, {std::uint8_t(i), 0, 0}, ""});
+    }
+    check_every_method_matches_plain(camera, scene);
+  }
+}
+
+TEST_CASE("the numerical stress cases give the plain loop's ids", "[caster][accelerated][stress]") {
+  for (const StressCase3D& c : stress_cases_3d(false)) {
+    INFO(c.group << ": " << c.name);
+    check_every_method_matches_plain(c.camera, c.scene);
+  }
+  for (const StressCase2D& c : stress_cases_2d(false)) {
+    INFO(c.group << ": " << c.name);
+    check_every_method_matches_plain(c.camera, c.scene);
+  }
+}
+
+TEST_CASE("objects behind the screen or out of view are culled, never tested", "[caster][accelerated]") {
+  Camera3D camera(64, 64);
+  camera.set_orbit({{0, 0, 0}, 10.0, 0.0, kPi / 2, 2.0});  // on +x, looking down -x; eye at x = 12
+  Scene3D scene;
+  scene.spheres = {{{0, 0, 0}, 1.0, {1, 0, 0}, "in view"},
+                   {{11, 0, 0}, 0.5, {2, 0, 0}, "between eye and screen"},
+                   {{20, 0, 0}, 1.0, {3, 0, 0}, "behind the eye"},
+                   {{0, 30, 0}, 1.0, {4, 0, 0}, "outside the field of view (26.6 deg half-angle)"}};
+  for (CastMethod method : kAccelerated) {
+    CastStats stats;
+    cast_primary_rays(camera, scene, with(method), &stats);
+    CHECK(stats.objects_culled == 3);
+    CHECK(stats.rays == 64 * 64);
+  }
+  // The lone visible sphere subtends asin(1/12) from the eye: its box holds about (2·12/√143·64/2)² pixels.
+  CastStats stats;
+  cast_primary_rays(camera, scene, with(CastMethod::footprint), &stats);
+  const double side = 2 * (2.0 / std::sqrt(143.0)) * 64 / 2;  // screen half-width 1 at d_f = 2
+  CHECK(stats.intersection_tests <= (side + 4) * (side + 4));
+  CHECK(stats.intersection_tests >= side * side);
+  CHECK(stats.pixels_skipped == 64 * 64 - stats.intersection_tests);  // one object: one test per touched pixel
+  CastStats culled;
+  cast_primary_rays(camera, scene, with(CastMethod::culled), &culled);
+  CHECK(culled.intersection_tests == 64 * 64);  // every pixel, the one surviving sphere
+  CHECK(culled.pixels_skipped == 0);
+}
+
+TEST_CASE("a 2D bar skips the pixels no circle can cover", "[caster][accelerated]") {
+  Camera2D camera(1000);
+  camera.set_orbit({{0, 0}, 5.0, kPi / 2, 1.0});  // eye at (0, 6), screen half-width 1 at d_f = 1
+  Scene2D scene;
+  scene.circles = {{{0, 0}, 0.6, {1, 0, 0}, "ahead"}, {{0, 9}, 0.5, {2, 0, 0}, "behind"}};
+  CastStats stats;
+  cast_primary_rays(camera, scene, {}, &stats);
+  CHECK(stats.objects_culled == 1);
+  // Seen from 6 away the circle spans tan(asin(0.1)) either side of the axis on a screen of half-width 1.
+  const double half = std::tan(std::asin(0.1)) * 1000 / 2;
+  CHECK(stats.intersection_tests <= 2 * half + 6);
+  CHECK(stats.intersection_tests >= 2 * half);
+}
+
+TEST_CASE("a colour map reused across casts is rewritten whole", "[caster][accelerated]") {
+  test::Random random(3);
+  const Scene3D scene = random_spheres(random, 30, 5, 1.5);
+  Camera3D camera(40, 30);
+  ColourMap map;
+  for (double theta : {0.3, 2.0, -1.0}) {
+    camera.set_orbit({{0, 0, 0}, 9, theta, 1.0, 1.5});
+    cast_primary_rays(camera, scene, map);
+    CHECK(differences(map, cast_primary_rays(camera, scene, with(CastMethod::plain))) == 0);
+  }
+}
