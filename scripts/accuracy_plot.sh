@@ -9,7 +9,6 @@ build="${RAYCAM_BUILD_DIR:-build}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target raycam-cli
 mkdir -p docs
-# `bench accuracy` once the bench dispatcher is in; `bench-accuracy` until then.
-if "$build/raycam-cli" bench accuracy --help >/dev/null 2>&1; then bench=(bench accuracy); else bench=(bench-accuracy); fi
+bench=(bench accuracy)
 "$build/raycam-cli" "${bench[@]}" --csv docs/accuracy.csv --png docs/accuracy.png "$@" | tee docs/accuracy_table.md
 rm -f docs/accuracy.png.dat docs/accuracy.png.gp

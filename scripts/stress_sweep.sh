@@ -11,6 +11,6 @@ length=(--long)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j2 --target raycam-cli
 mkdir -p docs
-if "$build/raycam-cli" bench accuracy --help >/dev/null 2>&1; then bench=(bench accuracy); else bench=(bench-accuracy); fi
+bench=(bench accuracy)
 "$build/raycam-cli" "${bench[@]}" --stress "${length[@]}" --csv docs/stress.csv
 "$build/raycam-cli" "${bench[@]}" --angles --csv docs/angles.csv

@@ -86,10 +86,13 @@ class Camera2D {
 
   glm::dvec2 canonical_pixel(int k) const;  // P_k^0 (a pixel edge under ClassicMistakes::pixel_edges)
   Ray2D primary_ray(int k) const;           // exercise 2: P_k = M_d·P_k^0, u_k = M_d·(P_k^0 - E0)
+  void primary_rays(int first, int last, Ray2D* rays) const;  // pixels first…last, each exactly primary_ray's
   int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }
   int pixel_of_column(int column) const { return pixel_count_ - 1 - column; }
 
  private:
+  double canonical_x(int k) const;
+
   int max_pixels_;
   double res_ = 1.0;
   int pixel_count_;

@@ -92,8 +92,13 @@ class Camera3D {
 
   glm::dvec3 canonical_pixel(int row, int column) const;
   Ray3D primary_ray(int row, int column) const;
+  // The rays of pixels first_column…last_column of one row into rays[0…], each exactly primary_ray's.
+  void primary_rays(int row, int first_column, int last_column, Ray3D* rays) const;
 
  private:
+  double canonical_x(int column) const;
+  double canonical_y(int row) const;
+
   int max_columns_, max_rows_;
   double res_columns_ = 1.0, res_rows_ = 1.0;
   int columns_, rows_;

@@ -1,5 +1,5 @@
 // Embree 3 as the reference a user could pick instead of raycam's caster (benchmark only: raycam_embree is
-// never linked into raycam_core, the app or the CLI).
+// linked into raycam-cli for `bench speed`, never into raycam_core or the app).
 #pragma once
 
 #include <memory>

@@ -12,7 +12,9 @@ using Args = std::vector<std::string>;
 
 int run_render(const Args& args);
 int run_shot(const Args& args);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
-// `bench accuracy` (bench_accuracy.cpp); registered as `bench-accuracy` until the `bench` dispatcher lands.
+// `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp), dispatched by run_bench.
+int run_bench(const Args& args);
 int run_bench_accuracy(const Args& args);
+int run_bench_speed(const Args& args);
 
 }  // namespace raycam::cli

@@ -19,8 +19,8 @@ struct Command {
 const Command kCommands[] = {
     {"render", "cast the primary rays and write the colour map (PNG) and object ids (text)",
      raycam::cli::run_render},
-    {"bench-accuracy", "time against error over the caster's knobs; --stress, --angles (later: bench accuracy)",
-     raycam::cli::run_bench_accuracy},
+    {"bench", "benchmarks: `bench speed` (casters against Embree), `bench accuracy` (time against error)",
+     raycam::cli::run_bench},
 #ifdef RAYCAM_HAVE_SHOT
     {"shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run",
      raycam::cli::run_shot},

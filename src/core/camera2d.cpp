@@ -96,17 +96,29 @@ glm::dvec2 Camera2D::view_direction() const {
   return glm::normalize(transform_vector(world_from_camera(), kCanonicalView));
 }
 
-glm::dvec2 Camera2D::canonical_pixel(int k) const {
-  assert(k >= 0 && k < pixel_count_ && "pixel index out of range");
+double Camera2D::canonical_x(int k) const {
   const double n = pixel_count_;
   // Exercise 2: the handout prints -1 + 2k/n, the LEFT EDGE of pixel k; the centre is half a pixel on.
-  const double x = mistakes_.pixel_edges ? -1.0 + 2.0 * k / n : -1.0 + (2.0 * k + 1.0) / n;
-  return {x, 0.0};
+  return mistakes_.pixel_edges ? -1.0 + 2.0 * k / n : -1.0 + (2.0 * k + 1.0) / n;
+}
+
+glm::dvec2 Camera2D::canonical_pixel(int k) const {
+  assert(k >= 0 && k < pixel_count_ && "pixel index out of range");
+  return {canonical_x(k), 0.0};
 }
 
 Ray2D Camera2D::primary_ray(int k) const {
-  return detail::primary_ray_through<Ray2D>(world_from_camera(), canonical_pixel(k), kCanonicalEye,
-                                            !mistakes_.skip_renormalise);
+  Ray2D ray;
+  primary_rays(k, k, &ray);
+  return ray;
+}
+
+void Camera2D::primary_rays(int first, int last, Ray2D* rays) const {
+  assert(first >= 0 && last < pixel_count_ && "pixel index out of range");
+  // P^0 = (x, 0, 1) and P^0 - E0 = (x, -1, 0): the line's part is M2 (the translation) and -M1.
+  const glm::dmat3& m = world_from_camera();
+  detail::rays_along_line(glm::dvec2(m[2]), -glm::dvec2(m[1]), glm::dvec2(m[0]),
+                          [this](int k) { return canonical_x(k); }, first, last, !mistakes_.skip_renormalise, rays);
 }
 
 }  // namespace raycam

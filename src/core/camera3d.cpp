@@ -124,17 +124,36 @@ glm::dvec3 Camera3D::view_direction() const {
 glm::dvec3 Camera3D::image_up() const { return transform_vector(world_from_camera(), {0.0, 1.0, 0.0}); }
 glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_camera(), {1.0, 0.0, 0.0}); }
 
+double Camera3D::canonical_x(int column) const {
+  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
+  return -1.0 + (2.0 * column + offset) / columns_;
+}
+
+double Camera3D::canonical_y(int row) const {
+  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;
+  return 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
+}
+
 glm::dvec3 Camera3D::canonical_pixel(int row, int column) const {
   assert(row >= 0 && row < rows_ && column >= 0 && column < columns_ && "pixel index out of range");
-  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
-  const double x = -1.0 + (2.0 * column + offset) / columns_;
-  const double y = 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
-  return {x, y, 0.0};
+  return {canonical_x(column), canonical_y(row), 0.0};
 }
 
 Ray3D Camera3D::primary_ray(int row, int column) const {
-  return detail::primary_ray_through<Ray3D>(world_from_camera(), canonical_pixel(row, column), kCanonicalEye,
-                                            !mistakes_.skip_renormalise);
+  Ray3D ray;
+  primary_rays(row, column, column, &ray);
+  return ray;
+}
+
+void Camera3D::primary_rays(int row, int first_column, int last_column, Ray3D* rays) const {
+  assert(row >= 0 && row < rows_ && first_column >= 0 && last_column < columns_ && "pixel index out of range");
+  // P^0 = (x, y, 0, 1) and P^0 - E0 = (x, y, -1, 0): the row's part is M3 + y·M1 and y·M1 - M2.
+  const glm::dmat4& m = world_from_camera();
+  const glm::dvec3 right(m[0]), up(m[1]), back(m[2]), position(m[3]);
+  const double y = canonical_y(row);
+  detail::rays_along_line(glm::dvec3(position + y * up), glm::dvec3(y * up - back), right,
+                          [this](int column) { return canonical_x(column); }, first_column, last_column,
+                          !mistakes_.skip_renormalise, rays);
 }
 
 }  // namespace raycam

@@ -20,15 +20,16 @@ struct Visible {
   std::vector<Box> box;
 };
 
-Visible<PixelBox> visible_spheres(const Camera3D& camera, const Scene3D& scene, int workers) {
-  const EyeFrame3D frame(camera);
+Visible<PixelBox> visible_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula,
+                                  int workers) {
+  const Footprint footprint(camera, formula);
   const int count = int(scene.spheres.size());
   std::vector<PixelBox> boxes(static_cast<std::size_t>(count));
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int end = std::min(count, (chunk + 1) * kObjectsPerChunk);
     for (int i = chunk * kObjectsPerChunk; i < end; ++i)
-      boxes[std::size_t(i)] = sphere_pixels(frame, scene.spheres[std::size_t(i)], camera.rows(), camera.columns());
+      boxes[std::size_t(i)] = footprint.sphere_pixels(scene.spheres[std::size_t(i)], camera.rows(), camera.columns());
   });
   Visible<PixelBox> visible;
   for (int i = 0; i < count; ++i) {
@@ -66,8 +67,10 @@ struct BandScratch {
   std::vector<double> depth;
   std::vector<int> id;
   std::vector<unsigned char> touched;
+  std::vector<Ray3D> rays;  // one row's worth, made by Camera3D::primary_rays
   long long tests = 0, touched_pixels = 0;
-  void reset(std::size_t pixels) {
+  void reset(std::size_t pixels, int columns) {
+    rays.resize(std::size_t(columns));
     depth.assign(pixels, kNoHit<double>);
     id.assign(pixels, -1);
     touched.assign(pixels, 0);
@@ -91,12 +94,13 @@ void splat(const Camera3D& camera, const Scene3D& scene, const Visible<PixelBox>
   const Sphere& sphere = scene.spheres[std::size_t(object)];
   const int first = std::max(box.rows.first, row_begin), last = std::min(box.rows.last, row_end - 1);
   for (int row = first; row <= last; ++row) {
+    camera.primary_rays(row, box.columns.first, box.columns.last, scratch.rays.data());
     const std::size_t line = std::size_t(row - row_begin) * camera.columns();
     for (int column = box.columns.first; column <= box.columns.last; ++column) {
       const std::size_t p = line + std::size_t(column);
       scratch.touched_pixels += scratch.touched[p] == 0;
       scratch.touched[p] = 1;
-      scratch.test(p, object, camera.primary_ray(row, column), sphere, formula);
+      scratch.test(p, object, scratch.rays[std::size_t(column - box.columns.first)], sphere, formula);
     }
   }
 }
@@ -117,7 +121,7 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   const int rows = camera.rows(), columns = camera.columns();
   const long long pixels = static_cast<long long>(rows) * columns;
   const int workers = pixels >= kThreadedPixels ? resolve_threads(options.threads) : 1;
-  const Visible<PixelBox> visible = visible_spheres(camera, scene, workers);
+  const Visible<PixelBox> visible = visible_spheres(camera, scene, options.formula, workers);
 
   CastMethod method = options.method;
   if (method == CastMethod::automatic)
@@ -129,14 +133,16 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   parallel_items(bands, workers, [&](int worker, int band) {
     BandScratch& s = scratch[std::size_t(worker)];
     const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
-    s.reset(std::size_t(row_end - row_begin) * columns);
+    s.reset(std::size_t(row_end - row_begin) * columns, columns);
     if (method == CastMethod::culled) {  // every pixel, every object that survived culling
-      for (int row = row_begin; row < row_end; ++row)
+      for (int row = row_begin; row < row_end; ++row) {
+        camera.primary_rays(row, 0, columns - 1, s.rays.data());
         for (int column = 0; column < columns; ++column) {
-          const Ray3D ray = camera.primary_ray(row, column);
           const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
-          for (int object : visible.index) s.test(p, object, ray, scene.spheres[std::size_t(object)], options.formula);
+          for (int object : visible.index)
+            s.test(p, object, s.rays[std::size_t(column)], scene.spheres[std::size_t(object)], options.formula);
         }
+      }
       s.touched_pixels += static_cast<long long>(row_end - row_begin) * columns;
     } else if (method == CastMethod::binned) {
       for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
@@ -165,12 +171,12 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
 void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
                       CastStats& stats) {
   // The 3D algorithm on one row, on one thread: a bar of a few thousand pixels takes microseconds.
-  const EyeFrame2D frame(camera);
+  const Footprint footprint(camera, options.formula);
   const int n = camera.pixel_count();
   std::vector<int> visible;
   std::vector<PixelRange> range;
   for (int i = 0; i < int(scene.circles.size()); ++i) {
-    const PixelRange r = circle_pixels(frame, scene.circles[std::size_t(i)], n);
+    const PixelRange r = footprint.circle_pixels(scene.circles[std::size_t(i)], n);
     if (r.empty()) continue;
     visible.push_back(i);
     range.push_back(options.method == CastMethod::culled ? PixelRange{0, n - 1} : r);
@@ -178,11 +184,13 @@ void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& o
   std::vector<double> depth(std::size_t(n), kNoHit<double>);
   std::vector<int> id(std::size_t(n), -1);
   std::vector<unsigned char> touched(std::size_t(n), 0);
+  std::vector<Ray2D> rays(static_cast<std::size_t>(n));
   long long tests = 0, touched_pixels = 0;
   for (std::size_t j = 0; j < visible.size(); ++j) {  // object order, strict '<': ties to the lower index
     const Circle& circle = scene.circles[std::size_t(visible[j])];
+    camera.primary_rays(range[j].first, range[j].last, rays.data());
     for (int k = range[j].first; k <= range[j].last; ++k) {
-      const Ray2D ray = camera.primary_ray(k);
+      const Ray2D& ray = rays[std::size_t(k - range[j].first)];
       const double t = nearest_hit_t(ray.origin, ray.direction, circle.centre, circle.radius, options.formula);
       ++tests;
       touched_pixels += touched[std::size_t(k)] == 0;

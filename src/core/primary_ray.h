@@ -1,22 +1,27 @@
-// Exercise 2, shared by the 2D and 3D cameras: a canonical primary ray sent into the world by M_d.
+// Exercise 2, shared by the 2D and 3D cameras: canonical primary rays sent into the world by M_d.
 #pragma once
 
+#include <cmath>
 #include <glm/geometric.hpp>
-
-#include "raycam/transform.h"
 
 namespace raycam::detail {
 
-// P_k = M_d·P_k^0 is a point; u_k = M_d·(P_k^0 - E0) is a vector, so it is not translated, and it is
-// renormalised because H scales (unless the "forgot to renormalise" mistake is on).
-template <class Ray, class Matrix, class Vector>
-Ray primary_ray_through(const Matrix& world_from_camera, Vector canonical_pixel, Vector canonical_eye,
-                        bool renormalise) {
-  Ray ray;
-  ray.origin = transform_point(world_from_camera, canonical_pixel);
-  ray.direction = transform_vector(world_from_camera, canonical_pixel - canonical_eye);
-  if (renormalise) ray.direction = glm::normalize(ray.direction);
-  return ray;
+// The rays through a run of pixels on one canonical screen line, P^0 = (x, …, 0) with x = x_of(i):
+//   P_k = M_d·P^0 is a point:  origin_base + x·M0, origin_base = M_d's translation (+ the row's y·M1 in 3D);
+//   u_k = M_d·(P^0 - E0) is a vector (no translation): direction_base + x·M0, direction_base = -M_d·E0's
+//   linear part (+ y·M1), renormalised because H scales (unless the "forgot to renormalise" mistake is on).
+// M_d's columns are used directly: the zero terms of the full product are dropped and the line's terms
+// computed once. Every caster calls this through the cameras, so all of them see the same rays, bit for bit.
+template <class Ray, class Vector, class XOf>
+void rays_along_line(const Vector& origin_base, const Vector& direction_base, const Vector& screen_axis, XOf x_of,
+                     int first, int last, bool renormalise, Ray* rays) {
+  for (int i = first; i <= last; ++i) {
+    const double x = x_of(i);
+    Ray& ray = rays[i - first];
+    ray.origin = origin_base + x * screen_axis;
+    ray.direction = direction_base + x * screen_axis;
+    if (renormalise) ray.direction /= std::sqrt(glm::dot(ray.direction, ray.direction));
+  }
 }
 
 }  // namespace raycam::detail

@@ -2,13 +2,15 @@
 // are lines from the eye, so a circle or sphere can only be hit by rays inside its tangent cone from the
 // eye. Its projection bounds a small range of pixels; pixels outside it never need to test the object.
 //
-// The bounds are conservative: padded by a pixel and a relative margin, so every pixel whose computed
-// ray (in double, as the plain caster computes it) hits the object lies inside. The accelerated casters
+// The bounds are conservative: widened by the rounding the rays and the intersection can suffer (a bound
+// on it, from the size of the coordinates and the formula), so every pixel whose computed ray (in
+// double, as the plain caster computes it) hits the object lies inside. The accelerated casters
 // then run the plain caster's own intersection on those pixels, which keeps their ids identical.
 #pragma once
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
+#include "raycam/intersect.h"
 #include "raycam/scene.h"
 
 namespace raycam::detail {
@@ -26,22 +28,21 @@ struct PixelBox {
 
 // The camera's frame, read off M_d = T·R·H: the eye, the unit right/up/forward axes and d_f, the eye's
 // distance to the screen. A world direction (a, b, c) in this frame crosses the canonical screen at
-// (d_f·a/c, d_f·b/c).
-struct EyeFrame2D {
-  glm::dvec2 eye, right, forward;
-  double df;
-  explicit EyeFrame2D(const Camera2D& camera);
-};
-struct EyeFrame3D {
-  glm::dvec3 eye, right, up, forward;
-  double df;
-  explicit EyeFrame3D(const Camera3D& camera);
-};
+// (d_f·a/c, d_f·b/c). A 2D camera is the plane z = 0 of this (no up axis).
+struct Footprint {
+  glm::dvec3 eye{0.0}, right{0.0}, up{0.0}, forward{0.0};
+  double df = 1.0;
+  double coordinate_scale = 0.0;  // size of the numbers the rays are made of (for the rounding slack)
+  IntersectFormula formula;       // the naive formula's cancellation widens the bounds
 
-// Pixels k (not image columns) a circle can cover; empty if it lies wholly behind the screen or outside
-// the field of view.
-PixelRange circle_pixels(const EyeFrame2D& frame, const Circle& circle, int pixel_count);
-// Rows and columns (image order) a sphere can cover; empty if culled.
-PixelBox sphere_pixels(const EyeFrame3D& frame, const Sphere& sphere, int rows, int columns);
+  Footprint(const Camera2D& camera, IntersectFormula formula);
+  Footprint(const Camera3D& camera, IntersectFormula formula);
+
+  // Pixels k (not image columns) a circle can cover; empty if it lies wholly behind the screen or
+  // outside the field of view.
+  PixelRange circle_pixels(const Circle& circle, int pixel_count) const;
+  // Rows and columns (image order) a sphere can cover; empty if culled.
+  PixelBox sphere_pixels(const Sphere& sphere, int rows, int columns) const;
+};
 
 }  // namespace raycam::detail

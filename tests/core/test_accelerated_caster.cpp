@@ -37,6 +37,11 @@ void check_every_method_matches_plain(const Camera& camera, const Scene& scene) 
       INFO(cast_method_name(method) << ", " << threads << " threads");
       CHECK(differences(cast_primary_rays(camera, scene, with(method, threads)), plain) == 0);
     }
+  // The textbook formula cancels far from the sphere and so hits a little outside its true silhouette:
+  // the bounds widen for it, and the ids still match its own plain loop.
+  CastOptions naive_plain = with(CastMethod::plain), naive_fast = with(CastMethod::automatic, 2);
+  naive_plain.formula = naive_fast.formula = IntersectFormula::naive;
+  CHECK(differences(cast_primary_rays(camera, scene, naive_fast), cast_primary_rays(camera, scene, naive_plain)) == 0);
 }
 
 Scene3D random_spheres(test::Random& random, int count, double spread, double max_radius) {
@@ -137,8 +142,9 @@ TEST_CASE("objects behind the screen or out of view are culled, never tested", "
   CastStats stats;
   cast_primary_rays(camera, scene, with(CastMethod::footprint), &stats);
   const double side = 2 * (2.0 / std::sqrt(143.0)) * 64 / 2;  // screen half-width 1 at d_f = 2
-  CHECK(stats.intersection_tests <= (side + 4) * (side + 4));
-  CHECK(stats.intersection_tests >= side * side);
+  // Pixel centres inside an interval `side` pixels wide: side - 1 to side + 1 of them per axis.
+  CHECK(stats.intersection_tests <= (side + 1) * (side + 1));
+  CHECK(stats.intersection_tests >= (side - 1) * (side - 1));
   CHECK(stats.pixels_skipped == 64 * 64 - stats.intersection_tests);  // one object: one test per touched pixel
   CastStats culled;
   cast_primary_rays(camera, scene, with(CastMethod::culled), &culled);
@@ -156,8 +162,8 @@ TEST_CASE("a 2D bar skips the pixels no circle can cover", "[caster][accelerated
   CHECK(stats.objects_culled == 1);
   // Seen from 6 away the circle spans tan(asin(0.1)) either side of the axis on a screen of half-width 1.
   const double half = std::tan(std::asin(0.1)) * 1000 / 2;
-  CHECK(stats.intersection_tests <= 2 * half + 6);
-  CHECK(stats.intersection_tests >= 2 * half);
+  CHECK(stats.intersection_tests <= 2 * half + 1);
+  CHECK(stats.intersection_tests >= 2 * half - 1);
 }
 
 TEST_CASE("a colour map reused across casts is rewritten whole", "[caster][accelerated]") {
