@@ -110,7 +110,8 @@ std::string EmbreeCaster::isa_note() const {
   return note + ", native packets:" + (native.empty() ? std::string(" none") : native);
 }
 
-void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourMap& out) const {
+void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourMap& out,
+                        const std::vector<Ray3D>* ray_table) const {
   if (packet != 1 && packet != 16) throw std::invalid_argument("EmbreeCaster::cast: packet must be 1 or 16");
   if (threads < 1) throw std::invalid_argument("EmbreeCaster::cast: threads must be >= 1");
   const int rows = camera.rows(), columns = camera.columns();
@@ -120,6 +121,11 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
   out.colours.resize(pixels);  // every pixel is written below, so no fill
   out.ids.resize(pixels);
 
+  if (ray_table && ray_table->size() != pixels)
+    throw std::invalid_argument("EmbreeCaster::cast: the ray table must hold one ray per pixel");
+  auto ray_at = [&](int row, int column) {
+    return ray_table ? (*ray_table)[std::size_t(row) * columns + std::size_t(column)] : camera.primary_ray(row, column);
+  };
   auto store = [&](std::size_t index, unsigned geom_id, unsigned prim_id) {
     const bool hit = geom_id != RTC_INVALID_GEOMETRY_ID;
     out.ids[index] = hit ? int(prim_id) : -1;
@@ -130,7 +136,7 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
     RTCRayHit rayhit;
     for (int row = row_begin; row < row_end; ++row)
       for (int column = 0; column < columns; ++column) {
-        const Ray3D ray = camera.primary_ray(row, column);
+        const Ray3D ray = ray_at(row, column);
         RTCRay& r = rayhit.ray;
         r.org_x = float(ray.origin.x);
         r.org_y = float(ray.origin.y);
@@ -159,7 +165,7 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
         const int row = row_begin + lane / 4, column = column_begin + lane % 4;
         valid[lane] = row < row_end && column < columns ? -1 : 0;
         // Lanes past the image's edge repeat the edge pixel so that no lane holds garbage, then are masked.
-        const Ray3D ray = camera.primary_ray(std::min(row, row_end - 1), std::min(column, columns - 1));
+        const Ray3D ray = ray_at(std::min(row, row_end - 1), std::min(column, columns - 1));
         RTCRay16& r = rays.ray;
         r.org_x[lane] = float(ray.origin.x);
         r.org_y[lane] = float(ray.origin.y);
@@ -190,6 +196,7 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
   auto worker = [&] {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // primary rays of neighbouring pixels: Embree's best case
     for (int band; (band = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
       const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
       if (packet == 1)

@@ -35,7 +35,10 @@ class EmbreeCaster {
   // packet: 1 (rtcIntersect1 per ray) or 16 (rtcIntersect16 on 4×4 pixel blocks). threads ≥ 1: bands of 4
   // rows handed out through an atomic counter. Throws std::invalid_argument on another packet or threads < 1,
   // std::runtime_error if Embree reports an error.
-  void cast(const Camera3D& camera, int packet, int threads, ColourMap& out) const;
+  // ray_table (optional, rows × columns in image order): the rays made beforehand, so that only Embree's
+  // traversal is timed (its best case; raycam's casters always make their own rays).
+  void cast(const Camera3D& camera, int packet, int threads, ColourMap& out,
+            const std::vector<Ray3D>* ray_table = nullptr) const;
 
  private:
   // Declared device first so that the scene, which references it, is released first.

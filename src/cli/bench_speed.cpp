@@ -172,7 +172,7 @@ struct Row {
 };
 
 void print_row(const Row& r) {
-  std::printf("| %6d | %4d | %d | %-17s | %9.3f | %8.1f | ", r.count, r.side, r.threads, r.variant.c_str(), r.ms,
+  std::printf("| %6d | %4d | %d | %-20s | %9.3f | %8.1f | ", r.count, r.side, r.threads, r.variant.c_str(), r.ms,
               r.mrays);
   if (r.ids.checked == 0) std::printf("- | %s |\n", r.note.c_str());
   else
@@ -224,6 +224,10 @@ std::vector<Row> run_grid(const SpeedOptions& o) {
         options.method = CastMethod::plain;
         cast_primary_rays(camera, scene, plain, options);
       }
+#ifdef RAYCAM_HAVE_EMBREE
+      std::vector<Ray3D> ray_table(static_cast<std::size_t>(side) * side);
+      for (int row = 0; row < side; ++row) camera.primary_rays(row, 0, side - 1, &ray_table[std::size_t(row) * side]);
+#endif
       for (int threads : o.threads) {
         ColourMap map;
         auto time = [&](const std::string& variant, const std::function<void()>& run, std::string note = "") {
@@ -256,6 +260,8 @@ std::vector<Row> run_grid(const SpeedOptions& o) {
 #ifdef RAYCAM_HAVE_EMBREE
         time("embree packet1", [&] { embree.cast(camera, 1, threads, map); }, build_note);
         time("embree packet16", [&] { embree.cast(camera, 16, threads, map); }, build_note);
+        time("embree p16 ray table", [&] { embree.cast(camera, 16, threads, map, &ray_table); },
+             "rays made beforehand, untimed");
 #endif
       }
     }

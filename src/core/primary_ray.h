@@ -20,7 +20,7 @@ void rays_along_line(const Vector& origin_base, const Vector& direction_base, co
     Ray& ray = rays[i - first];
     ray.origin = origin_base + x * screen_axis;
     ray.direction = direction_base + x * screen_axis;
-    if (renormalise) ray.direction /= std::sqrt(glm::dot(ray.direction, ray.direction));
+    if (renormalise) ray.direction *= 1.0 / std::sqrt(glm::dot(ray.direction, ray.direction));  // as glm::normalize
   }
 }
 
