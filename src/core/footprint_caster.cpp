@@ -13,50 +13,60 @@ constexpr int kBandRows = 8;              // a band's depth buffer stays in cach
 constexpr int kObjectsPerChunk = 4096;    // projection work handed out per item
 constexpr long long kThreadedPixels = 128 * 128;  // below this one thread finishes before others start
 
-// The objects that survive culling, in index order, with the pixels each can cover.
-template <class Box>
-struct Visible {
-  std::vector<int> index;
-  std::vector<Box> box;
+// An object that survived culling, with the pixels it can cover. A compact copy of what the pixel loop
+// reads, in object order: with many objects, reading them from the scene (names and all) by index costs
+// a cache miss per object.
+struct Candidate {
+  glm::dvec3 centre;
+  double radius;
+  PixelBox box;
+  int object;
+  Rgb8 colour;
 };
 
-Visible<PixelBox> visible_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula,
-                                  int workers) {
+std::vector<Candidate> visible_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula,
+                                       int workers) {
   const Footprint footprint(camera, formula);
   const int count = int(scene.spheres.size());
-  std::vector<PixelBox> boxes(static_cast<std::size_t>(count));
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
+  // Each chunk of objects keeps its survivors; chunks are joined in order, so object order holds.
+  std::vector<std::vector<Candidate>> survivors(static_cast<std::size_t>(chunks));
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int end = std::min(count, (chunk + 1) * kObjectsPerChunk);
-    for (int i = chunk * kObjectsPerChunk; i < end; ++i)
-      boxes[std::size_t(i)] = footprint.sphere_pixels(scene.spheres[std::size_t(i)], camera.rows(), camera.columns());
+    std::vector<Candidate>& kept = survivors[std::size_t(chunk)];
+    kept.reserve(std::size_t(end - chunk * kObjectsPerChunk));
+    for (int i = chunk * kObjectsPerChunk; i < end; ++i) {
+      const Sphere& sphere = scene.spheres[std::size_t(i)];
+      const PixelBox box = footprint.sphere_pixels(sphere, camera.rows(), camera.columns());
+      if (!box.empty()) kept.push_back(Candidate{sphere.centre, sphere.radius, box, i, sphere.colour});
+    }
   });
-  Visible<PixelBox> visible;
-  for (int i = 0; i < count; ++i) {
-    if (boxes[std::size_t(i)].empty()) continue;
-    visible.index.push_back(i);
-    visible.box.push_back(boxes[std::size_t(i)]);
-  }
+  if (chunks == 1) return std::move(survivors[0]);
+  std::vector<Candidate> visible;
+  std::size_t total = 0;
+  for (const auto& kept : survivors) total += kept.size();
+  visible.reserve(total);
+  for (const auto& kept : survivors) visible.insert(visible.end(), kept.begin(), kept.end());
   return visible;
 }
 
 // Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
-// object order because objects are appended in order.
+// object order because candidates are appended in order.
 struct Bands {
   std::vector<int> start, entries;
 };
 
-Bands bin_by_band(const Visible<PixelBox>& visible, int bands) {
+Bands bin_by_band(const std::vector<Candidate>& visible, int bands) {
   Bands binned;
   binned.start.assign(std::size_t(bands) + 1, 0);
-  for (const PixelBox& box : visible.box)
-    for (int b = box.rows.first / kBandRows; b <= box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
+  for (const Candidate& c : visible)
+    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
   for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
   binned.entries.resize(std::size_t(binned.start.back()));
   std::vector<int> fill(binned.start.begin(), binned.start.end() - 1);
-  for (int j = 0; j < int(visible.box.size()); ++j) {
-    const PixelBox& box = visible.box[std::size_t(j)];
-    for (int b = box.rows.first / kBandRows; b <= box.rows.last / kBandRows; ++b)
+  for (int j = 0; j < int(visible.size()); ++j) {
+    const PixelRange& rows = visible[std::size_t(j)].box.rows;
+    for (int b = rows.first / kBandRows; b <= rows.last / kBandRows; ++b)
       binned.entries[std::size_t(fill[std::size_t(b)]++)] = j;
   }
   return binned;
@@ -76,22 +86,21 @@ struct BandScratch {
     touched.assign(pixels, 0);
   }
   // The plain loop's depth test: strict '<' in object order keeps the lower index on a tie.
-  void test(std::size_t p, int object, const Ray3D& ray, const Sphere& s, IntersectFormula formula) {
-    const double t = nearest_hit_t(ray.origin, ray.direction, s.centre, s.radius, formula);
+  void test(std::size_t p, const Ray3D& ray, const Candidate& c, int candidate, IntersectFormula formula) {
+    const double t = nearest_hit_t(ray.origin, ray.direction, c.centre, c.radius, formula);
     ++tests;
     if (t < depth[p]) {
       depth[p] = t;
-      id[p] = object;
+      id[p] = candidate;  // an index into the candidates, which are in object order like the objects
     }
   }
 };
 
-// Splats candidate j's box (clipped to the band's rows) into the band's depth buffer.
-void splat(const Camera3D& camera, const Scene3D& scene, const Visible<PixelBox>& visible, int j, int row_begin,
-           int row_end, IntersectFormula formula, BandScratch& scratch) {
-  const PixelBox& box = visible.box[std::size_t(j)];
-  const int object = visible.index[std::size_t(j)];
-  const Sphere& sphere = scene.spheres[std::size_t(object)];
+// Splats a candidate's box (clipped to the band's rows) into the band's depth buffer.
+void splat(const Camera3D& camera, const std::vector<Candidate>& visible, int j, int row_begin, int row_end,
+           IntersectFormula formula, BandScratch& scratch) {
+  const Candidate& candidate = visible[std::size_t(j)];
+  const PixelBox& box = candidate.box;
   const int first = std::max(box.rows.first, row_begin), last = std::min(box.rows.last, row_end - 1);
   for (int row = first; row <= last; ++row) {
     camera.primary_rays(row, box.columns.first, box.columns.last, scratch.rays.data());
@@ -100,18 +109,19 @@ void splat(const Camera3D& camera, const Scene3D& scene, const Visible<PixelBox>
       const std::size_t p = line + std::size_t(column);
       scratch.touched_pixels += scratch.touched[p] == 0;
       scratch.touched[p] = 1;
-      scratch.test(p, object, scratch.rays[std::size_t(column - box.columns.first)], sphere, formula);
+      scratch.test(p, scratch.rays[std::size_t(column - box.columns.first)], candidate, j, formula);
     }
   }
 }
 
-void write_band(const Scene3D& scene, int row_begin, int row_end, const BandScratch& scratch, ColourMap& out) {
+void write_band(Rgb8 background, const std::vector<Candidate>& visible, int row_begin, int row_end,
+                const BandScratch& scratch, ColourMap& out) {
   const std::size_t offset = out.index(row_begin, 0);
   const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
   for (std::size_t p = 0; p < pixels; ++p) {
-    const int id = scratch.id[p];
-    out.ids[offset + p] = id;
-    out.colours[offset + p] = id < 0 ? scene.background : scene.spheres[std::size_t(id)].colour;
+    const int j = scratch.id[p];
+    out.ids[offset + p] = j < 0 ? -1 : visible[std::size_t(j)].object;
+    out.colours[offset + p] = j < 0 ? background : visible[std::size_t(j)].colour;
   }
 }
 }  // namespace
@@ -121,11 +131,11 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   const int rows = camera.rows(), columns = camera.columns();
   const long long pixels = static_cast<long long>(rows) * columns;
   const int workers = pixels >= kThreadedPixels ? resolve_threads(options.threads) : 1;
-  const Visible<PixelBox> visible = visible_spheres(camera, scene, options.formula, workers);
+  const std::vector<Candidate> visible = visible_spheres(camera, scene, options.formula, workers);
 
   CastMethod method = options.method;
   if (method == CastMethod::automatic)
-    method = int(visible.index.size()) <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
+    method = int(visible.size()) <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
   const int bands = (rows + kBandRows - 1) / kBandRows;
   const Bands binned = method == CastMethod::binned ? bin_by_band(visible, bands) : Bands{};
 
@@ -139,26 +149,26 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
         camera.primary_rays(row, 0, columns - 1, s.rays.data());
         for (int column = 0; column < columns; ++column) {
           const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
-          for (int object : visible.index)
-            s.test(p, object, s.rays[std::size_t(column)], scene.spheres[std::size_t(object)], options.formula);
+          for (int j = 0; j < int(visible.size()); ++j)
+            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)], j, options.formula);
         }
       }
       s.touched_pixels += static_cast<long long>(row_end - row_begin) * columns;
     } else if (method == CastMethod::binned) {
       for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
-        splat(camera, scene, visible, binned.entries[std::size_t(e)], row_begin, row_end, options.formula, s);
+        splat(camera, visible, binned.entries[std::size_t(e)], row_begin, row_end, options.formula, s);
     } else {  // footprint: every visible object's box checked against the band
-      for (int j = 0; j < int(visible.index.size()); ++j) {
-        const PixelRange& box_rows = visible.box[std::size_t(j)].rows;
-        if (box_rows.last >= row_begin && box_rows.first < row_end)
-          splat(camera, scene, visible, j, row_begin, row_end, options.formula, s);
+      for (int j = 0; j < int(visible.size()); ++j) {
+        const PixelRange& rows_of_box = visible[std::size_t(j)].box.rows;
+        if (rows_of_box.last >= row_begin && rows_of_box.first < row_end)
+          splat(camera, visible, j, row_begin, row_end, options.formula, s);
       }
     }
-    write_band(scene, row_begin, row_end, s, out);
+    write_band(scene.background, visible, row_begin, row_end, s, out);
   });
 
   stats.rays = pixels;
-  stats.objects_culled = static_cast<long long>(scene.spheres.size() - visible.index.size());
+  stats.objects_culled = static_cast<long long>(scene.spheres.size() - visible.size());
   stats.intersection_tests = 0;
   long long touched = 0;
   for (const BandScratch& s : scratch) {
