@@ -76,3 +76,20 @@ TEST_CASE("render with a scene file uses its preset, flags override it", "[cli]"
   scene.spheres = {{{0, 0, 0}, 1.0, {255, 0, 0}, ""}};
   check_same(read_ids("cli_scene.txt"), cast_primary_rays(camera, scene));
 }
+
+TEST_CASE("render --method and --threads give the plain loop's ids; accuracy knobs reach the caster", "[cli]") {
+  Camera3D camera(96, 64);
+  camera.set_orbit({{0, 0, 0}, 8.0, 30 * kDegree, 60 * kDegree, 2.0});
+  CastOptions plain;
+  plain.method = CastMethod::plain;
+  const ColourMap expected = cast_primary_rays(camera, demo_scene_3d(), plain);
+  for (const char* method : {"plain", "culled", "footprint", "binned", "automatic"}) {
+    INFO(method);
+    REQUIRE(run(std::string("render --size 96x64 --method ") + method + " --threads 2 --ids method_ids.txt") == 0);
+    check_same(read_ids("method_ids.txt"), expected);
+  }
+  // Long double, 1 sample, stable: the pixel-centre ids equal double's here (no grazing pixel in this view).
+  REQUIRE(run("render --size 96x64 --precision long-double --ids knob_ids.txt") == 0);
+  check_same(read_ids("knob_ids.txt"), expected);
+  CHECK(run("render --exact") != 0);  // --exact is for the 2D bar
+}
