@@ -35,5 +35,8 @@ const char* accuracy_flags_help();
 // reference_cast (colours are the samples' mean, rounded; ids from the pixel-centre ray) or, with --exact in
 // 2D, the exact bar. Throws std::invalid_argument for --exact in 3D or a non-square --spp in 3D.
 ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags);
+// The same for a camera already placed (the app's): the knobs but the placement route.
+ColourMap render_with_accuracy(const Camera2D& camera, const Scene2D& scene, const AccuracyFlags& flags);
+ColourMap render_with_accuracy(const Camera3D& camera, const Scene3D& scene, const AccuracyFlags& flags);
 
 }  // namespace raycam

@@ -72,6 +72,18 @@ AngleRoute route_of(PlacementRoute placement) {
 }
 }  // namespace
 
+ColourMap render_with_accuracy(const Camera2D& camera, const Scene2D& scene, const AccuracyFlags& flags) {
+  validate(scene);
+  if (flags.exact) return to_colour_map(exact_bar_image(exact_bar(camera, scene), scene));
+  return to_colour_map(reference_cast(camera, scene, flags.options));
+}
+
+ColourMap render_with_accuracy(const Camera3D& camera, const Scene3D& scene, const AccuracyFlags& flags) {
+  if (flags.exact) throw std::invalid_argument("--exact is for the 2D bar only (3D: use --spp)");
+  validate(scene);
+  return to_colour_map(reference_cast(camera, scene, flags.options));
+}
+
 ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags) {
   if (setup.dimension == 2) {
     Camera2D camera = setup.camera2d;
@@ -79,20 +91,14 @@ ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flag
       const Orbit2D orbit = camera.orbit();
       camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
     }
-    const Scene2D& scene = setup.file.scene2d;
-    validate(scene);
-    if (flags.exact) return to_colour_map(exact_bar_image(exact_bar(camera, scene), scene));
-    return to_colour_map(reference_cast(camera, scene, flags.options));
+    return render_with_accuracy(camera, setup.file.scene2d, flags);
   }
-  if (flags.exact) throw std::invalid_argument("--exact is for the 2D bar only (3D: use --spp)");
   Camera3D camera = setup.camera3d;
   if (flags.placement != PlacementRoute::orbit) {
     const Orbit3D orbit = camera.orbit();
     camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
   }
-  const Scene3D& scene = setup.file.scene3d;
-  validate(scene);
-  return to_colour_map(reference_cast(camera, scene, flags.options));
+  return render_with_accuracy(camera, setup.file.scene3d, flags);
 }
 
 }  // namespace raycam

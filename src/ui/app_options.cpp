@@ -24,9 +24,11 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
     i += 2;
     return true;
   }
-  if (parse_view_flag(args, i, options.view)) return true;
+  if (parse_view_flag(args, i, options.view) || parse_accuracy_flag(args, i, options.accuracy)) return true;
   const std::string flag = args[i];
-  if (flag == "--width") {
+  if (flag == "--method") {
+    options.cast_options.method = parse_cast_method(next_value(args, i), flag);
+  } else if (flag == "--width") {
     options.width = parse_integer_flag(next_value(args, i), flag, 320, 7680);
   } else if (flag == "--height") {
     options.height = parse_integer_flag(next_value(args, i), flag, 240, 4320);
@@ -79,6 +81,11 @@ AppState make_app_state(const AppOptions& options) {
                                   std::to_string(state.dimension) + "D");
     state.construction_step = *options.step;
   }
+  if (options.accuracy.placement != PlacementRoute::orbit)
+    throw std::invalid_argument("--placement: the app places the camera by orbit; show the arccos route with "
+                                "--mistake arccos");
+  state.accuracy = options.accuracy;
+  state.cast_options = options.cast_options;
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
   place_cameras(state);  // throws on bad parameters before any window opens
@@ -103,7 +110,10 @@ const char* app_options_help() {
          "  --mistake NAME      show a classic mistake: printed-rotation, pixel-edges, no-renormalise, arccos\n"
          "                      (repeatable)\n"
          "  --font-scale S      lecture mode: scale every font by S in [0.5, 4]\n"
-         "  --high-contrast     lecture mode: light, high-contrast theme\n";
+         "  --high-contrast     lecture mode: light, high-contrast theme\n"
+         "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same image)\n"
+         "  --precision P --intersect F --spp N --frame F --exact\n"
+         "                      accuracy knobs, as in raycam-cli render --help (README, \"Accuracy\")\n";
 }
 
 }  // namespace raycam::ui

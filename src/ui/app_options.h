@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app_state.h"
+#include "raycam/accuracy_options.h"
 #include "raycam/view_setup.h"
 
 namespace raycam::ui {
@@ -20,6 +21,8 @@ struct AppOptions {
   bool arccos_route = false;
   float font_scale = 1.0f;
   bool high_contrast = false;
+  AccuracyFlags accuracy;    // --precision --intersect --spp --frame --exact (--placement: use --mistake arccos)
+  CastOptions cast_options;  // --method
 };
 
 // If args[i] is a shared option, consumes it (and its value) and returns true. Throws std::invalid_argument

@@ -48,6 +48,12 @@ void place_cameras(AppState& state) {
   }
 }
 
+bool uses_reference_caster(const AppState& state) {
+  const ReferenceOptions& o = state.accuracy.options;
+  return o.scalar != Scalar::float64 || o.samples_per_pixel != 1 || o.camera_relative ||
+         (state.accuracy.exact && state.dimension == 2);
+}
+
 bool recast_if_needed(AppState& state, bool interacting) {
   if (!state.cameras_dirty && !(state.refine_pending && !interacting)) return false;
   try {
@@ -69,8 +75,20 @@ bool recast_if_needed(AppState& state, bool interacting) {
     else state.camera3d.set_res(std::max(state.res * factor, 1.0 / std::max(state.max_columns_3d, state.max_rows_3d)));
   }
   const auto start = std::chrono::steady_clock::now();
-  if (is_2d) cast_primary_rays(state.camera2d, state.file.scene2d, state.map, state.cast_options, &state.stats);
-  else cast_primary_rays(state.camera3d, state.file.scene3d, state.map, state.cast_options, &state.stats);
+  if (uses_reference_caster(state)) {
+    AccuracyFlags knobs = state.accuracy;
+    knobs.exact = knobs.exact && is_2d;
+    state.map = is_2d ? render_with_accuracy(state.camera2d, state.file.scene2d, knobs)
+                      : render_with_accuracy(state.camera3d, state.file.scene3d, knobs);
+    const long long objects = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
+    state.stats = CastStats{static_cast<long long>(rays),
+                            static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
+  } else {
+    CastOptions options = state.cast_options;
+    options.formula = state.accuracy.options.formula;
+    if (is_2d) cast_primary_rays(state.camera2d, state.file.scene2d, state.map, options, &state.stats);
+    else cast_primary_rays(state.camera3d, state.file.scene3d, state.map, options, &state.stats);
+  }
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);
   state.cameras_dirty = false;

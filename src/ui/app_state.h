@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "raycam/accuracy_options.h"
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/colour_map.h"
@@ -61,6 +62,7 @@ struct AppState {
   std::uint64_t map_version = 0;    // bumped at every cast
   ColourMap map;
   CastOptions cast_options;  // the caster's method (the app's "Caster" combo); same ids whatever it is
+  AccuracyFlags accuracy;    // the accuracy knobs; at their defaults the fast caster runs
   CastStats stats;
   double cast_ms = 0.0;
   long long frame_count = 0, cast_count = 0;
@@ -93,6 +95,10 @@ bool recast_if_needed(AppState& state, bool interacting = false);
 bool open_scene(AppState& state, const std::string& path);
 // Saves the current camera as the scene file's preset (written atomically). Returns success.
 bool save_preset(AppState& state, const std::string& path);
+
+// True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
+// pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
+bool uses_reference_caster(const AppState& state);
 
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
 int construction_steps(const AppState& state);

@@ -16,6 +16,7 @@ namespace raycam::ui {
 namespace {
 constexpr double kDegree = 3.141592653589793 / 180.0;
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
+constexpr double kPi = 3.141592653589793;
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
 
 bool slider_double(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
@@ -190,6 +191,27 @@ void inspector_section(const AppState& state) {
 }
 
 // ---- classic mistakes ----------------------------------------------------------------------------------
+namespace {
+// The angle recovered from the current CP by the handout's arccos and by atan2, against the slider's angle.
+void arccos_error_line(const AppState& state) {
+  if (state.dimension == 2) {
+    const Orbit2D& o = state.orbit2d;
+    const glm::dvec2 cp(std::cos(o.theta), std::sin(o.theta));
+    const double truth = std::remainder(o.theta, 2 * kPi);
+    ImGui::TextColored(kDim, "theta error now: arccos %.1e rad, atan2 %.1e rad",
+                       std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
+                       std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
+  } else {
+    const Orbit3D& o = state.orbit3d;
+    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
+    ImGui::TextColored(kDim, "phi error now: arccos %.1e rad, atan2 %.1e rad",
+                       std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
+                       std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
+  }
+}
+}  // namespace
+
 void mistakes_section(AppState& state) {
   const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
                    state.mistakes.skip_renormalise || state.arccos_route;
@@ -205,25 +227,57 @@ void mistakes_section(AppState& state) {
   changed |= ImGui::Checkbox("arccos route near a pole", &state.arccos_route);
   explain("placing the camera from P and C with the handout's arccos: near theta = 0 (2D) or phi = 0 (3D) arccos "
           "loses half the digits and the camera snaps to the axis.");
+  arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
 
-// ---- caster ---------------------------------------------------------------------------------------------
-void caster_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Caster (speed)")) return;
-  static constexpr CastMethod kMethods[] = {CastMethod::automatic, CastMethod::plain, CastMethod::culled,
-                                            CastMethod::footprint, CastMethod::binned};
-  if (ImGui::BeginCombo("method", cast_method_name(state.cast_options.method))) {
-    for (CastMethod method : kMethods)
-      if (ImGui::Selectable(cast_method_name(method), method == state.cast_options.method)) {
-        state.cast_options.method = method;
-        state.cameras_dirty = true;
+// ---- caster and accuracy -------------------------------------------------------------------------------
+namespace {
+// A combo over a fixed list of (value, name); returns true when the user picked another value.
+template <class T, std::size_t N>
+bool choice(const char* label, T& value, const std::pair<T, const char*> (&options)[N]) {
+  const char* current = "?";
+  for (const auto& [v, name] : options)
+    if (v == value) current = name;
+  bool changed = false;
+  if (ImGui::BeginCombo(label, current)) {
+    for (const auto& [v, name] : options)
+      if (ImGui::Selectable(name, v == value) && v != value) {
+        value = v;
+        changed = true;
       }
     ImGui::EndCombo();
   }
-  explain("Every method gives the same image as the handout's plain loop; the faster ones skip objects behind the "
-          "screen or out of view, and test each object only on the pixels its projection can cover. The status "
-          "line shows the work done and skipped.");
+  return changed;
+}
+}  // namespace
+
+void caster_section(AppState& state) {
+  if (!ImGui::CollapsingHeader("Caster and accuracy", uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+    return;
+  static constexpr std::pair<CastMethod, const char*> kMethods[] = {
+      {CastMethod::automatic, "automatic"}, {CastMethod::plain, "plain"},   {CastMethod::culled, "culled"},
+      {CastMethod::footprint, "footprint"}, {CastMethod::binned, "binned"}};
+  static constexpr std::pair<Scalar, const char*> kScalars[] = {
+      {Scalar::float32, "float"}, {Scalar::float64, "double"}, {Scalar::extended, "long double"}};
+  static constexpr std::pair<IntersectFormula, const char*> kFormulas[] = {
+      {IntersectFormula::stable, "stable (Ray Tracing Gems)"}, {IntersectFormula::naive, "naive (b^2 - c)"}};
+  static constexpr std::pair<int, const char*> kSamples[] = {{1, "1"}, {4, "4"}, {16, "16"}, {64, "64"}};
+  ReferenceOptions& knobs = state.accuracy.options;
+  bool changed = choice("method", state.cast_options.method, kMethods);
+  explain("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out of "
+          "view and test each object only on the pixels its projection can cover. The status line shows the "
+          "work done and skipped.");
+  changed |= choice("precision", knobs.scalar, kScalars);
+  changed |= choice("intersection", knobs.formula, kFormulas);
+  changed |= choice("samples per pixel", knobs.samples_per_pixel, kSamples);
+  changed |= ImGui::Checkbox("camera-relative rays", &knobs.camera_relative);
+  if (state.dimension == 2) changed |= ImGui::Checkbox("exact bar (area-weighted)", &state.accuracy.exact);
+  explain(uses_reference_caster(state)
+              ? "These knobs use the reference caster: slower, and the method above is not used (README, "
+                "\"Accuracy\", says which settings to use for what)."
+              : "double, 1 sample, world coordinates: the fast caster.");
+  if (changed) state.cameras_dirty = true;
 }
 
 // ---- files ---------------------------------------------------------------------------------------------
@@ -266,7 +320,9 @@ void status_line(const AppState& state) {
   const double objects = double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
   const double plain_tests = double(w.rays) * objects;
   ImGui::Text("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld (%.1f%% of plain) | culled %lld",
-              state.frame_ms, state.cast_ms, cast_method_name(state.cast_options.method), state.cast_count,
+              state.frame_ms, state.cast_ms,
+              uses_reference_caster(state) ? "reference caster" : cast_method_name(state.cast_options.method),
+              state.cast_count,
               state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
               plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0, w.objects_culled);
   if (state.refine_pending) {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "app_options.h"
+#include "raycam/exact_bar.h"
 
 using namespace raycam;
 
@@ -69,4 +70,37 @@ TEST_CASE("while dragging, an expensive cast is a coarse preview, refined when t
   CHECK(state.map.width == 512);
   CHECK(state.map.height == 512);
   CHECK_FALSE(ui::recast_if_needed(state, false));  // and then nothing more to do
+}
+
+TEST_CASE("the accuracy knobs switch the app to the reference caster, and back", "[ui][accuracy]") {
+  ui::AppState state = state_for({"--view", "2d", "--exact"});
+  REQUIRE(ui::uses_reference_caster(state));
+  REQUIRE(ui::recast_if_needed(state));
+  const ExactBar bar = exact_bar(state.camera2d, state.file.scene2d);
+  const ColourMap exact = to_colour_map(exact_bar_image(bar, state.file.scene2d));
+  CHECK(state.map.colours == exact.colours);
+  CHECK(state.map.ids == exact.ids);
+  // Back to the defaults: the fast caster, which equals the plain loop.
+  state.accuracy = AccuracyFlags{};
+  state.cameras_dirty = true;
+  REQUIRE_FALSE(ui::uses_reference_caster(state));
+  REQUIRE(ui::recast_if_needed(state));
+  CastOptions plain;
+  plain.method = CastMethod::plain;
+  CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+  // The exact bar is 2D only: in 3D the knob is ignored rather than failing every frame.
+  state.dimension = 3;
+  state.accuracy.exact = true;
+  CHECK_FALSE(ui::uses_reference_caster(state));
+}
+
+TEST_CASE("every caster method shows the same image in the app", "[ui][accuracy]") {
+  ui::AppState plain = state_for({"--method", "plain", "--size", "96x80"});
+  ui::AppState binned = state_for({"--method", "binned", "--size", "96x80"});
+  REQUIRE(ui::recast_if_needed(plain));
+  REQUIRE(ui::recast_if_needed(binned));
+  CHECK(plain.map.ids == binned.map.ids);
+  CHECK(binned.stats.intersection_tests < plain.stats.intersection_tests);
+  CHECK_THROWS_WITH(state_for({"--placement", "arccos"}), Catch::Contains("--mistake arccos"));
+  CHECK_THROWS_WITH(state_for({"--method", "quick"}), Catch::Contains("--method"));
 }
