@@ -1,6 +1,7 @@
 // libFuzzer target: cameras and the caster fed raw doubles (NaN, infinities, denormals, huge and tiny
 // values). Every input is either refused with std::invalid_argument or gives finite rays, a finite M_d and
-// valid ids.
+// valid ids; and every accelerated caster gives the plain loop's ids (their bounds must hold whatever the
+// numbers).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -32,6 +33,24 @@ struct Bytes {
 
 void check(bool condition) {
   if (!condition) std::abort();
+}
+
+// Every method, both formulas, against the plain loop.
+template <class Camera, class Scene>
+void check_casters(const Camera& camera, const Scene& scene) {
+  using namespace raycam;
+  for (IntersectFormula formula : {IntersectFormula::stable, IntersectFormula::naive}) {
+    CastOptions options;
+    options.formula = formula;
+    options.method = CastMethod::plain;
+    const ColourMap plain = cast_primary_rays(camera, scene, options);
+    for (int id : plain.ids) check(id >= -1 && id < 3);
+    for (CastMethod method : {CastMethod::culled, CastMethod::footprint, CastMethod::binned}) {
+      options.method = method;
+      options.threads = 1;
+      check(cast_primary_rays(camera, scene, options).ids == plain.ids);
+    }
+  }
 }
 
 template <class Ray>
@@ -71,7 +90,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (int r = 0; r < 4; ++r) check(std::isfinite(camera.world_from_camera()[c][r]));
       for (int r = 0; r < camera.rows(); ++r)
         for (int c = 0; c < camera.columns(); ++c) check_ray(camera.primary_ray(r, c));
-      for (int id : cast_primary_rays(camera, scene).ids) check(id >= -1 && id < 3);
+      check_casters(camera, scene);
     } else {
       Camera2D camera(columns * rows);
       camera.set_mistakes(mistakes);
@@ -88,7 +107,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         scene.circles.push_back({{in.next_double(), in.next_double()}, in.next_double(), {}, ""});
       validate(scene);
       for (int k = 0; k < camera.pixel_count(); ++k) check_ray(camera.primary_ray(k));
-      for (int id : cast_primary_rays(camera, scene).ids) check(id >= -1 && id < 3);
+      check_casters(camera, scene);
     }
   } catch (const std::invalid_argument&) {
   }

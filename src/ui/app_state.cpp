@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <stdexcept>
+#include <string>
 
 #include "raycam/view_setup.h"
 
@@ -75,15 +77,23 @@ bool recast_if_needed(AppState& state, bool interacting) {
     else state.camera3d.set_res(std::max(state.res * factor, 1.0 / std::max(state.max_columns_3d, state.max_rows_3d)));
   }
   const auto start = std::chrono::steady_clock::now();
+  bool cast = false;
   if (uses_reference_caster(state)) {
     AccuracyFlags knobs = state.accuracy;
     knobs.exact = knobs.exact && is_2d;
-    state.map = is_2d ? render_with_accuracy(state.camera2d, state.file.scene2d, knobs)
-                      : render_with_accuracy(state.camera3d, state.file.scene3d, knobs);
-    const long long objects = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
-    state.stats = CastStats{static_cast<long long>(rays),
-                            static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
-  } else {
+    try {
+      state.map = is_2d ? render_with_accuracy(state.camera2d, state.file.scene2d, knobs)
+                        : render_with_accuracy(state.camera3d, state.file.scene3d, knobs);
+      const long long objects = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
+      state.stats = CastStats{static_cast<long long>(rays),
+                              static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
+      cast = true;
+    } catch (const std::invalid_argument& error) {  // e.g. the exact bar refuses a huge scene: say so, draw fast
+      state.message = std::string(error.what()) + " (drawn with the fast caster)";
+      state.message_is_error = true;
+    }
+  }
+  if (!cast) {
     CastOptions options = state.cast_options;
     options.formula = state.accuracy.options.formula;
     if (is_2d) cast_primary_rays(state.camera2d, state.file.scene2d, state.map, options, &state.stats);

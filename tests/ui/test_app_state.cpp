@@ -104,3 +104,15 @@ TEST_CASE("every caster method shows the same image in the app", "[ui][accuracy]
   CHECK_THROWS_WITH(state_for({"--placement", "arccos"}), Catch::Contains("--mistake arccos"));
   CHECK_THROWS_WITH(state_for({"--method", "quick"}), Catch::Contains("--method"));
 }
+
+TEST_CASE("a knob the scene cannot take shows an error and the fast image, never a crash", "[ui][accuracy]") {
+  ui::AppState state = state_for({"--view", "2d", "--exact"});
+  state.file.scene2d.circles.assign(kMaxExactBarCircles + 1, Circle{{0, 0}, 0.5, {9, 9, 9}, ""});
+  state.cameras_dirty = true;
+  REQUIRE(ui::recast_if_needed(state));
+  CHECK(state.message_is_error);
+  CHECK_THAT(state.message, Catch::Contains("circles"));
+  CastOptions plain;
+  plain.method = CastMethod::plain;
+  CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+}
