@@ -105,7 +105,6 @@ PixelBox Footprint::sphere_pixels(const Sphere& sphere, int rows, int columns) c
   // projection on the (right, forward) plane, a circle of the same radius: so each axis is a 2D problem.
   PixelBox box;
   box.columns = axis_pixels(depth, glm::dot(q, right), df, columns, true);
-  if (box.columns.empty()) return box;
   box.rows = axis_pixels(depth, glm::dot(q, up), df, rows, false);
   return box;
 }
