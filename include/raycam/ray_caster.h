@@ -45,6 +45,7 @@ struct CastStats {
   long long intersection_tests = 0;  // ray/object tests actually run
   long long objects_culled = 0;      // behind the screen or outside the field of view: never tested
   long long pixels_skipped = 0;      // pixels no object can cover: background without casting a ray
+  int threads = 1;                   // threads that shared the pixels (one when the work is too small)
 };
 
 Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectFormula formula);

@@ -63,7 +63,7 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
       const Hit hit = nearest_hit(scene.circles, camera.primary_ray(k), options.formula);
       store(out, out.index(0, camera.column_of_pixel(k)), hit, scene);
     }
-    work = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0, 0};
+    work = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0, 0, 1};
   }
   if (stats) *stats = work;
 }
@@ -80,7 +80,7 @@ void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& 
         store(out, out.index(row, column), nearest_hit(scene.spheres, camera.primary_ray(row, column), options.formula),
               scene);
     const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
-    work = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0, 0};
+    work = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0, 0, 1};
   }
   if (stats) *stats = work;
 }

@@ -124,6 +124,24 @@ TEST_CASE("the numerical stress cases give the plain loop's ids", "[caster][acce
   }
 }
 
+TEST_CASE("a cast big enough to share is shared by the threads, and still gives the plain loop's ids",
+          "[caster][accelerated]") {
+  test::Random random(11);
+  const Scene3D scene = random_spheres(random, 60, 4.0, 2.5);
+  Camera3D camera(600, 500);
+  camera.set_orbit({{0, 0, 0}, 9.0, 0.4, 1.1, 1.2});
+  const ColourMap plain = cast_primary_rays(camera, scene, with(CastMethod::plain));
+  for (CastMethod method : {CastMethod::footprint, CastMethod::binned}) {
+    CastStats stats;
+    const ColourMap map = cast_primary_rays(camera, scene, with(method, 3), &stats);
+    CHECK(stats.threads == 3);
+    CHECK(differences(map, plain) == 0);
+  }
+  CastStats small;
+  cast_primary_rays(camera, Scene3D{}, with(CastMethod::automatic, 3), &small);
+  CHECK(small.threads == 1);  // an empty scene: writing the background is not worth a thread
+}
+
 TEST_CASE("objects behind the screen or out of view are culled, never tested", "[caster][accelerated]") {
   Camera3D camera(64, 64);
   camera.set_orbit({{0, 0, 0}, 10.0, 0.0, kPi / 2, 2.0});  // on +x, looking down -x; eye at x = 12
