@@ -12,7 +12,8 @@ namespace {
 constexpr int kBandRows = 8;              // a band's depth buffer stays in cache at any width
 constexpr int kObjectsPerChunk = 4096;    // projection work handed out per item
 // Starting a thread costs tens of microseconds: below this much work (intersection tests, plus a quarter of
-// a test per pixel written) one thread finishes first. Measured with `bench speed` at 256² and K = 1…100.
+// a test per pixel written and four per candidate) one thread finishes first. Measured with `bench speed`
+// at 256² and K = 1…10⁵.
 constexpr long long kThreadedWork = 100000;
 
 // An object that survived culling, with the pixels it can cover. A compact copy of what the pixel loop
@@ -26,61 +27,62 @@ struct Candidate {
   Rgb8 colour;
 };
 
-std::vector<Candidate> visible_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula,
-                                       int workers) {
+// Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
+// object order because candidates are appended in order.
+struct Bands {
+  std::vector<int> start, entries, fill;
+};
+
+// The survivors of culling, in object order, into `visible` (`projected` and `kept_in_chunk` are scratch).
+struct Projection {
+  std::vector<Candidate> projected;  // one slot per object, survivors packed at the front of each chunk
+  std::vector<int> kept_in_chunk;
+  std::vector<Candidate> visible;
+};
+
+void project_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula, int workers,
+                     Projection& w) {
   const Footprint footprint(camera, formula);
   const int count = int(scene.spheres.size());
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
-  // Each chunk of objects keeps its survivors; chunks are joined in order, so object order holds.
-  std::vector<std::vector<Candidate>> survivors(static_cast<std::size_t>(chunks));
+  w.projected.resize(std::size_t(count));
+  w.kept_in_chunk.assign(std::size_t(chunks), 0);
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
-    const int end = std::min(count, (chunk + 1) * kObjectsPerChunk);
-    std::vector<Candidate>& kept = survivors[std::size_t(chunk)];
-    kept.resize(std::size_t(end - chunk * kObjectsPerChunk));
-    std::size_t survivors_in_chunk = 0;
-    for (int i = chunk * kObjectsPerChunk; i < end; ++i) {
+    const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
+    int kept = 0;
+    for (int i = begin; i < end; ++i) {
       // Written whether or not it survives, then kept by advancing the count: with many objects about half
       // fall between pixel centres at random, and a branch on that mispredicts every other time.
       const Sphere& sphere = scene.spheres[std::size_t(i)];
       const PixelBox box = footprint.sphere_pixels(sphere, camera.rows(), camera.columns());
-      kept[survivors_in_chunk] = Candidate{sphere.centre, sphere.radius, box, i, sphere.colour};
-      survivors_in_chunk += !box.empty();
+      w.projected[std::size_t(begin + kept)] = Candidate{sphere.centre, sphere.radius, box, i, sphere.colour};
+      kept += !box.empty();
     }
-    kept.resize(survivors_in_chunk);
+    w.kept_in_chunk[std::size_t(chunk)] = kept;
   });
-  if (chunks == 1) return std::move(survivors[0]);
-  std::vector<Candidate> visible;
-  std::size_t total = 0;
-  for (const auto& kept : survivors) total += kept.size();
-  visible.reserve(total);
-  for (const auto& kept : survivors) visible.insert(visible.end(), kept.begin(), kept.end());
-  return visible;
+  w.visible.clear();  // chunks joined in order: object order holds
+  for (int chunk = 0; chunk < chunks; ++chunk) {
+    const auto first = w.projected.begin() + std::ptrdiff_t(chunk) * kObjectsPerChunk;
+    w.visible.insert(w.visible.end(), first, first + w.kept_in_chunk[std::size_t(chunk)]);
+  }
 }
 
-// Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
-// object order because candidates are appended in order.
-struct Bands {
-  std::vector<int> start, entries;
-};
-
-Bands bin_by_band(const std::vector<Candidate>& visible, int bands) {
-  Bands binned;
+void bin_by_band(const std::vector<Candidate>& visible, int bands, Bands& binned) {
   binned.start.assign(std::size_t(bands) + 1, 0);
   for (const Candidate& c : visible)
     for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
   for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
   binned.entries.resize(std::size_t(binned.start.back()));
-  std::vector<int> fill(binned.start.begin(), binned.start.end() - 1);
+  binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
   for (int j = 0; j < int(visible.size()); ++j) {
     const PixelRange& rows = visible[std::size_t(j)].box.rows;
     for (int b = rows.first / kBandRows; b <= rows.last / kBandRows; ++b)
-      binned.entries[std::size_t(fill[std::size_t(b)]++)] = j;
+      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = j;
   }
-  return binned;
 }
 
 // One worker's depth buffer for the band it is casting.
-struct BandScratch {
+struct alignas(64) BandScratch {  // a cache line of its own: its counters change at every test
   std::vector<double> depth;
   std::vector<int> id;
   std::vector<unsigned char> touched;
@@ -101,6 +103,15 @@ struct BandScratch {
       id[p] = candidate;  // an index into the candidates, which are in object order like the objects
     }
   }
+};
+
+// Memory a cast reuses from the last cast on the same calling thread. Fresh megabytes each frame would cost
+// page faults that no second thread can share (measured: projecting 10⁵ spheres took as long on two
+// threads as on one).
+struct Workspace {
+  Projection projection;
+  Bands bands;
+  std::vector<BandScratch> scratch;  // one per worker
 };
 
 // Splats a candidate's box (clipped to the band's rows) into the band's depth buffer.
@@ -138,20 +149,26 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   const int rows = camera.rows(), columns = camera.columns();
   const long long pixels = static_cast<long long>(rows) * columns;
   const int threads = resolve_threads(options.threads);
-  const std::vector<Candidate> visible = visible_spheres(camera, scene, options.formula, threads);
+  thread_local Workspace workspace;  // the calling thread's: its helpers write into it, each their own part
+  project_spheres(camera, scene, options.formula, threads, workspace.projection);
+  const std::vector<Candidate>& visible = workspace.projection.visible;
 
   CastMethod method = options.method;
   if (method == CastMethod::automatic)
     method = int(visible.size()) <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
   const int bands = (rows + kBandRows - 1) / kBandRows;
-  const Bands binned = method == CastMethod::binned ? bin_by_band(visible, bands) : Bands{};
+  const Bands& binned = workspace.bands;
+  if (method == CastMethod::binned) bin_by_band(visible, bands, workspace.bands);
 
-  long long work = pixels / 4;
+  // Each candidate costs a few tests' worth besides its tests (its rows of rays, its bands).
+  long long work = pixels / 4 + 4 * static_cast<long long>(visible.size());
   for (const Candidate& c : visible)
     work += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
   if (method == CastMethod::culled) work += pixels * static_cast<long long>(visible.size());
   const int workers = work >= kThreadedWork ? threads : 1;
-  std::vector<BandScratch> scratch(std::size_t(std::min(workers, bands)));
+  std::vector<BandScratch>& scratch = workspace.scratch;
+  scratch.resize(std::size_t(std::min(workers, bands)));
+  for (BandScratch& s : scratch) s.tests = s.touched_pixels = 0;
   parallel_items(bands, workers, [&](int worker, int band) {
     BandScratch& s = scratch[std::size_t(worker)];
     const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
