@@ -5,10 +5,7 @@
 # Needs gnuplot (Debian: gnuplot-nox). Takes about a minute on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${RAYCAM_BUILD_DIR:-build}"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j2 --target raycam-cli
-mkdir -p docs
+. scripts/build-cli.sh
 bench=(bench accuracy)
-"$build/raycam-cli" "${bench[@]}" --csv docs/accuracy.csv --png docs/accuracy.png "$@" | tee docs/accuracy_table.md
+"$cli" "${bench[@]}" --csv docs/accuracy.csv --png docs/accuracy.png "$@" | tee docs/accuracy_table.md
 rm -f docs/accuracy.png.dat docs/accuracy.png.gp

@@ -5,9 +5,6 @@
 # Needs gnuplot (Debian: gnuplot-nox) for the plot. Takes about 4 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${RAYCAM_BUILD_DIR:-build}"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j2 --target raycam-cli
-mkdir -p docs
-"$build/raycam-cli" bench speed --csv docs/speed.csv "$@" | tee docs/speed_table.md
+. scripts/build-cli.sh
+"$cli" bench speed --csv docs/speed.csv "$@" | tee docs/speed_table.md
 scripts/plot_speed.sh docs/speed.csv docs/speed.png

@@ -5,12 +5,9 @@
 # Exits non-zero if anything is non-finite. Pass --short for the CI list.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build="${RAYCAM_BUILD_DIR:-build}"
 length=(--long)
 [ "${1:-}" = "--short" ] && length=()
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j2 --target raycam-cli
-mkdir -p docs
+. scripts/build-cli.sh
 bench=(bench accuracy)
-"$build/raycam-cli" "${bench[@]}" --stress "${length[@]}" --csv docs/stress.csv
-"$build/raycam-cli" "${bench[@]}" --angles --csv docs/angles.csv
+"$cli" "${bench[@]}" --stress "${length[@]}" --csv docs/stress.csv
+"$cli" "${bench[@]}" --angles --csv docs/angles.csv
