@@ -18,6 +18,14 @@ struct ColourMap {
   ColourMap() = default;
   ColourMap(int w, int h, Rgb8 fill)
       : width(w), height(h), colours(std::size_t(w) * h, fill), ids(std::size_t(w) * h, -1) {}
+  // Resizes to w × h keeping the memory (no allocation when the size is unchanged); the contents are left
+  // for the caster to overwrite, every pixel of them.
+  void resize(int w, int h) {
+    width = w;
+    height = h;
+    colours.resize(std::size_t(w) * h);
+    ids.resize(std::size_t(w) * h);
+  }
   std::size_t index(int row, int column) const { return std::size_t(row) * width + column; }
   Rgb8 colour_at(int row, int column) const { return colours[index(row, column)]; }
   int id_at(int row, int column) const { return ids[index(row, column)]; }

@@ -29,6 +29,8 @@ enum class CastMethod {
   footprint,  // each object tested only on the pixels of its projection's bounding box
   binned,     // footprint, with objects sorted into bands of rows first (for many objects)
 };
+inline constexpr CastMethod kCastMethods[] = {CastMethod::automatic, CastMethod::plain, CastMethod::culled,
+                                             CastMethod::footprint, CastMethod::binned};
 const char* cast_method_name(CastMethod method);
 // "automatic", "plain", ...; throws std::invalid_argument naming `flag` and the accepted names.
 CastMethod parse_cast_method(const std::string& name, const std::string& flag);

@@ -116,10 +116,7 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
   if (threads < 1) throw std::invalid_argument("EmbreeCaster::cast: threads must be >= 1");
   const int rows = camera.rows(), columns = camera.columns();
   const std::size_t pixels = std::size_t(rows) * std::size_t(columns);
-  out.width = columns;
-  out.height = rows;
-  out.colours.resize(pixels);  // every pixel is written below, so no fill
-  out.ids.resize(pixels);
+  out.resize(columns, rows);  // every pixel is written below, so no fill
 
   if (ray_table && ray_table->size() != pixels)
     throw std::invalid_argument("EmbreeCaster::cast: the ray table must hold one ray per pixel");

@@ -183,10 +183,7 @@ void print_row(const Row& r) {
 
 // The floor: the same rays generated and the map written, with no object tested.
 void rays_only(const Camera3D& camera, Rgb8 background, int threads, ColourMap& map) {
-  map.width = camera.columns();
-  map.height = camera.rows();
-  map.ids.resize(std::size_t(map.width) * map.height);
-  map.colours.resize(map.ids.size());
+  map.resize(camera.columns(), camera.rows());
   auto band = [&](int first_row, int step) {
     std::vector<Ray3D> rays(static_cast<std::size_t>(camera.columns()));
     for (int row = first_row; row < camera.rows(); row += step) {

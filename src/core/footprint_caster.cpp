@@ -80,29 +80,37 @@ void bin_by_band(const std::vector<Candidate>& visible, int bands, Bands& binned
   }
 }
 
-// One worker's depth buffer for the band it is casting.
-struct alignas(64) BandScratch {  // a cache line of its own: its counters change at every test
+// One worker's depth buffer over the pixels it is casting (a band of rows, or a whole 2D bar), with a
+// line of rays made by the camera's primary_rays. On a cache line of its own: its counters change at every
+// test, and two workers' counters sharing a line would slow both.
+template <class Ray>
+struct alignas(64) DepthBuffer {
   std::vector<double> depth;
   std::vector<int> id;
   std::vector<unsigned char> touched;
-  std::vector<Ray3D> rays;  // one row's worth, made by Camera3D::primary_rays
+  std::vector<Ray> rays;
   long long tests = 0, touched_pixels = 0;
-  void reset(std::size_t pixels, int columns) {
-    rays.resize(std::size_t(columns));
+  void reset(std::size_t pixels, int line) {
+    rays.resize(std::size_t(line));
     depth.assign(pixels, kNoHit<double>);
     id.assign(pixels, -1);
     touched.assign(pixels, 0);
   }
   // The plain loop's depth test: strict '<' in object order keeps the lower index on a tie.
-  void test(std::size_t p, const Ray3D& ray, const Candidate& c, int candidate, IntersectFormula formula) {
-    const double t = nearest_hit_t(ray.origin, ray.direction, c.centre, c.radius, formula);
+  template <class Vector>
+  void test(std::size_t p, const Ray& ray, const Vector& centre, double radius, int candidate,
+            IntersectFormula formula) {
+    touched_pixels += touched[p] == 0;
+    touched[p] = 1;
+    const double t = nearest_hit_t(ray.origin, ray.direction, centre, radius, formula);
     ++tests;
     if (t < depth[p]) {
       depth[p] = t;
-      id[p] = candidate;  // an index into the candidates, which are in object order like the objects
+      id[p] = candidate;
     }
   }
 };
+using BandScratch = DepthBuffer<Ray3D>;  // ids are indices into the candidates, in object order
 
 // Memory a cast reuses from the last cast on the same calling thread. Fresh megabytes each frame would cost
 // page faults that no second thread can share (measured: projecting 10⁵ spheres took as long on two
@@ -122,12 +130,9 @@ void splat(const Camera3D& camera, const std::vector<Candidate>& visible, int j,
   for (int row = first; row <= last; ++row) {
     camera.primary_rays(row, box.columns.first, box.columns.last, scratch.rays.data());
     const std::size_t line = std::size_t(row - row_begin) * camera.columns();
-    for (int column = box.columns.first; column <= box.columns.last; ++column) {
-      const std::size_t p = line + std::size_t(column);
-      scratch.touched_pixels += scratch.touched[p] == 0;
-      scratch.touched[p] = 1;
-      scratch.test(p, scratch.rays[std::size_t(column - box.columns.first)], candidate, j, formula);
-    }
+    for (int column = box.columns.first; column <= box.columns.last; ++column)
+      scratch.test(line + std::size_t(column), scratch.rays[std::size_t(column - box.columns.first)],
+                   candidate.centre, candidate.radius, j, formula);
   }
 }
 
@@ -178,10 +183,10 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
         for (int column = 0; column < columns; ++column) {
           const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
           for (int j = 0; j < int(visible.size()); ++j)
-            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)], j, options.formula);
+            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)].centre, visible[std::size_t(j)].radius, j,
+                   options.formula);
         }
       }
-      s.touched_pixels += static_cast<long long>(row_end - row_begin) * columns;
     } else if (method == CastMethod::binned) {
       for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
         splat(camera, visible, binned.entries[std::size_t(e)], row_begin, row_end, options.formula, s);
@@ -220,33 +225,23 @@ void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& o
     visible.push_back(i);
     range.push_back(options.method == CastMethod::culled ? PixelRange{0, n - 1} : r);
   }
-  std::vector<double> depth(std::size_t(n), kNoHit<double>);
-  std::vector<int> id(std::size_t(n), -1);
-  std::vector<unsigned char> touched(std::size_t(n), 0);
-  std::vector<Ray2D> rays(static_cast<std::size_t>(n));
-  long long tests = 0, touched_pixels = 0;
-  for (std::size_t j = 0; j < visible.size(); ++j) {  // object order, strict '<': ties to the lower index
+  DepthBuffer<Ray2D> bar;  // ids are object indices
+  bar.reset(std::size_t(n), n);
+  for (std::size_t j = 0; j < visible.size(); ++j) {  // object order
     const Circle& circle = scene.circles[std::size_t(visible[j])];
-    camera.primary_rays(range[j].first, range[j].last, rays.data());
-    for (int k = range[j].first; k <= range[j].last; ++k) {
-      const Ray2D& ray = rays[std::size_t(k - range[j].first)];
-      const double t = nearest_hit_t(ray.origin, ray.direction, circle.centre, circle.radius, options.formula);
-      ++tests;
-      touched_pixels += touched[std::size_t(k)] == 0;
-      touched[std::size_t(k)] = 1;
-      if (t < depth[std::size_t(k)]) {
-        depth[std::size_t(k)] = t;
-        id[std::size_t(k)] = visible[j];
-      }
-    }
+    camera.primary_rays(range[j].first, range[j].last, bar.rays.data());
+    for (int k = range[j].first; k <= range[j].last; ++k)
+      bar.test(std::size_t(k), bar.rays[std::size_t(k - range[j].first)], circle.centre, circle.radius, visible[j],
+               options.formula);
   }
   for (int k = 0; k < n; ++k) {
     const std::size_t column = std::size_t(camera.column_of_pixel(k));
-    const int object = id[std::size_t(k)];
+    const int object = bar.id[std::size_t(k)];
     out.ids[column] = object;
     out.colours[column] = object < 0 ? scene.background : scene.circles[std::size_t(object)].colour;
   }
-  stats = CastStats{n, tests, static_cast<long long>(scene.circles.size() - visible.size()), n - touched_pixels, 1};
+  stats = CastStats{n, bar.tests, static_cast<long long>(scene.circles.size() - visible.size()),
+                    n - bar.touched_pixels, 1};
 }
 
 }  // namespace raycam::detail

@@ -42,19 +42,12 @@ namespace {
 // The accelerated casters assume the camera's rays are the right ones: pixel centres and unit directions.
 // The classic mistakes that change that (edges, no renormalising) are on-screen lessons: the plain loop.
 bool plain_only(const ClassicMistakes& mistakes) { return mistakes.pixel_edges || mistakes.skip_renormalise; }
-
-void resize(ColourMap& map, int width, int height) {
-  map.width = width;
-  map.height = height;
-  map.colours.resize(std::size_t(width) * height);
-  map.ids.resize(std::size_t(width) * height);
-}
 }  // namespace
 
 void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
                        CastStats* stats) {
   const int n = camera.pixel_count();
-  resize(out, n, 1);
+  out.resize(n, 1);
   CastStats work;
   if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
     detail::cast_accelerated(camera, scene, out, options, work);
@@ -70,7 +63,7 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
 
 void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
                        CastStats* stats) {
-  resize(out, camera.columns(), camera.rows());
+  out.resize(camera.columns(), camera.rows());
   CastStats work;
   if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
     detail::cast_accelerated(camera, scene, out, options, work);

@@ -3,6 +3,8 @@
 #include "panels.h"
 
 #include <algorithm>
+#include <array>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
 
@@ -234,8 +236,8 @@ void mistakes_section(AppState& state) {
 // ---- caster and accuracy -------------------------------------------------------------------------------
 namespace {
 // A combo over a fixed list of (value, name); returns true when the user picked another value.
-template <class T, std::size_t N>
-bool choice(const char* label, T& value, const std::pair<T, const char*> (&options)[N]) {
+template <class T, class Options>  // Options: a range of std::pair<T, const char*>
+bool choice(const char* label, T& value, const Options& options) {
   const char* current = "?";
   for (const auto& [v, name] : options)
     if (v == value) current = name;
@@ -255,15 +257,17 @@ bool choice(const char* label, T& value, const std::pair<T, const char*> (&optio
 void caster_section(AppState& state) {
   if (!ImGui::CollapsingHeader("Caster and accuracy", uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
-  static constexpr std::pair<CastMethod, const char*> kMethods[] = {
-      {CastMethod::automatic, "automatic"}, {CastMethod::plain, "plain"},   {CastMethod::culled, "culled"},
-      {CastMethod::footprint, "footprint"}, {CastMethod::binned, "binned"}};
   static constexpr std::pair<Scalar, const char*> kScalars[] = {
       {Scalar::float32, "float"}, {Scalar::float64, "double"}, {Scalar::extended, "long double"}};
   static constexpr std::pair<IntersectFormula, const char*> kFormulas[] = {
       {IntersectFormula::stable, "stable (Ray Tracing Gems)"}, {IntersectFormula::naive, "naive (b^2 - c)"}};
   static constexpr std::pair<int, const char*> kSamples[] = {{1, "1"}, {4, "4"}, {16, "16"}, {64, "64"}};
   ReferenceOptions& knobs = state.accuracy.options;
+  static const auto kMethods = [] {  // the core's list and names
+    std::array<std::pair<CastMethod, const char*>, std::size(kCastMethods)> methods;
+    for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = {kCastMethods[i], cast_method_name(kCastMethods[i])};
+    return methods;
+  }();
   bool changed = choice("method", state.cast_options.method, kMethods);
   explain("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out of "
           "view and test each object only on the pixels its projection can cover. The status line shows the "
@@ -274,8 +278,8 @@ void caster_section(AppState& state) {
   changed |= ImGui::Checkbox("camera-relative rays", &knobs.camera_relative);
   if (state.dimension == 2) changed |= ImGui::Checkbox("exact bar (area-weighted)", &state.accuracy.exact);
   explain(uses_reference_caster(state)
-              ? "These knobs use the reference caster: slower, and the method above is not used (README, "
-                "\"Accuracy\", says which settings to use for what)."
+              ? "These knobs use the reference caster: slower, and the method above is not used. Which "
+                "settings to use for what: README, Accuracy."
               : "double, 1 sample, world coordinates: the fast caster.");
   if (changed) state.cameras_dirty = true;
 }
