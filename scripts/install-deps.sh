@@ -7,6 +7,7 @@ packages=(
   catch2                                     # tests
   libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
   xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
+  libcli11-dev                               # command lines
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
 )

@@ -31,9 +31,8 @@ enum class CastMethod {
 };
 inline constexpr CastMethod kCastMethods[] = {CastMethod::automatic, CastMethod::plain, CastMethod::culled,
                                              CastMethod::footprint, CastMethod::binned};
+// "automatic", "plain", ...: the names the command line and the app show.
 const char* cast_method_name(CastMethod method);
-// "automatic", "plain", ...; throws std::invalid_argument naming `flag` and the accepted names.
-CastMethod parse_cast_method(const std::string& name, const std::string& flag);
 
 struct CastOptions {
   IntersectFormula formula = IntersectFormula::stable;

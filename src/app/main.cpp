@@ -1,18 +1,20 @@
 // raycam: the interactive window (GLFW + Dear ImGui + OpenGL 3.3 core). The only file that includes GLFW;
 // the frame itself is raycam_ui's, shared with the headless `raycam-cli shot`.
-#include <cfloat>
-#include <chrono>
-#include <cstdio>
-#include <stdexcept>
-#include <string>
-#include <vector>
-
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <CLI/CLI.hpp>
+#include <cfloat>
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "app_flags.h"
 #include "app_options.h"
+#include "flag_values.h"
 #include "frame.h"
 #include "framebuffer_image.h"
 #include "gl.h"
@@ -24,16 +26,6 @@ struct Run {
   int frames = 0;          // 0: interactive; N: run N frames then exit
   std::string screenshot;  // with --frames: the last frame's PNG
 };
-
-void print_help() {
-  std::printf(
-      "usage: raycam [SCENE.json] [--scene FILE] [camera flags] [--width W --height H] [--inspect COL,ROW]\n"
-      "              [--step K] [--mistake NAME] [--font-scale S] [--frames N --screenshot out.png]\n\n"
-      "The interactive raycam window. With no scene, a built-in demo scene opens. F1 lists the shortcuts.\n\n%s%s"
-      "  --frames N          run N frames (no user input) and exit; N in [1, 100000]\n"
-      "  --screenshot FILE   with --frames: save the last frame as PNG (the same image as raycam-cli shot)\n",
-      raycam::view_flags_help(), raycam::ui::app_options_help());
-}
 
 void key_callback(GLFWwindow* window, int key, int, int action, int) {
   if (action != GLFW_PRESS) return;
@@ -66,30 +58,25 @@ void toggle_fullscreen(GLFWwindow* window, int& saved_x, int& saved_y, int& save
 int main(int argc, char** argv) {
   raycam::ui::AppOptions options;
   Run run;
+  CLI::App cli(
+      "raycam: the interactive camera window. With no scene, a built-in demo scene opens; F1 lists "
+      "the shortcuts.",
+      "raycam");
+  raycam::flags::add_app_options(cli, options);
+  std::string positional_scene;
+  cli.add_option("SCENE", positional_scene, "scene file to open (same as --scene)");
+  raycam::flags::add_checked_option<int>(cli, "--frames", "N", "run N frames (no user input) and exit",
+                                         raycam::flags::integer_in(1, 100000),
+                                         [&run](int n) { run.frames = n; });
+  raycam::flags::add_checked_option<std::string>(
+      cli, "--screenshot", "FILE",
+      "with --frames: save the last frame as PNG (the same image as raycam-cli shot)",
+      raycam::flags::file_name(), [&run](std::string path) { run.screenshot = path; });
+  if (const auto usage_exit = raycam::flags::parse_command_line(cli, argc, argv)) return *usage_exit;
+  if (!positional_scene.empty() && !options.view.scene_path) options.view.scene_path = positional_scene;
+  if (!run.screenshot.empty() && run.frames == 0) run.frames = 3;
   AppState state;
   try {
-    const std::vector<std::string> args(argv + 1, argv + argc);
-    for (std::size_t i = 0; i < args.size();) {
-      if (args[i] == "--help" || args[i] == "-h") {
-        print_help();
-        return 0;
-      }
-      if (raycam::ui::parse_app_option(args, i, options)) continue;
-      if (args[i] == "--frames" || args[i] == "--screenshot") {
-        if (i + 1 >= args.size()) throw std::invalid_argument(args[i] + ": missing value");
-        if (args[i] == "--screenshot") {
-          run.screenshot = args[i + 1];
-        } else {
-          run.frames = raycam::parse_integer_flag(args[i + 1], "--frames", 1, 100000);
-        }
-        i += 2;
-      } else if (args[i].rfind("--", 0) != 0 && !options.view.scene_path) {
-        options.view.scene_path = args[i++];  // `raycam SCENE.json`
-      } else {
-        throw std::invalid_argument("unknown option '" + args[i] + "' (see raycam --help)");
-      }
-    }
-    if (!run.screenshot.empty() && run.frames == 0) run.frames = 3;
     state = raycam::ui::make_app_state(options);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "raycam: error: %s\n", error.what());

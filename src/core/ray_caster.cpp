@@ -105,10 +105,4 @@ const char* cast_method_name(CastMethod method) {
   return "?";
 }
 
-CastMethod parse_cast_method(const std::string& name, const std::string& flag) {
-  for (const auto& [value, known] : kMethodNames)
-    if (name == known) return value;
-  throw std::invalid_argument(flag + ": expected automatic, plain, culled, footprint or binned, got '" + name + "'");
-}
-
 }  // namespace raycam

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "app_flags.h"
 #include "app_options.h"
 #include "raycam/exact_bar.h"
 
@@ -12,10 +13,7 @@ using namespace raycam;
 
 namespace {
 ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();)
-    if (!ui::parse_app_option(args, i, options)) throw std::logic_error("not an app option: " + args[i]);
-  return ui::make_app_state(options);
+  return ui::make_app_state(flags::parse_app_options(args));
 }
 }  // namespace
 
