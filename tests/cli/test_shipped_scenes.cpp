@@ -1,11 +1,12 @@
 // Every shipped scene (scenes/*.json) through `raycam-cli render`: the ids equal the plain loop on the camera
 // built here from the file's preset (degrees converted in the test), the PNG holds each id's colour, and the
 // symmetric scenes give mirror-symmetric images (MISSION.md, invariant 5). Exit code 0 alone proves nothing.
+#include <stb_image.h>  // implementation provided by Debian's libstb
+
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
-#include <stb_image.h>  // implementation provided by Debian's libstb
 #include <string>
 #include <vector>
 
@@ -41,8 +42,11 @@ ColourMap expected_map(const SceneFile& file) {
   }
   Camera3D camera(p.size ? (*p.size)[0] : 256, p.size ? (*p.size)[1] : 256);
   camera.set_res(p.res.value_or(1.0));
-  camera.set_orbit({{(*p.target)[0], (*p.target)[1], (*p.target)[2]}, *p.d, *p.theta_deg * kDegree,
-                    *p.phi_deg * kDegree, *p.df});
+  camera.set_orbit({{(*p.target)[0], (*p.target)[1], (*p.target)[2]},
+                    *p.d,
+                    *p.theta_deg * kDegree,
+                    *p.phi_deg * kDegree,
+                    *p.df});
   // 2000 spheres: the plain loop would take seconds; the fast casters equal it (test_accelerated_caster).
   if (file.scene3d.spheres.size() > 100) plain.method = CastMethod::automatic;
   return cast_primary_rays(camera, file.scene3d, plain);
@@ -50,7 +54,8 @@ ColourMap expected_map(const SceneFile& file) {
 
 Rgb8 colour_of(const SceneFile& file, int id) {
   if (id < 0) return file.dimension == 2 ? file.scene2d.background : file.scene3d.background;
-  return file.dimension == 2 ? file.scene2d.circles[std::size_t(id)].colour : file.scene3d.spheres[std::size_t(id)].colour;
+  return file.dimension == 2 ? file.scene2d.circles[std::size_t(id)].colour
+                             : file.scene3d.spheres[std::size_t(id)].colour;
 }
 }  // namespace
 
@@ -58,7 +63,8 @@ TEST_CASE("every shipped scene renders the core's ids and their colours", "[cli]
   for (const char* name : {"classic2d", "classic3d", "symmetric2d", "symmetric3d", "many3d"}) {
     INFO(name);
     const std::string path = std::string(RAYCAM_SCENES) + "/" + name + ".json";
-    const std::string ids_path = std::string("shipped_") + name + ".txt", png_path = std::string("shipped_") + name + ".png";
+    const std::string ids_path = std::string("shipped_") + name + ".txt",
+                      png_path = std::string("shipped_") + name + ".png";
     std::remove(ids_path.c_str());
     std::remove(png_path.c_str());
     const std::string command = std::string(RAYCAM_CLI) + " render --scene " + path + " --ids " + ids_path +

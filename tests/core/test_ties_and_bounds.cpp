@@ -66,8 +66,10 @@ TEST_CASE("ties go to the lower index for every cast method, 3D", "[caster][ties
 TEST_CASE("the setters refuse the open bounds and accept the closed ones", "[input][bounds]") {
   Camera2D c2(8);
   Camera3D c3(8, 8);
-  CHECK_THROWS_WITH(c2.set_orbit({{0, 0}, 0.0, 0.0, 1.0}), Catch::Contains("d") && Catch::Contains("]0, 1e12]"));
-  CHECK_THROWS_WITH(c3.set_orbit({{0, 0, 0}, 0.0, 0.0, 1.0, 1.0}), Catch::Contains("d") && Catch::Contains("]0, 1e12]"));
+  CHECK_THROWS_WITH(c2.set_orbit({{0, 0}, 0.0, 0.0, 1.0}),
+                    Catch::Contains("d") && Catch::Contains("]0, 1e12]"));
+  CHECK_THROWS_WITH(c3.set_orbit({{0, 0, 0}, 0.0, 0.0, 1.0, 1.0}),
+                    Catch::Contains("d") && Catch::Contains("]0, 1e12]"));
   CHECK_NOTHROW(c2.set_orbit({{0, 0}, 1e-300, 0.0, 1.0}));  // d is open at 0 only
   CHECK_NOTHROW(c3.set_orbit({{0, 0, 0}, 1e12, 0.0, 1.0, 1.0}));
   // d_f is closed: [1e-9, 1e9]; one ulp outside is refused.
@@ -77,7 +79,8 @@ TEST_CASE("the setters refuse the open bounds and accept the closed ones", "[inp
   }
   for (double df : {0.0, std::nextafter(1e-9, 0.0), std::nextafter(1e9, 2e9)}) {
     INFO("df " << df);
-    CHECK_THROWS_WITH(c2.set_orbit({{0, 0}, 1.0, 0.0, df}), Catch::Contains("df") && Catch::Contains("[1e-9, 1e9]"));
+    CHECK_THROWS_WITH(c2.set_orbit({{0, 0}, 1.0, 0.0, df}),
+                      Catch::Contains("df") && Catch::Contains("[1e-9, 1e9]"));
     CHECK_THROWS_WITH(c3.set_orbit({{0, 0, 0}, 1.0, 0.0, 1.0, df}),
                       Catch::Contains("df") && Catch::Contains("[1e-9, 1e9]"));
   }
@@ -109,7 +112,8 @@ std::string error_of(const std::string& text) {
   return "(no error)";
 }
 std::string sphere_with(const std::string& camera) {
-  return R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}], "camera": {)" + camera + "}}";
+  return R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}], "camera": {)" +
+         camera + "}}";
 }
 }  // namespace
 
@@ -118,10 +122,13 @@ TEST_CASE("scene files refuse the open bounds and accept the closed ones", "[sce
              Catch::Contains("objects[0].radius") && Catch::Contains("]0, 1e12]"));
   CHECK_THAT(error_of(R"({"dimension": 2, "objects": [{"type": "circle", "center": [0,0], "radius": 0}]})"),
              Catch::Contains("objects[0].radius") && Catch::Contains("]0, 1e12]"));
-  CHECK_THAT(error_of(sphere_with(R"("res": 0)")), Catch::Contains("camera.res") && Catch::Contains("]0, 1]"));
+  CHECK_THAT(error_of(sphere_with(R"("res": 0)")),
+             Catch::Contains("camera.res") && Catch::Contains("]0, 1]"));
   CHECK_THAT(error_of(sphere_with(R"("d": 0)")), Catch::Contains("camera.d") && Catch::Contains("]0, 1e12]"));
-  CHECK_THAT(error_of(sphere_with(R"("df": 9.99999e-10)")), Catch::Contains("camera.df") && Catch::Contains("[1e-9, 1e9]"));
-  CHECK_THAT(error_of(sphere_with(R"("df": 1.000001e9)")), Catch::Contains("camera.df") && Catch::Contains("[1e-9, 1e9]"));
+  CHECK_THAT(error_of(sphere_with(R"("df": 9.99999e-10)")),
+             Catch::Contains("camera.df") && Catch::Contains("[1e-9, 1e9]"));
+  CHECK_THAT(error_of(sphere_with(R"("df": 1.000001e9)")),
+             Catch::Contains("camera.df") && Catch::Contains("[1e-9, 1e9]"));
   CHECK(error_of(sphere_with(R"("df": 1e-9, "d": 1e-300, "res": 1e-300)")) == "(no error)");
   CHECK(error_of(sphere_with(R"("df": 1e9)")) == "(no error)");
 }
