@@ -110,12 +110,14 @@ const char* app_options_help() {
          "  --width W --height H  window size in pixels (default 1280x720)\n"
          "  --inspect COL,ROW   pin the ray inspector on a pixel (2D: COL is the bar column, ROW 0)\n"
          "  --step K            show the construction of M_d up to step K (2D: 0..3, 3D: 0..5)\n"
-         "  --mistake NAME      show a classic mistake: printed-rotation, pixel-edges, no-renormalise, arccos\n"
+         "  --mistake NAME      show a classic mistake: printed-rotation, pixel-edges, no-renormalise, "
+         "arccos\n"
          "                      (repeatable)\n"
          "  --font-scale S      lecture mode: scale every font by S in [0.5, 4]\n"
          "  --high-contrast     lecture mode: light, high-contrast theme\n"
          "  --lang fr|en        language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
-         "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same image)\n"
+         "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same "
+         "image)\n"
          "  --precision P --intersect F --spp N --frame F --exact\n"
          "                      accuracy knobs, as in raycam-cli render --help (README, \"Accuracy\")\n";
 }

@@ -1,11 +1,11 @@
 #include "fonts.h"
 
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
 #include <cmath>
 #include <fstream>
 #include <vector>
-
-#include <imgui.h>
-#include <imgui_impl_opengl3.h>
 #ifdef RAYCAM_HAVE_FONTCONFIG
 #include <fontconfig/fontconfig.h>
 #endif
@@ -27,8 +27,8 @@ const ImWchar* glyph_ranges() {
   static ImVector<ImWchar> ranges;
   if (ranges.empty()) {
     ImFontGlyphRangesBuilder builder;
-    static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x2010, 0x2027, 0x2070, 0x209F, 0x2190, 0x2193,
-                                    0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
+    static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x2010, 0x2027, 0x2070, 0x209F, 0x2190,
+                                    0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
     builder.AddRanges(kBase);
     for (const Translation& t : translations()) {
       builder.AddText(t.en);
@@ -76,7 +76,7 @@ bool update_fonts(float font_scale) {
     config.OversampleH = 2;  // sharper at fractional positions; the atlas stays small at 1 oversample in y
     config.OversampleV = 1;
     g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), std::round(kBaseFontPixels * font_scale), &config,
-                                             glyph_ranges()) != nullptr;
+                                              glyph_ranges()) != nullptr;
   }
   if (!g_truetype) {
     ImFontConfig config;

@@ -1,18 +1,18 @@
 // Section index: theme · layout and build · image window · overhead window · observer window.
 #include "frame.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
-
 #include <glm/gtc/matrix_transform.hpp>
-#include <imgui.h>
 
 #include "fonts.h"
 #include "inspection.h"
 #include "observer_renderer.h"
 #include "panels.h"
-#include "text.h"
 #include "raycam/transform.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -150,8 +150,9 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
-  const std::string title = is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-                                  : trf("Image: %d × %d###image", state.map.width, state.map.height);
+  const std::string title =
+      is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+            : trf("Image: %d × %d###image", state.map.width, state.map.height);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
@@ -179,8 +180,9 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const char* title = state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                                           : tr("Overhead view: looking down the z axis###overhead");
+  const char* title = state.dimension == 2
+                          ? tr("Overhead view: the plane, the camera and its rays###overhead")
+                          : tr("Overhead view: looking down the z axis###overhead");
   if (begin_fixed_window(title, area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
@@ -201,9 +203,10 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
 
 // ---- observer window -----------------------------------------------------------------------------------
 void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  if (begin_fixed_window(tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
-                            "turn the observer, ctrl+wheel: zoom)###observer"),
-                         area, ImGuiWindowFlags_NoScrollbar)) {
+  if (begin_fixed_window(
+          tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+             "turn the observer, ctrl+wheel: zoom)###observer"),
+          area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);

@@ -2,17 +2,17 @@
 // status line · help · shortcuts. Every visible string goes through tr()/trf() (text.h).
 #include "panels.h"
 
-#include <algorithm>
-#include <array>
-#include <iterator>
-#include <cmath>
-#include <cstdio>
-
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
 #include "inspection.h"
-#include "text.h"
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -23,7 +23,8 @@ constexpr double kPi = 3.141592653589793;
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
-bool slider_double(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
+bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
+                   bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
   return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
 }
@@ -92,7 +93,8 @@ void camera_section(AppState& state) {
   changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     float target[2] = {float(state.orbit2d.target.x), float(state.orbit2d.target.y)};
-    if (ImGui::DragFloat2(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::DragFloat2(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
+                          ImGuiSliderFlags_AlwaysClamp)) {
       state.orbit2d.target = {target[0], target[1]};
       changed = true;
     }
@@ -103,7 +105,8 @@ void camera_section(AppState& state) {
     }
   } else {
     float target[3] = {float(state.orbit3d.target.x), float(state.orbit3d.target.y), float(state.orbit3d.target.z)};
-    if (ImGui::DragFloat3(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::DragFloat3(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
+                          ImGuiSliderFlags_AlwaysClamp)) {
       state.orbit3d.target = {target[0], target[1], target[2]};
       changed = true;
     }
@@ -129,24 +132,30 @@ void camera_section(AppState& state) {
 
 // ---- construction of M_d -------------------------------------------------------------------------------
 void construction_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Construction of M_d###construction"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Construction of M_d###construction"), ImGuiTreeNodeFlags_DefaultOpen))
+    return;
   const int steps = construction_steps(state);
   int step = state.construction_step < 0 ? steps : state.construction_step;
-  static const char* const k2D[] = {tr_later("a: the canonical camera (identity)"),
-                                    tr_later("b: H(1, d_f) sets the focal distance"),
-                                    tr_later("c: R(θ − 90°) turns u0 onto v"), tr_later("d: T(OP) moves the screen to P")};
+  static const char* const k2D[] = {
+      tr_later("a: the canonical camera (identity)"), tr_later("b: H(1, d_f) sets the focal distance"),
+      tr_later("c: R(θ − 90°) turns u0 onto v"), tr_later("d: T(OP) moves the screen to P")};
   static const char* const k3D[] = {tr_later("the canonical camera (identity)"),
                                     tr_later("1: H(1, 1, d_f) sets the focal distance"),
                                     tr_later("2: Rz(+90°) rolls the image upright"),
                                     tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
-                                    tr_later("4: Rz(θ) turns u0 onto v"), tr_later("5: T(OP) moves the screen to P")};
-  if (ImGui::SliderInt(tr("step###step"), &step, 0, steps, "%d")) state.construction_step = step == steps ? -1 : step;
+                                    tr_later("4: Rz(θ) turns u0 onto v"),
+                                    tr_later("5: T(OP) moves the screen to P")};
+  if (ImGui::SliderInt(tr("step###step"), &step, 0, steps, "%d"))
+    state.construction_step = step == steps ? -1 : step;
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
     ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), p.alpha / kDegree);
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("R(α)")) { matrix_table<3>("R", p.rotation); ImGui::TreePop(); }
+    if (ImGui::TreeNode("R(α)")) {
+      matrix_table<3>("R", p.rotation);
+      ImGui::TreePop();
+    }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
     matrix_table<3>("M", construction_step(p, step));
@@ -154,9 +163,18 @@ void construction_section(AppState& state) {
     const Placement3D& p = state.camera3d.placement();
     ImGui::TextUnformatted("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
     if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(ψ0 = 90°)")) { matrix_table<4>("Roll", p.roll); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Ry(φ)")) { matrix_table<4>("Ry", p.polar); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(θ)")) { matrix_table<4>("Rz", p.azimuth); ImGui::TreePop(); }
+    if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
+      matrix_table<4>("Roll", p.roll);
+      ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("Ry(φ)")) {
+      matrix_table<4>("Ry", p.polar);
+      ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("Rz(θ)")) {
+      matrix_table<4>("Rz", p.azimuth);
+      ImGui::TreePop();
+    }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
     matrix_table<4>("M", construction_step(p, step));
@@ -219,18 +237,23 @@ void arccos_error_line(const AppState& state) {
 void mistakes_section(AppState& state) {
   const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
                    state.mistakes.skip_renormalise || state.arccos_route;
-  if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
+  if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+    return;
   bool changed = ImGui::Checkbox(tr("printed rotation sign"), &state.mistakes.printed_rotation_sign);
-  explain(tr("α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the "
-             "target and shows what is behind it."));
+  explain(
+      tr("α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the "
+         "target and shows what is behind it."));
   changed |= ImGui::Checkbox(tr("pixel edges instead of centres"), &state.mistakes.pixel_edges);
-  explain(tr("−1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no "
-             "longer symmetric."));
+  explain(
+      tr("−1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no "
+         "longer symmetric."));
   changed |= ImGui::Checkbox(tr("forgot to renormalise u_k"), &state.mistakes.skip_renormalise);
-  explain(tr("H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong."));
+  explain(tr(
+      "H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong."));
   changed |= ImGui::Checkbox(tr("arccos route near a pole"), &state.arccos_route);
-  explain(tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
-             "loses half the digits and the camera snaps to the axis."));
+  explain(
+      tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
+         "loses half the digits and the camera snaps to the axis."));
   arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
@@ -257,12 +280,15 @@ bool choice(const char* label, T& value, const Options& options) {
 }  // namespace
 
 void caster_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Caster and accuracy###caster"), uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+  if (!ImGui::CollapsingHeader(tr("Caster and accuracy###caster"),
+                               uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
-  static constexpr std::pair<Scalar, const char*> kScalars[] = {
-      {Scalar::float32, tr_later("float")}, {Scalar::float64, tr_later("double")}, {Scalar::extended, tr_later("long double")}};
+  static constexpr std::pair<Scalar, const char*> kScalars[] = {{Scalar::float32, tr_later("float")},
+                                                                {Scalar::float64, tr_later("double")},
+                                                                {Scalar::extended, tr_later("long double")}};
   static constexpr std::pair<IntersectFormula, const char*> kFormulas[] = {
-      {IntersectFormula::stable, tr_later("stable (Ray Tracing Gems)")}, {IntersectFormula::naive, tr_later("naive (b² − c)")}};
+      {IntersectFormula::stable, tr_later("stable (Ray Tracing Gems)")},
+      {IntersectFormula::naive, tr_later("naive (b² − c)")}};
   static constexpr std::pair<int, const char*> kSamples[] = {{1, "1"}, {4, "4"}, {16, "16"}, {64, "64"}};
   ReferenceOptions& knobs = state.accuracy.options;
   static const auto kMethods = [] {  // the core's list and names
@@ -271,14 +297,16 @@ void caster_section(AppState& state) {
     return methods;
   }();
   bool changed = choice(tr("method###method"), state.cast_options.method, kMethods);
-  explain(tr("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
-             "of view and test each object only on the pixels its projection can cover. The status line's "
-             "tooltip shows the work done and skipped."));
+  explain(
+      tr("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
+         "of view and test each object only on the pixels its projection can cover. The status line's "
+         "tooltip shows the work done and skipped."));
   changed |= choice(tr("precision###precision"), knobs.scalar, kScalars);
   changed |= choice(tr("intersection###intersection"), knobs.formula, kFormulas);
   changed |= choice(tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
   changed |= ImGui::Checkbox(tr("camera-relative rays"), &knobs.camera_relative);
-  if (state.dimension == 2) changed |= ImGui::Checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
+  if (state.dimension == 2)
+    changed |= ImGui::Checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
               ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
                    "settings to use for what: README, Accuracy.")
@@ -312,9 +340,11 @@ void files_section(AppState& state) {
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
   if (!ImGui::CollapsingHeader(tr("Lecture mode###lecture"))) return;
-  ImGui::SliderFloat(tr("font scale###font_scale"), &state.font_scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat(tr("font scale###font_scale"), &state.font_scale, 0.75f, 3.0f, "%.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
   ImGui::Checkbox(tr("high contrast"), &state.high_contrast);
-  static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")}, {Language::fr, tr_later("Français")}};
+  static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
+                                                                    {Language::fr, tr_later("Français")}};
   choice(tr("Language / Langue###language"), state.language, kLanguages);
   if (ImGui::Button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
   ImGui::SameLine();
@@ -327,11 +357,12 @@ void status_line(const AppState& state) {
   const CastStats& w = state.stats;
   const double objects = double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
   const double plain_tests = double(w.rays) * objects;
-  ImGui::Text(tr("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld (%.1f%% of plain) | culled %lld"),
+  ImGui::Text(tr("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | "
+                 "tests %lld (%.1f%% of plain) | culled %lld"),
               state.frame_ms, state.cast_ms,
-              tr(uses_reference_caster(state) ? tr_later("reference caster") : cast_method_name(state.cast_options.method)),
-              state.cast_count,
-              state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
+              tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                              : cast_method_name(state.cast_options.method)),
+              state.cast_count, state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
               plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0, w.objects_culled);
   if (state.refine_pending) {
     ImGui::SameLine();
@@ -348,7 +379,8 @@ void help_overlay(AppState& state) {
   if (!state.show_help) return;
   ImGui::SetNextWindowPos({ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
   if (ImGui::Begin(tr("Keyboard and mouse (F1 closes)###help"), &state.show_help,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoCollapse)) {
     // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
     static const std::pair<const char*, const char*> kLines[] = {
         {tr_later("F1"), tr_later("this help")},

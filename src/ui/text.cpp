@@ -50,9 +50,11 @@ Language current_language() { return g_language; }
 
 std::optional<Language> language_from_code(std::string_view code) {
   const std::string_view first = code.substr(0, code.find(':'));  // LANGUAGE is a list: fr:en
-  if (first.size() >= 2 && first.substr(0, 2) == "fr" && (first.size() == 2 || first[2] == '_' || first[2] == '.'))
+  if (first.size() >= 2 && first.substr(0, 2) == "fr" &&
+      (first.size() == 2 || first[2] == '_' || first[2] == '.'))
     return Language::fr;
-  if (first.size() >= 2 && first.substr(0, 2) == "en" && (first.size() == 2 || first[2] == '_' || first[2] == '.'))
+  if (first.size() >= 2 && first.substr(0, 2) == "en" &&
+      (first.size() == 2 || first[2] == '_' || first[2] == '.'))
     return Language::en;
   return std::nullopt;
 }

@@ -2,7 +2,8 @@
 // arguments), with the English text as the key, as gettext's _() does; the French of every key is in one
 // table, src/ui/text_table.cpp. The table is compiled in: it works on a fresh machine with no locale
 // generated. tests/ui/test_text.cpp checks that every entry has both languages with the same printf
-// conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and src/app has an entry.
+// conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and
+// src/app has an entry.
 //
 // Add a string: write tr("English text") where it is shown, and add {"English text", "Texte français"} to
 // text_table.cpp (French in the handout's words: distance focale d_f, cible C, œil E, écran, point de visée,

@@ -20,7 +20,8 @@ const std::vector<Translation>& translation_table() {
       {"Image: %d × %d###image", "Image : %d × %d###image"},
       {"Overhead view: the plane, the camera and its rays###overhead",
        "Vue de dessus : le plan, la caméra et ses rayons###overhead"},
-      {"Overhead view: looking down the z axis###overhead", "Vue de dessus : selon l'axe z vers le bas###overhead"},
+      {"Overhead view: looking down the z axis###overhead",
+       "Vue de dessus : selon l'axe z vers le bas###overhead"},
       {"Observer: the camera among the spheres (left drag: orbit the camera, right drag: turn the observer, "
        "ctrl+wheel: zoom)###observer",
        "Observateur : la caméra parmi les sphères (glisser : tourner la caméra, clic droit : tourner "
@@ -63,7 +64,8 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: ray inspector ----
       {"Ray inspector###inspector", "Inspecteur de rayon###inspector"},
       {"Hover a pixel of the colour bar or image to see its ray; click to pin it.",
-       "Survolez un pixel de la barre de couleurs ou de l'image pour voir son rayon ; cliquez pour le fixer."},
+       "Survolez un pixel de la barre de couleurs ou de l'image pour voir son rayon ; cliquez pour le "
+       "fixer."},
       {"column %d = pixel k = %d (k = n−1−column)", "colonne %d = pixel k = %d (k = n−1−colonne)"},
       {"row %d, column %d", "ligne %d, colonne %d"},
       {"hit: nothing (background)", "touché : rien (fond)"},
@@ -72,22 +74,26 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
       {"printed rotation sign", "signe de rotation imprimé"},
-      {"α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the target and "
+      {"α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the target "
+       "and "
        "shows what is behind it.",
        "α = φ_v − 90° avec φ_v l'angle de v = PC aligne u0 sur −v : la caméra tourne le dos à la cible et "
        "montre ce qui est derrière elle."},
       {"pixel edges instead of centres", "bords des pixels au lieu des centres"},
       {"−1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no longer "
        "symmetric.",
-       "−1 + 2k/n est le bord gauche du pixel k : l'image glisse d'un demi-pixel, une scène symétrique ne l'est "
+       "−1 + 2k/n est le bord gauche du pixel k : l'image glisse d'un demi-pixel, une scène symétrique ne "
+       "l'est "
        "plus."},
       {"forgot to renormalise u_k", "oubli de renormer u_k"},
       {"H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong.",
        "H a étiré les directions ; l'intersection suppose |u| = 1, donc empreintes et t sont faux."},
       {"arccos route near a pole", "route arccos près d'un pôle"},
-      {"placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos loses "
+      {"placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
+       "loses "
        "half the digits and the camera snaps to the axis.",
-       "placer la caméra à partir de P et C avec l'arccos du TD : près de θ = 0 (2D) ou φ = 0 (3D), arccos perd "
+       "placer la caméra à partir de P et C avec l'arccos du TD : près de θ = 0 (2D) ou φ = 0 (3D), arccos "
+       "perd "
        "la moitié des chiffres et la caméra saute sur l'axe."},
       {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
       {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
@@ -101,10 +107,13 @@ const std::vector<Translation>& translation_table() {
       {"footprint", "empreinte"},
       {"binned", "par bandes"},
       {"reference caster", "lanceur de référence"},
-      {"Every method gives the plain loop's image; the faster ones skip objects behind the screen or out of view "
-       "and test each object only on the pixels its projection can cover. The status line's tooltip shows the "
+      {"Every method gives the plain loop's image; the faster ones skip objects behind the screen or out of "
+       "view "
+       "and test each object only on the pixels its projection can cover. The status line's tooltip shows "
+       "the "
        "work done and skipped.",
-       "Toutes les méthodes donnent l'image de la boucle simple ; les plus rapides écartent les objets derrière "
+       "Toutes les méthodes donnent l'image de la boucle simple ; les plus rapides écartent les objets "
+       "derrière "
        "l'écran ou hors champ et ne testent chaque objet que sur les pixels que sa projection peut couvrir. "
        "L'infobulle de la ligne d'état montre le travail fait et évité."},
       {"precision###precision", "précision###precision"},
@@ -117,9 +126,11 @@ const std::vector<Translation>& translation_table() {
       {"samples per pixel###spp", "échantillons par pixel###spp"},
       {"camera-relative rays", "rayons relatifs à la caméra"},
       {"exact bar (area-weighted)", "barre exacte (pondérée par l'aire)"},
-      {"These knobs use the reference caster: slower, and the method above is not used. Which settings to use "
+      {"These knobs use the reference caster: slower, and the method above is not used. Which settings to "
+       "use "
        "for what: README, Accuracy.",
-       "Ces réglages utilisent le lanceur de référence : plus lent, et la méthode ci-dessus n'est pas utilisée. "
+       "Ces réglages utilisent le lanceur de référence : plus lent, et la méthode ci-dessus n'est pas "
+       "utilisée. "
        "Quels réglages pour quoi : README, Accuracy."},
       {"double, 1 sample, world coordinates: the fast caster.",
        "double, 1 échantillon, coordonnées du monde : le lanceur rapide."},
@@ -147,7 +158,8 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: status line ----
       {"frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld "
        "(%.1f%% of plain) | culled %lld",
-       "image %.1f ms | lancer %.2f ms (%s), %lld lancers en %lld images | rayons %lld, %lld évités | tests %lld "
+       "image %.1f ms | lancer %.2f ms (%s), %lld lancers en %lld images | rayons %lld, %lld évités | tests "
+       "%lld "
        "(%.1f%% de la boucle simple) | élagués %lld"},
       {"coarse preview while dragging", "aperçu grossier pendant le glissement"},
 
@@ -158,7 +170,8 @@ const std::vector<Translation>& translation_table() {
       {"F11", "F11"},
       {"fullscreen", "plein écran"},
       {"F12", "F12"},
-      {"numbered screenshot (raycam-screenshot-NNN.png)", "capture d'écran numérotée (raycam-screenshot-NNN.png)"},
+      {"numbered screenshot (raycam-screenshot-NNN.png)",
+       "capture d'écran numérotée (raycam-screenshot-NNN.png)"},
       {"← / →", "← / →"},
       {"θ −/+ 5°", "θ −/+ 5°"},
       {"↑ / ↓", "↑ / ↓"},
@@ -172,11 +185,14 @@ const std::vector<Translation>& translation_table() {
       {"Tab", "Tab"},
       {"2D / 3D", "2D / 3D"},
       {"Esc", "Échap"},
-      {"leave a text field; else unpin the inspected pixel", "quitter un champ de texte ; sinon libérer le pixel inspecté"},
+      {"leave a text field; else unpin the inspected pixel",
+       "quitter un champ de texte ; sinon libérer le pixel inspecté"},
       {"mouse drag", "glisser"},
-      {"orbit the camera (overhead: around the target)", "tourner la caméra (vue de dessus : autour de la cible)"},
+      {"orbit the camera (overhead: around the target)",
+       "tourner la caméra (vue de dessus : autour de la cible)"},
       {"wheel", "molette"},
-      {"d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom", "d ;  maj+molette : d_f ;  ctrl+molette (observateur) : zoom"},
+      {"d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom",
+       "d ;  maj+molette : d_f ;  ctrl+molette (observateur) : zoom"},
       {"right drag", "glisser (clic droit)"},
       {"turn the observer (3D)", "tourner l'observateur (3D)"},
       {"double-click", "double-clic"},

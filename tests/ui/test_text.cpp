@@ -2,7 +2,6 @@
 // ImGui ids, every string the sources show through tr()/trf()/tr_later() is in the table, no widget shows an
 // English literal that bypasses the table, and the language comes from --lang or the environment.
 #include <catch2/catch.hpp>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,9 +18,11 @@ using namespace raycam;
 namespace {
 // The printf conversions of a format, in order ("%d", "%.1f", "%s"; "%%" is not one).
 std::vector<std::string> conversions(const std::string& format) {
-  static const std::regex conversion(R"re(%[-+ #0]*[0-9*]*(\.[0-9*]+)?(hh|h|ll|l|L|z|j|t)?[diouxXeEfFgGaAcspn%])re");
+  static const std::regex conversion(
+      R"re(%[-+ #0]*[0-9*]*(\.[0-9*]+)?(hh|h|ll|l|L|z|j|t)?[diouxXeEfFgGaAcspn%])re");
   std::vector<std::string> found;
-  for (auto it = std::sregex_iterator(format.begin(), format.end(), conversion); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(format.begin(), format.end(), conversion); it != std::sregex_iterator();
+       ++it)
     if (it->str() != "%%") found.push_back(it->str());
   return found;
 }
@@ -56,8 +57,10 @@ std::string unescape(const std::string& s) {
 std::vector<std::filesystem::path> ui_sources() {
   std::vector<std::filesystem::path> files;
   for (const char* dir : {"src/ui", "src/app"})
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(RAYCAM_SOURCE_DIR) / dir))
-      if (entry.path().extension() == ".cpp" && entry.path().filename() != "text_table.cpp") files.push_back(entry.path());
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(RAYCAM_SOURCE_DIR) / dir))
+      if (entry.path().extension() == ".cpp" && entry.path().filename() != "text_table.cpp")
+        files.push_back(entry.path());
   REQUIRE(files.size() >= 5);
   return files;
 }
@@ -103,16 +106,19 @@ TEST_CASE("every string the window shows is in the table", "[ui][text]") {
   int marked_count = 0;
   for (const auto& file : ui_sources()) {
     const std::string text = read(file);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), marked); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), marked); it != std::sregex_iterator();
+         ++it) {
       const std::string key = unescape(joined_literals((*it)[1].str()));
       INFO(file.filename().string() << ": " << key);
       CHECK(keys.count(key) == 1);
       ++marked_count;
     }
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), widget); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), widget); it != std::sregex_iterator();
+         ++it) {
       std::string literal = joined_literals((*it)[1].str());
       literal = literal.substr(0, literal.find("##"));  // "##id" and "###id" are not shown
-      for (auto w = std::sregex_iterator(literal.begin(), literal.end(), english_word); w != std::sregex_iterator(); ++w) {
+      for (auto w = std::sregex_iterator(literal.begin(), literal.end(), english_word);
+           w != std::sregex_iterator(); ++w) {
         INFO(file.filename().string() << ": widget shows the untranslated literal \"" << literal << "\"");
         CHECK(notation.count(w->str()) == 1);
       }
