@@ -235,21 +235,16 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
-                   state.mistakes.skip_renormalise || state.arccos_route;
+  const bool any = any_mistake(state.mistakes) || state.arccos_route;
   if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
-  bool changed = ImGui::Checkbox(tr("printed rotation sign"), &state.mistakes.printed_rotation_sign);
-  explain(
-      tr("α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the "
-         "target and shows what is behind it."));
-  changed |= ImGui::Checkbox(tr("pixel edges instead of centres"), &state.mistakes.pixel_edges);
-  explain(
-      tr("−1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no "
-         "longer symmetric."));
-  changed |= ImGui::Checkbox(tr("forgot to renormalise u_k"), &state.mistakes.skip_renormalise);
-  explain(tr(
-      "H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong."));
+  bool changed = false;
+  const char* language = language_code(current_language());  // the texts live beside the mistakes, in the core
+  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
+    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
+    changed |= ImGui::Checkbox(mistake_label(mistake, language), &(state.mistakes.*mistake.flag));
+    explain(mistake_explanation(mistake, language));
+  }
   changed |= ImGui::Checkbox(tr("arccos route near a pole"), &state.arccos_route);
   explain(
       tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "

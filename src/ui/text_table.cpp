@@ -73,21 +73,6 @@ const std::vector<Translation>& translation_table() {
 
       // ---- panels.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
-      {"printed rotation sign", "signe de rotation imprimé"},
-      {"α = φ_v − 90° with φ_v the angle of v = PC turns u0 onto −v: the camera turns its back to the target "
-       "and "
-       "shows what is behind it.",
-       "α = φ_v − 90° avec φ_v l'angle de v = PC aligne u0 sur −v : la caméra tourne le dos à la cible et "
-       "montre ce qui est derrière elle."},
-      {"pixel edges instead of centres", "bords des pixels au lieu des centres"},
-      {"−1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no longer "
-       "symmetric.",
-       "−1 + 2k/n est le bord gauche du pixel k : l'image glisse d'un demi-pixel, une scène symétrique ne "
-       "l'est "
-       "plus."},
-      {"forgot to renormalise u_k", "oubli de renormer u_k"},
-      {"H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong.",
-       "H a étiré les directions ; l'intersection suppose |u| = 1, donc empreintes et t sont faux."},
       {"arccos route near a pole", "route arccos près d'un pôle"},
       {"placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
        "loses "
