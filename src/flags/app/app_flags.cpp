@@ -4,6 +4,8 @@
 #include <string>
 
 #include "flag_values.h"
+#include "raycam/classic_mistakes.h"
+#include "text.h"
 #include "view_options.h"
 
 namespace raycam::flags {
@@ -43,7 +45,10 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
                           "show the construction of M_d up to step K (2D: 0..3, 3D: 0..5)", integer_in(0, 5),
                           [&options](int step) { options.step = step; });
   // Repeatable: each value is checked by the same rule (the one message format), then all are applied.
-  const ValueRule<int> mistake = one_of({"printed-rotation", "pixel-edges", "no-renormalise", "arccos"});
+  // The handout's three printed mistakes keep their old names; every mistake also answers to its ID.
+  std::vector<std::string> mistake_names{"printed-rotation", "pixel-edges", "no-renormalise", "arccos"};
+  for (const MistakeInfo& known : kClassicMistakes) mistake_names.push_back(known.id);
+  const ValueRule<int> mistake = one_of(mistake_names);
   group
       ->add_option_function<std::vector<std::string>>(
           "--mistake",
@@ -55,14 +60,19 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
               if (index == 1) m.pixel_edges = true;
               if (index == 2) m.skip_renormalise = true;
               if (index == 3) options.arccos_route = true;
+              if (index >= 4) m.*kClassicMistakes[index - 4].flag = true;
             }
           },
-          "show a classic mistake (repeatable)")
+          "show a classic mistake: arccos or an ID of README \"Classic mistakes\" (repeatable)")
       ->type_name("NAME")
       ->check(checked(mistake));
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",
                              number_in({0.5, 4.0}),
                              [&options](double scale) { options.font_scale = float(scale); });
+  add_checked_option<int>(
+      *group, "--lang", "fr|en", "language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)",
+      one_of({"en", "fr"}),
+      [&options](int index) { options.language = index == 0 ? ui::Language::en : ui::Language::fr; });
   group->add_flag_callback(
       "--high-contrast", [&options] { options.high_contrast = true; },
       "lecture mode: light, high-contrast theme");
