@@ -11,8 +11,7 @@
 namespace raycam::ui {
 
 namespace {
-constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
-constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
+constexpr int kMaxFanRays = 160;  // rays drawn in the fan; more would be a grey smear
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }
@@ -52,8 +51,7 @@ OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size
   if (state.dimension == 2)
     for (const Circle& c : state.file.scene2d.circles) include(c.centre, c.radius);
   else
-    for (std::size_t i = 0; i < std::min(state.file.scene3d.spheres.size(), kMaxDiscs); ++i)
-      include(xy(state.file.scene3d.spheres[i].centre), state.file.scene3d.spheres[i].radius);
+    for (const Sphere& s : state.file.scene3d.spheres) include(xy(s.centre), s.radius);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
   const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));
@@ -106,18 +104,22 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
 }
 
-template <class Objects>
-void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects, const std::vector<std::size_t>& order) {
-  for (std::size_t i : order) {
-    const auto& object = objects[i];
-    const float radius = std::max(1.0f, float(object.radius) * m.scale);
-    draw->AddCircleFilled(m.to_screen(xy(glm::dvec3(object.centre, 0.0))), radius, colour_of(object.colour),
-                          std::clamp(int(radius), 8, 48));
-  }
+// Primary rays of the 2D bar (or of the middle image row in 3D), each drawn to the hit the image shows, in
+// its colour; misses faint, to the edge of the view. The object is the colour map's (the caster's, which
+// is the plain loop's): searching every object for each drawn ray cost 16·10⁶ tests a frame at 10⁵ spheres.
+// The ray's hit on the object the image shows at its pixel (none for the background). Should the map come
+// from other rays than the camera's (a knob of the reference caster), fall back to searching every object.
+template <class Objects, class Ray>
+Hit hit_shown(const Objects& objects, const Ray& ray, int id) {
+  if (id < 0) return Hit{};
+  if (std::size_t(id) >= objects.size()) return nearest_hit(objects, ray, IntersectFormula::stable);
+  const auto& object = objects[std::size_t(id)];
+  const double t =
+      nearest_hit_t(ray.origin, ray.direction, object.centre, object.radius, IntersectFormula::stable);
+  if (t == kNoHit<double>) return nearest_hit(objects, ray, IntersectFormula::stable);
+  return Hit{id, t};
 }
 
-// Primary rays of the 2D bar (or of the middle image row in 3D), each drawn to its hit in the colour it
-// returns; misses faint, to the edge of the view.
 void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state, double far_length) {
   const int n = state.map.width;
   const int stride = std::max(1, (n + kMaxFanRays - 1) / kMaxFanRays);
@@ -129,12 +131,12 @@ void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
       const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
       from = ray.origin;
       direction = ray.direction;
-      hit = nearest_hit(state.file.scene2d.circles, ray, IntersectFormula::stable);
+      hit = hit_shown(state.file.scene2d.circles, ray, state.map.id_at(0, column));
     } else {
       const Ray3D ray = state.camera3d.primary_ray(row, column);
       from = xy(ray.origin);
       direction = xy(ray.direction);
-      hit = nearest_hit(state.file.scene3d.spheres, ray, IntersectFormula::stable);
+      hit = hit_shown(state.file.scene3d.spheres, ray, state.map.id_at(row, column));
     }
     const bool missed = hit.id < 0;
     const glm::dvec2 to = from + direction * (missed ? far_length : hit.t);
@@ -144,29 +146,40 @@ void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
 }
 }  // namespace
 
+std::vector<gl::Disc> overhead_discs(const AppState& state) {
+  std::vector<gl::Disc> discs;
+  if (state.dimension == 2) {
+    for (const Circle& c : state.file.scene2d.circles) discs.push_back({c.centre, c.radius, c.colour});
+    return discs;
+  }
+  const auto& spheres = state.file.scene3d.spheres;
+  std::vector<std::size_t> order(spheres.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
+  });
+  discs.reserve(order.size());
+  for (std::size_t i : order) discs.push_back({xy(spheres[i].centre), spheres[i].radius, spheres[i].colour});
+  return discs;
+}
+
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(state.dimension == 2 ? state.file.scene2d.background : state.file.scene3d.background));
   draw_axes(draw, m, clip_min, clip_max);
   const double far_length = 3.0 * camera_reach(state);
 
-  if (state.dimension == 2) {
-    std::vector<std::size_t> order(state.file.scene2d.circles.size());
-    std::iota(order.begin(), order.end(), 0);
-    draw_discs(draw, m, state.file.scene2d.circles, order);
-  } else {
-    // From above, the highest sphere top hides the others: draw from the lowest top up.
-    const auto& spheres = state.file.scene3d.spheres;
-    std::vector<std::size_t> order(std::min(spheres.size(), kMaxDiscs));
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
-    });
-    std::vector<Circle> discs;  // the spheres' silhouettes from above
-    for (const Sphere& s : spheres) discs.push_back({xy(s.centre), s.radius, s.colour, {}});
-    draw_discs(draw, m, discs, order);
-  }
+  // One texel per framebuffer pixel (a HiDPI window has more of them than UI pixels).
+  const ImVec2 density = ImGui::GetIO().DisplayFramebufferScale;
+  gl::DiscPlacement placement;
+  placement.origin = {(m.origin.x - clip_min.x) * density.x, (m.origin.y - clip_min.y) * density.y};
+  placement.scale = m.scale * density.x;
+  placement.width = int(std::lround((clip_max.x - clip_min.x) * density.x));
+  placement.height = int(std::lround((clip_max.y - clip_min.y) * density.y));
+  if (placement.width > 0 && placement.height > 0)
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs.texture(placement))), clip_min,
+                   clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
@@ -200,7 +213,7 @@ int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_
     return best;
   }
   const auto& spheres = state.file.scene3d.spheres;
-  for (std::size_t i = 0; i < std::min(spheres.size(), kMaxDiscs); ++i) {
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
     const double top = spheres[i].centre.z + spheres[i].radius;
     if (glm::length(xy(spheres[i].centre) - p) <= spheres[i].radius && top > best_top) best = int(i), best_top = top;
   }
