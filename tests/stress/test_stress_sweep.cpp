@@ -12,11 +12,23 @@ namespace {
 const IntersectFormula kFormulas[] = {IntersectFormula::naive, IntersectFormula::stable};
 const Scalar kScalars[] = {Scalar::float32, Scalar::float64};
 
-// Stated bound: float + stable keeps at most this fraction of wrong ids on every stress case, d up to 1e7
-// included (measured worst: 3.6% at d = 1e7 in 3D, where a 1e7 distance leaves float ~0.6 units of
-// absolute precision against radius-1 spheres zoomed to fill the view).
+// Float + stable: at most this fraction of wrong ids on every stress case. Derivation (worst case: d = 1e7,
+// camera-relative, d_f = d/4, so the view is (d + d_f)/d_f·2 = 10 units wide at the target and holds the
+// cluster of spheres of radii 1, 0.7, 0.8, 0.5, silhouettes Σ2πr ≈ 19 units long in a 100-unit² view):
+//   b = f·u ≈ |f| ≈ 1.25e7 rounds by δ ≈ ε_f·|f| ≈ 0.75 (ε_f = 2⁻²⁴); the transverse parts of f and u are small
+//   and round finely, so the error lands in the perpendicular's depth part: |perp|² moves by up to ~δ² ≈ 0.5
+//   and a pixel flips when its ray passes within δ²/(2r) of a silhouette of radius r. The rounding errors
+//   are spread uniformly, so their mean square is δ²/3 and the typical band is δ²/(6r) ≈ 0.09 units each
+//   side: 2·0.09·19/100 ≈ 0.035 of the pixels (worst case, every error at its bound: 3× that). 0.05 is the
+//   typical estimate with 40 % headroom; the measured worst is 3.6 %. Every other case has |f| ≤ ~1e3 in the
+//   camera-relative frame, where the same band is below a pixel.
 constexpr double kFloatStableBound = 0.05;
-// Above this distance float + naive must exceed it by far (b² - c cancels: measured > 85%).
+// Float + naive for d ≥ 1e5: b² − c cancels. b² ≈ |f|² ≥ 1e10 rounds by ε_f·|f|² ≥ 600 ≫ r² ≤ 1, so the
+// discriminant is rounding noise for every ray passing within √(ε_f)·|f| ≥ 24 units of a centre: the whole
+// 10-unit view. The test then says "hit" or "miss" by the sign of noise, and (with the hit wrongly taken on
+// about half the rays near each sphere and the background lost wherever noise says hit) far more than half
+// the ids are wrong; 0.5 is the coin-toss line (measured: > 85 %). A naive formula that did NOT fail here
+// would mean the sweep no longer reaches the cancellation it is meant to show.
 constexpr double kFloatNaiveFailure = 0.5;
 
 // Pixels allowed to differ from the exact reference in double: rays tangent to a circle, and rays through
