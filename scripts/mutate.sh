@@ -87,11 +87,12 @@ for i in "${!names[@]}"; do
     result="MISSED"
     missed=$((missed + 1))
   else
-    failing=$(grep -c -E '\*\*\*Failed|\(Failed\)|\*\*\*Timeout|\(SEGFAULT\)|\(Subprocess aborted\)' "$SCRATCH/$name.test.log")
+    failing=$(grep -c -E '^[[:space:]]+[0-9]+ - ' "$SCRATCH/$name.test.log")
     result="caught ($failing tests failed)"
     caught=$((caught + 1))
   fi
-  cp "$ROOT/$file" "$TREE/$file"  # restored before the next mutant
+  cp "$ROOT/$file" "$TREE/$file"  # restored, and its targets rebuilt, before the next mutant
+  cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > /dev/null 2>&1
   printf '%-32s %s\n' "$name" "$result"
   report+=("$name: $result")
 done
