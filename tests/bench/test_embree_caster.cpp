@@ -1,13 +1,14 @@
 // The Embree reference caster against raycam's plain caster: Embree rounds the rays and spheres to float,
 // so grazing pixels may differ; anything beyond a handful of pixels would be a wrong ray or id mapping.
+#include <embree3/rtcore_config.h>
+
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
-#include <embree3/rtcore_config.h>
-#include <string>
 #include <cstdint>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "embree_caster.h"

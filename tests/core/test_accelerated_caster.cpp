@@ -109,8 +109,8 @@ void check_grazing(const Camera& camera, const Scene& scene, int& casts) {
       for (int threads : {1, 2, 3}) {
         CastOptions fast = with(method, threads);
         fast.formula = formula;
-        INFO(cast_method_name(method) << ", " << threads << " threads, "
-                                      << (formula == IntersectFormula::naive ? "naive" : "stable"));
+        INFO(cast_method_name(method)
+             << ", " << threads << " threads, " << (formula == IntersectFormula::naive ? "naive" : "stable"));
         CHECK(differences(cast_primary_rays(camera, scene, fast), expected) == 0);
         ++casts;
       }
@@ -146,14 +146,17 @@ TEST_CASE("spheres tangent to pixel-centre rays at the footprint's box edges giv
   CHECK(casts == 60 * 2 * 4 * 3);
 }
 
-TEST_CASE("circles tangent to pixel-centre rays give the plain loop's ids", "[caster][accelerated][grazing]") {
+TEST_CASE("circles tangent to pixel-centre rays give the plain loop's ids",
+          "[caster][accelerated][grazing]") {
   test::Random random(8);
   int casts = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const int n = random.integer(8, 400);
     Camera2D camera(n);
     const double far = trial % 3 == 0 ? random.log_uniform(1e2, 1e6) : 0.0;
-    camera.set_orbit({{far, -0.7 * far}, random.log_uniform(1, 40), random.uniform(-kPi, kPi),
+    camera.set_orbit({{far, -0.7 * far},
+                      random.log_uniform(1, 40),
+                      random.uniform(-kPi, kPi),
                       random.log_uniform(0.3, 4)});
     Scene2D scene;
     for (int i = 0; i < 6; ++i) {

@@ -85,7 +85,8 @@ TEST_CASE("the placement knob changes the camera: arccos loses θ at the pole, a
           "[accuracy][flags][placement]") {
   // φ = 1e-9: cos φ rounds to 1 (φ < 1.05e-8), so the handout's route finds φ = 0 and, with sin φ = 0, no θ
   // (it keeps θ = 0). At the pole θ is the image's roll (image up = (−cos θ cos φ, −sin θ cos φ, sin φ)), so
-  // the arccos image is the θ = 0 image, turned by θ against the orbit's; atan2 recovers θ and the orbit's image.
+  // the arccos image is the θ = 0 image, turned by θ against the orbit's; atan2 recovers θ and the orbit's
+  // image.
   ViewSetup setup = demo(3);
   setup.file.scene3d.spheres = {{{2.5, 0, 0}, 1.0, {200, 0, 0}, "on +x"},
                                 {{0, 1.5, 0.5}, 0.7, {0, 200, 0}, "on +y"},

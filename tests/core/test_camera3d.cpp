@@ -328,7 +328,11 @@ TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[
   const glm::dmat4 polar = rows({cp, 0, sp, 0, 0, 1, 0, 0, -sp, 0, cp, 0, 0, 0, 0, 1});
   const glm::dmat4 azimuth = rows({ct, -st, 0, 0, st, ct, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
   const glm::dmat4 t = rows({1, 0, 0, position.x, 0, 1, 0, position.y, 0, 0, 1, position.z, 0, 0, 0, 1});
-  const glm::dmat4 by_hand[] = {glm::dmat4(1.0), h, roll * h, polar * roll * h, azimuth * polar * roll * h,
+  const glm::dmat4 by_hand[] = {glm::dmat4(1.0),
+                                h,
+                                roll * h,
+                                polar * roll * h,
+                                azimuth * polar * roll * h,
                                 t * azimuth * polar * roll * h};
   auto close = [](const glm::dmat4& a, const glm::dmat4& b) {
     double worst = 0;

@@ -72,22 +72,24 @@ ScreenshotDifference compare_screenshot(const gl::RgbaImage& actual, const gl::R
       ++d.compared;
       if (channel_difference(actual.at(x, y), reference.at(x, y)) <= rules.threshold) continue;
       ++d.differing;
-      const std::size_t tile = std::size_t(y / rules.tile) * std::size_t(tiles_x) + std::size_t(x / rules.tile);
+      const std::size_t tile =
+          std::size_t(y / rules.tile) * std::size_t(tiles_x) + std::size_t(x / rules.tile);
       if (++per_tile[tile] > d.worst_tile_count) {
         d.worst_tile_count = per_tile[tile];
         d.worst_tile_x = (x / rules.tile) * rules.tile;
         d.worst_tile_y = (y / rules.tile) * rules.tile;
       }
     }
-  d.ok = d.worst_tile_count <= rules.max_per_tile && double(d.differing) <= rules.max_fraction * double(d.compared);
+  d.ok = d.worst_tile_count <= rules.max_per_tile &&
+         double(d.differing) <= rules.max_fraction * double(d.compared);
   return d;
 }
 
 std::string ScreenshotDifference::summary() const {
   if (!same_size) return "the images differ in size (or the reference is missing)";
-  return std::to_string(differing) + " of " + std::to_string(compared) + " compared pixels differ; the worst " +
-         "block has " + std::to_string(worst_tile_count) + " at (" + std::to_string(worst_tile_x) + ", " +
-         std::to_string(worst_tile_y) + ")";
+  return std::to_string(differing) + " of " + std::to_string(compared) +
+         " compared pixels differ; the worst " + "block has " + std::to_string(worst_tile_count) + " at (" +
+         std::to_string(worst_tile_x) + ", " + std::to_string(worst_tile_y) + ")";
 }
 
 ScreenshotDifference check_screenshot(const gl::RgbaImage& actual, const std::string& reference_path,

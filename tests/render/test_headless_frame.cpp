@@ -155,10 +155,12 @@ TEST_CASE("the window matches the reviewed reference screenshots", "[render][ref
     // panel number is compared here: one changed digit fails.
     test::ScreenshotRules rules;
     const ui::Rect& status = shot.layout.status;
-    rules.masked.push_back({int(status.x), int(status.y), int(status.w) + 1, shot.image.height - int(status.y)});
+    rules.masked.push_back(
+        {int(status.x), int(status.y), int(status.w) + 1, shot.image.height - int(status.y)});
     const test::ScreenshotDifference d = test::check_screenshot(shot.image, reference_path, rules, name);
     INFO(name << ": " << d.summary() << "; actual and diff written to the build directory (a missing or "
-              << "outdated reference: review " << name << ".actual.png and copy it to " << reference_path << ")");
+              << "outdated reference: review " << name << ".actual.png and copy it to " << reference_path
+              << ")");
     CHECK(d.ok);
   }
 }
@@ -186,6 +188,7 @@ TEST_CASE("the screenshot comparison fails on one changed digit and ignores only
   // Isolated stray pixels (one per 64×64 block, 0.02 %) pass: rasteriser noise, not a change.
   gl::RgbaImage noisy = shot.image;
   for (int y = 0; y < noisy.height; y += 64)
-    for (int x = 0; x < noisy.width; x += 64) noisy.pixels[(std::size_t(y) * std::size_t(noisy.width) + std::size_t(x)) * 4] ^= 0xFF;
+    for (int x = 0; x < noisy.width; x += 64)
+      noisy.pixels[(std::size_t(y) * std::size_t(noisy.width) + std::size_t(x)) * 4] ^= 0xFF;
   CHECK(test::compare_screenshot(noisy, shot.image, rules).ok);
 }

@@ -12,23 +12,25 @@ namespace {
 const IntersectFormula kFormulas[] = {IntersectFormula::naive, IntersectFormula::stable};
 const Scalar kScalars[] = {Scalar::float32, Scalar::float64};
 
-// Float + stable: at most this fraction of wrong ids on every stress case. Derivation (worst case: d = 1e7,
-// camera-relative, d_f = d/4, so the view is (d + d_f)/d_f·2 = 10 units wide at the target and holds the
-// cluster of spheres of radii 1, 0.7, 0.8, 0.5, silhouettes Σ2πr ≈ 19 units long in a 100-unit² view):
-//   b = f·u ≈ |f| ≈ 1.25e7 rounds by δ ≈ ε_f·|f| ≈ 0.75 (ε_f = 2⁻²⁴); the transverse parts of f and u are small
-//   and round finely, so the error lands in the perpendicular's depth part: |perp|² moves by up to ~δ² ≈ 0.5
-//   and a pixel flips when its ray passes within δ²/(2r) of a silhouette of radius r. The rounding errors
-//   are spread uniformly, so their mean square is δ²/3 and the typical band is δ²/(6r) ≈ 0.09 units each
-//   side: 2·0.09·19/100 ≈ 0.035 of the pixels (worst case, every error at its bound: 3× that). 0.05 is the
-//   typical estimate with 40 % headroom; the measured worst is 3.6 %. Every other case has |f| ≤ ~1e3 in the
-//   camera-relative frame, where the same band is below a pixel.
+// Float + stable: at most this fraction of wrong ids on every stress case. Derivation, for the worst case
+// (3D, d = 1e7, d_f = d/4, θ = 0.5, φ = 1): the view is 2·(d + d_f)/d_f = 10 units wide at the target, so
+// A = 100 units², and holds spheres of radii 1, 0.7, 0.8, 0.5 (Σr = 3). In float, the centres relative to
+// the eye (|c − E| ≈ 1.25e7, ulp 1) are rounded once, each component by up to 0.5; the view is not aligned
+// with the world axes, so the part across the view is a shift s of up to 0.5·√2 ≈ 0.71, typically 0.38 (the
+// mean length of a vector of two uniform [−0.5, 0.5] components). A disc of radius r shifted by s ≪ r
+// changes 4·r·s of area, so the wrong fraction is about 4·Σr·s/A = 12·0.38/100 ≈ 0.046 (at most 0.085 if
+// every rounding were at its bound). 0.05 is that typical value; measured 0.036 (overlaps hide some of the
+// change). The ray origins round the same way, by less (|P_k − E| ≈ d_f). The 2D case at d = 1e7 looks
+// along −y, aligned with an axis: the across-view components are small and round finely, so it measures 0.
+// Every other case has |c − E| ≤ 1.25e5, a shift 100× smaller: under a pixel's worth. Change the cluster or
+// the zoom, and recompute 4·Σr·s/A.
 constexpr double kFloatStableBound = 0.05;
-// Float + naive for d ≥ 1e5: b² − c cancels. b² ≈ |f|² ≥ 1e10 rounds by ε_f·|f|² ≥ 600 ≫ r² ≤ 1, so the
-// discriminant is rounding noise for every ray passing within √(ε_f)·|f| ≥ 24 units of a centre: the whole
-// 10-unit view. The test then says "hit" or "miss" by the sign of noise, and (with the hit wrongly taken on
-// about half the rays near each sphere and the background lost wherever noise says hit) far more than half
-// the ids are wrong; 0.5 is the coin-toss line (measured: > 85 %). A naive formula that did NOT fail here
-// would mean the sweep no longer reaches the cancellation it is meant to show.
+// Float + naive for d ≥ 1e5: b² − c cancels. b² ≈ |f|² ≥ 1e10 (|f| ≥ d) rounds by ε_f·|f|² ≥ 600, with
+// ε_f = 2⁻²⁴, far above r² ≤ 1: the discriminant's sign is rounding noise for every ray passing within
+// √(ε_f)·|f| ≥ 24 units of a centre, which is the whole 10-unit view. So the naive test answers "hit" or
+// "miss" by noise on essentially every pixel near the cluster, and the ids there are no better than a coin
+// toss: 0.5 is that line (measured 0.86–0.98). A naive float that passed this line would mean the sweep no
+// longer reaches the cancellation it exists to show.
 constexpr double kFloatNaiveFailure = 0.5;
 
 // Pixels allowed to differ from the exact reference in double: rays tangent to a circle, and rays through

@@ -1,12 +1,13 @@
 // The numbers the panels print, read back as text (Dear ImGui's log capture: no window, no GL) and checked
-// against the core, computed here from the app state's camera: the ray inspector's P_k^0, u_k^0, P_k, u_k, hit
-// id and t, and the status line's work counts. Pixels are a poor witness for numbers (printing 1.5·t changed
-// 74 pixels of a 1280×720 screenshot); text is exact. Labels may be reworded or translated: the test reads
-// the numeric tuples in order, the integer after "object"/"objet" and the number after "t =".
-#include <catch2/catch.hpp>
-#include <cmath>
+// against the core, computed here from the app state's camera: the ray inspector's P_k^0, u_k^0, P_k, u_k,
+// hit id and t, and the status line's work counts. Pixels are a poor witness for numbers (printing 1.5·t
+// changed 74 pixels of a 1280×720 screenshot); text is exact. Labels may be reworded or translated: the test
+// reads the numeric tuples in order, the integer after "object"/"objet" and the number after "t =".
 #include <imgui.h>
 #include <imgui_internal.h>
+
+#include <catch2/catch.hpp>
+#include <cmath>
 #include <regex>
 #include <string>
 #include <vector>
@@ -70,10 +71,13 @@ std::vector<std::vector<double>> numeric_tuples(const std::string& text) {
     std::size_t start = 0;
     while (numeric) {
       const std::size_t comma = inside.find(',', start);
-      const std::string part = inside.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      const std::string part =
+          inside.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       std::smatch m;
-      if (std::regex_match(part, m, member)) values.push_back(std::stod(m[1]));
-      else numeric = false;
+      if (std::regex_match(part, m, member))
+        values.push_back(std::stod(m[1]));
+      else
+        numeric = false;
       if (comma == std::string::npos) break;
       start = comma + 1;
     }
@@ -91,7 +95,8 @@ std::optional<double> number_after(const std::string& text, const std::string& l
 // Nearest hit computed here in long double, independently of intersect.h: smallest t ≥ 0 of
 // |o + t·u − c|² = r², ties to the lower index.
 template <class Vec, class Object>
-std::pair<int, long double> nearest(const std::vector<Object>& objects, const Vec& origin, const Vec& direction) {
+std::pair<int, long double> nearest(const std::vector<Object>& objects, const Vec& origin,
+                                    const Vec& direction) {
   int id = -1;
   long double best = INFINITY;
   for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -114,7 +119,9 @@ std::pair<int, long double> nearest(const std::vector<Object>& objects, const Ve
 }
 
 // %.4f in the panel: half a unit of the last digit, plus double's rounding of large values.
-void check_close(double printed, double expected) { CHECK(std::abs(printed - expected) <= 5.001e-5 + 1e-12 * std::abs(expected)); }
+void check_close(double printed, double expected) {
+  CHECK(std::abs(printed - expected) <= 5.001e-5 + 1e-12 * std::abs(expected));
+}
 void check_tuple(const std::vector<double>& printed, const glm::dvec3& expected, int dimensions) {
   REQUIRE(int(printed.size()) == dimensions);
   for (int a = 0; a < dimensions; ++a) check_close(printed[std::size_t(a)], expected[a]);
@@ -131,7 +138,8 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
     const int n = camera.pixel_count(), k = n - 1 - column;  // column 0 is the eye's left: k = n-1
     const glm::dvec2 p0(-1.0 + (2.0 * k + 1.0) / n, 0.0), u0 = p0 - glm::dvec2(0, 1);
     const glm::dmat3& m = camera.world_from_camera();  // M_d from the app's state
-    const glm::dvec2 p = glm::dvec2(m * glm::dvec3(p0, 1.0)), u = glm::normalize(glm::dvec2(m * glm::dvec3(u0, 0.0)));
+    const glm::dvec2 p = glm::dvec2(m * glm::dvec3(p0, 1.0)),
+                     u = glm::normalize(glm::dvec2(m * glm::dvec3(u0, 0.0)));
     const auto tuples = numeric_tuples(shown);
     REQUIRE(tuples.size() == 4);
     check_tuple(tuples[0], {p0, 0}, 2);
@@ -157,12 +165,15 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
     ui::AppState state = state_for({"--inspect", pixel, "--theta", "40", "--phi", "65"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO(pixel << ", the panel says:\n" << shown);
-    const int column = std::stoi(pixel), row = std::stoi(std::string(pixel).substr(std::string(pixel).find(',') + 1));
+    const int column = std::stoi(pixel),
+              row = std::stoi(std::string(pixel).substr(std::string(pixel).find(',') + 1));
     const Camera3D& camera = state.camera3d;
-    const glm::dvec3 p0(-1.0 + (2.0 * column + 1.0) / camera.columns(), 1.0 - (2.0 * row + 1.0) / camera.rows(), 0.0);
+    const glm::dvec3 p0(-1.0 + (2.0 * column + 1.0) / camera.columns(),
+                        1.0 - (2.0 * row + 1.0) / camera.rows(), 0.0);
     const glm::dvec3 u0 = p0 - glm::dvec3(0, 0, 1);
     const glm::dmat4& m = camera.world_from_camera();
-    const glm::dvec3 p = glm::dvec3(m * glm::dvec4(p0, 1.0)), u = glm::normalize(glm::dvec3(m * glm::dvec4(u0, 0.0)));
+    const glm::dvec3 p = glm::dvec3(m * glm::dvec4(p0, 1.0)),
+                     u = glm::normalize(glm::dvec3(m * glm::dvec4(u0, 0.0)));
     const auto tuples = numeric_tuples(shown);
     REQUIRE(tuples.size() == 4);
     check_tuple(tuples[0], p0, 3);
