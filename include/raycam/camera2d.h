@@ -44,7 +44,8 @@ struct ClassicMistakes {
 struct Orbit2D {
   glm::dvec2 target{0.0, 0.0};
   double d = 6.0;
-  double theta = 1.5707963267948966;  // π/2 radians: above the target, looking down -y like the canonical camera
+  double theta =
+      1.5707963267948966;  // π/2 radians: above the target, looking down -y like the canonical camera
   double df = 1.5;
 };
 
@@ -76,7 +77,8 @@ long long placements_built_on_this_thread();
 // Angle of a non-zero vector (radians, in (-π, π]) by the chosen route.
 double polar_angle(glm::dvec2 v, AngleRoute route);
 // Free placement (exercise 1, second route): the orbit with screen centre `position` and target C (P ≠ C):
-// d = |CP|, θ = angle of CP by `route`. Throws std::invalid_argument when P = C or a coordinate is out of range.
+// d = |CP|, θ = angle of CP by `route`. Throws std::invalid_argument when P = C or a coordinate is out of
+// range.
 Orbit2D free_orbit(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route);
 
 // Camera facts of any placement matrix (the final M_d or a construction step's product), in the world.

@@ -27,7 +27,8 @@ inline constexpr glm::dvec3 kCanonicalEye3D{0.0, 0.0, 1.0};           // E0
 inline constexpr glm::dvec3 kCanonicalView3D{0.0, 0.0, -1.0};         // u0
 // The screen's corners in image order: top-left, top-right, bottom-right, bottom-left.
 inline constexpr std::array<glm::dvec3, 4> kCanonicalScreenCorners3D{
-    glm::dvec3{-1.0, 1.0, 0.0}, glm::dvec3{1.0, 1.0, 0.0}, glm::dvec3{1.0, -1.0, 0.0}, glm::dvec3{-1.0, -1.0, 0.0}};
+    glm::dvec3{-1.0, 1.0, 0.0}, glm::dvec3{1.0, 1.0, 0.0}, glm::dvec3{1.0, -1.0, 0.0},
+    glm::dvec3{-1.0, -1.0, 0.0}};
 
 inline constexpr double kRollPsi0 = 1.5707963267948966;  // +π/2 radians (see header comment)
 
@@ -75,8 +76,9 @@ SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route);
 Orbit3D free_orbit(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route);
 
 // Camera facts of any placement matrix (the final M_d or a construction step's product), in the world.
-glm::dvec3 eye_of(const glm::dmat4& world_from_camera);                          // M·E0
-std::array<glm::dvec3, 4> screen_corners_of(const glm::dmat4& world_from_camera);  // M·kCanonicalScreenCorners3D
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera);  // M·E0
+std::array<glm::dvec3, 4> screen_corners_of(
+    const glm::dmat4& world_from_camera);  // M·kCanonicalScreenCorners3D
 
 struct Ray3D {
   glm::dvec3 origin{0.0};

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <glm/gtc/constants.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -21,11 +21,15 @@ long long placements_built_on_this_thread() { return detail::placements_built; }
 
 glm::dvec2 polar_direction(double theta) { return {std::cos(theta), std::sin(theta)}; }
 
-glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) { return orbit.target + orbit.d * polar_direction(orbit.theta); }
+glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) {
+  return orbit.target + orbit.d * polar_direction(orbit.theta);
+}
 
 double field_of_view(double df) { return 2.0 * std::atan(1.0 / df); }
 
-glm::dvec2 eye_of(const glm::dmat3& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye2D); }
+glm::dvec2 eye_of(const glm::dmat3& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye2D);
+}
 
 std::array<glm::dvec2, 2> screen_corners_of(const glm::dmat3& world_from_camera) {
   return {transform_point(world_from_camera, {-1.0, 0.0}), transform_point(world_from_camera, {1.0, 0.0})};
@@ -107,7 +111,9 @@ void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
   if (rotation_changed) placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
 }
 
-glm::dvec2 Camera2D::screen_centre() const { return transform_point(world_from_camera(), kCanonicalScreenCentre2D); }
+glm::dvec2 Camera2D::screen_centre() const {
+  return transform_point(world_from_camera(), kCanonicalScreenCentre2D);
+}
 glm::dvec2 Camera2D::eye() const { return eye_of(world_from_camera()); }
 glm::dvec2 Camera2D::view_direction() const {
   return glm::normalize(transform_vector(world_from_camera(), kCanonicalView2D));

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <glm/gtc/constants.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -26,11 +26,14 @@ glm::dvec3 orbit_screen_centre(const Orbit3D& orbit) {
   return orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
 }
 
-glm::dvec3 eye_of(const glm::dmat4& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye3D); }
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye3D);
+}
 
 std::array<glm::dvec3, 4> screen_corners_of(const glm::dmat4& world_from_camera) {
   std::array<glm::dvec3, 4> corners;
-  for (std::size_t i = 0; i < corners.size(); ++i) corners[i] = transform_point(world_from_camera, kCanonicalScreenCorners3D[i]);
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    corners[i] = transform_point(world_from_camera, kCanonicalScreenCorners3D[i]);
   return corners;
 }
 
@@ -134,7 +137,9 @@ void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
   if (rotation_changed) placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
 }
 
-glm::dvec3 Camera3D::screen_centre() const { return transform_point(world_from_camera(), kCanonicalScreenCentre3D); }
+glm::dvec3 Camera3D::screen_centre() const {
+  return transform_point(world_from_camera(), kCanonicalScreenCentre3D);
+}
 glm::dvec3 Camera3D::eye() const { return eye_of(world_from_camera()); }
 glm::dvec3 Camera3D::view_direction() const {
   return glm::normalize(transform_vector(world_from_camera(), kCanonicalView3D));

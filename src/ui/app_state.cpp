@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
-#include <stdexcept>
 #include <glm/trigonometric.hpp>
+#include <stdexcept>
 #include <string>
 
 #include "raycam/view_setup.h"
@@ -28,15 +28,17 @@ void place_cameras(AppState& state) {
   // from P and C as the handout's free placement does (the mistake near a pole).
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
-    const Orbit2D orbit =
-        state.arccos_route ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos) : o;
+    const Orbit2D orbit = state.arccos_route
+                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
+                              : o;
     Camera2D camera(state.max_pixels_2d, orbit, state.mistakes);
     camera.set_res(state.res);
     state.camera2d = camera;
   } else {
     const Orbit3D& o = state.orbit3d;
-    const Orbit3D orbit =
-        state.arccos_route ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos) : o;
+    const Orbit3D orbit = state.arccos_route
+                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
+                              : o;
     Camera3D camera(state.max_columns_3d, state.max_rows_3d, orbit, state.mistakes);
     camera.set_res(state.res);
     state.camera3d = camera;

@@ -1,13 +1,13 @@
 // Section index: theme · layout and build · image window · overhead window · observer window.
 #include "frame.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
-#include <imgui.h>
 
 #include "inspection.h"
 #include "observer_renderer.h"
@@ -34,7 +34,8 @@ PixelIndex pixel_under(const AppState& state, double fx, double fy) {
   PixelIndex pixel;
   if (state.dimension == 2) {
     const Camera2D& camera = state.camera2d;
-    pixel.column = camera.column_of_pixel(pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
+    pixel.column =
+        camera.column_of_pixel(pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
   } else {
     const Camera3D& camera = state.camera3d;
     const glm::dvec2 raster = camera.raster_from_screen({2.0 * fx - 1.0, 1.0 - 2.0 * fy});
@@ -57,7 +58,8 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
     } else {
       theta -= io.MouseDelta.x * 0.01;
-      if (!is_2d) state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, glm::pi<double>());
+      if (!is_2d)
+        state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, glm::pi<double>());
     }
     state.cameras_dirty = true;
   }
@@ -172,7 +174,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     layout.image = {low.x, low.y, high.x - low.x, high.y - low.y};
     if (ImGui::IsItemHovered() && state.map.width > 0) {
       const ImVec2 mouse = ImGui::GetIO().MousePos;
-      const PixelIndex pixel = pixel_under(state, (mouse.x - low.x) / (high.x - low.x), (mouse.y - low.y) / (high.y - low.y));
+      const PixelIndex pixel =
+          pixel_under(state, (mouse.x - low.x) / (high.x - low.x), (mouse.y - low.y) / (high.y - low.y));
       state.hovered_pixel = pixel;
       if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
     }
@@ -229,7 +232,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const glm::dvec3 target = state.orbit3d.target;
       const double reach = state.orbit3d.d + state.orbit3d.df;
       const double distance = 1.7 * reach * state.observer.zoom;
-      const double yaw = glm::radians(double(state.observer.yaw_deg)), pitch = glm::radians(double(state.observer.pitch_deg));
+      const double yaw = glm::radians(double(state.observer.yaw_deg)),
+                   pitch = glm::radians(double(state.observer.pitch_deg));
       const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
       const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));
       const glm::mat4 projection = glm::perspective(glm::radians(45.0f), size.x / size.y, float(distance * 0.01), float(distance * 50));

@@ -35,8 +35,9 @@ std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dve
 // ---- fitting -------------------------------------------------------------------------------------------
 OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size) {
   glm::dvec2 eye;
-  std::vector<glm::dvec2> points = state.dimension == 2 ? camera_outline(state.camera2d.world_from_camera(), &eye)
-                                                        : camera_outline(state.camera3d.world_from_camera(), &eye);
+  std::vector<glm::dvec2> points = state.dimension == 2
+                                       ? camera_outline(state.camera2d.world_from_camera(), &eye)
+                                       : camera_outline(state.camera3d.world_from_camera(), &eye);
   points.push_back(eye);
   const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
   points.push_back(target);
@@ -87,7 +88,8 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   const std::vector<glm::dvec2> corners = camera_outline(world_from_camera, &eye);
   const bool segment = corners.size() == 2;  // 2D: the screen is a segment
   for (std::size_t i = 0; i + (segment ? 1 : 0) < corners.size(); ++i)
-    draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % corners.size()]), colour, segment ? 4.0f : 3.0f);
+    draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % corners.size()]), colour,
+                  segment ? 4.0f : 3.0f);
   if (draw_fov)
     for (const glm::dvec2& corner : corners) {
       const glm::dvec2 along = corner - eye;

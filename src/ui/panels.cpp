@@ -2,15 +2,15 @@
 // status line · help · shortcuts. (ImGui's default font is ASCII: "theta", not θ.)
 #include "panels.h"
 
+#include <imgui.h>
+
 #include <algorithm>
 #include <array>
-#include <iterator>
 #include <cmath>
 #include <cstdio>
-
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
-#include <imgui.h>
+#include <iterator>
 
 #include "inspection.h"
 #include "raycam/view_setup.h"
@@ -376,8 +376,10 @@ void handle_shortcuts(AppState& state) {
   const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
   if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow))
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow))
+    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

@@ -12,7 +12,8 @@ using namespace raycam;
 using raycam::test::kPi;
 using raycam::test::Random;
 
-TEST_CASE("the pixel <-> screen pair gives the handout's centres and edges and inverts itself", "[camera][pixels]") {
+TEST_CASE("the pixel <-> screen pair gives the handout's centres and edges and inverts itself",
+          "[camera][pixels]") {
   for (int count : {1, 2, 3, 7, 256, 4095}) {
     for (int i = 0; i < count; i += std::max(1, count / 17)) {
       // Handout, exercise 2: centre -1 + (2i+1)/n, left edge -1 + 2i/n, computed here independently.
@@ -45,7 +46,9 @@ TEST_CASE("3D corners, eye, axes and field of view agree with the placement", "[
   Random random(5);
   for (int trial = 0; trial < 200; ++trial) {
     const Orbit3D orbit{{random.uniform(-50, 50), random.uniform(-50, 50), random.uniform(-50, 50)},
-                        random.log_uniform(0.1, 1e3), random.uniform(-kPi, kPi), random.uniform(0, kPi),
+                        random.log_uniform(0.1, 1e3),
+                        random.uniform(-kPi, kPi),
+                        random.uniform(0, kPi),
                         random.log_uniform(0.05, 20)};
     const Camera3D camera(64, 64, orbit);
     const double scale = glm::length(orbit.target) + orbit.d + orbit.df;
@@ -60,8 +63,10 @@ TEST_CASE("3D corners, eye, axes and field of view agree with the placement", "[
     CHECK(glm::length(corners[1] - corners[0] - 2.0 * camera.image_right()) <= 1e-12 * scale);
     CHECK(glm::length(corners[0] - corners[3] - 2.0 * camera.image_up()) <= 1e-12 * scale);
     CHECK(std::abs(glm::dot(camera.image_right(), camera.view_direction())) <= 1e-12);
-    // The field of view is the angle between the rays from the eye to the middles of the left and right sides.
-    const glm::dvec3 left = 0.5 * (corners[0] + corners[3]) - camera.eye(), right = 0.5 * (corners[1] + corners[2]) - camera.eye();
+    // The field of view is the angle between the rays from the eye to the middles of the left and right
+    // sides.
+    const glm::dvec3 left = 0.5 * (corners[0] + corners[3]) - camera.eye(),
+                     right = 0.5 * (corners[1] + corners[2]) - camera.eye();
     const double angle = std::acos(glm::dot(left, right) / (glm::length(left) * glm::length(right)));
     CHECK(camera.field_of_view() == Approx(angle).epsilon(1e-9));
   }
@@ -70,8 +75,10 @@ TEST_CASE("3D corners, eye, axes and field of view agree with the placement", "[
 TEST_CASE("2D screen ends, eye, image right and field of view agree with the rays", "[camera2d][facts]") {
   Random random(6);
   for (int trial = 0; trial < 200; ++trial) {
-    const Orbit2D orbit{{random.uniform(-50, 50), random.uniform(-50, 50)}, random.log_uniform(0.1, 1e3),
-                        random.uniform(-kPi, kPi), random.log_uniform(0.05, 20)};
+    const Orbit2D orbit{{random.uniform(-50, 50), random.uniform(-50, 50)},
+                        random.log_uniform(0.1, 1e3),
+                        random.uniform(-kPi, kPi),
+                        random.log_uniform(0.05, 20)};
     const Camera2D camera(random.integer(2, 300), orbit);
     const double scale = glm::length(orbit.target) + orbit.d + orbit.df;
     CHECK(glm::length(camera.screen_centre() - orbit_screen_centre(orbit)) <= 1e-12 * scale);
@@ -80,7 +87,8 @@ TEST_CASE("2D screen ends, eye, image right and field of view agree with the ray
     CHECK(glm::length(ends[1] - ends[0]) == Approx(2.0).epsilon(1e-12));
     // Column c+1 lies along image_right from column c (column 0 is the eye's left).
     const int n = camera.pixel_count();
-    const glm::dvec2 step = camera.primary_ray(camera.pixel_of_column(1)).origin - camera.primary_ray(camera.pixel_of_column(0)).origin;
+    const glm::dvec2 step = camera.primary_ray(camera.pixel_of_column(1)).origin -
+                            camera.primary_ray(camera.pixel_of_column(0)).origin;
     CHECK(glm::dot(step, camera.image_right()) == Approx(2.0 / n).epsilon(1e-9));
     const glm::dvec2 a = ends[0] - camera.eye(), b = ends[1] - camera.eye();
     const double angle = std::acos(glm::dot(a, b) / (glm::length(a) * glm::length(b)));

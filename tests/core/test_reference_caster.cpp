@@ -151,14 +151,21 @@ TEST_CASE("one rule picks the caster: where it says fast, the fast caster gives 
     fast.formula = formula;
     for (int trial = 0; trial < 20; ++trial) {
       const Scene2D scene2d = random_scene_2d(random, random.integer(1, 10), 4.0);
-      Camera2D camera2d(random.integer(1, 300), Orbit2D{{0, 0}, random.log_uniform(0.5, 1e3), random.uniform(-kPi, kPi), random.log_uniform(0.1, 10)});
+      Camera2D camera2d(
+          random.integer(1, 300),
+          Orbit2D{
+              {0, 0}, random.log_uniform(0.5, 1e3), random.uniform(-kPi, kPi), random.log_uniform(0.1, 10)});
       const CoverageImage reference2d = reference_cast(camera2d, scene2d, options);
       const ColourMap fast2d = cast_primary_rays(camera2d, scene2d, fast);
       CHECK(reference2d.ids == fast2d.ids);
       CHECK(to_colour_map(reference2d).colours == fast2d.colours);
       const Scene3D scene3d = random_scene_3d(random, random.integer(1, 8), 3.0);
       Camera3D camera3d(random.integer(1, 40), random.integer(1, 40),
-                        Orbit3D{{0, 0, 0}, random.log_uniform(0.5, 1e3), random.uniform(-kPi, kPi), random.uniform(0, kPi), 2.0});
+                        Orbit3D{{0, 0, 0},
+                                random.log_uniform(0.5, 1e3),
+                                random.uniform(-kPi, kPi),
+                                random.uniform(0, kPi),
+                                2.0});
       const CoverageImage reference3d = reference_cast(camera3d, scene3d, options);
       const ColourMap fast3d = cast_primary_rays(camera3d, scene3d, fast);
       CHECK(reference3d.ids == fast3d.ids);
