@@ -217,17 +217,14 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
-                   state.mistakes.skip_renormalise || state.arccos_route;
+  const bool any = any_mistake(state.mistakes) || state.arccos_route;
   if (!ImGui::CollapsingHeader("Classic mistakes", any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
-  bool changed = ImGui::Checkbox("printed rotation sign", &state.mistakes.printed_rotation_sign);
-  explain("alpha = phi_v - 90 deg with phi_v the angle of v = PC turns u0 onto -v: the camera turns its back to the "
-          "target and shows what is behind it.");
-  changed |= ImGui::Checkbox("pixel edges instead of centres", &state.mistakes.pixel_edges);
-  explain("-1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no longer "
-          "symmetric.");
-  changed |= ImGui::Checkbox("forgot to renormalise u_k", &state.mistakes.skip_renormalise);
-  explain("H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong.");
+  bool changed = false;
+  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
+    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
+    changed |= ImGui::Checkbox(mistake_label(mistake, "en"), &(state.mistakes.*mistake.flag));
+    explain(mistake_explanation(mistake, "en"));
+  }
   changed |= ImGui::Checkbox("arccos route near a pole", &state.arccos_route);
   explain("placing the camera from P and C with the handout's arccos: near theta = 0 (2D) or phi = 0 (3D) arccos "
           "loses half the digits and the camera snaps to the axis.");
