@@ -39,8 +39,7 @@ enum class AngleRoute {
 struct Orbit2D {
   glm::dvec2 target{0.0, 0.0};
   double d = 6.0;
-  double theta =
-      1.5707963267948966;  // π/2 radians: above the target, looking down -y like the canonical camera
+  double theta = 1.5707963267948966;  // π/2: above the target, looking down -y like the canonical camera
   double df = 1.5;
 };
 
@@ -107,7 +106,7 @@ class Camera2D {
   void set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route = AngleRoute::stable);
   const Orbit2D& orbit() const { return orbit_; }
 
-  void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d only if the rotation mistake changed
+  void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d (once)
   const ClassicMistakes& mistakes() const { return mistakes_; }
 
   const Placement2D& placement() const { return placement_; }

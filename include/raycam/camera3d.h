@@ -109,7 +109,7 @@ class Camera3D {
   void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable);
   const Orbit3D& orbit() const { return orbit_; }
 
-  void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d only if the rotation mistake changed
+  void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d (once)
   const ClassicMistakes& mistakes() const { return mistakes_; }
 
   const Placement3D& placement() const { return placement_; }

@@ -4,11 +4,8 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
-<<<<<<< HEAD
 #include <glm/gtc/constants.hpp>
-=======
 #include <glm/trigonometric.hpp>
->>>>>>> main
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -25,15 +22,11 @@ long long placements_built_on_this_thread() { return detail::placements_built; }
 
 glm::dvec2 polar_direction(double theta) { return {std::cos(theta), std::sin(theta)}; }
 
-glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) {
-  return orbit.target + orbit.d * polar_direction(orbit.theta);
-}
+glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) { return orbit.target + orbit.d * polar_direction(orbit.theta); }
 
 double field_of_view(double df) { return 2.0 * std::atan(1.0 / df); }
 
-glm::dvec2 eye_of(const glm::dmat3& world_from_camera) {
-  return transform_point(world_from_camera, kCanonicalEye2D);
-}
+glm::dvec2 eye_of(const glm::dmat3& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye2D); }
 
 std::array<glm::dvec2, 2> screen_corners_of(const glm::dmat3& world_from_camera) {
   return {transform_point(world_from_camera, {-1.0, 0.0}), transform_point(world_from_camera, {1.0, 0.0})};
@@ -46,26 +39,16 @@ Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistak
   detail::require_angle(orbit.theta, "theta");
   detail::require_focal_distance(orbit.df, "df");
 
-<<<<<<< HEAD
-  const glm::dvec2 position = orbit_screen_centre(orbit);  // step 2
-=======
   // Classic mistake: the file's degrees handed to cos/sin as they are (the whole placement uses them).
   const double theta = mistakes.degrees_as_radians ? glm::degrees(orbit.theta) : orbit.theta;
-  // Step 2: P = C + d·(cos θ, sin θ).
-  const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(theta), std::sin(theta));
->>>>>>> main
+  const glm::dvec2 position = orbit.target + orbit.d * polar_direction(theta);  // step 2
   Placement2D placement;
   placement.scale = scaling_2d(1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);
   // R(α) must turn u0 = (0,-1), at angle -π/2, onto v = PC/|PC|, at angle θ + π: α = θ - π/2 (mod 2π).
   // The handout prints α = φ_v - π/2 with φ_v the angle of v itself; that is θ + π/2, which turns u0 onto
   // -v: the camera looks away from its target (kept as a classic mistake).
-<<<<<<< HEAD
-  const double view_angle = printed_rotation_sign ? orbit.theta + glm::pi<double>() : orbit.theta;
+  const double view_angle = mistakes.printed_rotation_sign ? theta + glm::pi<double>() : theta;
   placement.alpha = view_angle - glm::half_pi<double>();
-=======
-  const double view_angle = mistakes.printed_rotation_sign ? theta + 2.0 * kHalfPi : theta;
-  placement.alpha = view_angle - kHalfPi;
->>>>>>> main
   placement.rotation = rotation_2d(placement.alpha);
   placement.translation = translation_2d(position);
   placement.world_from_camera = construction_step(placement, kConstructionSteps2D);
@@ -109,7 +92,7 @@ Camera2D::Camera2D(int max_pixels, const Orbit2D& orbit, const ClassicMistakes& 
     : max_pixels_(max_pixels), orbit_(orbit), mistakes_(mistakes) {
   detail::require_int_range(max_pixels, 1, kMaxPixels2D, "size (N)");
   pixel_count_ = max_pixels_;
-  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+  placement_ = placement_matrix(orbit_, mistakes_);
 }
 
 void Camera2D::set_res(double res) {
@@ -128,15 +111,9 @@ void Camera2D::set_free(glm::dvec2 position, glm::dvec2 target, double df, Angle
 }
 
 void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
-<<<<<<< HEAD
-  const bool rotation_changed = mistakes.printed_rotation_sign != mistakes_.printed_rotation_sign;
-  mistakes_ = mistakes;
-  if (rotation_changed) placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
-=======
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
   pixel_count_ = detail::useful_size(res_, max_pixels_, mistakes_.res_truncated);
->>>>>>> main
 }
 
 glm::dvec2 Camera2D::screen_centre() const {
@@ -151,11 +128,7 @@ glm::dvec2 Camera2D::image_right() const {
 }
 
 double Camera2D::canonical_x(int k) const {
-<<<<<<< HEAD
-=======
-  const double n = pixel_count_;
   if (mistakes_.mirrored) k = pixel_count_ - 1 - k;  // classic mistake: pixel k stored at n-1-k
->>>>>>> main
   // Exercise 2: the handout prints -1 + 2k/n, the LEFT EDGE of pixel k; the centre is half a pixel on.
   return screen_from_raster(mistakes_.pixel_edges ? k : k + 0.5);
 }

@@ -4,11 +4,8 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
-<<<<<<< HEAD
 #include <glm/gtc/constants.hpp>
-=======
 #include <glm/trigonometric.hpp>
->>>>>>> main
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -30,9 +27,7 @@ glm::dvec3 orbit_screen_centre(const Orbit3D& orbit) {
   return orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
 }
 
-glm::dvec3 eye_of(const glm::dmat4& world_from_camera) {
-  return transform_point(world_from_camera, kCanonicalEye3D);
-}
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye3D); }
 
 std::array<glm::dvec3, 4> screen_corners_of(const glm::dmat4& world_from_camera) {
   std::array<glm::dvec3, 4> corners;
@@ -50,16 +45,6 @@ Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistak
   detail::require_angle(orbit.phi, "phi");
   detail::require_focal_distance(orbit.df, "df");
 
-<<<<<<< HEAD
-  const glm::dvec3 position = orbit_screen_centre(orbit);
-  Placement3D placement;
-  // With (θ, φ) the angles of CP, R_z(θ)·R_y(φ) takes u0 = -z to -CP/|CP| = v. The handout's route takes
-  // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
-  placement.theta = printed_rotation_sign ? orbit.theta + glm::pi<double>() : orbit.theta;
-  placement.phi = printed_rotation_sign ? glm::pi<double>() - orbit.phi : orbit.phi;
-  placement.scale = scaling_3d(1.0, 1.0, orbit.df);  // step 1
-  placement.roll = rotation_z(kRollPsi0);            // step 2
-=======
   // Classic mistakes on the angles: θ and φ swapped, degrees handed to cos/sin as they are.
   double theta = mistakes.theta_phi_swapped ? orbit.phi : orbit.theta;
   double phi = mistakes.theta_phi_swapped ? orbit.theta : orbit.phi;
@@ -71,12 +56,11 @@ Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistak
   Placement3D placement;
   // With (θ, φ) the angles of CP, R_z(θ)·R_y(φ) takes u0 = -z to -CP/|CP| = v. The handout's route takes
   // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
-  placement.theta = mistakes.printed_rotation_sign ? theta + kPi : theta;
-  placement.phi = mistakes.printed_rotation_sign ? kPi - phi : phi;
+  placement.theta = mistakes.printed_rotation_sign ? theta + glm::pi<double>() : theta;
+  placement.phi = mistakes.printed_rotation_sign ? glm::pi<double>() - phi : phi;
   placement.scale = scaling_3d(1.0, 1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);  // step 1
   // Step 2: the handout prints ψ0 = -π/2, which turns the image upside down (classic mistake).
   placement.roll = rotation_z(mistakes.upside_down ? -kRollPsi0 : kRollPsi0);
->>>>>>> main
   placement.polar = rotation_y(placement.phi);       // step 3a
   placement.azimuth = rotation_z(placement.theta);   // step 3b
   placement.translation = translation_3d(position);  // step 4
@@ -139,7 +123,7 @@ Camera3D::Camera3D(int max_columns, int max_rows, const Orbit3D& orbit, const Cl
                             "size (columns x rows)");
   columns_ = max_columns_;
   rows_ = max_rows_;
-  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+  placement_ = placement_matrix(orbit_, mistakes_);
 }
 
 void Camera3D::set_res(double res_columns, double res_rows) {
@@ -161,16 +145,10 @@ void Camera3D::set_free(glm::dvec3 position, glm::dvec3 target, double df, Angle
 }
 
 void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
-<<<<<<< HEAD
-  const bool rotation_changed = mistakes.printed_rotation_sign != mistakes_.printed_rotation_sign;
-  mistakes_ = mistakes;
-  if (rotation_changed) placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
-=======
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
   columns_ = detail::useful_size(res_columns_, max_columns_, mistakes_.res_truncated);
   rows_ = detail::useful_size(res_rows_, max_rows_, mistakes_.res_truncated);
->>>>>>> main
 }
 
 glm::dvec3 Camera3D::screen_centre() const {
@@ -183,25 +161,15 @@ glm::dvec3 Camera3D::view_direction() const {
 glm::dvec3 Camera3D::image_up() const { return transform_vector(world_from_camera(), {0.0, 1.0, 0.0}); }
 glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_camera(), {1.0, 0.0, 0.0}); }
 
-// Pixel centres through the pixel <-> screen pair (the printed 2k/n is a pixel's corner: ClassicMistakes).
+// Pixel centres through the pixel <-> screen pair (the printed 2k/n is a pixel's corner: pixel_edges).
 double Camera3D::canonical_x(int column) const {
-<<<<<<< HEAD
+  if (mistakes_.mirrored) column = columns_ - 1 - column;  // classic mistake: columns reversed
   return raycam::screen_from_raster(mistakes_.pixel_edges ? column : column + 0.5, columns_);
 }
 
 double Camera3D::canonical_y(int row) const {
-  return -raycam::screen_from_raster(mistakes_.pixel_edges ? row : row + 0.5, rows_);  // row 0 at the top
-=======
-  if (mistakes_.mirrored) column = columns_ - 1 - column;   // classic mistake: columns reversed
-  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
-  return -1.0 + (2.0 * column + offset) / columns_;
-}
-
-double Camera3D::canonical_y(int row) const {
   if (mistakes_.rows_flipped) row = rows_ - 1 - row;  // classic mistake: row 0 at the bottom
-  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;
-  return 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
->>>>>>> main
+  return -raycam::screen_from_raster(mistakes_.pixel_edges ? row : row + 0.5, rows_);  // row 0 at the top
 }
 
 glm::dvec3 Camera3D::canonical_pixel(int row, int column) const {

@@ -103,13 +103,12 @@ TEST_CASE("placing a camera composes M_d once", "[camera][cache]") {
   Camera3D camera(16, 16, Orbit3D{}, mistakes);
   CHECK(placements_built_on_this_thread() - before == 1);
   before = placements_built_on_this_thread();
-  camera.set_mistakes(mistakes);  // unchanged rotation mistake: nothing to rebuild
-  camera.set_res(0.5);
+  camera.set_res(0.5);  // n changes, M_d does not
   CHECK(placements_built_on_this_thread() - before == 0);
   mistakes.printed_rotation_sign = false;
   camera.set_mistakes(mistakes);
   CHECK(placements_built_on_this_thread() - before == 1);
-  CHECK(camera.view_direction() == Camera3D(16, 16).view_direction());  // and it did rebuild the right one
+  CHECK(camera.view_direction() == Camera3D(16, 16).view_direction());  // and it rebuilt the right one
   before = placements_built_on_this_thread();
   Camera2D bar(16, Orbit2D{}, mistakes);
   bar.set_free({0, 3}, {0, 0}, 1.5);
