@@ -112,7 +112,7 @@ bool open_scene(AppState& state, const std::string& path) {
     state.construction_step = -1;
     ++state.scene_version;
     state.cameras_dirty = true;
-    state.message = "opened " + path;
+    state.message = trf("opened %s", path.c_str());
     state.message_is_error = false;
     return true;
   } catch (const std::exception& error) {
@@ -132,7 +132,7 @@ bool save_preset(AppState& state, const std::string& path) {
       if (state.dimension == 3) file.camera.phi_deg = glm::degrees(state.orbit3d.phi);
     }
     save_scene_file(file, path);
-    state.message = "saved the camera preset to " + path;
+    state.message = trf("saved the camera preset to %s", path.c_str());
     state.message_is_error = false;
     return true;
   } catch (const std::exception& error) {
