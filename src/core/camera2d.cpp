@@ -22,11 +22,15 @@ long long placements_built_on_this_thread() { return detail::placements_built; }
 
 glm::dvec2 polar_direction(double theta) { return {std::cos(theta), std::sin(theta)}; }
 
-glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) { return orbit.target + orbit.d * polar_direction(orbit.theta); }
+glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) {
+  return orbit.target + orbit.d * polar_direction(orbit.theta);
+}
 
 double field_of_view(double df) { return 2.0 * std::atan(1.0 / df); }
 
-glm::dvec2 eye_of(const glm::dmat3& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye2D); }
+glm::dvec2 eye_of(const glm::dmat3& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye2D);
+}
 
 std::array<glm::dvec2, 2> screen_corners_of(const glm::dmat3& world_from_camera) {
   return {transform_point(world_from_camera, {-1.0, 0.0}), transform_point(world_from_camera, {1.0, 0.0})};

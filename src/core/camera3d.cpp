@@ -27,7 +27,9 @@ glm::dvec3 orbit_screen_centre(const Orbit3D& orbit) {
   return orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
 }
 
-glm::dvec3 eye_of(const glm::dmat4& world_from_camera) { return transform_point(world_from_camera, kCanonicalEye3D); }
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye3D);
+}
 
 std::array<glm::dvec3, 4> screen_corners_of(const glm::dmat4& world_from_camera) {
   std::array<glm::dvec3, 4> corners;
