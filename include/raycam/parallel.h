@@ -34,8 +34,10 @@ void parallel_items(int items, int workers, Work&& work) {
     return;
   }
   using WorkType = std::remove_reference_t<Work>;
-  run_on_pool(items, workers, [](void* context, int worker, int item) { (*static_cast<WorkType*>(context))(worker, item); },
-              const_cast<void*>(static_cast<const void*>(&work)));
+  run_on_pool(
+      items, workers,
+      [](void* context, int worker, int item) { (*static_cast<WorkType*>(context))(worker, item); },
+      const_cast<void*>(static_cast<const void*>(&work)));
 }
 
 }  // namespace raycam::detail

@@ -73,7 +73,8 @@ class WorkerPool {
     struct Leave {
       ~Leave() { in_pool_job = false; }
     } leave;
-    for (int item = next_.fetch_add(1); item < items_; item = next_.fetch_add(1)) body_(context_, worker, item);
+    for (int item = next_.fetch_add(1); item < items_; item = next_.fetch_add(1))
+      body_(context_, worker, item);
   }
 
   void helper_loop(int index) {

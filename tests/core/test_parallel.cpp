@@ -1,8 +1,7 @@
 // The persistent worker pool behind parallel_items: every item once, worker indices in range, threads
 // started once for many casts, nested and concurrent casts still complete.
-#include <catch2/catch.hpp>
-
 #include <atomic>
+#include <catch2/catch.hpp>
 #include <mutex>
 #include <set>
 #include <thread>
