@@ -149,6 +149,23 @@ bool save_preset(AppState& state, const std::string& path) {
   }
 }
 
+void switch_dimension(AppState& state, int dimension) {
+  if (dimension == state.dimension) return;
+  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
+    state.scene_path.clear();
+    state.message = "switched to the built-in " + std::to_string(dimension) + "D demo scene";
+    state.message_is_error = false;
+  }
+  state.file.dimension = dimension;
+  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
+  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
+  state.dimension = dimension;
+  state.construction_step = -1;
+  state.pinned_pixel.reset();
+  ++state.scene_version;
+  state.cameras_dirty = true;
+}
+
 int construction_steps(const AppState& state) {
   return state.dimension == 2 ? kConstructionSteps2D : kConstructionSteps3D;
 }

@@ -2,15 +2,16 @@
 // status line · help · shortcuts. (ImGui's default font is ASCII: "theta", not θ.)
 #include "panels.h"
 
-#include <algorithm>
-#include <array>
-#include <iterator>
-#include <cmath>
-#include <cstdio>
-
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "raycam/view_setup.h"
 
 namespace raycam::ui {
@@ -20,6 +21,7 @@ constexpr double kDegree = 3.141592653589793 / 180.0;
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
 constexpr double kPi = 3.141592653589793;
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
 bool slider_double(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
   float v = float(value);
@@ -54,22 +56,6 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
-void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    state.message = "switched to the built-in " + std::to_string(dimension) + "D demo scene";
-    state.message_is_error = false;
-  }
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
-  state.construction_step = -1;
-  state.pinned_pixel.reset();
-  ++state.scene_version;
-  state.cameras_dirty = true;
-}
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
@@ -215,21 +201,22 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = state.mistakes.printed_rotation_sign || state.mistakes.pixel_edges ||
-                   state.mistakes.skip_renormalise || state.arccos_route;
+  const bool any = !mistakes_on(state).empty();
   if (!ImGui::CollapsingHeader("Classic mistakes", any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
-  bool changed = ImGui::Checkbox("printed rotation sign", &state.mistakes.printed_rotation_sign);
-  explain("alpha = phi_v - 90 deg with phi_v the angle of v = PC turns u0 onto -v: the camera turns its back to the "
-          "target and shows what is behind it.");
-  changed |= ImGui::Checkbox("pixel edges instead of centres", &state.mistakes.pixel_edges);
-  explain("-1 + 2k/n is the left edge of pixel k: the image slides half a pixel, a symmetric scene is no longer "
-          "symmetric.");
-  changed |= ImGui::Checkbox("forgot to renormalise u_k", &state.mistakes.skip_renormalise);
-  explain("H stretched the directions; the intersection assumes |u| = 1, so footprints and t come out wrong.");
-  changed |= ImGui::Checkbox("arccos route near a pole", &state.arccos_route);
-  explain("placing the camera from P and C with the handout's arccos: near theta = 0 (2D) or phi = 0 (3D) arccos "
-          "loses half the digits and the camera snaps to the axis.");
-  arccos_error_line(state);
+  bool changed = false;
+  for (const MistakeLesson& lesson : mistake_lessons()) {
+    ImGui::PushID(lesson.id);
+    changed |= ImGui::Checkbox(lesson.label, &lesson.flag(state));
+    if (lesson.show_me) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("show me")) show_mistake(state, lesson);
+    }
+    if (!lesson.flag(state) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(lesson.what_it_does(state).c_str());
+    if (state.mistake_look_at == lesson.look_at) ImGui::TextColored(kLookAt, "Look: %s", lesson.look_at);
+    if (std::string(lesson.id) == "arccos") arccos_error_line(state);
+    ImGui::PopID();
+  }
   if (changed) state.cameras_dirty = true;
 }
 
