@@ -6,18 +6,14 @@
 #include <glm/geometric.hpp>
 
 #include "app_options.h"
+#include "app_state_for.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 
 using namespace raycam;
+using raycam::test::state_for;
 
 namespace {
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();)
-    if (!ui::parse_app_option(args, i, options)) throw std::logic_error("not an app option: " + args[i]);
-  return ui::make_app_state(options);
-}
 
 std::vector<int> ids_now(ui::AppState& state) {
   state.cameras_dirty = true;
