@@ -11,19 +11,14 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 
+#include "raycam/classic_mistakes.h"
+
 namespace raycam {
 
 // How the free placement (P, C) turns the view vector into an angle.
 enum class AngleRoute {
   stable,          // atan2: well-conditioned everywhere
   handout_arccos,  // the handout's ±arccos(x_v): an input error ε becomes an angle error ~√(2ε) near ±1
-};
-
-// The handout's classic mistakes, reproducible on purpose (the app shows what each does to the image).
-struct ClassicMistakes {
-  bool printed_rotation_sign = false;  // rotation angle from the view vector PC, as printed: looks away
-  bool pixel_edges = false;            // P_k^0 = -1 + 2k/n as printed: left pixel edges, image shifts
-  bool skip_renormalise = false;       // u_k left scaled by H; the caster assumes |u| = 1
 };
 
 // Orbit placement (exercise 1, step 2): target C, distance d > 0 from C to the screen centre, angle θ of
@@ -49,7 +44,10 @@ struct Placement2D {
 inline constexpr int kConstructionSteps2D = 3;
 glm::dmat3 construction_step(const Placement2D& placement, int step);
 
-// The only place M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0, d_f ≤ 0 or non-finite input.
+// The only place M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0, d_f ≤ 0
+// or non-finite input. The mistakes that change M_d (printed_rotation_sign, degrees_as_radians,
+// no_focal_scale) are applied here.
+Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistakes);
 Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign = false);
 
 // Angle of a non-zero vector (radians, in (-π, π]) by the chosen route.
@@ -68,7 +66,7 @@ class Camera2D {
   int max_pixels() const { return max_pixels_; }
   double res() const { return res_; }
   void set_res(double res);                         // res ∈ ]0, 1]
-  int pixel_count() const { return pixel_count_; }  // n = clamp(round(res·N), 1, N)
+  int pixel_count() const { return pixel_count_; }  // n = clamp(round(res·N), 1, N) (floor: res_truncated)
 
   void set_orbit(const Orbit2D& orbit);
   // Free placement from the screen centre P and target C (P ≠ C): d = |CP|, θ = angle of CP.

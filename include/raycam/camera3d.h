@@ -45,7 +45,10 @@ struct Placement3D {
 inline constexpr int kConstructionSteps3D = 5;
 glm::dmat4 construction_step(const Placement3D& placement, int step);
 
-// The only place the 3D M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0, d_f ≤ 0, non-finite input.
+// The only place the 3D M_d is composed (through construction_step). Throws std::invalid_argument on d ≤ 0,
+// d_f ≤ 0, non-finite input. The mistakes that change M_d (printed_rotation_sign, upside_down,
+// degrees_as_radians, no_focal_scale, theta_phi_swapped) are applied here.
+Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistakes);
 Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign = false);
 
 struct SphericalAngles {

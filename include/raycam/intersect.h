@@ -9,6 +9,7 @@
 // A ray starting inside the ball hits its far side (the smallest non-negative root).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -49,6 +50,27 @@ T nearest_hit_t(const glm::vec<D, T>& origin, const glm::vec<D, T>& unit_directi
   if (t_near >= T(0)) return t_near;
   if (t_far >= T(0)) return t_far;
   return kNoHit<T>;
+}
+
+// The classic mistake no_t_min (ClassicMistakes): the smaller root of the same quadratic whatever its sign,
+// so a hit behind the ray's origin counts (and beats any in front); kNoHit only when the line misses.
+template <int D, class T>
+T smaller_root_t(const glm::vec<D, T>& origin, const glm::vec<D, T>& unit_direction,
+                 const glm::vec<D, T>& centre, T radius, IntersectFormula formula) {
+  const glm::vec<D, T> f = origin - centre;
+  const T b = glm::dot(f, unit_direction);
+  const T c = glm::dot(f, f) - radius * radius;
+  if (formula == IntersectFormula::naive) {
+    const T disc = b * b - c;
+    return disc < T(0) ? kNoHit<T> : -b - std::sqrt(disc);
+  }
+  const glm::vec<D, T> perpendicular = f - b * unit_direction;
+  const T disc = radius * radius - glm::dot(perpendicular, perpendicular);
+  if (disc < T(0)) return kNoHit<T>;
+  const T q = -b - std::copysign(std::sqrt(disc), b);
+  if (q == T(0)) return std::min(T(0), -T(2) * b);  // c = 0: the roots are 0 and -2b
+  const T t_other = c / q;
+  return q < t_other ? q : t_other;
 }
 
 }  // namespace raycam

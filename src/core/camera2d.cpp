@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -19,27 +20,34 @@ const glm::dvec2 kCanonicalEye{0.0, 1.0};    // E0
 const glm::dvec2 kCanonicalView{0.0, -1.0};  // u0
 }  // namespace
 
-Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
+Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistakes) {
   detail::require_coordinate(orbit.target.x, "target.x");
   detail::require_coordinate(orbit.target.y, "target.y");
   detail::require_positive(orbit.d, "d");
   detail::require_angle(orbit.theta, "theta");
   detail::require_focal_distance(orbit.df, "df");
 
+  // Classic mistake: the file's degrees handed to cos/sin as they are (the whole placement uses them).
+  const double theta = mistakes.degrees_as_radians ? glm::degrees(orbit.theta) : orbit.theta;
   // Step 2: P = C + d·(cos θ, sin θ).
-  const glm::dvec2 position =
-      orbit.target + orbit.d * glm::dvec2(std::cos(orbit.theta), std::sin(orbit.theta));
+  const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(theta), std::sin(theta));
   Placement2D placement;
-  placement.scale = scaling_2d(1.0, orbit.df);
+  placement.scale = scaling_2d(1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);
   // R(α) must turn u0 = (0,-1), at angle -π/2, onto v = PC/|PC|, at angle θ + π: α = θ - π/2 (mod 2π).
   // The handout prints α = φ_v - π/2 with φ_v the angle of v itself; that is θ + π/2, which turns u0 onto
   // -v: the camera looks away from its target (kept as a classic mistake).
-  const double view_angle = printed_rotation_sign ? orbit.theta + 2.0 * kHalfPi : orbit.theta;
+  const double view_angle = mistakes.printed_rotation_sign ? theta + 2.0 * kHalfPi : theta;
   placement.alpha = view_angle - kHalfPi;
   placement.rotation = rotation_2d(placement.alpha);
   placement.translation = translation_2d(position);
   placement.world_from_camera = construction_step(placement, kConstructionSteps2D);
   return placement;
+}
+
+Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
+  ClassicMistakes mistakes;
+  mistakes.printed_rotation_sign = printed_rotation_sign;
+  return placement_matrix(orbit, mistakes);
 }
 
 glm::dmat3 construction_step(const Placement2D& placement, int step) {
@@ -67,11 +75,11 @@ Camera2D::Camera2D(int max_pixels) : max_pixels_(max_pixels) {
 void Camera2D::set_res(double res) {
   detail::require_res(res, "res");
   res_ = res;
-  pixel_count_ = detail::useful_size(res, max_pixels_);  // exercise 1, step 3
+  pixel_count_ = detail::useful_size(res, max_pixels_, mistakes_.res_truncated);  // exercise 1, step 3
 }
 
 void Camera2D::set_orbit(const Orbit2D& orbit) {
-  placement_ = placement_matrix(orbit, mistakes_.printed_rotation_sign);  // throws before anything changes
+  placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
   orbit_ = orbit;
 }
 
@@ -86,8 +94,9 @@ void Camera2D::set_free(glm::dvec2 position, glm::dvec2 target, double df, Angle
 }
 
 void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
+  placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
-  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+  pixel_count_ = detail::useful_size(res_, max_pixels_, mistakes_.res_truncated);
 }
 
 glm::dvec2 Camera2D::screen_centre() const { return transform_point(world_from_camera(), {0.0, 0.0}); }
@@ -98,6 +107,7 @@ glm::dvec2 Camera2D::view_direction() const {
 
 double Camera2D::canonical_x(int k) const {
   const double n = pixel_count_;
+  if (mistakes_.mirrored) k = pixel_count_ - 1 - k;  // classic mistake: pixel k stored at n-1-k
   // Exercise 2: the handout prints -1 + 2k/n, the LEFT EDGE of pixel k; the centre is half a pixel on.
   return mistakes_.pixel_edges ? -1.0 + 2.0 * k / n : -1.0 + (2.0 * k + 1.0) / n;
 }
@@ -117,8 +127,14 @@ void Camera2D::primary_rays(int first, int last, Ray2D* rays) const {
   assert(first >= 0 && last < pixel_count_ && "pixel index out of range");
   // P^0 = (x, 0, 1) and P^0 - E0 = (x, -1, 0): the line's part is M2 (the translation) and -M1.
   const glm::dmat3& m = world_from_camera();
-  detail::rays_along_line(glm::dvec2(m[2]), -glm::dvec2(m[1]), glm::dvec2(m[0]),
-                          [this](int k) { return canonical_x(k); }, first, last, !mistakes_.skip_renormalise, rays);
+  // Classic mistake direction_translated: u_k moved as a point, so T(OP) = M2 is added to it.
+  const glm::dvec2 direction_base =
+      mistakes_.direction_translated ? glm::dvec2(m[2]) - glm::dvec2(m[1]) : -glm::dvec2(m[1]);
+  detail::rays_along_line(
+      glm::dvec2(m[2]), direction_base, glm::dvec2(m[0]), [this](int k) { return canonical_x(k); }, first,
+      last, !mistakes_.skip_renormalise, rays);
+  if (mistakes_.eye_origin)  // classic mistake: every ray starts at the eye M_d·E0 = M2 + M1
+    for (int k = first; k <= last; ++k) rays[k - first].origin = glm::dvec2(m[2]) + glm::dvec2(m[1]);
 }
 
 }  // namespace raycam

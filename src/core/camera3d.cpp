@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <stdexcept>
 
 #include "primary_ray.h"
@@ -23,7 +24,7 @@ glm::dvec3 spherical_direction(double theta, double phi) {
 }
 }  // namespace
 
-Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
+Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistakes) {
   detail::require_coordinate(orbit.target.x, "target.x");
   detail::require_coordinate(orbit.target.y, "target.y");
   detail::require_coordinate(orbit.target.z, "target.z");
@@ -32,19 +33,33 @@ Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
   detail::require_angle(orbit.phi, "phi");
   detail::require_focal_distance(orbit.df, "df");
 
-  const glm::dvec3 position = orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
+  // Classic mistakes on the angles: θ and φ swapped, degrees handed to cos/sin as they are.
+  double theta = mistakes.theta_phi_swapped ? orbit.phi : orbit.theta;
+  double phi = mistakes.theta_phi_swapped ? orbit.theta : orbit.phi;
+  if (mistakes.degrees_as_radians) {
+    theta = glm::degrees(theta);
+    phi = glm::degrees(phi);
+  }
+  const glm::dvec3 position = orbit.target + orbit.d * spherical_direction(theta, phi);
   Placement3D placement;
   // With (θ, φ) the angles of CP, R_z(θ)·R_y(φ) takes u0 = -z to -CP/|CP| = v. The handout's route takes
   // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
-  placement.theta = printed_rotation_sign ? orbit.theta + kPi : orbit.theta;
-  placement.phi = printed_rotation_sign ? kPi - orbit.phi : orbit.phi;
-  placement.scale = scaling_3d(1.0, 1.0, orbit.df);  // step 1
-  placement.roll = rotation_z(kRollPsi0);            // step 2
+  placement.theta = mistakes.printed_rotation_sign ? theta + kPi : theta;
+  placement.phi = mistakes.printed_rotation_sign ? kPi - phi : phi;
+  placement.scale = scaling_3d(1.0, 1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);  // step 1
+  // Step 2: the handout prints ψ0 = -π/2, which turns the image upside down (classic mistake).
+  placement.roll = rotation_z(mistakes.upside_down ? -kRollPsi0 : kRollPsi0);
   placement.polar = rotation_y(placement.phi);       // step 3a
   placement.azimuth = rotation_z(placement.theta);   // step 3b
   placement.translation = translation_3d(position);  // step 4
   placement.world_from_camera = construction_step(placement, kConstructionSteps3D);
   return placement;
+}
+
+Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
+  ClassicMistakes mistakes;
+  mistakes.printed_rotation_sign = printed_rotation_sign;
+  return placement_matrix(orbit, mistakes);
 }
 
 glm::dmat4 construction_step(const Placement3D& placement, int step) {
@@ -90,12 +105,12 @@ void Camera3D::set_res(double res_columns, double res_rows) {
   detail::require_res(res_rows, "res (rows)");
   res_columns_ = res_columns;
   res_rows_ = res_rows;
-  columns_ = detail::useful_size(res_columns, max_columns_);
-  rows_ = detail::useful_size(res_rows, max_rows_);
+  columns_ = detail::useful_size(res_columns, max_columns_, mistakes_.res_truncated);
+  rows_ = detail::useful_size(res_rows, max_rows_, mistakes_.res_truncated);
 }
 
 void Camera3D::set_orbit(const Orbit3D& orbit) {
-  placement_ = placement_matrix(orbit, mistakes_.printed_rotation_sign);  // throws before anything changes
+  placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
   orbit_ = orbit;
 }
 
@@ -112,8 +127,10 @@ void Camera3D::set_free(glm::dvec3 position, glm::dvec3 target, double df, Angle
 }
 
 void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
+  placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
-  placement_ = placement_matrix(orbit_, mistakes_.printed_rotation_sign);
+  columns_ = detail::useful_size(res_columns_, max_columns_, mistakes_.res_truncated);
+  rows_ = detail::useful_size(res_rows_, max_rows_, mistakes_.res_truncated);
 }
 
 glm::dvec3 Camera3D::screen_centre() const { return transform_point(world_from_camera(), glm::dvec3(0.0)); }
@@ -125,11 +142,13 @@ glm::dvec3 Camera3D::image_up() const { return transform_vector(world_from_camer
 glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_camera(), {1.0, 0.0, 0.0}); }
 
 double Camera3D::canonical_x(int column) const {
+  if (mistakes_.mirrored) column = columns_ - 1 - column;   // classic mistake: columns reversed
   const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
   return -1.0 + (2.0 * column + offset) / columns_;
 }
 
 double Camera3D::canonical_y(int row) const {
+  if (mistakes_.rows_flipped) row = rows_ - 1 - row;  // classic mistake: row 0 at the bottom
   const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;
   return 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
 }
@@ -151,9 +170,16 @@ void Camera3D::primary_rays(int row, int first_column, int last_column, Ray3D* r
   const glm::dmat4& m = world_from_camera();
   const glm::dvec3 right(m[0]), up(m[1]), back(m[2]), position(m[3]);
   const double y = canonical_y(row);
-  detail::rays_along_line(glm::dvec3(position + y * up), glm::dvec3(y * up - back), right,
-                          [this](int column) { return canonical_x(column); }, first_column, last_column,
-                          !mistakes_.skip_renormalise, rays);
+  // Classic mistake direction_translated: u_k moved as a point, so T(OP) = M3 is added to it.
+  const glm::dvec3 direction_base =
+      mistakes_.direction_translated ? glm::dvec3(position + (y * up - back)) : glm::dvec3(y * up - back);
+  detail::rays_along_line(
+      glm::dvec3(position + y * up), direction_base, right,
+      [this](int column) { return canonical_x(column); }, first_column, last_column,
+      !mistakes_.skip_renormalise, rays);
+  if (mistakes_.eye_origin)  // classic mistake: every ray starts at the eye M_d·E0 = M3 + M2
+    for (int column = first_column; column <= last_column; ++column)
+      rays[column - first_column].origin = position + back;
 }
 
 }  // namespace raycam

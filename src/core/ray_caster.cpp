@@ -20,6 +20,23 @@ Hit nearest_of(const std::vector<Object>& objects, const Ray& ray, IntersectForm
   return hit;
 }
 
+// The classic mistake no_t_min: the smaller root wins whatever its sign.
+template <class Object, class Ray>
+Hit nearest_of_any_sign(const std::vector<Object>& objects, const Ray& ray, IntersectFormula formula) {
+  Hit hit{-1, kNoHit<double>};
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const double t = smaller_root_t(ray.origin, ray.direction, objects[i].centre, objects[i].radius, formula);
+    if (t < hit.t) hit = Hit{int(i), t};
+  }
+  return hit;
+}
+
+template <class Object, class Ray>
+Hit nearest_for(const ClassicMistakes& mistakes, const std::vector<Object>& objects, const Ray& ray,
+                IntersectFormula formula) {
+  return mistakes.no_t_min ? nearest_of_any_sign(objects, ray, formula) : nearest_of(objects, ray, formula);
+}
+
 template <class Scene>
 void store(ColourMap& map, std::size_t index, const Hit& hit, const Scene& scene) {
   map.ids[index] = hit.id;
@@ -39,9 +56,10 @@ Hit nearest_hit(const std::vector<Sphere>& spheres, const Ray3D& ray, IntersectF
 }
 
 namespace {
-// The accelerated casters assume the camera's rays are the right ones: pixel centres and unit directions.
-// The classic mistakes that change that (edges, no renormalising) are on-screen lessons: the plain loop.
-bool plain_only(const ClassicMistakes& mistakes) { return mistakes.pixel_edges || mistakes.skip_renormalise; }
+// The accelerated casters assume the camera's rays are the right ones: pixel centres, unit directions from
+// the screen, t ≥ 0. The classic mistakes that change that are on-screen lessons: the plain loop. Those that
+// only build another M_d or n keep the accelerated casters (tests/core/test_classic_mistakes.cpp).
+bool plain_only(const ClassicMistakes& mistakes) { return !mistakes_change_only_placement(mistakes); }
 }  // namespace
 
 void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
@@ -53,7 +71,7 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
     detail::cast_accelerated(camera, scene, out, options, work);
   } else {
     for (int k = 0; k < n; ++k) {
-      const Hit hit = nearest_hit(scene.circles, camera.primary_ray(k), options.formula);
+      const Hit hit = nearest_for(camera.mistakes(), scene.circles, camera.primary_ray(k), options.formula);
       store(out, out.index(0, camera.column_of_pixel(k)), hit, scene);
     }
     work = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0, 0, 1};
@@ -70,7 +88,8 @@ void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& 
   } else {
     for (int row = 0; row < camera.rows(); ++row)
       for (int column = 0; column < camera.columns(); ++column)
-        store(out, out.index(row, column), nearest_hit(scene.spheres, camera.primary_ray(row, column), options.formula),
+        store(out, out.index(row, column),
+              nearest_for(camera.mistakes(), scene.spheres, camera.primary_ray(row, column), options.formula),
               scene);
     const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
     work = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0, 0, 1};

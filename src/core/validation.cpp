@@ -49,8 +49,8 @@ void require_int_range(long long value, long long lo, long long hi, const std::s
   }
 }
 
-int useful_size(double res, int max_size) {
-  const double n = std::round(res * max_size);
+int useful_size(double res, int max_size, bool truncated) {
+  const double n = truncated ? std::floor(res * max_size) : std::round(res * max_size);
   return int(std::clamp(n, 1.0, double(max_size)));
 }
 

@@ -18,7 +18,7 @@ void require_res(double value, const std::string& field);
 // lo ≤ value ≤ hi
 void require_int_range(long long value, long long lo, long long hi, const std::string& field);
 
-// n = clamp(round(res·N), 1, N)
-int useful_size(double res, int max_size);
+// n = clamp(round(res·N), 1, N); with `truncated` (the classic mistake res_truncated) floor instead of round
+int useful_size(double res, int max_size, bool truncated = false);
 
 }  // namespace raycam::detail

@@ -47,9 +47,15 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
     else if (name == "pixel-edges") options.mistakes.pixel_edges = true;
     else if (name == "no-renormalise") options.mistakes.skip_renormalise = true;
     else if (name == "arccos") options.arccos_route = true;
-    else
-      throw std::invalid_argument("--mistake: expected printed-rotation, pixel-edges, no-renormalise or arccos, got '" +
-                                  name + "'");
+    else if (const MistakeInfo* info = find_mistake(name))
+      options.mistakes.*info->flag = true;
+    else {
+      std::string ids;
+      for (const MistakeInfo& known : kClassicMistakes) ids += std::string(", ") + known.id;
+      throw std::invalid_argument(
+          "--mistake: expected printed-rotation, pixel-edges, no-renormalise, arccos" + ids + ", got '" +
+          name + "'");
+    }
   } else if (flag == "--font-scale") {
     const std::string value = next_value(args, i);
     char* end = nullptr;
@@ -107,11 +113,12 @@ const char* app_options_help() {
          "  --width W --height H  window size in pixels (default 1280x720)\n"
          "  --inspect COL,ROW   pin the ray inspector on a pixel (2D: COL is the bar column, ROW 0)\n"
          "  --step K            show the construction of M_d up to step K (2D: 0..3, 3D: 0..5)\n"
-         "  --mistake NAME      show a classic mistake: printed-rotation, pixel-edges, no-renormalise, arccos\n"
+         "  --mistake NAME      show a classic mistake: arccos or an ID of README \"Classic mistakes\"\n"
          "                      (repeatable)\n"
          "  --font-scale S      lecture mode: scale every font by S in [0.5, 4]\n"
          "  --high-contrast     lecture mode: light, high-contrast theme\n"
-         "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same image)\n"
+         "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same "
+         "image)\n"
          "  --precision P --intersect F --spp N --frame F --exact\n"
          "                      accuracy knobs, as in raycam-cli render --help (README, \"Accuracy\")\n";
 }

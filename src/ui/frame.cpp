@@ -149,7 +149,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
             : "Image: " + std::to_string(state.map.width) + " x " + std::to_string(state.map.height);
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not.
   const std::string mistakes = mistakes_on(state);
-  if (!mistakes.empty()) title += "  |  MISTAKE ON: " + mistakes;
+  if (!mistakes.empty()) title = "MISTAKE ON: " + mistakes + "  |  " + title;  // first: a narrow header clips the end
   title += "###image";
   const int header_colours = mistakes.empty() ? 0 : 2;
   if (header_colours) {

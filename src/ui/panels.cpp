@@ -2,13 +2,13 @@
 // status line · help · shortcuts. (ImGui's default font is ASCII: "theta", not θ.)
 #include "panels.h"
 
-#include <imgui.h>
-
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
+
+#include <imgui.h>
 
 #include "inspection.h"
 #include "mistake_lessons.h"
@@ -205,16 +205,18 @@ void mistakes_section(AppState& state) {
   if (!ImGui::CollapsingHeader("Classic mistakes", any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
   bool changed = false;
   for (const MistakeLesson& lesson : mistake_lessons()) {
+    if (!mistake_applies(state, lesson)) continue;
     ImGui::PushID(lesson.id);
-    changed |= ImGui::Checkbox(lesson.label, &lesson.flag(state));
+    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
     if (lesson.show_me) {
       ImGui::SameLine();
       if (ImGui::SmallButton("show me")) show_mistake(state, lesson);
     }
-    if (!lesson.flag(state) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
-    explain(lesson.what_it_does(state).c_str());
-    if (state.mistake_look_at == lesson.look_at) ImGui::TextColored(kLookAt, "Look: %s", lesson.look_at);
-    if (std::string(lesson.id) == "arccos") arccos_error_line(state);
+    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(mistake_text(state, lesson).c_str());
+    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
+      ImGui::TextColored(kLookAt, "Look: %s", lesson.look_at);
+    if (!lesson.info) arccos_error_line(state);
     ImGui::PopID();
   }
   if (changed) state.cameras_dirty = true;

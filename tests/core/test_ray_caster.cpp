@@ -16,7 +16,9 @@ TEST_CASE("ties go to the lower index, misses to the background", "[caster]") {
   Scene2D scene;
   scene.background = {1, 2, 3};
   scene.circles = {{{0, 0}, 0.5, {10, 0, 0}, "first"}, {{0, 0}, 0.5, {20, 0, 0}, "identical"}};
-  const ColourMap map = cast_primary_rays(camera, scene);
+  CastOptions plain;  // this file tests the plain loop; every other method: test_ties_and_bounds.cpp
+  plain.method = CastMethod::plain;
+  const ColourMap map = cast_primary_rays(camera, scene, plain);
   bool saw_hit = false, saw_miss = false;
   for (int c = 0; c < map.width; ++c) {
     CHECK(map.ids[c] != 1);  // the identical second circle never wins

@@ -1,0 +1,59 @@
+// The classic mistakes students make building the handout's camera, reproducible on purpose: the app's
+// toggles show what each does to the image, and `raycam-cli check` renders a case again with them switched
+// on (alone and in pairs) to name the mistake a student's program made. One definition serves both.
+//
+// Each mistake has a stable ID (the names in README and in `check --report`, never renamed), the
+// dimensions it exists in, and a one-line explanation in English and French that points to the handout's
+// step. The cameras apply the flags (camera2d.cpp, camera3d.cpp) and the plain caster the intersection one
+// (ray_caster.cpp); only mistakes that change M_d alone keep the accelerated casters.
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+
+namespace raycam {
+
+struct ClassicMistakes {
+  bool printed_rotation_sign = false;  // rotation angle from the view vector PC, as printed: looks away
+  bool pixel_edges = false;            // P_k^0 = -1 + 2k/n as printed: left pixel edges, image shifts
+  bool skip_renormalise = false;       // u_k left scaled by H; the intersection assumes |u| = 1
+  bool mirrored = false;               // 2D: pixel k stored at n-1-k; 3D: columns reversed
+  bool upside_down = false;            // 3D: roll ψ0 = -π/2 as printed: the image turned half a turn
+  bool rows_flipped = false;           // 3D: row 0 at the bottom
+  bool degrees_as_radians = false;     // the angles' degree values passed to cos/sin as radians
+  bool no_focal_scale = false;         // H(1, d_f) forgotten: the camera acts as d_f = 1
+  bool direction_translated = false;   // u_k = M_d·(P_k^0 - E0) transformed as a point (translation added)
+  bool eye_origin = false;             // rays start at the eye, not on the screen: objects behind it show
+  bool no_t_min = false;               // hits with t < 0 accepted: the smaller root wins, whatever its sign
+  bool theta_phi_swapped = false;      // 3D: θ used as φ and φ as θ
+  bool res_truncated = false;          // n = floor(res·N) instead of round(res·N)
+};
+
+struct MistakeInfo {
+  const char* id;  // stable: "printed_rotation_sign", …
+  bool ClassicMistakes::*flag;
+  bool in_2d, in_3d;
+  const char* label_en;  // short, for a checkbox
+  const char* label_fr;
+  const char* explanation_en;  // one line, cites the handout's step
+  const char* explanation_fr;
+};
+
+inline constexpr std::size_t kClassicMistakeCount = 13;
+// Every mistake, in the order the app lists them and the diagnosis breaks ties.
+extern const MistakeInfo kClassicMistakes[kClassicMistakeCount];
+
+// nullptr when `id` names no mistake.
+const MistakeInfo* find_mistake(std::string_view id);
+bool any_mistake(const ClassicMistakes& mistakes);
+// True when every mistake that is on only changes M_d or n (the accelerated casters stay exact for them).
+bool mistakes_change_only_placement(const ClassicMistakes& mistakes);
+// "fr" gives the French text, anything else English.
+inline const char* mistake_label(const MistakeInfo& info, std::string_view lang) {
+  return lang == "fr" ? info.label_fr : info.label_en;
+}
+inline const char* mistake_explanation(const MistakeInfo& info, std::string_view lang) {
+  return lang == "fr" ? info.explanation_fr : info.explanation_en;
+}
+
+}  // namespace raycam

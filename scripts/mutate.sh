@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Mutation testing, by hand-picked mutants (not run in CI): each mutant is ONE deliberate bug that a test
+# must catch. For each, the script edits a scratch copy of the tree (never your checkout), rebuilds only the
+# targets that matter, runs the relevant part of the suite, and prints caught / missed.
+#   scripts/mutate.sh                 every mutant
+#   scripts/mutate.sh NAME...         only these (names as printed by --list)
+#   scripts/mutate.sh --list
+# Environment: MUTATE_DIR (scratch, default /tmp/raycam-mutate), JOBS (default 2).
+# Exit status: 0 when every mutant was caught; 1 when one was missed or did not apply (the code it edits moved).
+set -u
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+SCRATCH=${MUTATE_DIR:-/tmp/raycam-mutate}
+JOBS=${JOBS:-2}
+TREE=$SCRATCH/tree
+BUILD=$TREE/build   # inside the tree, as in a checkout: ccache then hits on every untouched file
+export CCACHE_BASEDIR=$SCRATCH CCACHE_DIR=${CCACHE_DIR:-/work/.ccache}
+
+names=() files=() edits=() targets=() tests=()
+# mutant NAME FILE SED-SCRIPT TARGETS CTEST-REGEX
+mutant() { names+=("$1"); files+=("$2"); edits+=("$3"); targets+=("$4"); tests+=("$5"); }
+
+CORE="raycam_core_tests"
+CORE_TESTS="^core:"
+
+# --- the bugs the suite caught before issue 15 ---
+mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = 1.5707963267948966/kRollPsi0 = -1.5707963267948966/' "$CORE" "$CORE_TESTS"
+mutant pixel-edges src/core/camera3d.cpp 's/return -1.0 + (2.0 \* column + offset) \/ columns_;/return -1.0 + (2.0 * column) \/ columns_;/' "$CORE" "$CORE_TESTS"
+mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) ray.direction/if (false) ray.direction/' "$CORE" "$CORE_TESTS"
+mutant printed-rotation-2d src/core/camera2d.cpp 's/printed_rotation_sign ? orbit.theta + 2.0 \* kHalfPi : orbit.theta;/printed_rotation_sign ? orbit.theta : orbit.theta + 2.0 * kHalfPi;/' "$CORE" "$CORE_TESTS"
+mutant negative-t-hits include/raycam/intersect.h 's/if (c > T(0) && b > T(0)) return kNoHit<T>;//; s/if (t_near >= T(0)) return t_near;/return t_near;/' "$CORE" "$CORE_TESTS"
+mutant mirrored-bar include/raycam/camera2d.h 's/int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }/int column_of_pixel(int k) const { return k; }/' "$CORE" "$CORE_TESTS"
+mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/std::max(0, ceil_of(a - kIndexSlack))/std::max(0, ceil_of(a - kIndexSlack) + 1)/' "$CORE" "$CORE_TESTS"
+mutant exact-bar-no-crossings src/core/exact_bar.cpp '/add_direction(base [+-] h \* normal - frame.eye);/d' "$CORE" "$CORE_TESTS"
+# --- the holes issue 15 found ---
+mutant footprint-no-rounding-slack src/core/screen_footprint.cpp 's/slack = 64 \* kEpsilon/slack = 0 * kEpsilon/; s/slack += 16 \* kEpsilon/slack += 0 * kEpsilon/; s/kRelativeSlack = 1e-9;/kRelativeSlack = 0;/; s/kIndexSlack = 1e-6;/kIndexSlack = 0;/' "$CORE" "$CORE_TESTS"
+mutant plain-ties-to-higher-index src/core/ray_caster.cpp 's/if (t < hit.t) hit/if (t <= hit.t) hit/' "$CORE" "$CORE_TESTS"
+mutant fast-ties-to-higher-index src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
+mutant radius-0-accepted src/core/validation.cpp 's/value <= 0.0 || value > kMaxCoordinate/value < 0.0 || value > kMaxCoordinate/' "$CORE" "$CORE_TESTS"
+mutant res-0-accepted src/core/validation.cpp 's/if (!(value > 0.0 \&\& value <= 1.0))/if (!(value >= 0.0 \&\& value <= 1.0))/' "$CORE" "$CORE_TESTS"
+mutant df-below-its-limit-accepted src/core/validation.cpp 's/value >= kMinFocalDistance/value > 0.0/' "$CORE" "$CORE_TESTS"
+mutant roll-left-out-of-the-product src/core/camera3d.cpp 's/const glm::dmat4 factors\[\] = {placement.scale, placement.roll,/const glm::dmat4 factors[] = {placement.scale, glm::dmat4(1.0),/' "$CORE" "$CORE_TESTS"
+mutant cli-error-exits-0 src/cli/main.cpp '0,/return 2;/s//return 0;/' "raycam-cli" "^cli rejects:"
+MUTANTS_END=1
+
+if [ "${1:-}" = "--list" ]; then
+  printf '%s\n' "${names[@]}"
+  exit 0
+fi
+selected=("$@")
+wanted() {
+  [ ${#selected[@]} -eq 0 ] && return 0
+  local s
+  for s in "${selected[@]}"; do [ "$s" = "$1" ] && return 0; done
+  return 1
+}
+
+# A scratch copy of the working tree as it is (tracked and new files, build directories left out).
+mkdir -p "$TREE"
+find "$TREE" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
+(cd "$ROOT" && git ls-files -co --exclude-standard -z | grep -zv '^build/' |
+   tar --null --ignore-failed-read -T - -cf - 2>/dev/null) | tar -xf - -C "$TREE" ||
+  { echo "mutate.sh: copying the tree failed" >&2; exit 2; }
+cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$SCRATCH/configure.log" 2>&1 ||
+  { echo "mutate.sh: configure failed, see $SCRATCH/configure.log" >&2; exit 2; }
+echo "mutate.sh: building the unmutated tree in $BUILD (ccache)"
+cmake --build "$BUILD" -j"$JOBS" > "$SCRATCH/build.log" 2>&1 || { echo "mutate.sh: the unmutated tree does not build, see $SCRATCH/build.log" >&2; exit 2; }
+
+caught=0 missed=0 broken=0
+report=()
+for i in "${!names[@]}"; do
+  name=${names[$i]} file=${files[$i]}
+  wanted "$name" || continue
+  cp "$ROOT/$file" "$TREE/$file"  # pristine
+  sed -i -e "${edits[$i]}" "$TREE/$file"
+  if cmp -s "$ROOT/$file" "$TREE/$file"; then
+    result="NOT APPLIED (the code it edits moved: update the mutant)"
+    broken=$((broken + 1))
+  elif ! cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > "$SCRATCH/$name.build.log" 2>&1; then
+    result="DOES NOT BUILD (see $SCRATCH/$name.build.log)"
+    broken=$((broken + 1))
+  elif ctest --test-dir "$BUILD" -j"$JOBS" -R "${tests[$i]}" --timeout 120 > "$SCRATCH/$name.test.log" 2>&1; then
+    result="MISSED"
+    missed=$((missed + 1))
+  else
+    failing=$(grep -c -E '\*\*\*Failed|\(Failed\)|\*\*\*Timeout|\(SEGFAULT\)|\(Subprocess aborted\)' "$SCRATCH/$name.test.log")
+    result="caught ($failing tests failed)"
+    caught=$((caught + 1))
+  fi
+  cp "$ROOT/$file" "$TREE/$file"  # restored before the next mutant
+  printf '%-32s %s\n' "$name" "$result"
+  report+=("$name: $result")
+done
+# Leave the scratch build matching the unmutated tree.
+cmake --build "$BUILD" -j"$JOBS" > /dev/null 2>&1
+total=$((caught + missed + broken))
+echo "mutate.sh: $caught caught, $missed missed, $broken not applied or not building, of $total mutants"
+[ $missed -eq 0 ] && [ $broken -eq 0 ]
