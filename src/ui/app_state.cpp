@@ -7,6 +7,7 @@
 #include <string>
 
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -119,7 +120,7 @@ bool open_scene(AppState& state, const std::string& path) {
     state.construction_step = -1;
     ++state.scene_version;
     state.cameras_dirty = true;
-    state.message = "opened " + path;
+    state.message = trf("opened %s", path.c_str());
     state.message_is_error = false;
     return true;
   } catch (const std::exception& error) {
@@ -139,7 +140,7 @@ bool save_preset(AppState& state, const std::string& path) {
       if (state.dimension == 3) file.camera.phi_deg = state.orbit3d.phi * 180.0 / 3.141592653589793;
     }
     save_scene_file(file, path);
-    state.message = "saved the camera preset to " + path;
+    state.message = trf("saved the camera preset to %s", path.c_str());
     state.message_is_error = false;
     return true;
   } catch (const std::exception& error) {
@@ -153,7 +154,7 @@ void switch_dimension(AppState& state, int dimension) {
   if (dimension == state.dimension) return;
   if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
     state.scene_path.clear();
-    state.message = "switched to the built-in " + std::to_string(dimension) + "D demo scene";
+    state.message = trf("switched to the built-in %dD demo scene", dimension);
     state.message_is_error = false;
   }
   state.file.dimension = dimension;

@@ -14,6 +14,7 @@
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -52,8 +53,9 @@ struct AppState {
   std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
 
   // ---- display ----
-  float font_scale = 1.0f;
+  float font_scale = 1.0f;  // the font is rasterised at this scale (fonts.h), not stretched
   bool high_contrast = false;
+  Language language = Language::en;  // --lang, else the environment; the frame applies it (text.h)
   bool show_help = false;
   ObserverOrbit observer;
 

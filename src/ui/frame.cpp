@@ -7,11 +7,13 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "fonts.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "observer_renderer.h"
 #include "panels.h"
 #include "raycam/transform.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -66,23 +68,30 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
 // ---- theme ---------------------------------------------------------------------------------------------
 void apply_theme(const AppState& state) {
   static bool applied_contrast = false;
-  static bool first = true;
-  if (first || applied_contrast != state.high_contrast) {
-    ImGuiStyle& style = ImGui::GetStyle();
+  static float applied_scale = 0.0f;
+  static const ImGuiContext* applied_to = nullptr;  // a new context starts with the default style
+  if (applied_to != ImGui::GetCurrentContext() || applied_scale != state.font_scale ||
+      applied_contrast != state.high_contrast) {
+    ImGuiStyle style;  // fresh sizes, then scaled: ScaleAllSizes is relative
     if (state.high_contrast) {
-      ImGui::StyleColorsLight();
+      ImGui::StyleColorsLight(&style);
       style.Colors[ImGuiCol_Text] = {0, 0, 0, 1};
       style.Colors[ImGuiCol_WindowBg] = {1, 1, 1, 1};
       style.FrameBorderSize = 1.0f;
     } else {
-      ImGui::StyleColorsDark();
+      ImGui::StyleColorsDark(&style);
       style.FrameBorderSize = 0.0f;
     }
+    style.ScaleAllSizes(state.font_scale);
+    ImGui::GetStyle() = style;
     applied_contrast = state.high_contrast;
-    first = false;
+    applied_scale = state.font_scale;
+    applied_to = ImGui::GetCurrentContext();
   }
-  ImGui::GetIO().FontGlobalScale = state.font_scale;
+  set_language(state.language);
 }
+
+void prepare_frame(const AppState& state) { update_fonts(state.font_scale); }
 
 // ---- layout and build ----------------------------------------------------------------------------------
 FrameRenderer::FrameRenderer() : observer_(std::make_unique<gl::ObserverRenderer>()) {}
@@ -123,7 +132,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   overhead_window(state, overhead_area, layout);
   if (state.dimension == 3) observer_window(state, observer_area, layout);
 
-  if (begin_fixed_window("raycam", layout.panel)) {
+  if (begin_fixed_window("raycam###panel", layout.panel)) {
     camera_section(state);
     construction_section(state);
     inspector_section(state);
@@ -145,12 +154,12 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
   std::string title =
-      is_2d ? "Colour bar: n = " + std::to_string(state.map.width) + " pixels, column 0 = the eye's left"
-            : "Image: " + std::to_string(state.map.width) + " x " + std::to_string(state.map.height);
-  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not.
+      is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+            : trf("Image: %d × %d###image", state.map.width, state.map.height);
+  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not; first,
+  // because a narrow header clips the end.
   const std::string mistakes = mistakes_on(state);
-  if (!mistakes.empty()) title = "MISTAKE ON: " + mistakes + "  |  " + title;  // first: a narrow header clips the end
-  title += "###image";
+  if (!mistakes.empty()) title = trf("MISTAKE ON: %s", mistakes.c_str()) + "  |  " + title;
   const int header_colours = mistakes.empty() ? 0 : 2;
   if (header_colours) {
     ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
@@ -189,8 +198,9 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const char* title = state.dimension == 2 ? "Overhead view: the plane, the camera and its rays###overhead"
-                                           : "Overhead view: looking down the z axis###overhead";
+  const char* title = state.dimension == 2
+                          ? tr("Overhead view: the plane, the camera and its rays###overhead")
+                          : tr("Overhead view: looking down the z axis###overhead");
   if (begin_fixed_window(title, area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
@@ -211,9 +221,10 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
 
 // ---- observer window -----------------------------------------------------------------------------------
 void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  if (begin_fixed_window("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
-                         "turn the observer, ctrl+wheel: zoom)###observer",
-                         area, ImGuiWindowFlags_NoScrollbar)) {
+  if (begin_fixed_window(
+          tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+             "turn the observer, ctrl+wheel: zoom)###observer"),
+          area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);

@@ -49,6 +49,10 @@ class FrameRenderer {
   std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0;
 };
 
+// Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
+// the state's font scale when it changed (fonts.h). Both hosts (GLFW window, OSMesa) call it every frame.
+void prepare_frame(const AppState& state);
+
 // Dark or high-contrast theme and the font scale (lecture mode).
 void apply_theme(const AppState& state);
 

@@ -3,21 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <stdexcept>
-
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
+#include <stdexcept>
+
+#include "text.h"
 
 namespace raycam::ui {
 
 namespace {
-std::string format(const char* pattern, double a, double b = 0.0) {
-  char text[512];
-  std::snprintf(text, sizeof text, pattern, a, b);
-  return text;
-}
-
 double& focal(AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
 double focal(const AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
 int max_side(const AppState& state) {
@@ -27,9 +22,11 @@ int max_side(const AppState& state) {
 // ---- pixel edges ---------------------------------------------------------------------------------------
 std::string pixel_edges_does(const AppState& state) {
   const int n = std::max(state.map.width, 1);
-  std::string text = format("Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no "
-                            "longer gives a symmetric image.", 1.0 / n);
-  if (n > 32) text += " At n = " + std::to_string(n) + " half a pixel is too small to see: show me.";
+  std::string text =
+      trf("Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
+          "gives a symmetric image.",
+          1.0 / n);
+  if (n > 32) text += " " + trf("At n = %d half a pixel is too small to see: show me.", n);
   return text;
 }
 void pixel_edges_show(AppState& state) { state.res = std::max(0.05, 1.0 / max_side(state)); }
@@ -47,15 +44,18 @@ void res_truncated_show(AppState& state) { state.res = 12.75 / max_side(state); 
 // (tests/ui/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
 std::string renormalise_does(const AppState& state) {
   const double df = focal(state), edge = std::sqrt((state.dimension == 2 ? 1.0 : 2.0) + df * df);
-  std::string text = format("Here |u| = %.2f on the axis to %.2f at the edges. ", df, edge);
+  std::string text = trf("Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
   if (state.accuracy.options.formula == IntersectFormula::stable)
-    text += "The stable test takes |f - (f.u)u| as the ray's distance to the centre; that is a distance only if "
-            "|u| = 1, and otherwise grows with how far the object is: rays miss everything not touching the "
-            "screen, so the image is background (the ground too). With the naive formula objects swell instead.";
+    text +=
+        tr("The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only "
+           "if |u| = 1, and otherwise grows with how far the object is: rays miss everything not touching "
+           "the screen, so the image is background (the ground too). With the naive formula objects swell "
+           "instead.");
   else
-    text += "The naive test Delta = b^2 - c uses b = f.u, too big by |u|: a ray hits when it passes within "
-            "sqrt(r^2 + (|u|^2 - 1) b^2) of the centre, so every object swells, the far ones most, and covers its "
-            "neighbours; t is wrong too. With the stable formula objects vanish instead.";
+    text +=
+        tr("The naive test Δ = b² − c uses b = f·u, too big by |u|: a ray hits when it passes within "
+           "√(r² + (|u|² − 1)·b²) of the centre, so every object swells, the far ones most, and covers its "
+           "neighbours; t is wrong too. With the stable formula objects vanish instead.");
   return text;
 }
 void renormalise_show(AppState& state) { focal(state) = 1.0; }
@@ -96,11 +96,13 @@ void object_behind_screen_show(AppState& state) {
 // ---- arccos route --------------------------------------------------------------------------------------
 std::string arccos_does(const AppState& state) {
   if (state.dimension == 2)
-    return "Placing the camera from P and C with the handout's arccos: an input rounding e becomes an angle error "
-           "sqrt(2e), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
-           "Show me goes to 3D, where the pole makes it visible.";
-  return "Placing the camera from P and C with the handout's arccos: near a pole an input rounding e becomes an "
-         "angle error sqrt(2e); below phi ~ 1e-8 rad cos(phi) rounds to 1, phi becomes 0 and theta is lost.";
+    return tr(
+        "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
+        "error √(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
+        "Show me goes to 3D, where the pole makes it visible.");
+  return tr(
+      "Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes an "
+      "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
 }
 void arccos_show(AppState& state) {
   if (state.dimension == 2) switch_dimension(state, 3);
@@ -121,19 +123,24 @@ const std::vector<MistakeLesson>& mistake_lessons() {
         if (std::string(lesson.id) == id) lesson.what_it_does = does, lesson.show_me = show, lesson.look_at = look;
     };
     extend("pixel_edges", pixel_edges_does, pixel_edges_show,
-           "res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the image jump "
-           "half a pixel");
+           tr_later(
+               "res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the "
+               "image jump half a pixel"));
     extend("skip_renormalise", renormalise_does, renormalise_show,
-           "d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image");
-    extend("res_truncated", nullptr, res_truncated_show, "res N = 12.75: floor gives 12 pixels, round 13; count them");
-    extend("no_focal_scale", nullptr, focal_scale_show, "d_f = 3: without H the field of view stays 90 deg, as at d_f = 1");
-    const char* behind = "the object nearest the target is now between the eye and the screen: the correct camera "
-                         "does not see it, the mistaken one shows it";
+           tr_later("d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of "
+                    "the image"));
+    extend("res_truncated", nullptr, res_truncated_show,
+           tr_later("res·N = 12.75: floor gives 12 pixels, round 13; count them"));
+    extend("no_focal_scale", nullptr, focal_scale_show,
+           tr_later("d_f = 3: without H the field of view stays 90°, as at d_f = 1"));
+    const char* behind = tr_later(
+        "the object nearest the target is now between the eye and the screen: the "
+        "correct camera does not see it, the mistaken one shows it");
     extend("eye_origin", nullptr, object_behind_screen_show, behind);
     extend("no_t_min", nullptr, object_behind_screen_show, behind);
-    all.push_back({"arccos", nullptr, arccos_does, arccos_show,
-                   "phi = 1e-7 deg: arccos returns phi = 0 and theta = 0, so the image turns by theta; toggle to "
-                   "compare"});
+    all.push_back(
+        {"arccos", nullptr, arccos_does, arccos_show,
+         tr_later("φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare")});
     return all;
   }();
   return lessons;
@@ -155,11 +162,12 @@ bool mistake_applies(const AppState& state, const MistakeLesson& lesson) {
   return !lesson.info || (state.dimension == 2 ? lesson.info->in_2d : lesson.info->in_3d);
 }
 const char* mistake_label(const MistakeLesson& lesson) {
-  return lesson.info ? mistake_label(*lesson.info, "en") : "arccos route near a pole";
+  return lesson.info ? mistake_label(*lesson.info, language_code(current_language()))
+                     : tr("arccos route near a pole");
 }
 
 std::string mistake_text(const AppState& state, const MistakeLesson& lesson) {
-  std::string text = lesson.info ? mistake_explanation(*lesson.info, "en") : "";
+  std::string text = lesson.info ? mistake_explanation(*lesson.info, language_code(current_language())) : "";
   if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state);
   return text;
 }

@@ -146,8 +146,9 @@ TEST_CASE("no region of the window is blank", "[render]") {
 TEST_CASE("the window matches the reviewed reference screenshots", "[render][reference]") {
   for (const char* name : {"ui2d", "ui3d"}) {
     const bool is_2d = std::string(name) == "ui2d";
-    const Shot shot = shoot(is_2d ? std::vector<std::string>{"--view", "2d", "--inspect", "100,0"}
-                                  : std::vector<std::string>{"--inspect", "120,140", "--step", "3"});
+    const Shot shot =
+        shoot(is_2d ? std::vector<std::string>{"--lang", "en", "--view", "2d", "--inspect", "100,0"}
+                    : std::vector<std::string>{"--lang", "en", "--inspect", "120,140", "--step", "3"});
     const std::string reference_path = std::string(RAYCAM_REFERENCE_DIR) + "/" + name + ".png";
     const gl::RgbaImage reference = test::load_png(reference_path);
     const int status_top = int(shot.layout.status.y);  // timings and work counts vary
