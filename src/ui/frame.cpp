@@ -4,7 +4,9 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "fonts.h"
@@ -18,7 +20,6 @@
 namespace raycam::ui {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
 const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
 constexpr ImGuiWindowFlags kFixedWindow =
@@ -28,6 +29,25 @@ bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra
   ImGui::SetNextWindowPos({r.x, r.y});
   ImGui::SetNextWindowSize({r.w, r.h});
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
+}
+
+// The image widget shows the canonical screen: in 3D the square [-1, 1]² with +y up; in 2D the segment
+// with canonical +x at the left (column 0 is the eye's left). fx, fy: the mouse in the widget, 0…1. The
+// pixel comes from the core's pixel <-> screen pair, as the caster's pixel centres do.
+PixelIndex pixel_under(const AppState& state, double fx, double fy) {
+  auto pixel_of = [](double raster, int count) { return std::clamp(int(std::floor(raster)), 0, count - 1); };
+  PixelIndex pixel;
+  if (state.dimension == 2) {
+    const Camera2D& camera = state.camera2d;
+    pixel.column =
+        camera.column_of_pixel(pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
+  } else {
+    const Camera3D& camera = state.camera3d;
+    const glm::dvec2 raster = camera.raster_from_screen({2.0 * fx - 1.0, 1.0 - 2.0 * fy});
+    pixel.column = pixel_of(raster.x, camera.columns());
+    pixel.row = pixel_of(raster.y, camera.rows());
+  }
+  return pixel;
 }
 
 // Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
@@ -43,7 +63,8 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
     } else {
       theta -= io.MouseDelta.x * 0.01;
-      if (!is_2d) state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, kPi);
+      if (!is_2d)
+        state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, glm::pi<double>());
     }
     state.cameras_dirty = true;
   }
@@ -181,9 +202,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
                                         0, 0, 1.0f);
     if (ImGui::IsItemHovered() && state.map.width > 0) {
       const ImVec2 mouse = ImGui::GetIO().MousePos;
-      PixelIndex pixel;
-      pixel.column = std::clamp(int((mouse.x - low.x) / (high.x - low.x) * state.map.width), 0, state.map.width - 1);
-      pixel.row = std::clamp(int((mouse.y - low.y) / (high.y - low.y) * state.map.height), 0, state.map.height - 1);
+      const PixelIndex pixel =
+          pixel_under(state, (mouse.x - low.x) / (high.x - low.x), (mouse.y - low.y) / (high.y - low.y));
       state.hovered_pixel = pixel;
       if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
     }
@@ -242,7 +262,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const glm::dvec3 target = state.orbit3d.target;
       const double reach = state.orbit3d.d + state.orbit3d.df;
       const double distance = 1.7 * reach * state.observer.zoom;
-      const double yaw = state.observer.yaw_deg * kPi / 180, pitch = state.observer.pitch_deg * kPi / 180;
+      const double yaw = glm::radians(double(state.observer.yaw_deg)),
+                   pitch = glm::radians(double(state.observer.pitch_deg));
       const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
       const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));
       const glm::mat4 projection = glm::perspective(glm::radians(45.0f), size.x / size.y, float(distance * 0.01), float(distance * 50));
@@ -250,13 +271,12 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
       frame.background = state.file.scene3d.background;
-      const glm::dmat4& m = camera.world_from_camera();
       const glm::dvec3 eye = camera.eye();
-      const glm::dvec3 canonical[4] = {{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
+      const std::array<glm::dvec3, 4> corners = camera.screen_corners();
       const glm::vec4 cyan{0, 0.9f, 1, 1}, faint_cyan{0, 0.9f, 1, 0.45f};
-      for (int i = 0; i < 4; ++i) {
-        const glm::dvec3 corner = transform_point(m, canonical[i]), next = transform_point(m, canonical[(i + 1) % 4]);
-        frame.screen_corners[std::size_t(i)] = glm::vec3(corner);
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        const glm::dvec3 corner = corners[i], next = corners[(i + 1) % corners.size()];
+        frame.screen_corners[i] = glm::vec3(corner);
         frame.lines.push_back({glm::vec3(corner), glm::vec3(next), cyan});
         frame.lines.push_back({glm::vec3(eye), glm::vec3(eye + glm::normalize(corner - eye) * (1.4 * reach)), faint_cyan});
       }

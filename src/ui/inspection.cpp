@@ -30,7 +30,7 @@ InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
     const glm::dvec2 p0 = camera.canonical_pixel(out.k);
     const Ray2D ray = camera.primary_ray(out.k);
     out.canonical_pixel = {p0, 0.0};
-    out.canonical_direction = {p0 - glm::dvec2(0.0, 1.0), 0.0};
+    out.canonical_direction = {p0 - kCanonicalEye2D, 0.0};  // u_k^0 = P_k^0 - E0
     out.origin = {ray.origin, 0.0};
     out.direction = {ray.direction, 0.0};
     out.hit = hit_as_cast(state, pixel, ray, state.file.scene2d.circles);
@@ -39,7 +39,7 @@ InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
     const glm::dvec3 p0 = camera.canonical_pixel(pixel.row, pixel.column);
     const Ray3D ray = camera.primary_ray(pixel.row, pixel.column);
     out.canonical_pixel = p0;
-    out.canonical_direction = p0 - glm::dvec3(0.0, 0.0, 1.0);
+    out.canonical_direction = p0 - kCanonicalEye3D;
     out.origin = ray.origin;
     out.direction = ray.direction;
     out.hit = hit_as_cast(state, pixel, ray, state.file.scene3d.spheres);

@@ -16,30 +16,29 @@ constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; m
 constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
-glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }
+glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
+glm::dvec2 xy(glm::dvec2 p) { return p; }
 
 double camera_reach(const AppState& state) {
   return state.dimension == 2 ? state.orbit2d.d + state.orbit2d.df : state.orbit3d.d + state.orbit3d.df;
 }
 
 // The camera's eye and screen corners in the world (2D: the two screen ends), seen from above.
-std::vector<glm::dvec2> camera_outline(const AppState& state, glm::dvec2* eye) {
-  if (state.dimension == 2) {
-    const glm::dmat3& m = state.camera2d.world_from_camera();
-    *eye = transform_point(m, glm::dvec2(0.0, 1.0));
-    return {transform_point(m, glm::dvec2(-1.0, 0.0)), transform_point(m, glm::dvec2(1.0, 0.0))};
-  }
-  const glm::dmat4& m = state.camera3d.world_from_camera();
-  *eye = xy(transform_point(m, glm::dvec3(0.0, 0.0, 1.0)));
-  return {xy(transform_point(m, glm::dvec3(-1, 1, 0))), xy(transform_point(m, glm::dvec3(1, 1, 0))),
-          xy(transform_point(m, glm::dvec3(1, -1, 0))), xy(transform_point(m, glm::dvec3(-1, -1, 0)))};
+template <class Matrix>
+std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dvec2* eye) {
+  *eye = xy(eye_of(world_from_camera));
+  std::vector<glm::dvec2> outline;
+  for (const auto& corner : screen_corners_of(world_from_camera)) outline.push_back(xy(corner));
+  return outline;
 }
 }  // namespace
 
 // ---- fitting -------------------------------------------------------------------------------------------
 OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size) {
   glm::dvec2 eye;
-  std::vector<glm::dvec2> points = camera_outline(state, &eye);
+  std::vector<glm::dvec2> points = state.dimension == 2
+                                       ? camera_outline(state.camera2d.world_from_camera(), &eye)
+                                       : camera_outline(state.camera3d.world_from_camera(), &eye);
   points.push_back(eye);
   const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
   points.push_back(target);
@@ -86,18 +85,12 @@ void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVe
 template <class Matrix>
 void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world_from_camera, ImU32 colour,
                  double fov_length, bool draw_fov) {
-  std::vector<glm::dvec2> corners;
   glm::dvec2 eye;
-  if constexpr (std::is_same_v<Matrix, glm::dmat3>) {
-    eye = transform_point(world_from_camera, glm::dvec2(0.0, 1.0));
-    corners = {transform_point(world_from_camera, glm::dvec2(-1.0, 0.0)), transform_point(world_from_camera, glm::dvec2(1.0, 0.0))};
-    draw->AddLine(m.to_screen(corners[0]), m.to_screen(corners[1]), colour, 4.0f);
-  } else {
-    eye = xy(transform_point(world_from_camera, glm::dvec3(0.0, 0.0, 1.0)));
-    for (const glm::dvec3& c : {glm::dvec3(-1, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 0)})
-      corners.push_back(xy(transform_point(world_from_camera, c)));
-    for (int i = 0; i < 4; ++i) draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % 4]), colour, 3.0f);
-  }
+  const std::vector<glm::dvec2> corners = camera_outline(world_from_camera, &eye);
+  const bool segment = corners.size() == 2;  // 2D: the screen is a segment
+  for (std::size_t i = 0; i + (segment ? 1 : 0) < corners.size(); ++i)
+    draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % corners.size()]), colour,
+                  segment ? 4.0f : 3.0f);
   if (draw_fov)
     for (const glm::dvec2& corner : corners) {
       const glm::dvec2 along = corner - eye;

@@ -8,6 +8,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 #include <iterator>
 
 #include "inspection.h"
@@ -18,9 +20,8 @@
 namespace raycam::ui {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
 const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
@@ -31,11 +32,12 @@ bool slider_double(const char* label, double& value, double lo, double hi, const
   return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
 }
 
+// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
-  double degrees = radians / kDegree;
+  double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
   if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
-  radians = degrees * kDegree;
+  radians = glm::radians(degrees);
   return true;
 }
 
@@ -104,7 +106,7 @@ void camera_section(AppState& state) {
     }
   }
   ImGui::Text(tr("n = %d × %d, field of view %.1f°"), state.map.width, state.map.height,
-              2.0 * std::atan(1.0 / df) / kDegree);
+              glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()));
   if (ImGui::Button(tr("Reset camera"))) {
     if (is_2d) state.orbit2d = Orbit2D{};
     else state.orbit3d = Orbit3D{};
@@ -136,7 +138,7 @@ void construction_section(AppState& state) {
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), p.alpha / kDegree);
+    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), glm::degrees(p.alpha));
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("R(α)")) {
       matrix_table<3>("R", p.rotation);
@@ -204,14 +206,14 @@ namespace {
 void arccos_error_line(const AppState& state) {
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
-    const glm::dvec2 cp(std::cos(o.theta), std::sin(o.theta));
+    const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, 2 * kPi);
     ImGui::TextColored(kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
   } else {
     const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
     ImGui::TextColored(kDim, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
@@ -406,10 +408,13 @@ void handle_shortcuts(AppState& state) {
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
-  if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
-  if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+  const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
+  if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
+  if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow))
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow))
+    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

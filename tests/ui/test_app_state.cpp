@@ -110,3 +110,17 @@ TEST_CASE("a knob the scene cannot take shows an error and the fast image, never
   plain.method = CastMethod::plain;
   CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
 }
+
+TEST_CASE("placing the app's camera composes M_d once per change, with or without a mistake", "[ui][cache]") {
+  ui::AppState state = state_for({});
+  for (bool printed : {false, true})
+    for (bool arccos : {false, true})
+      for (int dimension : {2, 3}) {
+        state.dimension = dimension;
+        state.mistakes.printed_rotation_sign = printed;
+        state.arccos_route = arccos;
+        const long long before = placements_built_on_this_thread();
+        ui::place_cameras(state);
+        CHECK(placements_built_on_this_thread() - before == 1);
+      }
+}
