@@ -8,6 +8,7 @@
 #include <string>
 
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -140,6 +141,23 @@ bool save_preset(AppState& state, const std::string& path) {
     state.message_is_error = true;
     return false;
   }
+}
+
+void switch_dimension(AppState& state, int dimension) {
+  if (dimension == state.dimension) return;
+  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
+    state.scene_path.clear();
+    state.message = trf("switched to the built-in %dD demo scene", dimension);
+    state.message_is_error = false;
+  }
+  state.file.dimension = dimension;
+  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
+  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
+  state.dimension = dimension;
+  state.construction_step = -1;
+  state.pinned_pixel.reset();
+  ++state.scene_version;
+  state.cameras_dirty = true;
 }
 
 int construction_steps(const AppState& state) {

@@ -11,6 +11,7 @@
 
 #include "fonts.h"
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "observer_renderer.h"
 #include "panels.h"
 #include "raycam/transform.h"
@@ -19,6 +20,8 @@
 namespace raycam::ui {
 
 namespace {
+constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
+const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
@@ -177,10 +180,22 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
-  const std::string title =
+  std::string title =
       is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
             : trf("Image: %d × %d###image", state.map.width, state.map.height);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not; first,
+  // because a narrow header clips the end.
+  const std::string mistakes = mistakes_on(state);
+  if (!mistakes.empty()) title = trf("MISTAKE ON: %s", mistakes.c_str()) + "  |  " + title;
+  const int header_colours = mistakes.empty() ? 0 : 2;
+  if (header_colours) {
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, kMistakeHeader);
+  }
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  ImGui::PopStyleColor(header_colours);
+  layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
+  if (open) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
     const ImVec2 size = is_2d ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
@@ -188,6 +203,9 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_.id())), size, {0, 0}, {1, 1});
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
     layout.image = {low.x, low.y, high.x - low.x, high.y - low.y};
+    // A frame just outside the image, so that where the background ends shows against the window.
+    ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
+                                        0, 0, 1.0f);
     if (ImGui::IsItemHovered() && state.map.width > 0) {
       const ImVec2 mouse = ImGui::GetIO().MousePos;
       const PixelIndex pixel =
@@ -282,11 +300,18 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         offset[a] = cross;
         frame.lines.push_back({t - offset, t + offset, yellow});
       }
+      // The same rays as the image and the overhead view (the middle row), to where the caster hit.
+      for (const InspectedRay& ray : primary_ray_fan(state, kObserverFanRays)) {
+        const Rgb8 c =
+            ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : Rgb8{200, 200, 200};
+        frame.lines.push_back({glm::vec3(ray.origin),
+                               glm::vec3(ray.end(2.0 * reach)),
+                               {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, ray.hit.id >= 0 ? 0.9f : 0.25f}});
+      }
       if (const auto pixel = active_pixel(state)) {
         const InspectedRay ray = inspect_pixel(state, *pixel);
-        const double length = ray.hit.id >= 0 ? ray.hit.t : 2.0 * reach;
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
-        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.origin + length * ray.direction), {1, 0, 1, 1}});
+        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.end(2.0 * reach)), {1, 0, 1, 1}});
       }
       const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
       // GL textures are bottom-up: flip v.

@@ -11,7 +11,8 @@
 namespace raycam::ui {
 
 namespace {
-constexpr int kMaxFanRays = 160;  // rays drawn in the fan; more would be a grey smear
+constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
+constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
@@ -97,44 +98,43 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
 }
 
-// Primary rays of the 2D bar (or of the middle image row in 3D), each drawn to the hit the image shows, in
-// its colour; misses faint, to the edge of the view. The object is the colour map's (the caster's, which
-// is the plain loop's): searching every object for each drawn ray cost 16·10⁶ tests a frame at 10⁵ spheres.
-// The ray's hit on the object the image shows at its pixel (none for the background). Should the map come
-// from other rays than the camera's (a knob of the reference caster), fall back to searching every object.
-template <class Objects, class Ray>
-Hit hit_shown(const Objects& objects, const Ray& ray, int id) {
-  if (id < 0) return Hit{};
-  if (std::size_t(id) >= objects.size()) return nearest_hit(objects, ray, IntersectFormula::stable);
-  const auto& object = objects[std::size_t(id)];
-  const double t =
-      nearest_hit_t(ray.origin, ray.direction, object.centre, object.radius, IntersectFormula::stable);
-  if (t == kNoHit<double>) return nearest_hit(objects, ray, IntersectFormula::stable);
-  return Hit{id, t};
-}
-
+// Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
+// the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
+// lines; many are drawn as translucent wedges between neighbours that hit the same object, so that a dense
+// fan reads as a beam instead of hatching over the discs.
 void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state, double far_length) {
-  const int n = state.map.width;
-  const int stride = std::max(1, (n + kMaxFanRays - 1) / kMaxFanRays);
-  const int row = state.map.height / 2;
-  for (int column = stride / 2; column < n; column += stride) {
-    glm::dvec2 from, direction;
-    Hit hit;
-    if (state.dimension == 2) {
-      const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
-      from = ray.origin;
-      direction = ray.direction;
-      hit = hit_shown(state.file.scene2d.circles, ray, state.map.id_at(0, column));
-    } else {
-      const Ray3D ray = state.camera3d.primary_ray(row, column);
-      from = xy(ray.origin);
-      direction = xy(ray.direction);
-      hit = hit_shown(state.file.scene3d.spheres, ray, state.map.id_at(row, column));
+  const std::vector<InspectedRay> fan = primary_ray_fan(state, kMaxFanRays);
+  const Rgb8 miss_colour{200, 200, 200};
+  auto colour = [&](const InspectedRay& ray) {
+    return ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : miss_colour;
+  };
+  auto from = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.origin)); };
+  auto to = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.end(far_length))); };
+  if (fan.size() <= std::size_t(kMaxFanLines)) {
+    for (const InspectedRay& ray : fan) {
+      const bool missed = ray.hit.id < 0;
+      draw->AddLine(from(ray), to(ray), colour_of(colour(ray), missed ? 70 : 230), missed ? 1.0f : 1.5f);
+      if (!missed) draw->AddCircleFilled(to(ray), 2.5f, colour_of(colour(ray)));
     }
-    const bool missed = hit.id < 0;
-    const glm::dvec2 to = from + direction * (missed ? far_length : hit.t);
-    const Rgb8 colour = missed ? Rgb8{200, 200, 200} : state.map.colour_at(row, column);
-    draw->AddLine(m.to_screen(from), m.to_screen(to), colour_of(colour, missed ? 50 : 200), 1.0f);
+    return;
+  }
+  // Without anti-aliased edges: the faint seams between neighbouring wedges would themselves read as
+  // hatching.
+  const ImDrawListFlags flags = draw->Flags;
+  draw->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  for (std::size_t i = 0; i + 1 < fan.size(); ++i) {
+    const InspectedRay &a = fan[i], &b = fan[i + 1];
+    if (a.hit.id != b.hit.id) continue;
+    const int alpha = a.hit.id < 0 ? 14 : 70;
+    draw->AddTriangleFilled(from(a), to(a), to(b), colour_of(colour(a), alpha));
+    draw->AddTriangleFilled(from(a), to(b), from(b), colour_of(colour(a), alpha));
+  }
+  draw->Flags = flags;
+  for (std::size_t i = 0; i < fan.size(); ++i) {  // the edges of each beam, where the object changes
+    const bool edge = i == 0 || i + 1 == fan.size() || fan[i - 1].hit.id != fan[i].hit.id ||
+                      fan[i + 1].hit.id != fan[i].hit.id;
+    if (edge)
+      draw->AddLine(from(fan[i]), to(fan[i]), colour_of(colour(fan[i]), fan[i].hit.id < 0 ? 60 : 200), 1.0f);
   }
 }
 }  // namespace
@@ -187,10 +187,8 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
 
   if (inspected) {
-    const glm::dvec2 from = xy(inspected->origin), direction = xy(inspected->direction);
-    const double length = inspected->hit.id >= 0 ? inspected->hit.t : far_length;
-    const ImVec2 end = m.to_screen(from + direction * length);
-    draw->AddLine(m.to_screen(from), end, kInspectedRayColour, 3.0f);
+    const ImVec2 end = m.to_screen(xy(inspected->end(far_length)));
+    draw->AddLine(m.to_screen(xy(inspected->origin)), end, kInspectedRayColour, 3.0f);
     if (inspected->hit.id >= 0) draw->AddCircle(end, 6.0f, kInspectedRayColour, 16, 2.0f);
   }
 }

@@ -13,6 +13,7 @@
 #include <iterator>
 
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "raycam/view_setup.h"
 #include "text.h"
 
@@ -22,6 +23,7 @@ namespace {
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
 constexpr double kPi = glm::pi<double>();
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
 bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
@@ -56,22 +58,6 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
-void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    state.message = trf("switched to the built-in %dD demo scene", dimension);
-    state.message_is_error = false;
-  }
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
-  state.construction_step = -1;
-  state.pinned_pixel.reset();
-  ++state.scene_version;
-  state.cameras_dirty = true;
-}
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
@@ -237,21 +223,25 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = any_mistake(state.mistakes) || state.arccos_route;
+  const bool any = !mistakes_on(state).empty();
   if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
-  const char* language = language_code(current_language());  // the texts live beside the mistakes, in the core
-  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
-    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
-    changed |= ImGui::Checkbox(mistake_label(mistake, language), &(state.mistakes.*mistake.flag));
-    explain(mistake_explanation(mistake, language));
+  for (const MistakeLesson& lesson : mistake_lessons()) {
+    if (!mistake_applies(state, lesson)) continue;
+    ImGui::PushID(lesson.id);
+    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    if (lesson.show_me) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
+    }
+    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(mistake_text(state, lesson).c_str());
+    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
+      ImGui::TextColored(kLookAt, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+    if (!lesson.info) arccos_error_line(state);
+    ImGui::PopID();
   }
-  changed |= ImGui::Checkbox(tr("arccos route near a pole"), &state.arccos_route);
-  explain(
-      tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
-         "loses half the digits and the camera snaps to the axis."));
-  arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
 

@@ -6,18 +6,12 @@
 #include <fstream>
 
 #include "app_options.h"
+#include "app_state_for.h"
 #include "raycam/exact_bar.h"
 
 using namespace raycam;
+using raycam::test::state_for;
 
-namespace {
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();)
-    if (!ui::parse_app_option(args, i, options)) throw std::logic_error("not an app option: " + args[i]);
-  return ui::make_app_state(options);
-}
-}  // namespace
 
 TEST_CASE("a bad scene file shows an error naming it and keeps the current scene", "[ui][input]") {
   ui::AppState state = state_for({});
