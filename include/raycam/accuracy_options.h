@@ -1,6 +1,7 @@
 // The accuracy knobs (README, "Accuracy"): precision, intersection formula, samples per pixel, frame,
 // placement route, the exact 2D bar. The command line sets them through src/flags' caster option group; when
-// any knob was given, a command renders with render_with_accuracy() instead of cast_primary_rays().
+// needs_reference_caster() says so (or the placement route is not the orbit), a command renders with
+// render_with_accuracy() instead of cast_primary_rays().
 #pragma once
 
 #include <cstddef>
@@ -20,7 +21,6 @@ struct AccuracyFlags {
   ReferenceOptions options;                          // scalar, formula, spp, frame
   PlacementRoute placement = PlacementRoute::orbit;  // arccos/stable: free placement from P and C
   bool exact = false;                                // 2D only: exact coverage instead of samples
-  bool given = false;                                // any knob set: use the reference caster
 };
 
 // The colour map with the knobs applied: the camera re-placed by the chosen route (same P, C, d_f), cast by

@@ -28,8 +28,10 @@ int run_render(RenderOptions options) {
   if (options.accuracy.exact && setup.dimension != 2)
     throw std::invalid_argument("--exact: only for a 2D scene (3D: use --spp)");
   ColourMap map;
-  if (options.accuracy.given) {
-    map = render_with_accuracy(setup, options.accuracy);
+  const AccuracyFlags& knobs = options.accuracy;
+  options.cast.formula = knobs.options.formula;  // the fast casters take either formula
+  if (needs_reference_caster(knobs.options, knobs.exact) || knobs.placement != PlacementRoute::orbit) {
+    map = render_with_accuracy(setup, knobs);
   } else if (setup.dimension == 2) {
     validate(setup.file.scene2d);
     map = cast_primary_rays(setup.camera2d, setup.file.scene2d, options.cast);

@@ -18,8 +18,8 @@ namespace raycam::flags {
 // Angles are taken in degrees (make_view_setup converts them once).
 CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view);
 
-// --method and --threads into `cast`; the accuracy knobs into `accuracy` (accuracy.given is set when any
-// knob is on the command line: the command then renders with render_with_accuracy).
+// --method and --threads into `cast`; the accuracy knobs into `accuracy` (the command then asks
+// needs_reference_caster() which caster draws).
 CLI::Option_group* add_caster_options(CLI::App& command, CastOptions& cast, AccuracyFlags& accuracy);
 
 }  // namespace raycam::flags

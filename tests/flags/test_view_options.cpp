@@ -111,13 +111,14 @@ TEST_CASE("the accuracy knobs reach the reference caster's options", "[flags][ac
   CHECK(p.accuracy.options.camera_relative);
   CHECK(p.accuracy.placement == PlacementRoute::arccos);
   CHECK(p.accuracy.exact);
-  CHECK(p.accuracy.given);
   CHECK(p.cast.method == CastMethod::binned);
   CHECK(p.cast.threads == 3);
 
   Parsed none;
   REQUIRE(parse({"--method", "plain"}, none) == "");
-  CHECK_FALSE(none.accuracy.given);  // --method is not an accuracy knob: the fast caster stays
+  CHECK(none.accuracy.options.scalar == Scalar::float64);  // --method is not an accuracy knob
+  CHECK(none.accuracy.options.samples_per_pixel == 1);
+  CHECK_FALSE(none.accuracy.exact);
 }
 
 TEST_CASE("the help is generated from the groups, every flag in it", "[flags][help]") {

@@ -5,17 +5,12 @@
 #include <cstdio>
 #include <fstream>
 
-#include "app_flags.h"
 #include "app_options.h"
+#include "app_state_for.h"
 #include "raycam/exact_bar.h"
 
 using namespace raycam;
-
-namespace {
-ui::AppState state_for(const std::vector<std::string>& args) {
-  return ui::make_app_state(flags::parse_app_options(args));
-}
-}  // namespace
+using raycam::test::state_for;
 
 TEST_CASE("a bad scene file shows an error naming it and keeps the current scene", "[ui][input]") {
   ui::AppState state = state_for({});
@@ -113,4 +108,18 @@ TEST_CASE("a knob the scene cannot take shows an error and the fast image, never
   CastOptions plain;
   plain.method = CastMethod::plain;
   CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+}
+
+TEST_CASE("placing the app's camera composes M_d once per change, with or without a mistake", "[ui][cache]") {
+  ui::AppState state = state_for({});
+  for (bool printed : {false, true})
+    for (bool arccos : {false, true})
+      for (int dimension : {2, 3}) {
+        state.dimension = dimension;
+        state.mistakes.printed_rotation_sign = printed;
+        state.arccos_route = arccos;
+        const long long before = placements_built_on_this_thread();
+        ui::place_cameras(state);
+        CHECK(placements_built_on_this_thread() - before == 1);
+      }
 }

@@ -1,0 +1,16 @@
+// The app's state built from command-line options, as the app builds it, for the UI tests.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "app_flags.h"
+#include "app_options.h"
+
+namespace raycam::test {
+
+inline ui::AppState state_for(const std::vector<std::string>& args) {
+  return ui::make_app_state(flags::parse_app_options(args));
+}
+
+}  // namespace raycam::test
