@@ -65,6 +65,7 @@ void toggle_fullscreen(GLFWwindow* window, int& saved_x, int& saved_y, int& save
 
 int main(int argc, char** argv) {
   raycam::ui::AppOptions options;
+  options.demo_on_bad_scene = true;  // open on the demo scene and show why the file did not open
   Run run;
   AppState state;
   try {
@@ -153,7 +154,8 @@ int main(int argc, char** argv) {
         try {
           glFinish();
           raycam::gl::write_png(raycam::gl::read_framebuffer(width, height), path);  // back buffer, before the swap
-          set_message(state, raycam::ui::MessageSource::files, false, raycam::ui::trf("wrote %s", path.c_str()));
+          set_message(state, raycam::ui::MessageSource::files, false,
+                      raycam::ui::trf("wrote %s", path.c_str()));
         } catch (const std::exception& error) {
           set_message(state, raycam::ui::MessageSource::files, true, error.what());
           if (last) exit_code = 1;

@@ -259,9 +259,11 @@ constexpr std::size_t kReadableLine = 120;
 
 bool is_flat(const json& value) {
   if (value.is_array())
-    return value.size() <= 4 && std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_primitive(); });
+    return value.size() <= 4 &&
+           std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_primitive(); });
   if (value.is_object())
-    return std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_primitive() || (v.is_array() && is_flat(v)); });
+    return std::all_of(value.begin(), value.end(),
+                       [](const json& v) { return v.is_primitive() || (v.is_array() && is_flat(v)); });
   return true;
 }
 

@@ -1,10 +1,10 @@
 #include "app_state.h"
 
 #include <chrono>
-#include <cstdio>
-#include <filesystem>
 #include <cmath>
+#include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -43,7 +43,8 @@ void place_cameras(AppState& state) {
     camera.set_mistakes(state.mistakes);
     if (state.arccos_route) {
       const Orbit3D& o = state.orbit3d;
-      const glm::dvec3 direction{std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi)};
+      const glm::dvec3 direction{std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi),
+                                 std::cos(o.phi)};
       camera.set_free(o.target + o.d * direction, o.target, o.df, AngleRoute::handout_arccos);
     } else {
       camera.set_orbit(state.orbit3d);
@@ -130,8 +131,9 @@ bool open_scene(AppState& state, const std::string& path) {
     std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
     const std::string reason = error.what();
     set_message(state, MessageSource::files, true,
-                reason.find(path) == std::string::npos ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
-                                                       : trf("cannot open: %s", reason.c_str()));
+                reason.find(path) == std::string::npos
+                    ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
+                    : trf("cannot open: %s", reason.c_str()));
     return false;
   }
 }
@@ -142,7 +144,8 @@ bool save_preset(AppState& state, const std::string& path) {
     SceneFile file = state.file;
     file.camera = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
     if (state.arccos_route) {  // save what the student set, not what the mistake produced
-      file.camera.theta_deg = (state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta) * 180.0 / 3.141592653589793;
+      file.camera.theta_deg =
+          (state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta) * 180.0 / 3.141592653589793;
       if (state.dimension == 3) file.camera.phi_deg = state.orbit3d.phi * 180.0 / 3.141592653589793;
     }
     save_scene_file(file, path);
@@ -184,13 +187,15 @@ std::string next_screenshot_path(const std::string& directory) {
 
 void request_screenshot(AppState& state) {
   std::error_code ignored;
-  state.screenshot_path = std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string();
+  state.screenshot_path =
+      std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string();
   state.request_screenshot = true;
 }
 
 std::string window_title(const AppState& state) {
-  const std::string scene = state.scene_path.empty() ? std::string(tr("demo scene"))
-                                                     : std::filesystem::path(state.scene_path).filename().string();
+  const std::string scene = state.scene_path.empty()
+                                ? std::string(tr("demo scene"))
+                                : std::filesystem::path(state.scene_path).filename().string();
   return "raycam — " + std::to_string(state.dimension) + "D — " + scene;
 }
 

@@ -50,7 +50,7 @@ struct AppState {
 
   // ---- the lesson ----
   ClassicMistakes mistakes;
-  bool arccos_route = false;  // free placement through the handout's arccos (the mistake near a pole)
+  bool arccos_route = false;   // free placement through the handout's arccos (the mistake near a pole)
   int construction_step = -1;  // -1: the final camera; 0..steps: the handout's frames a → d
   std::optional<PixelIndex> pinned_pixel;   // clicked, or --inspect
   std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
@@ -89,8 +89,8 @@ struct AppState {
   MessageSource message_source = MessageSource::general;
 
   // ---- text inputs (Open and Save as have their own paths) ----
-  char path_input[512] = {};  // Open
-  char save_path[512] = {};   // Save as: never filled with the opened file's path
+  char path_input[512] = {};      // Open
+  char save_path[512] = {};       // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   char export_path[512] = "raycam-colour-map.png";
 };

@@ -118,7 +118,8 @@ Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, F
   const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
   // The panel never takes more than 40% of the width: the image and the views keep the rest at any scale
   // (labels that do not fit beside their widget go above it: panels.cpp, labelled()).
-  layout.panel = {0, 0, std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f), float(height)};
+  layout.panel = {0, 0, std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f),
+                  float(height)};
   const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
   if (state.dimension == 2) {
     const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
@@ -214,10 +215,11 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     const float wrap = status_area.w - 2 * ImGui::GetStyle().WindowPadding.x;
     const float lines = std::ceil(ImGui::CalcTextSize(state.message.c_str(), nullptr, false, wrap).y /
                                   ImGui::GetTextLineHeightWithSpacing());
-    const float h = (lines + 1) * ImGui::GetTextLineHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y +
-                    ImGui::GetStyle().ItemSpacing.y;
+    const float h = (lines + 1) * ImGui::GetTextLineHeightWithSpacing() +
+                    2 * ImGui::GetStyle().WindowPadding.y + ImGui::GetStyle().ItemSpacing.y;
     layout.message = {status_area.x, status_area.y - h, status_area.w, h};
-    if (begin_fixed_window("##message", layout.message, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
+    if (begin_fixed_window("##message", layout.message,
+                           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
       show_message(state, state.message_source);
     ImGui::End();
   }
@@ -236,7 +238,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   const std::string title = fitting_title(
       is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
             : trf("Image: %d × %d###image", state.map.width, state.map.height),
-      is_2d ? trf("Colour bar: n = %d###image", state.map.width) : trf("%d × %d###image", state.map.width, state.map.height),
+      is_2d ? trf("Colour bar: n = %d###image", state.map.width)
+            : trf("%d × %d###image", state.map.width, state.map.height),
       area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -257,10 +260,10 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const std::string title = fitting_title(state.dimension == 2
-                                               ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                                               : tr("Overhead view: looking down the z axis###overhead"),
-                                           tr("Overhead view###overhead"), area.w);
+  const std::string title =
+      fitting_title(state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
+                                         : tr("Overhead view: looking down the z axis###overhead"),
+                    tr("Overhead view###overhead"), area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
@@ -283,8 +286,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
   const std::string title =
       fitting_title(tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
                        "turn the observer, ctrl+wheel: zoom)###observer"),
-                    fitting_title(tr("Observer: the camera among the spheres###observer"), tr("Observer###observer"),
-                                  area.w),
+                    fitting_title(tr("Observer: the camera among the spheres###observer"),
+                                  tr("Observer###observer"), area.w),
                     area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
@@ -309,7 +312,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const glm::dvec3 canonical[4] = {{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
       const glm::vec4 cyan{0, 0.9f, 1, 1}, faint_cyan{0, 0.9f, 1, 0.45f};
       for (int i = 0; i < 4; ++i) {
-        const glm::dvec3 corner = transform_point(m, canonical[i]), next = transform_point(m, canonical[(i + 1) % 4]);
+        const glm::dvec3 corner = transform_point(m, canonical[i]),
+                         next = transform_point(m, canonical[(i + 1) % 4]);
         frame.screen_corners[std::size_t(i)] = glm::vec3(corner);
         frame.lines.push_back({glm::vec3(corner), glm::vec3(next), cyan});
         frame.lines.push_back({glm::vec3(eye), glm::vec3(eye + glm::normalize(corner - eye) * (1.4 * reach)), faint_cyan});
@@ -331,7 +335,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         const InspectedRay ray = inspect_pixel(state, *pixel);
         const double length = ray.hit.id >= 0 ? ray.hit.t : 2.0 * reach;
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
-        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.origin + length * ray.direction), {1, 0, 1, 1}});
+        frame.lines.push_back(
+            {glm::vec3(ray.origin), glm::vec3(ray.origin + length * ray.direction), {1, 0, 1, 1}});
       }
       const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
       // GL textures are bottom-up: flip v.

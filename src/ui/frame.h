@@ -6,9 +6,8 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
-
 #include <glm/mat4x4.hpp>
+#include <memory>
 
 #include "app_state.h"
 #include "colour_map_texture.h"
@@ -26,7 +25,7 @@ struct Rect {
 
 // What the frame showed, for the tests that check it agrees with the core in that very frame.
 struct ShownValues {
-  glm::dmat4 placement{1.0};       // the M_d the construction table showed (2D: embedded in a 4×4)
+  glm::dmat4 placement{1.0};      // the M_d the construction table showed (2D: embedded in a 4×4)
   std::uint64_t map_version = 0;  // the colour map the image texture held
 };
 

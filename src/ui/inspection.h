@@ -8,8 +8,8 @@
 namespace raycam::ui {
 
 struct InspectedRay {
-  PixelIndex pixel;     // image row and column
-  int k = 0;            // 2D: the handout's pixel index (column = n-1-k)
+  PixelIndex pixel;                     // image row and column
+  int k = 0;                            // 2D: the handout's pixel index (column = n-1-k)
   glm::dvec3 canonical_pixel{0.0};      // P_k^0 (z = 0; 2D uses x, y)
   glm::dvec3 canonical_direction{0.0};  // u_k^0 = P_k^0 - E0
   glm::dvec3 origin{0.0};               // P_k = M_d·P_k^0

@@ -11,7 +11,7 @@
 namespace raycam::ui {
 
 namespace {
-constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
+constexpr int kMaxFanRays = 160;          // rays drawn in the fan; more would be a grey smear
 constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
@@ -89,13 +89,16 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   glm::dvec2 eye;
   if constexpr (std::is_same_v<Matrix, glm::dmat3>) {
     eye = transform_point(world_from_camera, glm::dvec2(0.0, 1.0));
-    corners = {transform_point(world_from_camera, glm::dvec2(-1.0, 0.0)), transform_point(world_from_camera, glm::dvec2(1.0, 0.0))};
+    corners = {transform_point(world_from_camera, glm::dvec2(-1.0, 0.0)),
+               transform_point(world_from_camera, glm::dvec2(1.0, 0.0))};
     draw->AddLine(m.to_screen(corners[0]), m.to_screen(corners[1]), colour, 4.0f);
   } else {
     eye = xy(transform_point(world_from_camera, glm::dvec3(0.0, 0.0, 1.0)));
-    for (const glm::dvec3& c : {glm::dvec3(-1, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 0)})
+    for (const glm::dvec3& c :
+         {glm::dvec3(-1, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 0)})
       corners.push_back(xy(transform_point(world_from_camera, c)));
-    for (int i = 0; i < 4; ++i) draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % 4]), colour, 3.0f);
+    for (int i = 0; i < 4; ++i)
+      draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % 4]), colour, 3.0f);
   }
   if (draw_fov)
     for (const glm::dvec2& corner : corners) {

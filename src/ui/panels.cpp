@@ -10,6 +10,9 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <map>
+#include <optional>
+#include <string>
 
 #include "inspection.h"
 #include "raycam/view_setup.h"
@@ -21,9 +24,10 @@ namespace raycam::ui {
 namespace {
 constexpr double kDegree = 3.141592653589793 / 180.0;
 constexpr double kPi = 3.141592653589793;
-int g_tab_key = -1;                   // the host's key index of Tab, taken away from ImGui (take_tab_key)
+int g_tab_key = -1;                    // the host's key index of Tab, taken away from ImGui (take_tab_key)
 long long g_message_shown_frame = -1;  // the frame in which a section showed the message
 glm::dmat4 g_shown_matrix{1.0};        // the last product the construction table showed
+std::map<std::string, std::pair<ImVec2, ImVec2>> g_widget_rects;  // by "###id": where tests click
 
 // The label beside the widget when both fit, else on its own line above a full-width widget: a label is
 // never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
@@ -32,16 +36,22 @@ bool labelled(const char* label, Widget widget) {
   const std::string text = label;
   const std::size_t hidden = text.find("##");
   const std::string shown = text.substr(0, hidden);
-  const std::string id = hidden == std::string::npos ? "##" + text : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
+  const std::string id = hidden == std::string::npos
+                             ? "##" + text
+                             : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
   const float avail = ImGui::GetContentRegionAvail().x;
   const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  bool changed = false;
   if (label_width <= avail * 0.45f) {
     ImGui::SetNextItemWidth(avail - label_width);
-    return widget(label);
+    changed = widget(label);
+  } else {
+    ImGui::TextUnformatted(shown.c_str());
+    ImGui::SetNextItemWidth(avail);
+    changed = widget(id.c_str());
   }
-  ImGui::TextUnformatted(shown.c_str());
-  ImGui::SetNextItemWidth(avail);
-  return widget(id.c_str());
+  g_widget_rects[id] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+  return changed;
 }
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
@@ -88,7 +98,8 @@ void switch_dimension(AppState& state, int dimension) {
   if (dimension == state.dimension) return;
   if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
     state.scene_path.clear();
-    set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));
+    set_message(state, MessageSource::camera, false,
+                trf("switched to the built-in %dD demo scene", dimension));
   }
   state.file.dimension = dimension;
   if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
@@ -149,7 +160,8 @@ void camera_section(AppState& state) {
     }
   }
   ImGui::TextWrapped("%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
-                               2.0 * std::atan(1.0 / df) / kDegree).c_str());
+                               2.0 * std::atan(1.0 / df) / kDegree)
+                               .c_str());
   if (ImGui::Button(tr("Reset camera"))) {
     if (is_2d) state.orbit2d = Orbit2D{};
     else state.orbit3d = Orbit3D{};
@@ -258,7 +270,8 @@ void arccos_error_line(const AppState& state) {
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
   } else {
     const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi),
+                        std::cos(o.phi));
     const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
     ImGui::TextColored(current_theme().hint, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
@@ -272,7 +285,8 @@ void mistakes_section(AppState& state) {
   if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
-  const char* language = language_code(current_language());  // the texts live beside the mistakes, in the core
+  const char* language =
+      language_code(current_language());                 // the texts live beside the mistakes, in the core
   for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
     if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
     changed |= ImGui::Checkbox(mistake_label(mistake, language), &(state.mistakes.*mistake.flag));
@@ -424,11 +438,17 @@ bool message_shown_this_frame(const AppState& state) { return g_message_shown_fr
 
 const glm::dmat4& shown_matrix() { return g_shown_matrix; }
 
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id) {
+  const auto found = g_widget_rects.find(id);
+  if (found == g_widget_rects.end()) return std::nullopt;
+  return found->second;
+}
+
 // ---- status line ---------------------------------------------------------------------------------------
 void status_line(const AppState& state) {
   // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
-  const char* caster =
-      tr(uses_reference_caster(state) ? tr_later("reference caster") : cast_method_name(state.cast_options.method));
+  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                                       : cast_method_name(state.cast_options.method));
   std::string line = trf("frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
   if (state.refine_pending) line += std::string(" · ") + tr("coarse preview while dragging");
   if (ImGui::CalcTextSize(line.c_str()).x > ImGui::GetContentRegionAvail().x)
@@ -490,6 +510,12 @@ void help_overlay(AppState& state) {
 }
 
 // ---- shortcuts -----------------------------------------------------------------------------------------
+bool editing_text() {
+  // ImGui 1.86 keeps io.WantTextInput true after a field was left with Esc: ask which widget is active.
+  const ImGuiContext& g = *GImGui;
+  return g.ActiveId != 0 && g.InputTextState.ID == g.ActiveId;
+}
+
 void take_tab_key() {
   ImGuiIO& io = ImGui::GetIO();
   if (io.KeyMap[ImGuiKey_Tab] >= 0) {  // ImGui moves the focus between text fields on Tab: Tab is ours
@@ -500,12 +526,13 @@ void take_tab_key() {
 
 void handle_shortcuts(AppState& state) {
   ImGuiIO& io = ImGui::GetIO();
-  if (g_tab_key >= 0 && ImGui::IsKeyPressed(g_tab_key, false) && !io.KeyCtrl) {  // always 2D/3D, even in a field
+  if (g_tab_key >= 0 && ImGui::IsKeyPressed(g_tab_key, false) &&
+      !io.KeyCtrl) {  // always 2D/3D, even in a field
     ImGui::ClearActiveID();
     switch_dimension(state, state.dimension == 2 ? 3 : 2);
     return;
   }
-  if (io.WantTextInput) return;  // the arrows, + and - belong to the text field being edited
+  if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
   const bool is_2d = state.dimension == 2;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
   double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
@@ -514,8 +541,10 @@ void handle_shortcuts(AppState& state) {
   bool changed = false;
   if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow))
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow))
+    state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

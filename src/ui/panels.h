@@ -2,7 +2,12 @@
 // widgets report "changed", and only then is anything recomputed).
 #pragma once
 
+#include <imgui.h>
+
 #include <glm/mat4x4.hpp>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "app_state.h"
 
@@ -22,10 +27,15 @@ bool show_message(AppState& state, MessageSource source);
 bool message_shown_this_frame(const AppState& state);
 // The matrix the construction table showed last (2D: its 3×3 in the top-left of a 4×4).
 const glm::dmat4& shown_matrix();
+// Where the labelled widget "###id" (e.g. "###theta") was last drawn, as (min, max) screen corners.
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id);
+// Is a text field (or a slider typed into with ctrl+click) being edited now?
+bool editing_text();
 // Takes Tab away from ImGui's focus cycling (call before ImGui::NewFrame, after the backend set its keys).
 void take_tab_key();
 void help_overlay(AppState& state);
-// Tab (always: 2D/3D), then, unless a text field is being edited: arrow keys, +/-, [ ], PgUp/PgDn, Esc (F1/F11/F12 come from the executable).
+// Tab (always: 2D/3D), then, unless a text field is being edited: arrow keys, +/-, [ ], PgUp/PgDn, Esc
+// (F1/F11/F12 come from the executable).
 void handle_shortcuts(AppState& state);
 
 }  // namespace raycam::ui

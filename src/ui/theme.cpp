@@ -12,7 +12,9 @@ bool g_current_set = false;
 double linear(double channel) {  // sRGB to linear light (WCAG 2 relative luminance)
   return channel <= 0.04045 ? channel / 12.92 : std::pow((channel + 0.055) / 1.055, 2.4);
 }
-double luminance(const ImVec4& c) { return 0.2126 * linear(c.x) + 0.7152 * linear(c.y) + 0.0722 * linear(c.z); }
+double luminance(const ImVec4& c) {
+  return 0.2126 * linear(c.x) + 0.7152 * linear(c.y) + 0.0722 * linear(c.z);
+}
 }  // namespace
 
 ImGuiStyle make_style(bool high_contrast, float scale) {
@@ -45,7 +47,8 @@ ImGuiStyle make_style(bool high_contrast, float scale) {
 ThemeColours theme_colours(bool high_contrast) {
   if (high_contrast)
     return {{0.25f, 0.27f, 0.33f, 1}, {0.72f, 0.0f, 0.0f, 1}, {0.0f, 0.42f, 0.0f, 1}, {1, 1, 1, 1}};
-  return {{0.68f, 0.71f, 0.78f, 1}, {1.0f, 0.42f, 0.38f, 1}, {0.45f, 0.85f, 0.45f, 1}, {0.08f, 0.08f, 0.10f, 1}};
+  return {
+      {0.68f, 0.71f, 0.78f, 1}, {1.0f, 0.42f, 0.38f, 1}, {0.45f, 0.85f, 0.45f, 1}, {0.08f, 0.08f, 0.10f, 1}};
 }
 
 const ThemeColours& current_theme() {
@@ -65,7 +68,8 @@ double contrast_ratio(const ImVec4& a, const ImVec4& b) {
 
 ImVec4 composite(const ImVec4& top, const ImVec4& bottom) {
   const float a = top.w;
-  return {top.x * a + bottom.x * (1 - a), top.y * a + bottom.y * (1 - a), top.z * a + bottom.z * (1 - a), 1.0f};
+  return {top.x * a + bottom.x * (1 - a), top.y * a + bottom.y * (1 - a), top.z * a + bottom.z * (1 - a),
+          1.0f};
 }
 
 }  // namespace raycam::ui

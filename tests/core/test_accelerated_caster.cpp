@@ -99,7 +99,10 @@ TEST_CASE("spheres built to graze pixel-centre rays give the plain loop's ids", 
   test::Random random(7);
   for (int trial = 0; trial < 40; ++trial) {
     Camera3D camera(48, 40);
-    camera.set_orbit({{0, 0, 0}, random.uniform(3, 12), random.uniform(-kPi, kPi), random.uniform(0.1, 3.0),
+    camera.set_orbit({{0, 0, 0},
+                      random.uniform(3, 12),
+                      random.uniform(-kPi, kPi),
+                      random.uniform(0.1, 3.0),
                       random.uniform(0.5, 3)});
     Scene3D scene;
     for (int i = 0; i < 12; ++i) {

@@ -314,7 +314,8 @@ TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[
   CHECK(construction_step(p, 0) == glm::dmat4(1.0));
   CHECK(construction_step(p, 1) == p.scale);
   // After H and the roll, the canonical eye is still on the z axis at height d_f.
-  CHECK(glm::length(transform_point(construction_step(p, 2), glm::dvec3(0, 0, 1)) - glm::dvec3(0, 0, 2.0)) < 1e-12);
+  CHECK(glm::length(transform_point(construction_step(p, 2), glm::dvec3(0, 0, 1)) - glm::dvec3(0, 0, 2.0)) <
+        1e-12);
   CHECK(construction_step(p, 5) == camera.world_from_camera());
   CHECK_THROWS_WITH(construction_step(p, 6), Catch::Contains("construction step"));
 }

@@ -2,7 +2,6 @@
 // the core's colour map (recomputed here from the same parameters in radians), the overhead mapping's
 // positions of the eye, target and screen, and the inspected ray's hit point — plus reviewed reference PNGs.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <set>
 #include <string>
@@ -158,8 +157,10 @@ TEST_CASE("the window matches the reviewed reference screenshots", "[render][ref
       gl::write_png(shot.image, std::string(name) + ".actual.png");
       if (reference.width > 0) test::write_diff(shot.image, reference, 24, std::string(name) + ".diff.png");
     }
-    INFO(name << ": " << d.differing << " of " << d.compared << " pixels differ; actual and diff written to the build "
-              << "directory (a missing reference: review " << name << ".actual.png and copy it to " << reference_path << ")");
+    INFO(name << ": " << d.differing << " of " << d.compared
+              << " pixels differ; actual and diff written to the build "
+              << "directory (a missing reference: review " << name << ".actual.png and copy it to "
+              << reference_path << ")");
     CHECK(ok);
   }
 }

@@ -1,7 +1,6 @@
 // The app's state, without any window: input hygiene (a bad file keeps the scene, options are checked),
 // presets round-trip, and the coarse preview while dragging is refined to the full image afterwards.
 #include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <fstream>
 
