@@ -33,6 +33,7 @@ struct ShownValues {
 struct FrameLayout {
   Rect panel;
   Rect image;     // the colour bar or texture, exactly
+  Rect image_header;  // the image window's title bar (names a classic mistake that is on)
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only

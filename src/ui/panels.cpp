@@ -9,12 +9,15 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 #include <iterator>
 #include <map>
 #include <optional>
 #include <string>
 
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "raycam/view_setup.h"
 #include "text.h"
 #include "theme.h"
@@ -22,8 +25,7 @@
 namespace raycam::ui {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 int g_tab_key = -1;                    // the host's key index of Tab, taken away from ImGui (take_tab_key)
 long long g_message_shown_frame = -1;  // the frame in which a section showed the message
 glm::dmat4 g_shown_matrix{1.0};        // the last product the construction table showed
@@ -63,11 +65,12 @@ bool slider_double(const char* label, double& value, double lo, double hi, const
   });
 }
 
+// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
-  double degrees = radians / kDegree;
+  double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
   if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
-  radians = degrees * kDegree;
+  radians = glm::radians(degrees);
   return true;
 }
 
@@ -94,22 +97,6 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
-void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    set_message(state, MessageSource::camera, false,
-                trf("switched to the built-in %dD demo scene", dimension));
-  }
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
-  state.construction_step = -1;
-  state.pinned_pixel.reset();
-  ++state.scene_version;
-  state.cameras_dirty = true;
-}
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
@@ -159,9 +146,10 @@ void camera_section(AppState& state) {
       changed = true;
     }
   }
-  ImGui::TextWrapped("%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
-                               2.0 * std::atan(1.0 / df) / kDegree)
-                               .c_str());
+  ImGui::TextWrapped(
+      "%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
+                glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()))
+                .c_str());
   if (ImGui::Button(tr("Reset camera"))) {
     if (is_2d) state.orbit2d = Orbit2D{};
     else state.orbit3d = Orbit3D{};
@@ -193,7 +181,7 @@ void construction_section(AppState& state) {
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), p.alpha / kDegree);
+    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), glm::degrees(p.alpha));
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("R(α)")) {
       matrix_table<3>("R", p.rotation);
@@ -263,15 +251,14 @@ namespace {
 void arccos_error_line(const AppState& state) {
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
-    const glm::dvec2 cp(std::cos(o.theta), std::sin(o.theta));
+    const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, 2 * kPi);
     ImGui::TextColored(current_theme().hint, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
   } else {
     const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi),
-                        std::cos(o.phi));
+    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
     ImGui::TextColored(current_theme().hint, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
@@ -281,22 +268,25 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = any_mistake(state.mistakes) || state.arccos_route;
+  const bool any = !mistakes_on(state).empty();
   if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
-  const char* language =
-      language_code(current_language());                 // the texts live beside the mistakes, in the core
-  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
-    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
-    changed |= ImGui::Checkbox(mistake_label(mistake, language), &(state.mistakes.*mistake.flag));
-    explain(mistake_explanation(mistake, language));
+  for (const MistakeLesson& lesson : mistake_lessons()) {
+    if (!mistake_applies(state, lesson)) continue;
+    ImGui::PushID(lesson.id);
+    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    if (lesson.show_me) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
+    }
+    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(mistake_text(state, lesson).c_str());
+    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
+      ImGui::TextColored(current_theme().look_at, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+    if (!lesson.info) arccos_error_line(state);
+    ImGui::PopID();
   }
-  changed |= ImGui::Checkbox(tr("arccos route near a pole"), &state.arccos_route);
-  explain(
-      tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
-         "loses half the digits and the camera snaps to the axis."));
-  arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -455,21 +445,27 @@ void status_line(const AppState& state) {
     line = trf("frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms);
   ImGui::TextUnformatted(line.c_str());
   if (ImGui::IsItemHovered()) {
-    // Work skipped, against what the handout's plain loop would do (every object for every pixel).
-    const CastStats& w = state.stats;
-    const double objects =
-        double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
-    const double plain_tests = double(w.rays) * objects;
     ImGui::BeginTooltip();
-    ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
-    ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
-    ImGui::TextUnformatted(trf("rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
-    ImGui::TextUnformatted(trf("intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
-                               plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0)
-                               .c_str());
-    ImGui::TextUnformatted(trf("objects culled %lld", w.objects_culled).c_str());
+    status_counters(state);
     ImGui::EndTooltip();
   }
+}
+
+void status_counters(const AppState& state) {
+  // Work skipped, against what the handout's plain loop would do (every object for every pixel).
+  const char* caster =
+      tr(uses_reference_caster(state) ? tr_later("reference caster") : cast_method_name(state.cast_options.method));
+  const CastStats& w = state.stats;
+  const double objects =
+      double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
+  const double plain_tests = double(w.rays) * objects;
+  ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
+  ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
+  ImGui::TextUnformatted(trf("rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
+  ImGui::TextUnformatted(trf("intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
+                             plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0)
+                             .c_str());
+  ImGui::TextUnformatted(trf("objects culled %lld", w.objects_culled).c_str());
 }
 
 // ---- help ----------------------------------------------------------------------------------------------
@@ -539,12 +535,13 @@ void handle_shortcuts(AppState& state) {
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
-  if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
-  if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
+  const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
+  if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
+  if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
   if (!is_2d && pressed(ImGuiKey_UpArrow))
-    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
   if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

@@ -21,6 +21,8 @@ void caster_section(AppState& state);
 void files_section(AppState& state);
 void lecture_section(AppState& state);
 void status_line(const AppState& state);
+// The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
+void status_counters(const AppState& state);
 // Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).
 bool show_message(AppState& state, MessageSource source);
 // Did a section show the message this frame? If not, the frame shows it above the status line.

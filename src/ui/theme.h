@@ -11,6 +11,7 @@ struct ThemeColours {
   ImVec4 hint;          // explanations under the widgets
   ImVec4 error;         // messages that say something went wrong (red)
   ImVec4 confirmation;  // messages that say something was done
+  ImVec4 look_at;       // after a mistake's "show me": what to look at
   ImVec4 clear;         // what the host clears the window to (behind the windows' alpha)
 };
 
