@@ -195,7 +195,8 @@ void switch_dimension(AppState& state, int dimension) {
   if (dimension == state.dimension) return;
   if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
     state.scene_path.clear();
-    set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));
+    set_message(state, MessageSource::camera, false,
+                trf("switched to the built-in %dD demo scene", dimension));
   }
   state.file.dimension = dimension;
   if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();

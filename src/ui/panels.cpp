@@ -453,8 +453,8 @@ void status_line(const AppState& state) {
 
 void status_counters(const AppState& state) {
   // Work skipped, against what the handout's plain loop would do (every object for every pixel).
-  const char* caster =
-      tr(uses_reference_caster(state) ? tr_later("reference caster") : cast_method_name(state.cast_options.method));
+  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                                       : cast_method_name(state.cast_options.method));
   const CastStats& w = state.stats;
   const double objects =
       double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());

@@ -46,9 +46,15 @@ ImGuiStyle make_style(bool high_contrast, float scale) {
 
 ThemeColours theme_colours(bool high_contrast) {
   if (high_contrast)
-    return {{0.25f, 0.27f, 0.33f, 1}, {0.72f, 0.0f, 0.0f, 1}, {0.0f, 0.42f, 0.0f, 1}, {0.60f, 0.30f, 0.0f, 1},
+    return {{0.25f, 0.27f, 0.33f, 1},
+            {0.72f, 0.0f, 0.0f, 1},
+            {0.0f, 0.42f, 0.0f, 1},
+            {0.60f, 0.30f, 0.0f, 1},
             {1, 1, 1, 1}};
-  return {{0.68f, 0.71f, 0.78f, 1}, {1.0f, 0.42f, 0.38f, 1}, {0.45f, 0.85f, 0.45f, 1}, {1.0f, 0.75f, 0.3f, 1},
+  return {{0.68f, 0.71f, 0.78f, 1},
+          {1.0f, 0.42f, 0.38f, 1},
+          {0.45f, 0.85f, 0.45f, 1},
+          {1.0f, 0.75f, 0.3f, 1},
           {0.08f, 0.08f, 0.10f, 1}};
 }
 

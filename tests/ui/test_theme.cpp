@@ -45,7 +45,8 @@ TEST_CASE("every text colour of both themes has a contrast of at least 4.5:1 on 
       CHECK(contrast_ratio(c[ImGuiCol_Text], background) >= 4.5);
     }
     // Hints, disabled text, errors and confirmations sit on windows, fields and popups.
-    for (const ImVec4& text : {c[ImGuiCol_TextDisabled], theme.hint, theme.error, theme.confirmation, theme.look_at})
+    for (const ImVec4& text :
+         {c[ImGuiCol_TextDisabled], theme.hint, theme.error, theme.confirmation, theme.look_at})
       for (const ImVec4& background :
            {window, over_window(ImGuiCol_FrameBg), composite(c[ImGuiCol_PopupBg], theme.clear)}) {
         INFO((high_contrast ? "high contrast" : "dark")
