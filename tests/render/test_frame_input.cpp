@@ -61,6 +61,18 @@ void tap(headless::HeadlessRenderer& renderer, ui::AppState& state, int key) {
   renderer.run_frame(state);
 }
 
+// Ctrl+click, as ImGui's sliders take it to type a value: hover, press with ctrl held, release.
+void ctrl_click(headless::HeadlessRenderer& renderer, ui::AppState& state, ImVec2 at) {
+  renderer.move_mouse(at.x, at.y);
+  renderer.run_frame(state);
+  ImGui::GetIO().KeyCtrl = true;
+  renderer.set_mouse_button(0, true);
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, false);
+  ImGui::GetIO().KeyCtrl = false;
+  renderer.run_frame(state);
+}
+
 ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
   return {(r.first.x + r.second.x) / 2, (r.first.y + r.second.y) / 2};
 }
@@ -147,14 +159,7 @@ TEST_CASE(
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
   const auto d_slider = ui::widget_rect("###d");
   REQUIRE(d_slider);
-  renderer.move_mouse(centre(*d_slider).x, centre(*d_slider).y);
-  renderer.run_frame(state);
-  ImGui::GetIO().KeyCtrl = true;
-  renderer.set_mouse_button(0, true);
-  renderer.run_frame(state);
-  renderer.set_mouse_button(0, false);
-  ImGui::GetIO().KeyCtrl = false;
-  renderer.run_frame(state);
+  ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
   const double d = state.orbit3d.d, theta_editing = state.orbit3d.theta;
   tap(renderer, state, ImGuiKey_LeftArrow);
@@ -168,13 +173,7 @@ TEST_CASE(
   tap(renderer, state, ImGuiKey_LeftArrow);
   CHECK(state.orbit3d.theta == Approx(theta_editing - 5 * kDegree));
   // Tab from inside a text field: leaves it and switches.
-  renderer.move_mouse(centre(*d_slider).x, centre(*d_slider).y);
-  ImGui::GetIO().KeyCtrl = true;
-  renderer.set_mouse_button(0, true);
-  renderer.run_frame(state);
-  renderer.set_mouse_button(0, false);
-  ImGui::GetIO().KeyCtrl = false;
-  renderer.run_frame(state);
+  ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
   tap(renderer, state, ImGuiKey_Tab);
   CHECK(state.dimension == 2);
