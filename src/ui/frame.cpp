@@ -134,7 +134,8 @@ void prepare_frame(const AppState& state) {
 }
 
 // ---- layout and build ----------------------------------------------------------------------------------
-FrameRenderer::FrameRenderer() : observer_(std::make_unique<gl::ObserverRenderer>()) {}
+FrameRenderer::FrameRenderer()
+    : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
 FrameRenderer::~FrameRenderer() = default;
 
 Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const {
@@ -224,12 +225,21 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     observer_->set_spheres(state.file.scene3d.spheres);
     uploaded_scene_version_ = state.scene_version;
   }
+<<<<<<< HEAD
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (state.dimension == 3) observer_window(state, observer_area_, layout);
   shown_.placement = shown_matrix();
   shown_.map_version = state.map_version;
   layout.shown = shown_;
+=======
+  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
+    discs_->set_discs(overhead_discs(state));
+    uploaded_disc_version_ = state.scene_version;
+    uploaded_disc_dimension_ = state.dimension;
+  }
+  state.hovered_pixel.reset();
+>>>>>>> main
 
   // The message, if no open section showed it: its own line above the status line, wrapped, never clipped.
   layout.status = status_area;
@@ -311,7 +321,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, *discs_);
       draw->PopClipRect();
     }
   }
@@ -344,6 +354,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
 
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
+      frame.observer_eye = glm::vec3(observer_eye);
       frame.background = state.file.scene3d.background;
       const glm::dvec3 eye = camera.eye();
       const std::array<glm::dvec3, 4> corners = camera.screen_corners();
