@@ -225,21 +225,17 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     observer_->set_spheres(state.file.scene3d.spheres);
     uploaded_scene_version_ = state.scene_version;
   }
-<<<<<<< HEAD
+  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
+    discs_->set_discs(overhead_discs(state));
+    uploaded_disc_version_ = state.scene_version;
+    uploaded_disc_dimension_ = state.dimension;
+  }
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (state.dimension == 3) observer_window(state, observer_area_, layout);
   shown_.placement = shown_matrix();
   shown_.map_version = state.map_version;
   layout.shown = shown_;
-=======
-  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
-    discs_->set_discs(overhead_discs(state));
-    uploaded_disc_version_ = state.scene_version;
-    uploaded_disc_dimension_ = state.dimension;
-  }
-  state.hovered_pixel.reset();
->>>>>>> main
 
   // The message, if no open section showed it: its own line above the status line, wrapped, never clipped.
   layout.status = status_area;

@@ -60,18 +60,14 @@ class FrameRenderer {
 
   gl::ColourMapTexture texture_;
   std::unique_ptr<gl::ObserverRenderer> observer_;
-<<<<<<< HEAD
-  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0;
+  std::unique_ptr<gl::DiscLayer> discs_;
+  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
+  int uploaded_disc_dimension_ = 0;
   FrameLayout last_;  // last frame's rectangles: where the mouse input of this frame lands
   mutable Rect image_area_, overhead_area_, observer_area_;
   Drag left_drag_ = Drag::none;
   bool right_drag_observer_ = false;
   ShownValues shown_;
-=======
-  std::unique_ptr<gl::DiscLayer> discs_;
-  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
-  int uploaded_disc_dimension_ = 0;
->>>>>>> main
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
