@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -69,21 +70,22 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
     Orbit3D& o3 = state.orbit3d;
     o2.theta += jump * (unit(random) - 0.5) * 0.2;
     o3.theta += jump * (unit(random) - 0.5) * 0.2;
-    o3.phi = std::clamp(o3.phi + jump * (unit(random) - 0.5) * 0.2, 0.0, 3.141592653589793);
+    o3.phi = std::clamp(o3.phi + jump * (unit(random) - 0.5) * 0.2, 0.0, glm::pi<double>());
     o2.d = o3.d = std::clamp(o3.d * std::exp((unit(random) - 0.5) * 0.1 * jump), 0.1, 200.0);
     o2.df = o3.df = std::clamp(o3.df * std::exp((unit(random) - 0.5) * 0.1 * jump), 0.05, 20.0);
     if (unit(random) < 0.02) state.res = std::clamp(unit(random), 0.01, 1.0);
     state.cameras_dirty = true;
     const auto start = std::chrono::steady_clock::now();
     renderer.run_frame(state);
-    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    times.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     if (!colour_map_is_consistent(state)) ++bad_frames;
   }
   const long rss_end = resident_kb("VmRSS:"), peak = resident_kb("VmHWM:");
   std::sort(times.begin(), times.end());
   const auto at = [&](double q) { return times[std::min(times.size() - 1, std::size_t(q * double(times.size())))]; };
-  std::printf("soak: %d frames %dx%d (%dD), frame ms: median %.2f, p95 %.2f, max %.2f\n", frames, renderer.width(),
-              renderer.height(), state.dimension, at(0.5), at(0.95), times.back());
+  std::printf("soak: %d frames %dx%d (%dD), frame ms: median %.2f, p95 %.2f, max %.2f\n", frames,
+              renderer.width(), renderer.height(), state.dimension, at(0.5), at(0.95), times.back());
   std::printf("soak: RSS %ld KB after the first frames, %ld KB at the end (%+ld KB), peak %ld KB\n", rss_start, rss_end,
               rss_end - rss_start, peak);
   std::printf("soak: %d frames with an inconsistent colour map\n", bad_frames);

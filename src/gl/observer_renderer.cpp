@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/gtc/constants.hpp>
 
 #include "embedded_shaders.h"
 
@@ -11,12 +12,13 @@ namespace raycam::gl {
 namespace {
 // Unit sphere as (position) vertices and triangle indices, z the polar axis.
 void make_unit_sphere(int slices, int stacks, std::vector<float>& vertices, std::vector<unsigned>& indices) {
-  const float pi = 3.14159265f;
+  const float pi = glm::pi<float>();
   for (int stack = 0; stack <= stacks; ++stack) {
     const float phi = pi * float(stack) / stacks;
     for (int slice = 0; slice <= slices; ++slice) {
       const float theta = 2.0f * pi * float(slice) / slices;
-      vertices.insert(vertices.end(), {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)});
+      vertices.insert(vertices.end(),
+                      {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)});
     }
   }
   for (int stack = 0; stack < stacks; ++stack)
@@ -92,7 +94,8 @@ void ObserverRenderer::set_spheres(const std::vector<Sphere>& spheres) {
   glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
   std::vector<float> instances;
   instances.reserve(count * 7);

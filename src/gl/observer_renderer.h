@@ -5,11 +5,10 @@
 
 #include <array>
 #include <cstddef>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "gl.h"
 #include "raycam/scene.h"

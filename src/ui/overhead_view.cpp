@@ -101,7 +101,8 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
 }
 
 template <class Objects>
-void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects, const std::vector<std::size_t>& order) {
+void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects,
+                const std::vector<std::size_t>& order) {
   for (std::size_t i : order) {
     const auto& object = objects[i];
     const float radius = std::max(1.0f, float(object.radius) * m.scale);

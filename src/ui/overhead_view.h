@@ -2,10 +2,10 @@
 // right and y up, drawn with ImGui's draw list so that they look the same in a window and headless.
 #pragma once
 
-#include <optional>
+#include <imgui.h>
 
 #include <glm/vec2.hpp>
-#include <imgui.h>
+#include <optional>
 
 #include "app_state.h"
 #include "inspection.h"
