@@ -115,7 +115,8 @@ void apply_theme(const AppState& state) {
 void prepare_frame(const AppState& state) { update_fonts(state.font_scale); }
 
 // ---- layout and build ----------------------------------------------------------------------------------
-FrameRenderer::FrameRenderer() : observer_(std::make_unique<gl::ObserverRenderer>()) {}
+FrameRenderer::FrameRenderer()
+    : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
 FrameRenderer::~FrameRenderer() = default;
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
@@ -129,6 +130,11 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (state.dimension == 3 && state.scene_version != uploaded_scene_version_) {
     observer_->set_spheres(state.file.scene3d.spheres);
     uploaded_scene_version_ = state.scene_version;
+  }
+  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
+    discs_->set_discs(overhead_discs(state));
+    uploaded_disc_version_ = state.scene_version;
+    uploaded_disc_dimension_ = state.dimension;
   }
   state.hovered_pixel.reset();
 
@@ -237,7 +243,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, *discs_);
       draw->PopClipRect();
     }
   }
@@ -273,6 +279,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
 
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
+      frame.observer_eye = glm::vec3(observer.eye);
       frame.background = state.file.scene3d.background;
       const glm::dvec3 eye = camera.eye();
       const std::array<glm::dvec3, 4> corners = camera.screen_corners();

@@ -48,7 +48,9 @@ class FrameRenderer {
 
   gl::ColourMapTexture texture_;
   std::unique_ptr<gl::ObserverRenderer> observer_;
-  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0;
+  std::unique_ptr<gl::DiscLayer> discs_;
+  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
+  int uploaded_disc_dimension_ = 0;
   ObserverCamera observer_view_;  // last frame's, for the mouse
 };
 

@@ -13,7 +13,6 @@ namespace raycam::ui {
 namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
 constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
-constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
@@ -52,8 +51,7 @@ void fit_overhead(AppState& state) {
   if (state.dimension == 2)
     for (const Circle& c : state.file.scene2d.circles) include(c.centre, c.radius);
   else
-    for (std::size_t i = 0; i < std::min(state.file.scene3d.spheres.size(), kMaxDiscs); ++i)
-      include(xy(state.file.scene3d.spheres[i].centre), state.file.scene3d.spheres[i].radius);
+    for (const Sphere& s : state.file.scene3d.spheres) include(xy(s.centre), s.radius);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
   state.overhead_low = low;
@@ -107,16 +105,6 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
 }
 
-template <class Objects>
-void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects, const std::vector<std::size_t>& order) {
-  for (std::size_t i : order) {
-    const auto& object = objects[i];
-    const float radius = std::max(1.0f, float(object.radius) * m.scale);
-    draw->AddCircleFilled(m.to_screen(xy(glm::dvec3(object.centre, 0.0))), radius, colour_of(object.colour),
-                          std::clamp(int(radius), 8, 48));
-  }
-}
-
 // Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
 // the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
 // lines; many are drawn as translucent wedges between neighbours that hit the same object, so that a dense
@@ -158,29 +146,40 @@ void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
 }
 }  // namespace
 
+std::vector<gl::Disc> overhead_discs(const AppState& state) {
+  std::vector<gl::Disc> discs;
+  if (state.dimension == 2) {
+    for (const Circle& c : state.file.scene2d.circles) discs.push_back({c.centre, c.radius, c.colour});
+    return discs;
+  }
+  const auto& spheres = state.file.scene3d.spheres;
+  std::vector<std::size_t> order(spheres.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
+  });
+  discs.reserve(order.size());
+  for (std::size_t i : order) discs.push_back({xy(spheres[i].centre), spheres[i].radius, spheres[i].colour});
+  return discs;
+}
+
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(state.dimension == 2 ? state.file.scene2d.background : state.file.scene3d.background));
   draw_axes(draw, m, clip_min, clip_max);
   const double far_length = 3.0 * camera_reach(state);
 
-  if (state.dimension == 2) {
-    std::vector<std::size_t> order(state.file.scene2d.circles.size());
-    std::iota(order.begin(), order.end(), 0);
-    draw_discs(draw, m, state.file.scene2d.circles, order);
-  } else {
-    // From above, the highest sphere top hides the others: draw from the lowest top up.
-    const auto& spheres = state.file.scene3d.spheres;
-    std::vector<std::size_t> order(std::min(spheres.size(), kMaxDiscs));
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
-    });
-    std::vector<Circle> discs;  // the spheres' silhouettes from above
-    for (const Sphere& s : spheres) discs.push_back({xy(s.centre), s.radius, s.colour, {}});
-    draw_discs(draw, m, discs, order);
-  }
+  // One texel per framebuffer pixel (a HiDPI window has more of them than UI pixels).
+  const ImVec2 density = ImGui::GetIO().DisplayFramebufferScale;
+  gl::DiscPlacement placement;
+  placement.origin = {(m.origin.x - clip_min.x) * density.x, (m.origin.y - clip_min.y) * density.y};
+  placement.scale = m.scale * density.x;
+  placement.width = int(std::lround((clip_max.x - clip_min.x) * density.x));
+  placement.height = int(std::lround((clip_max.y - clip_min.y) * density.y));
+  if (placement.width > 0 && placement.height > 0)
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs.texture(placement))), clip_min,
+                   clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
@@ -212,7 +211,7 @@ int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_
     return best;
   }
   const auto& spheres = state.file.scene3d.spheres;
-  for (std::size_t i = 0; i < std::min(spheres.size(), kMaxDiscs); ++i) {
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
     const double top = spheres[i].centre.z + spheres[i].radius;
     if (glm::length(xy(spheres[i].centre) - p) <= spheres[i].radius && top > best_top) best = int(i), best_top = top;
   }

@@ -1,13 +1,16 @@
 // The overhead views: the world seen from above (2D: the plane itself; 3D: looking down -z), with x to the
-// right and y up, drawn with ImGui's draw list so that they look the same in a window and headless.
+// right and y up, drawn with ImGui's draw list so that they look the same in a window and headless; the
+// objects' discs are one cached image in that list (gl/disc_layer.h).
 #pragma once
 
-#include <optional>
-
-#include <glm/vec2.hpp>
 #include <imgui.h>
 
+#include <glm/vec2.hpp>
+#include <optional>
+#include <vector>
+
 #include "app_state.h"
+#include "disc_layer.h"
 #include "inspection.h"
 
 namespace raycam::ui {
@@ -27,9 +30,14 @@ void fit_overhead(AppState& state);
 // The mapping that shows the state's world rectangle centred in the screen rectangle, with a margin.
 OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size);
 
-// Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray.
+// Every object's disc seen from above, in drawing order (3D: from the lowest sphere top up, so the highest
+// hides the others). Give it to a DiscLayer when the scene changes.
+std::vector<gl::Disc> overhead_discs(const AppState& state);
+
+// Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray. `discs` must hold
+// overhead_discs(state).
 void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const AppState& state,
-                   const std::optional<InspectedRay>& inspected);
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs);
 
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const AppState& state, ImVec2 screen_point);
