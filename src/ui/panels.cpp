@@ -106,12 +106,7 @@ void camera_section(AppState& state) {
   }
   ImGui::Text(tr("n = %d × %d, field of view %.1f°"), state.map.width, state.map.height,
               glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()));
-  if (ImGui::Button(tr("Reset camera"))) {
-    if (is_2d) state.orbit2d = Orbit2D{};
-    else state.orbit3d = Orbit3D{};
-    state.res = 1.0;
-    changed = true;
-  }
+  if (ImGui::Button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
   ImGui::SameLine();
   explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   if (changed) state.cameras_dirty = true;
@@ -379,6 +374,7 @@ void help_overlay(AppState& state) {
         {tr_later("PgUp / PgDn"), tr_later("d_f larger / smaller")},
         {tr_later("[ / ]"), tr_later("construction step back / forward")},
         {tr_later("Tab"), tr_later("2D / 3D")},
+        {tr_later("F"), tr_later("fit the overhead view to the scene and the camera")},
         {tr_later("Esc"), tr_later("leave a text field; else unpin the inspected pixel")},
         {tr_later("mouse drag"), tr_later("orbit the camera (overhead: around the target)")},
         {tr_later("wheel"), tr_later("d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom")},
@@ -427,6 +423,7 @@ void handle_shortcuts(AppState& state) {
     if (c == '[') step = std::max(0, step - 1);
     if (c == ']') step = std::min(steps, step + 1);
     if (c == '[' || c == ']') state.construction_step = step == steps ? -1 : step;
+    if (c == 'f' || c == 'F') state.overhead_fit_pending = true;
   }
   if (changed) state.cameras_dirty = true;
 }
