@@ -11,6 +11,7 @@
 
 #include "app_state.h"
 #include "colour_map_texture.h"
+#include "observer_view.h"
 #include "overhead_view.h"
 
 namespace raycam::gl {
@@ -37,6 +38,7 @@ struct FrameLayout {
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only
+  ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
   Rect status;    // the status line (frame time, work done and skipped)
   Rect message;   // the message line above the status line, when no open panel section showed the message
   ShownValues shown;
@@ -68,6 +70,7 @@ class FrameRenderer {
   Drag left_drag_ = Drag::none;
   bool right_drag_observer_ = false;
   ShownValues shown_;
+  ObserverCamera observer_view_;  // last frame's, for the mouse
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
