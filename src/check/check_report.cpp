@@ -61,7 +61,10 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
   const int n = int(report.results.size());
   out += textf(lang, "score: %d / %d cases passed (%.0f %%)\n", report.passed(), n,
                n ? 100.0 * report.passed() / n : 0.0);
-  if (failing(report) > 0) {
+  bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
+  for (const CaseResult& r : report.results)
+    answered = answered || (r.answer && r.status != CaseStatus::pass);
+  if (answered) {
     if (report.diagnosis.empty()) {
       out += text(lang, "diagnosis: no classic mistake, alone or in pairs, reproduces your output.\n");
     } else {

@@ -55,6 +55,9 @@ CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& refere
       }
       result.status = CaseStatus::crash;
       result.detail = "exit status " + std::to_string(run.exit_code);
+      // A shell or the sandbox's init reports a signal as 128 + its number.
+      if (run.exit_code > 128 && run.exit_code <= 128 + 64)
+        result.detail += " (" + signal_text(run.exit_code - 128) + "?)";
       break;
     case RunResult::End::signalled:
       result.status = CaseStatus::crash;
