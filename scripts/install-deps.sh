@@ -6,6 +6,7 @@ packages=(
   libglm-dev nlohmann-json3-dev libstb-dev   # core: math, scene files, PNG output
   catch2                                     # tests
   libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
+  libfontconfig-dev fonts-dejavu-core        # the TrueType font with accents, rasterised at the lecture size
   xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev bubblewrap python3            # command lines; `check`: sandbox and the Python example student

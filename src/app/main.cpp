@@ -131,6 +131,7 @@ int main(int argc, char** argv) {
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       if (width <= 0 || height <= 0) continue;  // minimised
+      raycam::ui::prepare_frame(state);         // fonts at the current scale, before the backend's frame
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
       if (run.frames > 0) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // scripted: no stray hover

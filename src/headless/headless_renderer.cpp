@@ -47,6 +47,7 @@ void HeadlessRenderer::run_frame(ui::AppState& state) {
   ImGuiIO& io = ImGui::GetIO();
   io.DeltaTime = 1.0f / 60.0f;
   io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // no mouse: nothing hovered
+  raycam::ui::prepare_frame(state);          // fonts at the current scale, before the backend's frame
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
   layout_ = frame_->build(state, width_, height_);

@@ -63,6 +63,8 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
     if (value.empty() || *end != '\0' || !(scale >= 0.5 && scale <= 4.0))
       throw std::invalid_argument("--font-scale: expected a number in [0.5, 4], got '" + value + "'");
     options.font_scale = float(scale);
+  } else if (flag == "--lang") {
+    options.language = parse_language_flag(next_value(args, i), flag);
   } else if (flag == "--high-contrast") {
     options.high_contrast = true;
     ++i;
@@ -94,6 +96,7 @@ AppState make_app_state(const AppOptions& options) {
   state.cast_options = options.cast_options;
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
+  state.language = options.language.value_or(language_from_environment());
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
     const int columns = state.dimension == 2 ? state.camera2d.pixel_count() : state.camera3d.columns();
@@ -117,6 +120,7 @@ const char* app_options_help() {
          "                      (repeatable)\n"
          "  --font-scale S      lecture mode: scale every font by S in [0.5, 4]\n"
          "  --high-contrast     lecture mode: light, high-contrast theme\n"
+         "  --lang fr|en        language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
          "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same "
          "image)\n"
          "  --precision P --intersect F --spp N --frame F --exact\n"

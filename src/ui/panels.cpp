@@ -1,39 +1,43 @@
 // Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
-// status line · help · shortcuts. (ImGui's default font is ASCII: "theta", not θ.)
+// status line · help · shortcuts. Every visible string goes through tr()/trf() (text.h).
 #include "panels.h"
-
-#include <algorithm>
-#include <array>
-#include <iterator>
-#include <cmath>
-#include <cstdio>
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+#include <iterator>
+
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
-bool slider_double(const char* label, double& value, double lo, double hi, const char* format, bool logarithmic = false) {
-  float v = float(value);
+// The slider edits the double itself (no float round trip): what the student sets is what the core gets.
+bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
+                   bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-  if (!ImGui::SliderFloat(label, &v, float(lo), float(hi), format, flags)) return false;
-  value = v;
-  return true;
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
 }
 
+// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
-  double degrees = radians / kDegree;
+  double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
-  if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f deg")) return false;
-  radians = degrees * kDegree;
+  if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
+  radians = glm::radians(degrees);
   return true;
 }
 
@@ -54,141 +58,145 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
-void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    state.message = "switched to the built-in " + std::to_string(dimension) + "D demo scene";
-    state.message_is_error = false;
-  }
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
-  state.construction_step = -1;
-  state.pinned_pixel.reset();
-  ++state.scene_version;
-  state.cameras_dirty = true;
-}
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int dimension = state.dimension;
-  bool mode_changed = ImGui::RadioButton("2D camera", &dimension, 2);
+  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &dimension, 2);
   ImGui::SameLine();
-  mode_changed |= ImGui::RadioButton("3D camera", &dimension, 3);
+  mode_changed |= ImGui::RadioButton(tr("3D camera"), &dimension, 3);
   if (mode_changed) switch_dimension(state, dimension);
 
   const bool is_2d = state.dimension == 2;
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  bool changed = slider_double("d_f (focal)", df, 0.05, 20.0, "%.3f", true);
-  changed |= slider_double("d (distance)", d, 0.1, 200.0, "%.2f", true);
-  changed |= slider_degrees("theta", theta, -180.0, 180.0);
-  if (!is_2d) changed |= slider_degrees("phi", state.orbit3d.phi, 0.0, 180.0);
+  bool changed = slider_double(tr("d_f focal distance###df"), df, 0.05, 20.0, "%.3f", true);
+  changed |= slider_double(tr("d distance to C###d"), d, 0.1, 200.0, "%.2f", true);
+  changed |= slider_degrees(tr("θ azimuth###theta"), theta, -180.0, 180.0);
+  if (!is_2d) changed |= slider_degrees(tr("φ polar angle###phi"), state.orbit3d.phi, 0.0, 180.0);
   const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
-  changed |= slider_double("res", state.res, 1.0 / max_size, 1.0, "%.4f", true);
+  changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     float target[2] = {float(state.orbit2d.target.x), float(state.orbit2d.target.y)};
-    if (ImGui::DragFloat2("target C", target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::DragFloat2(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
+                          ImGuiSliderFlags_AlwaysClamp)) {
       state.orbit2d.target = {target[0], target[1]};
       changed = true;
     }
     int n = state.max_pixels_2d;
-    if (ImGui::InputInt("N (max pixels)", &n, 16, 256)) {
+    if (ImGui::InputInt(tr("N max pixels###N"), &n, 16, 256)) {
       state.max_pixels_2d = std::clamp(n, 1, 4096);
       changed = true;
     }
   } else {
     float target[3] = {float(state.orbit3d.target.x), float(state.orbit3d.target.y), float(state.orbit3d.target.z)};
-    if (ImGui::DragFloat3("target C", target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+    if (ImGui::DragFloat3(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
+                          ImGuiSliderFlags_AlwaysClamp)) {
       state.orbit3d.target = {target[0], target[1], target[2]};
       changed = true;
     }
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
-    if (ImGui::InputInt2("max size W, H", size)) {
+    if (ImGui::InputInt2(tr("max size W, H###size"), size)) {
       state.max_columns_3d = std::clamp(size[0], 1, 2048);
       state.max_rows_3d = std::clamp(size[1], 1, 2048);
       changed = true;
     }
   }
-  ImGui::Text("n = %d x %d, field of view %.1f deg", state.map.width, state.map.height,
-              2.0 * std::atan(1.0 / df) / kDegree);
-  if (ImGui::Button("Reset camera")) {
+  ImGui::Text(tr("n = %d × %d, field of view %.1f°"), state.map.width, state.map.height,
+              glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()));
+  if (ImGui::Button(tr("Reset camera"))) {
     if (is_2d) state.orbit2d = Orbit2D{};
     else state.orbit3d = Orbit3D{};
     state.res = 1.0;
     changed = true;
   }
   ImGui::SameLine();
-  explain("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target");
+  explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   if (changed) state.cameras_dirty = true;
 }
 
 // ---- construction of M_d -------------------------------------------------------------------------------
 void construction_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Construction of M_d", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Construction of M_d###construction"), ImGuiTreeNodeFlags_DefaultOpen))
+    return;
   const int steps = construction_steps(state);
   int step = state.construction_step < 0 ? steps : state.construction_step;
-  static const char* const k2D[] = {"a: the canonical camera (identity)", "b: H(1, d_f) sets the focal distance",
-                                    "c: R(theta - 90 deg) turns u0 onto v", "d: T(OP) moves the screen to P"};
-  static const char* const k3D[] = {"the canonical camera (identity)", "1: H(1, 1, d_f) sets the focal distance",
-                                    "2: Rz(+90 deg) rolls the image upright", "3: Ry(phi) tilts u0 into the plane y = 0",
-                                    "4: Rz(theta) turns u0 onto v", "5: T(OP) moves the screen to P"};
-  if (ImGui::SliderInt("step", &step, 0, steps, "%d")) state.construction_step = step == steps ? -1 : step;
-  explain(state.dimension == 2 ? k2D[step] : k3D[step]);
+  static const char* const k2D[] = {
+      tr_later("a: the canonical camera (identity)"), tr_later("b: H(1, d_f) sets the focal distance"),
+      tr_later("c: R(θ − 90°) turns u0 onto v"), tr_later("d: T(OP) moves the screen to P")};
+  static const char* const k3D[] = {tr_later("the canonical camera (identity)"),
+                                    tr_later("1: H(1, 1, d_f) sets the focal distance"),
+                                    tr_later("2: Rz(+90°) rolls the image upright"),
+                                    tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
+                                    tr_later("4: Rz(θ) turns u0 onto v"),
+                                    tr_later("5: T(OP) moves the screen to P")};
+  if (ImGui::SliderInt(tr("step###step"), &step, 0, steps, "%d"))
+    state.construction_step = step == steps ? -1 : step;
+  explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text("M_d = T(OP) . R(alpha) . H(1, d_f), alpha = %.1f", p.alpha / kDegree);
+    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), glm::degrees(p.alpha));
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("R(alpha)")) { matrix_table<3>("R", p.rotation); ImGui::TreePop(); }
+    if (ImGui::TreeNode("R(α)")) {
+      matrix_table<3>("R", p.rotation);
+      ImGui::TreePop();
+    }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-    ImGui::Text(step == steps ? "M_d" : "product of the first %d factors", step);
+    ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
     matrix_table<3>("M", construction_step(p, step));
   } else {
     const Placement3D& p = state.camera3d.placement();
-    ImGui::Text("M_d = T . Rz(theta) . Ry(phi) . Rz(90) . H");
+    ImGui::TextUnformatted("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
     if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(psi0 = 90 deg)")) { matrix_table<4>("Roll", p.roll); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Ry(phi)")) { matrix_table<4>("Ry", p.polar); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(theta)")) { matrix_table<4>("Rz", p.azimuth); ImGui::TreePop(); }
+    if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
+      matrix_table<4>("Roll", p.roll);
+      ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("Ry(φ)")) {
+      matrix_table<4>("Ry", p.polar);
+      ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("Rz(θ)")) {
+      matrix_table<4>("Rz", p.azimuth);
+      ImGui::TreePop();
+    }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
-    ImGui::Text(step == steps ? "M_d" : "product of the first %d factors", step);
+    ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
     matrix_table<4>("M", construction_step(p, step));
   }
 }
 
 // ---- ray inspector -------------------------------------------------------------------------------------
 void inspector_section(const AppState& state) {
-  if (!ImGui::CollapsingHeader("Ray inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr("Ray inspector###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const auto pixel = active_pixel(state);
   if (!pixel) {
-    explain("Hover a pixel of the colour bar or image to see its ray; click to pin it.");
+    explain(tr("Hover a pixel of the colour bar or image to see its ray; click to pin it."));
     return;
   }
   const InspectedRay ray = inspect_pixel(state, *pixel);
   if (state.dimension == 2) {
-    ImGui::Text("column %d = pixel k = %d (k = n-1-column)", pixel->column, ray.k);
+    ImGui::Text(tr("column %d = pixel k = %d (k = n−1−column)"), pixel->column, ray.k);
     ImGui::Text("P_k^0 = (%.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y);
     ImGui::Text("u_k^0 = (%.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y);
     ImGui::Text("P_k   = (%.4f, %.4f)", ray.origin.x, ray.origin.y);
     ImGui::Text("u_k   = (%.4f, %.4f)", ray.direction.x, ray.direction.y);
   } else {
-    ImGui::Text("row %d, column %d", pixel->row, pixel->column);
+    ImGui::Text(tr("row %d, column %d"), pixel->row, pixel->column);
     ImGui::Text("P^0 = (%.4f, %.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y, ray.canonical_pixel.z);
     ImGui::Text("u^0 = (%.4f, %.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y, ray.canonical_direction.z);
     ImGui::Text("P   = (%.4f, %.4f, %.4f)", ray.origin.x, ray.origin.y, ray.origin.z);
     ImGui::Text("u   = (%.4f, %.4f, %.4f)", ray.direction.x, ray.direction.y, ray.direction.z);
   }
   if (ray.hit.id < 0) {
-    ImGui::Text("hit: nothing (background)");
+    ImGui::TextUnformatted(tr("hit: nothing (background)"));
   } else {
     const std::string& name = state.dimension == 2 ? state.file.scene2d.circles[std::size_t(ray.hit.id)].name
                                                    : state.file.scene3d.spheres[std::size_t(ray.hit.id)].name;
-    ImGui::Text("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t);
+    ImGui::Text(tr("hit: object %d %s at t = %.4f"), ray.hit.id, name.c_str(), ray.hit.t);
   }
 }
 
@@ -198,16 +206,16 @@ namespace {
 void arccos_error_line(const AppState& state) {
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
-    const glm::dvec2 cp(std::cos(o.theta), std::sin(o.theta));
+    const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, 2 * kPi);
-    ImGui::TextColored(kDim, "theta error now: arccos %.1e rad, atan2 %.1e rad",
+    ImGui::TextColored(kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
   } else {
     const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
-    ImGui::TextColored(kDim, "phi error now: arccos %.1e rad, atan2 %.1e rad",
+    ImGui::TextColored(kDim, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
                        std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
   }
@@ -215,18 +223,25 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = any_mistake(state.mistakes) || state.arccos_route;
-  if (!ImGui::CollapsingHeader("Classic mistakes", any ? ImGuiTreeNodeFlags_DefaultOpen : 0)) return;
+  const bool any = !mistakes_on(state).empty();
+  if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+    return;
   bool changed = false;
-  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
-    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
-    changed |= ImGui::Checkbox(mistake_label(mistake, "en"), &(state.mistakes.*mistake.flag));
-    explain(mistake_explanation(mistake, "en"));
+  for (const MistakeLesson& lesson : mistake_lessons()) {
+    if (!mistake_applies(state, lesson)) continue;
+    ImGui::PushID(lesson.id);
+    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    if (lesson.show_me) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
+    }
+    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(mistake_text(state, lesson).c_str());
+    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
+      ImGui::TextColored(kLookAt, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+    if (!lesson.info) arccos_error_line(state);
+    ImGui::PopID();
   }
-  changed |= ImGui::Checkbox("arccos route near a pole", &state.arccos_route);
-  explain("placing the camera from P and C with the handout's arccos: near theta = 0 (2D) or phi = 0 (3D) arccos "
-          "loses half the digits and the camera snaps to the axis.");
-  arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -239,9 +254,9 @@ bool choice(const char* label, T& value, const Options& options) {
   for (const auto& [v, name] : options)
     if (v == value) current = name;
   bool changed = false;
-  if (ImGui::BeginCombo(label, current)) {
+  if (ImGui::BeginCombo(label, tr(current))) {
     for (const auto& [v, name] : options)
-      if (ImGui::Selectable(name, v == value) && v != value) {
+      if (ImGui::Selectable(tr(name), v == value) && v != value) {
         value = v;
         changed = true;
       }
@@ -252,12 +267,15 @@ bool choice(const char* label, T& value, const Options& options) {
 }  // namespace
 
 void caster_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Caster and accuracy", uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+  if (!ImGui::CollapsingHeader(tr("Caster and accuracy###caster"),
+                               uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
-  static constexpr std::pair<Scalar, const char*> kScalars[] = {
-      {Scalar::float32, "float"}, {Scalar::float64, "double"}, {Scalar::extended, "long double"}};
+  static constexpr std::pair<Scalar, const char*> kScalars[] = {{Scalar::float32, tr_later("float")},
+                                                                {Scalar::float64, tr_later("double")},
+                                                                {Scalar::extended, tr_later("long double")}};
   static constexpr std::pair<IntersectFormula, const char*> kFormulas[] = {
-      {IntersectFormula::stable, "stable (Ray Tracing Gems)"}, {IntersectFormula::naive, "naive (b^2 - c)"}};
+      {IntersectFormula::stable, tr_later("stable (Ray Tracing Gems)")},
+      {IntersectFormula::naive, tr_later("naive (b² − c)")}};
   static constexpr std::pair<int, const char*> kSamples[] = {{1, "1"}, {4, "4"}, {16, "16"}, {64, "64"}};
   ReferenceOptions& knobs = state.accuracy.options;
   static const auto kMethods = [] {  // the core's list and names
@@ -265,35 +283,37 @@ void caster_section(AppState& state) {
     for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = {kCastMethods[i], cast_method_name(kCastMethods[i])};
     return methods;
   }();
-  bool changed = choice("method", state.cast_options.method, kMethods);
-  explain("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out of "
-          "view and test each object only on the pixels its projection can cover. The status line shows the "
-          "work done and skipped.");
-  changed |= choice("precision", knobs.scalar, kScalars);
-  changed |= choice("intersection", knobs.formula, kFormulas);
-  changed |= choice("samples per pixel", knobs.samples_per_pixel, kSamples);
-  changed |= ImGui::Checkbox("camera-relative rays", &knobs.camera_relative);
-  if (state.dimension == 2) changed |= ImGui::Checkbox("exact bar (area-weighted)", &state.accuracy.exact);
+  bool changed = choice(tr("method###method"), state.cast_options.method, kMethods);
+  explain(
+      tr("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
+         "of view and test each object only on the pixels its projection can cover. The status line's "
+         "tooltip shows the work done and skipped."));
+  changed |= choice(tr("precision###precision"), knobs.scalar, kScalars);
+  changed |= choice(tr("intersection###intersection"), knobs.formula, kFormulas);
+  changed |= choice(tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
+  changed |= ImGui::Checkbox(tr("camera-relative rays"), &knobs.camera_relative);
+  if (state.dimension == 2)
+    changed |= ImGui::Checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
-              ? "These knobs use the reference caster: slower, and the method above is not used. Which "
-                "settings to use for what: README, Accuracy."
-              : "double, 1 sample, world coordinates: the fast caster.");
+              ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
+                   "settings to use for what: README, Accuracy.")
+              : tr("double, 1 sample, world coordinates: the fast caster."));
   if (changed) state.cameras_dirty = true;
 }
 
 // ---- files ---------------------------------------------------------------------------------------------
 void files_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Scene file")) return;
-  ImGui::InputText("path", state.path_input, sizeof state.path_input);
-  if (ImGui::Button("Open")) open_scene(state, state.path_input);
+  if (!ImGui::CollapsingHeader(tr("Scene file###files"))) return;
+  ImGui::InputText(tr("path###path"), state.path_input, sizeof state.path_input);
+  if (ImGui::Button(tr("Open"))) open_scene(state, state.path_input);
   ImGui::SameLine();
-  if (ImGui::Button("Save camera preset")) save_preset(state, state.path_input);
-  explain("or drop a scene file on the window");
-  ImGui::InputText("export", state.export_path, sizeof state.export_path);
-  if (ImGui::Button("Export colour map PNG")) {
+  if (ImGui::Button(tr("Save camera preset"))) save_preset(state, state.path_input);
+  explain(tr("or drop a scene file on the window"));
+  ImGui::InputText(tr("export###export"), state.export_path, sizeof state.export_path);
+  if (ImGui::Button(tr("Export colour map PNG"))) {
     try {
       write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
-      state.message = std::string("wrote ") + state.export_path;
+      state.message = trf("wrote %s", state.export_path);
       state.message_is_error = false;
     } catch (const std::exception& error) {
       state.message = error.what();
@@ -301,17 +321,21 @@ void files_section(AppState& state) {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Screenshot (F12)")) state.request_screenshot = true;
+  if (ImGui::Button(tr("Screenshot (F12)"))) state.request_screenshot = true;
 }
 
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
-  if (!ImGui::CollapsingHeader("Lecture mode")) return;
-  ImGui::SliderFloat("font scale", &state.font_scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-  ImGui::Checkbox("high contrast", &state.high_contrast);
-  if (ImGui::Button("Fullscreen (F11)")) state.request_fullscreen = true;
+  if (!ImGui::CollapsingHeader(tr("Lecture mode###lecture"))) return;
+  ImGui::SliderFloat(tr("font scale###font_scale"), &state.font_scale, 0.75f, 3.0f, "%.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
+  ImGui::Checkbox(tr("high contrast"), &state.high_contrast);
+  static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
+                                                                    {Language::fr, tr_later("Français")}};
+  choice(tr("Language / Langue###language"), state.language, kLanguages);
+  if (ImGui::Button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
   ImGui::SameLine();
-  if (ImGui::Button("Help (F1)")) state.show_help = !state.show_help;
+  if (ImGui::Button(tr("Help (F1)"))) state.show_help = !state.show_help;
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
@@ -320,15 +344,16 @@ void status_line(const AppState& state) {
   const CastStats& w = state.stats;
   const double objects = double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
   const double plain_tests = double(w.rays) * objects;
-  ImGui::Text("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld (%.1f%% of plain) | culled %lld",
+  ImGui::Text(tr("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | "
+                 "tests %lld (%.1f%% of plain) | culled %lld"),
               state.frame_ms, state.cast_ms,
-              uses_reference_caster(state) ? "reference caster" : cast_method_name(state.cast_options.method),
-              state.cast_count,
-              state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
+              tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                              : cast_method_name(state.cast_options.method)),
+              state.cast_count, state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
               plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0, w.objects_culled);
   if (state.refine_pending) {
     ImGui::SameLine();
-    ImGui::TextColored(kDim, "| coarse preview while dragging");
+    ImGui::TextColored(kDim, "| %s", tr("coarse preview while dragging"));
   }
   if (!state.message.empty()) {
     ImGui::SameLine();
@@ -340,20 +365,35 @@ void status_line(const AppState& state) {
 void help_overlay(AppState& state) {
   if (!state.show_help) return;
   ImGui::SetNextWindowPos({ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
-  if (ImGui::Begin("Keyboard and mouse (F1 closes)", &state.show_help,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
-    static const char* const kLines[] = {
-        "F1            this help",           "F11           fullscreen",
-        "F12           screenshot (raycam-screenshot.png)",
-        "Left/Right    theta -/+ 5 deg",     "Up/Down       phi -/+ 5 deg (3D)",
-        "+ / -         d closer / further",  "PgUp / PgDn   d_f larger / smaller",
-        "[ / ]         construction step back / forward", "Tab           2D / 3D",
-        "Esc           unpin the inspected pixel",
-        "mouse drag    orbit the camera (overhead: around the target)",
-        "wheel         d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom",
-        "right drag    turn the observer (3D)", "double-click  make an object the target",
-        "click a pixel pin the ray inspector"};
-    for (const char* line : kLines) ImGui::TextUnformatted(line);
+  if (ImGui::Begin(tr("Keyboard and mouse (F1 closes)###help"), &state.show_help,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoCollapse)) {
+    // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
+    static const std::pair<const char*, const char*> kLines[] = {
+        {tr_later("F1"), tr_later("this help")},
+        {tr_later("F11"), tr_later("fullscreen")},
+        {tr_later("F12"), tr_later("numbered screenshot (raycam-screenshot-NNN.png)")},
+        {tr_later("← / →"), tr_later("θ −/+ 5°")},
+        {tr_later("↑ / ↓"), tr_later("φ −/+ 5° (3D)")},
+        {tr_later("+ / −"), tr_later("d closer / further")},
+        {tr_later("PgUp / PgDn"), tr_later("d_f larger / smaller")},
+        {tr_later("[ / ]"), tr_later("construction step back / forward")},
+        {tr_later("Tab"), tr_later("2D / 3D")},
+        {tr_later("Esc"), tr_later("leave a text field; else unpin the inspected pixel")},
+        {tr_later("mouse drag"), tr_later("orbit the camera (overhead: around the target)")},
+        {tr_later("wheel"), tr_later("d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom")},
+        {tr_later("right drag"), tr_later("turn the observer (3D)")},
+        {tr_later("double-click"), tr_later("make an object the target")},
+        {tr_later("click a pixel"), tr_later("pin the ray inspector")}};
+    if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+      for (const auto& [key, what] : kLines) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(tr(key));
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(tr(what));
+      }
+      ImGui::EndTable();
+    }
   }
   ImGui::End();
 }
@@ -368,10 +408,13 @@ void handle_shortcuts(AppState& state) {
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
-  if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
-  if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+  const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
+  if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
+  if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow))
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow))
+    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

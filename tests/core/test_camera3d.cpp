@@ -308,13 +308,47 @@ TEST_CASE("the printed angle convention looks away; sizes and res are checked",
 }
 
 TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[camera3d]") {
+  // Each factor written out here from the README's formula (rows as printed; GLM stores columns, hence the
+  // transpose), not through raycam's transform.h: M_d = T(OP)·R_z(θ)·R_y(φ)·R_z(π/2)·H(1, 1, d_f).
+  const double theta = 0.4, phi = 1.1, df = 2.0;
+  const glm::dvec3 target(1, 2, 3), position = target + 5.0 * spherical(theta, phi);
   Camera3D camera(4, 4);
-  camera.set_orbit({{1, 2, 3}, 5.0, 0.4, 1.1, 2.0});
+  camera.set_orbit({target, 5.0, theta, phi, df});
   const Placement3D& p = camera.placement();
-  CHECK(construction_step(p, 0) == glm::dmat4(1.0));
-  CHECK(construction_step(p, 1) == p.scale);
-  // After H and the roll, the canonical eye is still on the z axis at height d_f.
-  CHECK(glm::length(transform_point(construction_step(p, 2), glm::dvec3(0, 0, 1)) - glm::dvec3(0, 0, 2.0)) < 1e-12);
-  CHECK(construction_step(p, 5) == camera.world_from_camera());
+  auto rows = [](std::initializer_list<double> values) {
+    glm::dmat4 m;
+    auto it = values.begin();
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) m[c][r] = *it++;
+    return m;
+  };
+  const double ct = std::cos(theta), st = std::sin(theta), cp = std::cos(phi), sp = std::sin(phi);
+  const glm::dmat4 h = rows({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, df, 0, 0, 0, 0, 1});
+  const glm::dmat4 roll = rows({0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});  // R_z(π/2)
+  const glm::dmat4 polar = rows({cp, 0, sp, 0, 0, 1, 0, 0, -sp, 0, cp, 0, 0, 0, 0, 1});
+  const glm::dmat4 azimuth = rows({ct, -st, 0, 0, st, ct, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+  const glm::dmat4 t = rows({1, 0, 0, position.x, 0, 1, 0, position.y, 0, 0, 1, position.z, 0, 0, 0, 1});
+  const glm::dmat4 by_hand[] = {glm::dmat4(1.0),
+                                h,
+                                roll * h,
+                                polar * roll * h,
+                                azimuth * polar * roll * h,
+                                t * azimuth * polar * roll * h};
+  auto close = [](const glm::dmat4& a, const glm::dmat4& b) {
+    double worst = 0;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) worst = std::max(worst, std::abs(a[c][r] - b[c][r]));
+    return worst <= 1e-14 * 8;  // |entries| ≤ ~8 here: a few ulp of rounding in a five-factor product
+  };
+  for (int step = 0; step <= 5; ++step) {
+    INFO("step " << step);
+    CHECK(close(construction_step(p, step), by_hand[step]));
+  }
+  CHECK(close(camera.world_from_camera(), by_hand[5]));
+  // The roll, seen through the image's up vector M_d·(0,1,0): after step 2 canonical up has turned to -x,
+  // and in the end it is (−cos θ cos φ, −sin θ cos φ, sin φ) (README, "Conventions"): world +z is up.
+  CHECK(glm::length(transform_vector(construction_step(p, 2), {0, 1, 0}) - glm::dvec3(-1, 0, 0)) < 1e-15);
+  CHECK(glm::length(camera.image_up() - glm::dvec3(-ct * cp, -st * cp, sp)) < 1e-15);
+  CHECK(camera.image_up().z > 0);
   CHECK_THROWS_WITH(construction_step(p, 6), Catch::Contains("construction step"));
 }

@@ -12,11 +12,25 @@ namespace {
 const IntersectFormula kFormulas[] = {IntersectFormula::naive, IntersectFormula::stable};
 const Scalar kScalars[] = {Scalar::float32, Scalar::float64};
 
-// Stated bound: float + stable keeps at most this fraction of wrong ids on every stress case, d up to 1e7
-// included (measured worst: 3.6% at d = 1e7 in 3D, where a 1e7 distance leaves float ~0.6 units of
-// absolute precision against radius-1 spheres zoomed to fill the view).
+// Float + stable: at most this fraction of wrong ids on every stress case. Derivation, for the worst case
+// (3D, d = 1e7, d_f = d/4, θ = 0.5, φ = 1): the view is 2·(d + d_f)/d_f = 10 units wide at the target, so
+// A = 100 units², and holds spheres of radii 1, 0.7, 0.8, 0.5 (Σr = 3). In float, the centres relative to
+// the eye (|c − E| ≈ 1.25e7, ulp 1) are rounded once, each component by up to 0.5; the view is not aligned
+// with the world axes, so the part across the view is a shift s of up to 0.5·√2 ≈ 0.71, typically 0.38 (the
+// mean length of a vector of two uniform [−0.5, 0.5] components). A disc of radius r shifted by s ≪ r
+// changes 4·r·s of area, so the wrong fraction is about 4·Σr·s/A = 12·0.38/100 ≈ 0.046 (at most 0.085 if
+// every rounding were at its bound). 0.05 is that typical value; measured 0.036 (overlaps hide some of the
+// change). The ray origins round the same way, by less (|P_k − E| ≈ d_f). The 2D case at d = 1e7 looks
+// along −y, aligned with an axis: the across-view components are small and round finely, so it measures 0.
+// Every other case has |c − E| ≤ 1.25e5, a shift 100× smaller: under a pixel's worth. Change the cluster or
+// the zoom, and recompute 4·Σr·s/A.
 constexpr double kFloatStableBound = 0.05;
-// Above this distance float + naive must exceed it by far (b² - c cancels: measured > 85%).
+// Float + naive for d ≥ 1e5: b² − c cancels. b² ≈ |f|² ≥ 1e10 (|f| ≥ d) rounds by ε_f·|f|² ≥ 600, with
+// ε_f = 2⁻²⁴, far above r² ≤ 1: the discriminant's sign is rounding noise for every ray passing within
+// √(ε_f)·|f| ≥ 24 units of a centre, which is the whole 10-unit view. So the naive test answers "hit" or
+// "miss" by noise on essentially every pixel near the cluster, and the ids there are no better than a coin
+// toss: 0.5 is that line (measured 0.86–0.98). A naive float that passed this line would mean the sweep no
+// longer reaches the cancellation it exists to show.
 constexpr double kFloatNaiveFailure = 0.5;
 
 // Pixels allowed to differ from the exact reference in double: rays tangent to a circle, and rays through

@@ -1,0 +1,97 @@
+#include "fonts.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cmath>
+#include <fstream>
+#include <vector>
+#ifdef RAYCAM_HAVE_FONTCONFIG
+#include <fontconfig/fontconfig.h>
+#endif
+
+#include "text.h"
+
+namespace raycam::ui {
+
+namespace {
+constexpr const char* kKnownFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+float g_built_scale = -1.0f;
+const ImGuiContext* g_built_for = nullptr;  // a new ImGui context starts with the default atlas
+bool g_truetype = false;
+
+bool readable(const std::string& path) { return !path.empty() && std::ifstream(path).good(); }
+
+// Latin-1 and Latin Extended-A (œ), Greek (θ φ ψ α Ω), and every character of the string table (·, —, ≤ ...).
+const ImWchar* glyph_ranges() {
+  static ImVector<ImWchar> ranges;
+  if (ranges.empty()) {
+    ImFontGlyphRangesBuilder builder;
+    static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x2010, 0x2027, 0x2070, 0x209F, 0x2190,
+                                    0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
+    builder.AddRanges(kBase);
+    for (const Translation& t : translations()) {
+      builder.AddText(t.en);
+      builder.AddText(t.fr);
+    }
+    builder.BuildRanges(&ranges);
+  }
+  return ranges.Data;
+}
+}  // namespace
+
+std::string find_ui_font() {
+#ifdef RAYCAM_HAVE_FONTCONFIG
+  std::string found;
+  if (FcInit()) {
+    FcPattern* pattern = FcNameParse(reinterpret_cast<const FcChar8*>("DejaVu Sans"));
+    FcConfigSubstitute(nullptr, pattern, FcMatchPattern);
+    FcDefaultSubstitute(pattern);
+    FcResult result = FcResultNoMatch;
+    if (FcPattern* match = FcFontMatch(nullptr, pattern, &result)) {
+      FcChar8* file = nullptr;
+      FcChar8* family = nullptr;
+      // fontconfig always answers with some font: take it only if it is DejaVu (accents, Greek, TrueType).
+      if (FcPatternGetString(match, FC_FILE, 0, &file) == FcResultMatch &&
+          FcPatternGetString(match, FC_FAMILY, 0, &family) == FcResultMatch &&
+          std::string(reinterpret_cast<char*>(family)).find("DejaVu") != std::string::npos)
+        found = reinterpret_cast<char*>(file);
+      FcPatternDestroy(match);
+    }
+    FcPatternDestroy(pattern);
+  }
+  if (readable(found)) return found;
+#endif
+  return readable(kKnownFontPath) ? kKnownFontPath : "";
+}
+
+bool update_fonts(float font_scale) {
+  if (g_built_for == ImGui::GetCurrentContext() && std::abs(font_scale - g_built_scale) < 1e-4f) return false;
+  static const std::string path = find_ui_font();
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  g_truetype = false;
+  if (!path.empty()) {
+    ImFontConfig config;
+    config.OversampleH = 2;  // sharper at fractional positions; the atlas stays small at 1 oversample in y
+    config.OversampleV = 1;
+    g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), std::round(kBaseFontPixels * font_scale), &config,
+                                              glyph_ranges()) != nullptr;
+  }
+  if (!g_truetype) {
+    ImFontConfig config;
+    config.SizePixels = std::round(13.0f * font_scale);  // the built-in bitmap font, scaled at build time
+    io.Fonts->AddFontDefault(&config);
+  }
+  io.Fonts->Build();
+  io.FontGlobalScale = 1.0f;
+  // The backend's next NewFrame re-creates its device objects, the font texture from the new atlas included.
+  ImGui_ImplOpenGL3_DestroyDeviceObjects();
+  g_built_scale = font_scale;
+  g_built_for = ImGui::GetCurrentContext();
+  return true;
+}
+
+bool using_truetype_font() { return g_truetype; }
+
+}  // namespace raycam::ui

@@ -1,0 +1,24 @@
+// Lecture mode's text: DejaVu Sans (Debian's fonts-dejavu-core, found through fontconfig or its known path)
+// rasterised at the chosen size, so text stays crisp at 1×, 1.5×, 2× and 3× instead of a 13-px bitmap font
+// stretched. Falls back to ImGui's built-in font (ASCII only) when no TrueType font is found.
+#pragma once
+
+#include <string>
+
+namespace raycam::ui {
+
+// The base pixel size of the text at font scale 1.
+inline constexpr float kBaseFontPixels = 15.0f;
+
+// Path of the TrueType font to use, or "" for the built-in font.
+std::string find_ui_font();
+
+// Rebuilds the font atlas when the scale changed (or at the first call). Call it before the renderer
+// backend's NewFrame (ImGui_ImplOpenGL3_NewFrame), outside a frame: it re-creates the backend's font
+// texture. Returns true if it rebuilt.
+bool update_fonts(float font_scale);
+
+// True when the TrueType font is in use (false: built-in fallback).
+bool using_truetype_font();
+
+}  // namespace raycam::ui

@@ -1,0 +1,55 @@
+// Visible text in French or English. Every string the window shows goes through tr() (or trf() when it has
+// arguments), with the English text as the key, as gettext's _() does; the French of every key is in one
+// table, src/ui/text_table.cpp. The table is compiled in: it works on a fresh machine with no locale
+// generated. tests/ui/test_text.cpp checks that every entry has both languages with the same printf
+// conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and
+// src/app has an entry.
+//
+// Add a string: write tr("English text") where it is shown, and add {"English text", "Texte français"} to
+// text_table.cpp (French in the handout's words: distance focale d_f, cible C, œil E, écran, point de visée,
+// résolution res, carte des couleurs, M_d = T·R·H).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raycam::ui {
+
+enum class Language { en, fr };
+
+struct Translation {
+  const char* en;
+  const char* fr;
+};
+
+// The text in the current language. `english` must be a key of the table (the test enforces it); a
+// missing key is shown as it is, in English.
+const char* tr(const char* english);
+// tr() then printf-style formatting (the French entry must keep the English conversions, in order).
+std::string trf(const char* english_format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+// Marks a string that is translated later, where it is shown (gettext's N_): arrays of labels, choices.
+constexpr const char* tr_later(const char* english) { return english; }
+
+void set_language(Language language);
+Language current_language();
+
+// "fr", "fr_FR.UTF-8", "en_GB:en" ... → the language, or nothing for another language or "C"/"POSIX".
+std::optional<Language> language_from_code(std::string_view code);
+// The first of LANGUAGE, LC_ALL, LC_MESSAGES, LANG that is set and not empty decides (as gettext does);
+// French if it names French, English otherwise.
+Language language_from_environment();
+// The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
+Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
+const char* language_code(Language language);  // "en", "fr"
+
+// The whole table (for the tests and for the font's glyph ranges).
+const std::vector<Translation>& translations();
+
+}  // namespace raycam::ui

@@ -1,0 +1,162 @@
+// French and English: every string of the table has both languages with the same printf conversions and
+// ImGui ids, every string the sources show through tr()/trf()/tr_later() is in the table, no widget shows an
+// English literal that bypasses the table, and the language comes from --lang or the environment.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "raycam/ray_caster.h"
+#include "text.h"
+
+using namespace raycam;
+
+namespace {
+// The printf conversions of a format, in order ("%d", "%.1f", "%s"; "%%" is not one).
+std::vector<std::string> conversions(const std::string& format) {
+  static const std::regex conversion(
+      R"re(%[-+ #0]*[0-9*]*(\.[0-9*]+)?(hh|h|ll|l|L|z|j|t)?[diouxXeEfFgGaAcspn%])re");
+  std::vector<std::string> found;
+  for (auto it = std::sregex_iterator(format.begin(), format.end(), conversion); it != std::sregex_iterator();
+       ++it)
+    if (it->str() != "%%") found.push_back(it->str());
+  return found;
+}
+
+std::string imgui_id(const std::string& label) {
+  const std::size_t at = label.find("###");
+  return at == std::string::npos ? "" : label.substr(at);
+}
+
+// The C string literals joined into one argument: "a" "b" -> ab (escapes kept as written).
+std::string joined_literals(const std::string& text) {
+  static const std::regex literal(R"re("((?:[^"\\]|\\.)*)")re");
+  std::string out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), literal); it != std::sregex_iterator(); ++it)
+    out += (*it)[1].str();
+  return out;
+}
+
+std::string unescape(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\' && i + 1 < s.size()) {
+      ++i;
+      out += s[i] == 'n' ? '\n' : s[i];
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+std::vector<std::filesystem::path> ui_sources() {
+  std::vector<std::filesystem::path> files;
+  for (const char* dir : {"src/ui", "src/app"})
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(RAYCAM_SOURCE_DIR) / dir))
+      if (entry.path().extension() == ".cpp" && entry.path().filename() != "text_table.cpp")
+        files.push_back(entry.path());
+  REQUIRE(files.size() >= 5);
+  return files;
+}
+
+std::string read(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST_CASE("every string of the table has both languages, with the same conversions and ids", "[ui][text]") {
+  const auto& table = ui::translations();
+  REQUIRE(table.size() > 50);
+  std::set<std::string> keys;
+  for (const ui::Translation& t : table) {
+    INFO(t.en);
+    REQUIRE(t.en != nullptr);
+    REQUIRE(t.fr != nullptr);
+    CHECK(std::string(t.en).size() > 0);
+    CHECK(std::string(t.fr).size() > 0);
+    CHECK(keys.insert(t.en).second);  // no key twice
+    CHECK(conversions(t.en) == conversions(t.fr));
+    CHECK(imgui_id(t.en) == imgui_id(t.fr));
+  }
+  // The handout's words are there (a French table that kept the English would pass the checks above).
+  std::string all_french;
+  for (const ui::Translation& t : table) all_french += std::string(t.fr) + "\n";
+  for (const char* word : {"distance focale", "cible C", "œil", "écran", "résolution", "carte des couleurs",
+                           "barre de couleurs", "homothétie"})
+    CHECK_THAT(all_french, Catch::Contains(word));
+}
+
+TEST_CASE("every string the window shows is in the table", "[ui][text]") {
+  std::set<std::string> keys;
+  for (const ui::Translation& t : ui::translations()) keys.insert(t.en);
+  // tr("..."), trf("...", ...), tr_later("..."), with adjacent literals joined.
+  const std::regex marked(R"re(\b(?:tr|trf|tr_later)\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+))re");
+  // Widgets whose first argument is shown: a raw English literal there bypasses the table.
+  const std::regex widget(
+      R"re(ImGui::(?:Text|TextUnformatted|TextWrapped|TextColored\([^,]+,|Button|Checkbox|RadioButton|CollapsingHeader|TreeNode|Selectable|Begin|BeginCombo|MenuItem|SetTooltip|Slider\w*|Drag\w*|Input\w*)\(\s*("(?:[^"\\]|\\.)*"))re");
+  const std::regex english_word(R"re([A-Za-z]{3,})re");
+  const std::set<std::string> notation{"raycam", "arccos", "atan2", "panel", "status", "keys"};
+  int marked_count = 0;
+  for (const auto& file : ui_sources()) {
+    const std::string text = read(file);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), marked); it != std::sregex_iterator();
+         ++it) {
+      const std::string key = unescape(joined_literals((*it)[1].str()));
+      INFO(file.filename().string() << ": " << key);
+      CHECK(keys.count(key) == 1);
+      ++marked_count;
+    }
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), widget); it != std::sregex_iterator();
+         ++it) {
+      std::string literal = joined_literals((*it)[1].str());
+      literal = literal.substr(0, literal.find("##"));  // "##id" and "###id" are not shown
+      for (auto w = std::sregex_iterator(literal.begin(), literal.end(), english_word);
+           w != std::sregex_iterator(); ++w) {
+        INFO(file.filename().string() << ": widget shows the untranslated literal \"" << literal << "\"");
+        CHECK(notation.count(w->str()) == 1);
+      }
+    }
+  }
+  CHECK(marked_count > 50);
+  // Names the core gives and the window shows.
+  for (const CastMethod method : kCastMethods) CHECK(keys.count(cast_method_name(method)) == 1);
+}
+
+TEST_CASE("tr shows French when the language is French, and trf formats after translating", "[ui][text]") {
+  ui::set_language(ui::Language::fr);
+  CHECK(std::string(ui::tr("Camera###camera")) == "Caméra###camera");
+  CHECK(ui::trf("opened %s", "a.json") == "ouvert : a.json");
+  ui::set_language(ui::Language::en);
+  CHECK(std::string(ui::tr("Camera###camera")) == "Camera###camera");
+  CHECK(ui::trf("opened %s", "a.json") == "opened a.json");
+}
+
+TEST_CASE("the language comes from --lang, else LANGUAGE, LC_ALL, LC_MESSAGES, LANG", "[ui][text]") {
+  CHECK(ui::parse_language_flag("fr") == ui::Language::fr);
+  CHECK(ui::parse_language_flag("en") == ui::Language::en);
+  CHECK_THROWS_WITH(ui::parse_language_flag("de"), "--lang: expected fr or en, got 'de'");
+  CHECK(ui::language_from_code("fr_FR.UTF-8") == ui::Language::fr);
+  CHECK(ui::language_from_code("fr:en") == ui::Language::fr);
+  CHECK(ui::language_from_code("en_GB") == ui::Language::en);
+  CHECK_FALSE(ui::language_from_code("C").has_value());
+  CHECK_FALSE(ui::language_from_code("french").has_value());
+
+  for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) unsetenv(name);
+  CHECK(ui::language_from_environment() == ui::Language::en);
+  setenv("LANG", "fr_FR.UTF-8", 1);
+  CHECK(ui::language_from_environment() == ui::Language::fr);
+  setenv("LC_ALL", "en_US.UTF-8", 1);  // LC_ALL overrides LANG
+  CHECK(ui::language_from_environment() == ui::Language::en);
+  setenv("LANGUAGE", "fr", 1);  // LANGUAGE first, as gettext
+  CHECK(ui::language_from_environment() == ui::Language::fr);
+  setenv("LANGUAGE", "", 1);  // empty: not set
+  CHECK(ui::language_from_environment() == ui::Language::en);
+  for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) unsetenv(name);
+}
