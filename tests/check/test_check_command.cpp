@@ -280,21 +280,16 @@ TEST_CASE("diff-dir writes reference then student then difference per failing ca
 TEST_CASE("bad usage exits 2 with the flag named", "[check][cli]") {
   CHECK(check("", "usage_none").exit_code == 2);
   CHECK(check("--student true --answers x", "usage_two").exit_code == 2);
-  Checked c = check("--student true --mode 4d", "usage_mode");
-  CHECK(c.exit_code == 2);
-  CHECK_THAT(c.output, Catch::Contains("--mode"));
-  c = check("--batch . --student-cmd x", "usage_csv");
-  CHECK(c.exit_code == 2);
-  CHECK_THAT(c.output, Catch::Contains("--csv"));
-  c = check("--student \"'unclosed\"", "usage_quote");
-  CHECK(c.exit_code == 2);
-  CHECK_THAT(c.output, Catch::Contains("--student: unclosed"));
-  c = check("--student no-such-program-raycam", "usage_missing");
-  CHECK(c.exit_code == 2);
-  CHECK_THAT(c.output, Catch::Contains("no-such-program-raycam"));
-  c = check("--student true --timeout 0", "usage_timeout");
-  CHECK(c.exit_code == 2);
-  CHECK_THAT(c.output, Catch::Contains("--timeout"));
+  for (const auto& [args, named] : {std::pair<std::string, std::string>{"--student true --mode 4d", "--mode"},
+                                    {"--batch . --student-cmd x", "--csv"},
+                                    {"--student \"'unclosed\"", "--student: unclosed"},
+                                    {"--student no-such-program-raycam", "no-such-program-raycam"},
+                                    {"--student true --timeout 0", "--timeout"}}) {
+    INFO(args);
+    const Checked c = check(args, "usage");
+    CHECK(c.exit_code == 2);
+    CHECK_THAT(c.output, Catch::Contains(named));
+  }
 }
 
 TEST_CASE("lang fr gives the table and the score and the diagnosis in French", "[check][cli]") {
