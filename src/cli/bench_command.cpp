@@ -16,4 +16,13 @@ void add_bench_command(CLI::App& cli, int& exit_code) {
   speed->callback([speed, &exit_code] { exit_code = run_bench_speed(speed->remaining()); });
 }
 
+void add_check_command(CLI::App& cli, int& exit_code) {
+  // `check` keeps its own CLI11 parser (check_command.cpp): it gets every argument after its name.
+  CLI::App* check = cli.add_subcommand(
+      "check", "grade a student's camera program (stdin case -> stdout ids) and name its classic mistakes");
+  check->prefix_command();
+  check->set_help_flag();
+  check->callback([check, &exit_code] { exit_code = run_check(check->remaining()); });
+}
+
 }  // namespace raycam::cli

@@ -19,6 +19,9 @@ void add_shot_command(CLI::App& cli, int& exit_code);  // only in builds with RA
 void add_bench_command(CLI::App& cli, int& exit_code);
 void add_bench_accuracy_command(CLI::App& bench, int& exit_code);
 // `bench speed` parses its own arguments: everything after `bench speed` (its --help included).
+// `check` (check_command.cpp, on the raycam_check library) parses its own arguments with CLI11.
+void add_check_command(CLI::App& cli, int& exit_code);  // passes its arguments to run_check
+int run_check(const Args& args);
 int run_bench_speed(const Args& args);
 
 }  // namespace raycam::cli

@@ -25,6 +25,8 @@ struct AppOptions {
   std::optional<Language> language;  // --lang fr|en; default: the environment (LANGUAGE, LC_ALL, LANG)
   AccuracyFlags accuracy;    // --precision --intersect --spp --frame --exact (--placement: use --mistake arccos)
   CastOptions cast_options;  // --method
+  bool demo_on_bad_scene =
+      false;  // the app: a scene that cannot be opened gives the demo and an error message
 };
 
 // The initial state for these options (scene loaded, cameras placed). Throws std::invalid_argument.

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"

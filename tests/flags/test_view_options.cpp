@@ -2,6 +2,7 @@
 // give the one message format naming the flag and the accepted range, a missing value says what was
 // expected, and the help is generated from the groups.
 #include <catch2/catch.hpp>
+#include <glm/gtc/constants.hpp>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,7 @@ TEST_CASE("camera flags reach the view setup, in degrees, flags over the preset"
   CHECK(p.view.camera.theta_deg == 90.0);
   CHECK(p.view.camera.size == std::vector<int>{20, 10});
   const ViewSetup setup = make_view_setup(p.view);
-  CHECK(setup.camera3d.orbit().theta == Approx(3.141592653589793 / 2));
+  CHECK(setup.camera3d.orbit().theta == Approx(glm::half_pi<double>()));
   CHECK(setup.camera3d.max_columns() == 20);
   CHECK(setup.camera3d.max_rows() == 10);
   CHECK(setup.camera3d.orbit().df == 1.5);

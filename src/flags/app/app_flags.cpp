@@ -1,6 +1,7 @@
 #include "app_flags.h"
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "flag_values.h"
@@ -78,11 +79,24 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
       "lecture mode: light, high-contrast theme");
 }
 
-ui::AppOptions parse_app_options(const std::vector<std::string>& args) {
-  ui::AppOptions options;
+CLI::Option* add_scene_argument(CLI::App& command, std::string& scene) {
+  return command.add_option("SCENE", scene, "scene file to open (same as --scene)");
+}
+
+void merge_scene_argument(const std::string& scene, ui::AppOptions& options) {
+  if (scene.empty()) return;
+  if (options.view.scene_path) throw std::invalid_argument("SCENE: give the scene file once, as SCENE or --scene");
+  options.view.scene_path = scene;
+}
+
+ui::AppOptions parse_app_options(const std::vector<std::string>& args, ui::AppOptions start) {
+  ui::AppOptions options = start;
   CLI::App command;
   add_app_options(command, options);
+  std::string scene;
+  add_scene_argument(command, scene);
   command.parse(std::vector<std::string>(args.rbegin(), args.rend()));  // CLI11 takes them last first
+  merge_scene_argument(scene, options);
   return options;
 }
 

@@ -14,8 +14,14 @@ namespace raycam::flags {
 // Adds the three option groups (Camera, Caster, App) to `command`, writing into `options`.
 void add_app_options(CLI::App& command, ui::AppOptions& options);
 
-// The options for `args` (without the program name), for tests and scripted starts. Throws CLI::ParseError
-// (message: flags::usage_error_message).
-ui::AppOptions parse_app_options(const std::vector<std::string>& args);
+// A positional SCENE file, as `raycam SCENE.json` takes it (same as --scene): call merge_scene_argument after
+// the parse (giving both is an error).
+CLI::Option* add_scene_argument(CLI::App& command, std::string& scene);
+void merge_scene_argument(const std::string& scene, ui::AppOptions& options);
+
+// The options for `args` (without the program name) on top of `start`, as the app parses them (groups and
+// SCENE), for tests and scripted starts. Throws CLI::ParseError (message: flags::usage_error_message) or
+// std::invalid_argument.
+ui::AppOptions parse_app_options(const std::vector<std::string>& args, ui::AppOptions start = {});
 
 }  // namespace raycam::flags
