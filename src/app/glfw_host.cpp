@@ -10,6 +10,7 @@
 #include <cfloat>
 #include <csignal>
 #include <cstdio>
+#include <string>
 
 #include "gl.h"
 
@@ -139,12 +140,19 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   {
     ui::FrameRenderer frame;
     int saved[4] = {0, 0, options.width, options.height};
+    std::string applied_title = "raycam";
     for (int drawn = 0; !host.should_close() && !state.request_quit;) {
       const bool last = run.frames > 0 && drawn + 1 >= run.frames;
-      if (last && !run.screenshot.empty()) state.request_screenshot = true;
-      const ui::FrameResult result = ui::run_frame(
-          host, frame, state, last && !run.screenshot.empty() ? run.screenshot : "raycam-screenshot.png");
+      if (last && !run.screenshot.empty()) {
+        state.screenshot_path = run.screenshot;
+        state.request_screenshot = true;
+      }
+      const ui::FrameResult result = ui::run_frame(host, frame, state);
       if (!result.drawn) continue;
+      if (state.window_title != applied_title) {  // the UI names the mode and the scene; the host applies it
+        glfwSetWindowTitle(window, state.window_title.c_str());
+        applied_title = state.window_title;
+      }
       ++drawn;
       if (result.screenshot_failed && last) exit_code = 1;
       if (state.request_fullscreen) {

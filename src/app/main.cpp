@@ -24,6 +24,7 @@ void print_help() {
 
 int main(int argc, char** argv) {
   raycam::ui::AppOptions options;
+  options.demo_on_bad_scene = true;  // open on the demo scene and show why the file did not open
   raycam::app::ScriptedRun run;
   AppState state;
   try {

@@ -7,11 +7,11 @@
 #include <exception>
 
 #include "gl.h"
+#include "text.h"
 
 namespace raycam::ui {
 
-FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state,
-                      const std::string& screenshot_path) {
+FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   FrameResult result;
   prepare_frame(state);  // fonts at the current scale, before the backend's frame
   const FramebufferSize size = host.begin(state);
@@ -25,14 +25,13 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state,
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (state.request_screenshot) {
+    const std::string path = state.screenshot_path.empty() ? "raycam-screenshot.png" : state.screenshot_path;
     try {
       glFinish();
-      gl::write_png(host.read_back(), screenshot_path);
-      state.message = "wrote " + screenshot_path;
-      state.message_is_error = false;
+      gl::write_png(host.read_back(), path);
+      set_message(state, MessageSource::files, false, trf("wrote %s", path.c_str()));
     } catch (const std::exception& error) {
-      state.message = error.what();
-      state.message_is_error = true;
+      set_message(state, MessageSource::files, true, error.what());
       result.screenshot_failed = true;
     }
     state.request_screenshot = false;

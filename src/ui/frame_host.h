@@ -39,9 +39,8 @@ struct FrameResult {
 };
 
 // The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
-// framebuffer, a requested screenshot saved (state.request_screenshot, to `screenshot_path`), present.
-FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state,
-                      const std::string& screenshot_path = "raycam-screenshot.png");
+// framebuffer, a requested screenshot saved (state.request_screenshot, to state.screenshot_path), present.
+FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state);
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse
 // preview waits for its refinement, a request is waiting for the executable. Anything that makes the image
