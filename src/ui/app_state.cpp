@@ -22,6 +22,20 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.max_pixels_2d = setup.camera2d.max_pixels();
   state.max_columns_3d = setup.camera3d.max_columns();
   state.max_rows_3d = setup.camera3d.max_rows();
+  state.preset_orbit2d = state.orbit2d;
+  state.preset_orbit3d = state.orbit3d;
+  state.preset_res = state.res;
+  state.overhead_fit_pending = true;
+}
+
+void reset_camera(AppState& state) {
+  if (state.dimension == 2)
+    state.orbit2d = state.preset_orbit2d;
+  else
+    state.orbit3d = state.preset_orbit3d;
+  state.res = state.preset_res;
+  state.overhead_fit_pending = true;
+  state.cameras_dirty = true;
 }
 
 void place_cameras(AppState& state) {
@@ -154,6 +168,7 @@ void switch_dimension(AppState& state, int dimension) {
   if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
   if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
   state.dimension = dimension;
+  state.overhead_fit_pending = true;
   state.construction_step = -1;
   state.pinned_pixel.reset();
   ++state.scene_version;

@@ -43,6 +43,10 @@ struct AppState {
   int max_columns_3d = 256, max_rows_3d = 256;
   Camera2D camera2d{256};
   Camera3D camera3d{256, 256};
+  // The camera the scene file (with the command line's overrides) opened with: "Reset camera" returns here.
+  Orbit2D preset_orbit2d;
+  Orbit3D preset_orbit3d;
+  double preset_res = 1.0;
 
   // ---- the lesson ----
   ClassicMistakes mistakes;
@@ -58,6 +62,11 @@ struct AppState {
   Language language = Language::en;  // --lang, else the environment; the frame applies it (text.h)
   bool show_help = false;
   ObserverOrbit observer;
+  // The overhead view's world rectangle (x, y). Fitted to the scene and the camera when a scene is loaded,
+  // the camera reset or "fit" asked for (button, F key), not every frame: fixed objects hold still while the
+  // camera moves.
+  glm::dvec2 overhead_low{-1.0}, overhead_high{1.0};
+  bool overhead_fit_pending = true;
 
   // ---- results: recomputed only when something they depend on changed ----
   bool cameras_dirty = true;
@@ -102,6 +111,10 @@ bool save_preset(AppState& state, const std::string& path);
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
 bool uses_reference_caster(const AppState& state);
+
+// Back to the camera the scene opened with (the file's preset and the command line), and a fresh fit of
+// the overhead view.
+void reset_camera(AppState& state);
 
 // Switches between the 2D and 3D cameras; a scene file holds one kind of scene, so the other kind is the
 // built-in demo scene.

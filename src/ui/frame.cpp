@@ -13,6 +13,7 @@
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "observer_renderer.h"
+#include "observer_view.h"
 #include "panels.h"
 #include "raycam/transform.h"
 #include "text.h"
@@ -52,7 +53,8 @@ PixelIndex pixel_under(const AppState& state, double fx, double fy) {
 
 // Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
 // a double-click on an object makes it the target.
-void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const OverheadMapping* mapping) {
+void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const OverheadMapping* mapping,
+                      const ObserverCamera* observer = nullptr) {
   ImGuiIO& io = ImGui::GetIO();
   const bool is_2d = state.dimension == 2;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
@@ -61,10 +63,8 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
       const glm::dvec2 target = is_2d ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
       const glm::dvec2 towards = mapping->to_world(io.MousePos) - target;
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
-    } else {
-      theta -= io.MouseDelta.x * 0.01;
-      if (!is_2d)
-        state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, glm::pi<double>());
+    } else if (observer) {  // the camera goes the way the mouse goes, seen by the observer
+      drag_camera_in_observer(state, *observer, io.MouseDelta.x, io.MouseDelta.y);
     }
     state.cameras_dirty = true;
   }
@@ -228,11 +228,16 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                           ? tr("Overhead view: the plane, the camera and its rays###overhead")
                           : tr("Overhead view: looking down the z axis###overhead");
   if (begin_fixed_window(title, area, ImGuiWindowFlags_NoScrollbar)) {
+    if (ImGui::SmallButton(tr("Fit view (F)"))) state.overhead_fit_pending = true;
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", tr("holds still while the camera moves; drag: the camera around C"));
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##overhead_input", size);
       layout.overhead = {top_left.x, top_left.y, size.x, size.y};
-      layout.overhead_mapping = fit_overhead(state, top_left, size);
+      if (state.overhead_fit_pending)
+        fit_overhead(state);  // on load, reset or "fit" only: the view holds still
+      layout.overhead_mapping = overhead_mapping(state, top_left, size);
       orbit_with_mouse(state, true, &layout.overhead_mapping);
       ImDrawList* draw = ImGui::GetWindowDrawList();
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
@@ -255,7 +260,8 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);
       layout.observer = {top_left.x, top_left.y, size.x, size.y};
-      orbit_with_mouse(state, false, nullptr);
+      const double aspect = double(size.x) / double(size.y);
+      orbit_with_mouse(state, false, nullptr, &observer_view_);  // the view the user saw and dragged in
       ImGuiIO& io = ImGui::GetIO();
       if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
         state.observer.yaw_deg -= io.MouseDelta.x * 0.4f;
@@ -267,16 +273,13 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const Camera3D& camera = state.camera3d;
       const glm::dvec3 target = state.orbit3d.target;
       const double reach = state.orbit3d.d + state.orbit3d.df;
-      const double distance = 1.7 * reach * state.observer.zoom;
-      const double yaw = glm::radians(double(state.observer.yaw_deg)),
-                   pitch = glm::radians(double(state.observer.pitch_deg));
-      const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
-      const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));
-      const glm::mat4 projection = glm::perspective(glm::radians(45.0f), size.x / size.y, float(distance * 0.01), float(distance * 50));
+      const ObserverCamera observer = observer_camera(state, aspect);
+      layout.observer_camera = observer_view_ = observer;
+      const glm::mat4 view = observer.view, projection = observer.projection;
 
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
-      frame.observer_eye = glm::vec3(observer_eye);
+      frame.observer_eye = glm::vec3(observer.eye);
       frame.background = state.file.scene3d.background;
       const glm::dvec3 eye = camera.eye();
       const std::array<glm::dvec3, 4> corners = camera.screen_corners();

@@ -10,6 +10,7 @@
 
 #include "app_state.h"
 #include "colour_map_texture.h"
+#include "observer_view.h"
 #include "overhead_view.h"
 
 namespace raycam::gl {
@@ -30,6 +31,7 @@ struct FrameLayout {
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only
+  ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
   Rect status;    // the status line (frame time, work done and skipped)
 };
 
@@ -49,6 +51,7 @@ class FrameRenderer {
   std::unique_ptr<gl::DiscLayer> discs_;
   std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
   int uploaded_disc_dimension_ = 0;
+  ObserverCamera observer_view_;  // last frame's, for the mouse
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at

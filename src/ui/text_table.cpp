@@ -77,6 +77,14 @@ const std::vector<Translation>& translation_table() {
       {"show me", "montre-moi"},
       {"Look: %s", "Regarder : %s"},
 
+      // ---- frame.cpp / panels.cpp: views that hold still and follow (i11views) ----
+      {"Fit view (F)", "Cadrer (F)"},
+      {"holds still while the camera moves; drag: the camera around C",
+       "reste fixe quand la caméra bouge ; glisser : la caméra autour de C"},
+      {"F", "F"},
+      {"fit the overhead view to the scene and the camera",
+       "cadrer la vue de dessus sur la scène et la caméra"},
+
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
       {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
       {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "
