@@ -12,22 +12,39 @@
 // smooth in (θ, φ), so nothing flips when φ crosses a pole or θ wraps.
 #pragma once
 
+#include <array>
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "raycam/camera2d.h"  // AngleRoute, ClassicMistakes
+#include "raycam/camera2d.h"  // AngleRoute, ClassicMistakes, the per-axis pixel <-> screen pair
 
 namespace raycam {
 
-inline constexpr double kRollPsi0 = 1.5707963267948966;  // +π/2 (see header comment)
+// ---- the canonical 3D camera (handout, exercise 3) ----
+inline constexpr glm::dvec3 kCanonicalScreenCentre3D{0.0, 0.0, 0.0};  // Ω
+inline constexpr glm::dvec3 kCanonicalEye3D{0.0, 0.0, 1.0};           // E0
+inline constexpr glm::dvec3 kCanonicalView3D{0.0, 0.0, -1.0};         // u0
+// The screen's corners in image order: top-left, top-right, bottom-right, bottom-left.
+inline constexpr std::array<glm::dvec3, 4> kCanonicalScreenCorners3D{
+    glm::dvec3{-1.0, 1.0, 0.0}, glm::dvec3{1.0, 1.0, 0.0}, glm::dvec3{1.0, -1.0, 0.0},
+    glm::dvec3{-1.0, -1.0, 0.0}};
 
+inline constexpr double kRollPsi0 = 1.5707963267948966;  // +π/2 radians (see header comment)
+
+// Angles in radians.
 struct Orbit3D {
   glm::dvec3 target{0.0};
   double d = 8.0;
-  double theta = 0.5235987755982988;  // 30°
-  double phi = 1.0471975511965976;    // 60°
+  double theta = 0.5235987755982988;  // π/6 (30°)
+  double phi = 1.0471975511965976;    // π/3 (60°)
   double df = 2.0;
 };
+
+// Unit vector of spherical angles θ (azimuth) and φ (polar, from +z), radians: CP's direction for an orbit.
+glm::dvec3 spherical_direction(double theta, double phi);
+// Step 4's translation: the screen centre P = C + d·(cos θ sin φ, sin θ sin φ, cos φ) of an orbit.
+glm::dvec3 orbit_screen_centre(const Orbit3D& orbit);
 
 // The factors of M_d, kept one by one for display (handout steps 1–4, in the order they apply).
 struct Placement3D {
@@ -57,6 +74,14 @@ struct SphericalAngles {
 };
 // Spherical angles of a non-zero vector. handout_arccos: φ = arccos(z/|v|), θ = ±arccos(x/(|v| sin φ)).
 SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route);
+// Free placement (the handout's second route): the orbit with screen centre `position` and target C
+// (P ≠ C), its angles by `route`. Throws std::invalid_argument when P = C or a coordinate is out of range.
+Orbit3D free_orbit(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route);
+
+// Camera facts of any placement matrix (the final M_d or a construction step's product), in the world.
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera);  // M·E0
+std::array<glm::dvec3, 4> screen_corners_of(
+    const glm::dmat4& world_from_camera);  // M·kCanonicalScreenCorners3D
 
 struct Ray3D {
   glm::dvec3 origin{0.0};
@@ -65,8 +90,10 @@ struct Ray3D {
 
 class Camera3D {
  public:
-  // Maximum columns × rows, each in [1, kMaxSide3D], product ≤ kMaxPixels3D; res = 1.
-  explicit Camera3D(int max_columns = 256, int max_rows = 256);
+  // Maximum columns × rows, each in [1, kMaxSide3D], product ≤ kMaxPixels3D; res = 1. M_d is built once,
+  // for this orbit and these mistakes.
+  explicit Camera3D(int max_columns = 256, int max_rows = 256, const Orbit3D& orbit = {},
+                    const ClassicMistakes& mistakes = {});
 
   int max_columns() const { return max_columns_; }
   int max_rows() const { return max_rows_; }
@@ -82,16 +109,29 @@ class Camera3D {
   void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable);
   const Orbit3D& orbit() const { return orbit_; }
 
-  void set_mistakes(const ClassicMistakes& mistakes);
+  void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d (once)
   const ClassicMistakes& mistakes() const { return mistakes_; }
 
   const Placement3D& placement() const { return placement_; }
   const glm::dmat4& world_from_camera() const { return placement_.world_from_camera; }
-  glm::dvec3 screen_centre() const;
-  glm::dvec3 eye() const;
-  glm::dvec3 view_direction() const;
-  glm::dvec3 image_up() const;     // R·(0,1,0)
-  glm::dvec3 image_right() const;  // R·(1,0,0)
+  glm::dvec3 screen_centre() const;   // P = M_d·Ω
+  glm::dvec3 eye() const;             // M_d·E0 = P - d_f·v
+  glm::dvec3 view_direction() const;  // unit M_d·u0
+  glm::dvec3 image_up() const;        // R·(0,1,0), unit
+  glm::dvec3 image_right() const;     // R·(1,0,0), unit
+  // Full field of view (radians), the same across and down: the canonical screen is a square.
+  double field_of_view() const { return raycam::field_of_view(orbit_.df); }
+  std::array<glm::dvec3, 4> screen_corners() const { return screen_corners_of(world_from_camera()); }
+
+  // The pixel <-> canonical-screen pair (pbrt's screenFromRaster / rasterFromScreen): continuous pixel
+  // coordinates (column, row), row 0 at the top, pixel (r, c) covering [c, c+1] × [r, r+1], to the
+  // canonical (x, y) with y up, and back.
+  glm::dvec2 screen_from_raster(glm::dvec2 raster) const {
+    return {raycam::screen_from_raster(raster.x, columns_), -raycam::screen_from_raster(raster.y, rows_)};
+  }
+  glm::dvec2 raster_from_screen(glm::dvec2 screen) const {
+    return {raycam::raster_from_screen(screen.x, columns_), raycam::raster_from_screen(-screen.y, rows_)};
+  }
 
   glm::dvec3 canonical_pixel(int row, int column) const;
   Ray3D primary_ray(int row, int column) const;

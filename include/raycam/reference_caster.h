@@ -47,6 +47,12 @@ template <class T>
 CoverageImage reference_cast_as(const Camera3D& camera, const Scene3D& scene,
                                 const ReferenceOptions& options);
 
+// The one rule for which caster draws an image, for the app and the CLI alike: cast_primary_rays gives the
+// reference's ids and colours exactly for double arithmetic, one sample per pixel and world coordinates,
+// with either intersection formula; anything else, or the exact 2D bar (`exact_bar`, 2D only), needs the
+// reference caster.
+bool needs_reference_caster(const ReferenceOptions& options, bool exact_bar);
+
 // Dispatch on options.scalar.
 CoverageImage reference_cast(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options);
 CoverageImage reference_cast(const Camera3D& camera, const Scene3D& scene, const ReferenceOptions& options);

@@ -7,7 +7,8 @@
 #include <chrono>
 #include <limits>
 #include <stdexcept>
-#include <thread>
+
+#include "raycam/parallel.h"
 
 namespace raycam::bench {
 
@@ -188,34 +189,21 @@ void EmbreeCaster::cast(const Camera3D& camera, int packet, int threads, ColourM
   };
 
   const int bands = (rows + kBandRows - 1) / kBandRows;
-  std::atomic<int> next_band{0};
   std::atomic<int> error{RTC_ERROR_NONE};
-  auto worker = [&] {
+  // The same persistent pool as raycam's casters (threads = 1 runs on the calling thread alone).
+  raycam::detail::parallel_items(bands, threads, [&](int, int band) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;  // primary rays of neighbouring pixels: Embree's best case
-    for (int band; (band = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
-      const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
-      if (packet == 1)
-        cast_single(context, row_begin, row_end);
-      else
-        cast_packets(context, row_begin, row_end);
-    }
-    // Error codes are per thread, so each worker reads its own.
+    const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
+    if (packet == 1)
+      cast_single(context, row_begin, row_end);
+    else
+      cast_packets(context, row_begin, row_end);
+    // Error codes are per thread, so each band reads its own thread's.
     const RTCError own = rtcGetDeviceError(device_.get());
     if (own != RTC_ERROR_NONE) error.store(own);
-  };
-
-  // The calling thread is one of the workers, so threads = 1 starts no thread at all.
-  std::vector<std::thread> helpers;
-  try {
-    for (int i = 1; i < threads; ++i) helpers.emplace_back(worker);
-  } catch (...) {
-    for (std::thread& helper : helpers) helper.join();  // the started ones finish every band
-    throw;
-  }
-  worker();
-  for (std::thread& helper : helpers) helper.join();
+  });
   if (error.load() != RTC_ERROR_NONE)
     throw std::runtime_error(std::string("Embree: cast: ") + error_name(RTCError(error.load())));
 }

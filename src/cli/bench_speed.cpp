@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
@@ -184,21 +185,18 @@ void print_row(const Row& r) {
 // The floor: the same rays generated and the map written, with no object tested.
 void rays_only(const Camera3D& camera, Rgb8 background, int threads, ColourMap& map) {
   map.resize(camera.columns(), camera.rows());
-  auto band = [&](int first_row, int step) {
-    std::vector<Ray3D> rays(static_cast<std::size_t>(camera.columns()));
-    for (int row = first_row; row < camera.rows(); row += step) {
-      camera.primary_rays(row, 0, camera.columns() - 1, rays.data());
-      for (int column = 0; column < camera.columns(); ++column) {
-        const std::size_t p = map.index(row, column);
-        map.ids[p] = rays[std::size_t(column)].direction.x > 2.0 ? 0 : -1;  // never: keeps the rays alive
-        map.colours[p] = background;
-      }
+  std::vector<std::vector<Ray3D>> rays(static_cast<std::size_t>(threads));
+  for (std::vector<Ray3D>& r : rays) r.resize(static_cast<std::size_t>(camera.columns()));
+  // One row per item, on the casters' own persistent pool.
+  detail::parallel_items(camera.rows(), threads, [&](int worker, int row) {
+    Ray3D* row_rays = rays[std::size_t(worker)].data();
+    camera.primary_rays(row, 0, camera.columns() - 1, row_rays);
+    for (int column = 0; column < camera.columns(); ++column) {
+      const std::size_t p = map.index(row, column);
+      map.ids[p] = row_rays[column].direction.x > 2.0 ? 0 : -1;  // never: keeps the rays alive
+      map.colours[p] = background;
     }
-  };
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threads; ++t) helpers.emplace_back(band, t, threads);
-  band(0, threads);
-  for (std::thread& helper : helpers) helper.join();
+  });
 }
 
 std::vector<Row> run_grid(const SpeedOptions& o) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <random>
 #include <stdexcept>
@@ -29,6 +30,14 @@ void print_help() {
       "  --soak N            render N frames with random camera changes; report frame times, peak memory, and\n"
       "                      check every frame's colour map (N in [1, 1000000])\n",
       view_flags_help(), ui::app_options_help());
+}
+
+// CPU time of the whole process (every thread: the caster's and llvmpipe's), in ms. On a shared machine the
+// wall-clock frame time includes waiting for a core; the CPU time is what the frame costs.
+double process_cpu_ms() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
 }
 
 long resident_kb(const char* field) {  // VmRSS or VmHWM from /proc/self/status
@@ -58,7 +67,7 @@ bool colour_map_is_consistent(const ui::AppState& state) {
 int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) {
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<double> times;
+  std::vector<double> times, cpu_times;
   renderer.render_settled(state);
   const long rss_start = resident_kb("VmRSS:");
   int bad_frames = 0;
@@ -75,15 +84,21 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
     if (unit(random) < 0.02) state.res = std::clamp(unit(random), 0.01, 1.0);
     state.cameras_dirty = true;
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_ms();
     renderer.run_frame(state);
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    cpu_times.push_back(process_cpu_ms() - cpu_start);
     if (!colour_map_is_consistent(state)) ++bad_frames;
   }
   const long rss_end = resident_kb("VmRSS:"), peak = resident_kb("VmHWM:");
   std::sort(times.begin(), times.end());
+  std::sort(cpu_times.begin(), cpu_times.end());
   const auto at = [&](double q) { return times[std::min(times.size() - 1, std::size_t(q * double(times.size())))]; };
-  std::printf("soak: %d frames %dx%d (%dD), frame ms: median %.2f, p95 %.2f, max %.2f\n", frames, renderer.width(),
-              renderer.height(), state.dimension, at(0.5), at(0.95), times.back());
+  std::printf(
+      "soak: %d frames %dx%d (%dD), frame ms: median %.2f, p95 %.2f, max %.2f; CPU ms (all threads): median "
+      "%.2f\n",
+      frames, renderer.width(), renderer.height(), state.dimension, at(0.5), at(0.95), times.back(),
+      cpu_times[cpu_times.size() / 2]);
   std::printf("soak: RSS %ld KB after the first frames, %ld KB at the end (%+ld KB), peak %ld KB\n", rss_start, rss_end,
               rss_end - rss_start, peak);
   std::printf("soak: %d frames with an inconsistent colour map\n", bad_frames);

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
@@ -14,11 +15,26 @@
 
 namespace raycam {
 
-namespace {
-constexpr double kHalfPi = 1.5707963267948966;
-const glm::dvec2 kCanonicalEye{0.0, 1.0};    // E0
-const glm::dvec2 kCanonicalView{0.0, -1.0};  // u0
-}  // namespace
+namespace detail {
+thread_local long long placements_built = 0;
+}
+long long placements_built_on_this_thread() { return detail::placements_built; }
+
+glm::dvec2 polar_direction(double theta) { return {std::cos(theta), std::sin(theta)}; }
+
+glm::dvec2 orbit_screen_centre(const Orbit2D& orbit) {
+  return orbit.target + orbit.d * polar_direction(orbit.theta);
+}
+
+double field_of_view(double df) { return 2.0 * std::atan(1.0 / df); }
+
+glm::dvec2 eye_of(const glm::dmat3& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye2D);
+}
+
+std::array<glm::dvec2, 2> screen_corners_of(const glm::dmat3& world_from_camera) {
+  return {transform_point(world_from_camera, {-1.0, 0.0}), transform_point(world_from_camera, {1.0, 0.0})};
+}
 
 Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistakes) {
   detail::require_coordinate(orbit.target.x, "target.x");
@@ -29,18 +45,18 @@ Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistak
 
   // Classic mistake: the file's degrees handed to cos/sin as they are (the whole placement uses them).
   const double theta = mistakes.degrees_as_radians ? glm::degrees(orbit.theta) : orbit.theta;
-  // Step 2: P = C + d·(cos θ, sin θ).
-  const glm::dvec2 position = orbit.target + orbit.d * glm::dvec2(std::cos(theta), std::sin(theta));
+  const glm::dvec2 position = orbit.target + orbit.d * polar_direction(theta);  // step 2
   Placement2D placement;
   placement.scale = scaling_2d(1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);
   // R(α) must turn u0 = (0,-1), at angle -π/2, onto v = PC/|PC|, at angle θ + π: α = θ - π/2 (mod 2π).
   // The handout prints α = φ_v - π/2 with φ_v the angle of v itself; that is θ + π/2, which turns u0 onto
   // -v: the camera looks away from its target (kept as a classic mistake).
-  const double view_angle = mistakes.printed_rotation_sign ? theta + 2.0 * kHalfPi : theta;
-  placement.alpha = view_angle - kHalfPi;
+  const double view_angle = mistakes.printed_rotation_sign ? theta + glm::pi<double>() : theta;
+  placement.alpha = view_angle - glm::half_pi<double>();
   placement.rotation = rotation_2d(placement.alpha);
   placement.translation = translation_2d(position);
   placement.world_from_camera = construction_step(placement, kConstructionSteps2D);
+  ++detail::placements_built;
   return placement;
 }
 
@@ -66,10 +82,21 @@ double polar_angle(glm::dvec2 v, AngleRoute route) {
   return unit.y >= 0.0 ? angle : -angle;
 }
 
-Camera2D::Camera2D(int max_pixels) : max_pixels_(max_pixels) {
+Orbit2D free_orbit(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route) {
+  detail::require_coordinate(position.x, "position.x");
+  detail::require_coordinate(position.y, "position.y");
+  const glm::dvec2 target_to_position = position - target;
+  const double d = std::hypot(target_to_position.x, target_to_position.y);
+  if (!(d > 0.0))
+    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
+  return Orbit2D{target, d, polar_angle(target_to_position, route), df};
+}
+
+Camera2D::Camera2D(int max_pixels, const Orbit2D& orbit, const ClassicMistakes& mistakes)
+    : max_pixels_(max_pixels), orbit_(orbit), mistakes_(mistakes) {
   detail::require_int_range(max_pixels, 1, kMaxPixels2D, "size (N)");
   pixel_count_ = max_pixels_;
-  placement_ = placement_matrix(orbit_);
+  placement_ = placement_matrix(orbit_, mistakes_);
 }
 
 void Camera2D::set_res(double res) {
@@ -84,13 +111,7 @@ void Camera2D::set_orbit(const Orbit2D& orbit) {
 }
 
 void Camera2D::set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route) {
-  detail::require_coordinate(position.x, "position.x");
-  detail::require_coordinate(position.y, "position.y");
-  const glm::dvec2 target_to_position = position - target;
-  const double d = std::hypot(target_to_position.x, target_to_position.y);
-  if (!(d > 0.0))
-    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
-  set_orbit(Orbit2D{target, d, polar_angle(target_to_position, route), df});
+  set_orbit(free_orbit(position, target, df, route));
 }
 
 void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
@@ -99,17 +120,21 @@ void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
   pixel_count_ = detail::useful_size(res_, max_pixels_, mistakes_.res_truncated);
 }
 
-glm::dvec2 Camera2D::screen_centre() const { return transform_point(world_from_camera(), {0.0, 0.0}); }
-glm::dvec2 Camera2D::eye() const { return transform_point(world_from_camera(), kCanonicalEye); }
+glm::dvec2 Camera2D::screen_centre() const {
+  return transform_point(world_from_camera(), kCanonicalScreenCentre2D);
+}
+glm::dvec2 Camera2D::eye() const { return eye_of(world_from_camera()); }
 glm::dvec2 Camera2D::view_direction() const {
-  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView));
+  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView2D));
+}
+glm::dvec2 Camera2D::image_right() const {
+  return glm::normalize(transform_vector(world_from_camera(), {-1.0, 0.0}));  // column 0 is canonical +x
 }
 
 double Camera2D::canonical_x(int k) const {
-  const double n = pixel_count_;
   if (mistakes_.mirrored) k = pixel_count_ - 1 - k;  // classic mistake: pixel k stored at n-1-k
   // Exercise 2: the handout prints -1 + 2k/n, the LEFT EDGE of pixel k; the centre is half a pixel on.
-  return mistakes_.pixel_edges ? -1.0 + 2.0 * k / n : -1.0 + (2.0 * k + 1.0) / n;
+  return screen_from_raster(mistakes_.pixel_edges ? k : k + 0.5);
 }
 
 glm::dvec2 Camera2D::canonical_pixel(int k) const {

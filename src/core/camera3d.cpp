@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
@@ -14,15 +15,28 @@
 
 namespace raycam {
 
-namespace {
-constexpr double kPi = 3.141592653589793;
-const glm::dvec3 kCanonicalEye{0.0, 0.0, 1.0};    // E0
-const glm::dvec3 kCanonicalView{0.0, 0.0, -1.0};  // u0
+namespace detail {
+extern thread_local long long placements_built;  // camera2d.cpp
+}
 
 glm::dvec3 spherical_direction(double theta, double phi) {
   return {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)};
 }
-}  // namespace
+
+glm::dvec3 orbit_screen_centre(const Orbit3D& orbit) {
+  return orbit.target + orbit.d * spherical_direction(orbit.theta, orbit.phi);
+}
+
+glm::dvec3 eye_of(const glm::dmat4& world_from_camera) {
+  return transform_point(world_from_camera, kCanonicalEye3D);
+}
+
+std::array<glm::dvec3, 4> screen_corners_of(const glm::dmat4& world_from_camera) {
+  std::array<glm::dvec3, 4> corners;
+  for (std::size_t i = 0; i < corners.size(); ++i)
+    corners[i] = transform_point(world_from_camera, kCanonicalScreenCorners3D[i]);
+  return corners;
+}
 
 Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistakes) {
   detail::require_coordinate(orbit.target.x, "target.x");
@@ -44,8 +58,8 @@ Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistak
   Placement3D placement;
   // With (θ, φ) the angles of CP, R_z(θ)·R_y(φ) takes u0 = -z to -CP/|CP| = v. The handout's route takes
   // the angles of v = PC itself, (θ + π, π - φ): the camera then looks away (kept as a classic mistake).
-  placement.theta = mistakes.printed_rotation_sign ? theta + kPi : theta;
-  placement.phi = mistakes.printed_rotation_sign ? kPi - phi : phi;
+  placement.theta = mistakes.printed_rotation_sign ? theta + glm::pi<double>() : theta;
+  placement.phi = mistakes.printed_rotation_sign ? glm::pi<double>() - phi : phi;
   placement.scale = scaling_3d(1.0, 1.0, mistakes.no_focal_scale ? 1.0 : orbit.df);  // step 1
   // Step 2: the handout prints ψ0 = -π/2, which turns the image upside down (classic mistake).
   placement.roll = rotation_z(mistakes.upside_down ? -kRollPsi0 : kRollPsi0);
@@ -53,6 +67,7 @@ Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistak
   placement.azimuth = rotation_z(placement.theta);   // step 3b
   placement.translation = translation_3d(position);  // step 4
   placement.world_from_camera = construction_step(placement, kConstructionSteps3D);
+  ++detail::placements_built;
   return placement;
 }
 
@@ -90,14 +105,27 @@ SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route) {
   return angles;
 }
 
-Camera3D::Camera3D(int max_columns, int max_rows) : max_columns_(max_columns), max_rows_(max_rows) {
+Orbit3D free_orbit(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route) {
+  detail::require_coordinate(position.x, "position.x");
+  detail::require_coordinate(position.y, "position.y");
+  detail::require_coordinate(position.z, "position.z");
+  const glm::dvec3 target_to_position = position - target;
+  const double d = glm::length(target_to_position);
+  if (!(d > 0.0))
+    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
+  const SphericalAngles angles = spherical_angles(target_to_position, route);
+  return Orbit3D{target, d, angles.theta, angles.phi, df};
+}
+
+Camera3D::Camera3D(int max_columns, int max_rows, const Orbit3D& orbit, const ClassicMistakes& mistakes)
+    : max_columns_(max_columns), max_rows_(max_rows), orbit_(orbit), mistakes_(mistakes) {
   detail::require_int_range(max_columns, 1, kMaxSide3D, "size (columns)");
   detail::require_int_range(max_rows, 1, kMaxSide3D, "size (rows)");
   detail::require_int_range(static_cast<long long>(max_columns) * max_rows, 1, kMaxPixels3D,
                             "size (columns x rows)");
   columns_ = max_columns_;
   rows_ = max_rows_;
-  placement_ = placement_matrix(orbit_);
+  placement_ = placement_matrix(orbit_, mistakes_);
 }
 
 void Camera3D::set_res(double res_columns, double res_rows) {
@@ -115,15 +143,7 @@ void Camera3D::set_orbit(const Orbit3D& orbit) {
 }
 
 void Camera3D::set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route) {
-  detail::require_coordinate(position.x, "position.x");
-  detail::require_coordinate(position.y, "position.y");
-  detail::require_coordinate(position.z, "position.z");
-  const glm::dvec3 target_to_position = position - target;
-  const double d = glm::length(target_to_position);
-  if (!(d > 0.0))
-    throw std::invalid_argument("position: the camera sits on its target (P = C); expected P != C");
-  const SphericalAngles angles = spherical_angles(target_to_position, route);
-  set_orbit(Orbit3D{target, d, angles.theta, angles.phi, df});
+  set_orbit(free_orbit(position, target, df, route));
 }
 
 void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
@@ -133,24 +153,25 @@ void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
   rows_ = detail::useful_size(res_rows_, max_rows_, mistakes_.res_truncated);
 }
 
-glm::dvec3 Camera3D::screen_centre() const { return transform_point(world_from_camera(), glm::dvec3(0.0)); }
-glm::dvec3 Camera3D::eye() const { return transform_point(world_from_camera(), kCanonicalEye); }
+glm::dvec3 Camera3D::screen_centre() const {
+  return transform_point(world_from_camera(), kCanonicalScreenCentre3D);
+}
+glm::dvec3 Camera3D::eye() const { return eye_of(world_from_camera()); }
 glm::dvec3 Camera3D::view_direction() const {
-  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView));
+  return glm::normalize(transform_vector(world_from_camera(), kCanonicalView3D));
 }
 glm::dvec3 Camera3D::image_up() const { return transform_vector(world_from_camera(), {0.0, 1.0, 0.0}); }
 glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_camera(), {1.0, 0.0, 0.0}); }
 
+// Pixel centres through the pixel <-> screen pair (the printed 2k/n is a pixel's corner: pixel_edges).
 double Camera3D::canonical_x(int column) const {
-  if (mistakes_.mirrored) column = columns_ - 1 - column;   // classic mistake: columns reversed
-  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;  // the printed 2k/n is a pixel's corner
-  return -1.0 + (2.0 * column + offset) / columns_;
+  if (mistakes_.mirrored) column = columns_ - 1 - column;  // classic mistake: columns reversed
+  return raycam::screen_from_raster(mistakes_.pixel_edges ? column : column + 0.5, columns_);
 }
 
 double Camera3D::canonical_y(int row) const {
   if (mistakes_.rows_flipped) row = rows_ - 1 - row;  // classic mistake: row 0 at the bottom
-  const double offset = mistakes_.pixel_edges ? 0.0 : 1.0;
-  return 1.0 - (2.0 * row + offset) / rows_;  // row 0 at the top
+  return -raycam::screen_from_raster(mistakes_.pixel_edges ? row : row + 0.5, rows_);  // row 0 at the top
 }
 
 glm::dvec3 Camera3D::canonical_pixel(int row, int column) const {

@@ -199,6 +199,11 @@ CoverageImage dispatch(const Camera& camera, const Scene& scene, const Reference
 }
 }  // namespace
 
+bool needs_reference_caster(const ReferenceOptions& options, bool exact_bar) {
+  return options.scalar != Scalar::float64 || options.samples_per_pixel != 1 || options.camera_relative ||
+         exact_bar;
+}
+
 CoverageImage reference_cast(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options) {
   return dispatch(camera, scene, options);
 }

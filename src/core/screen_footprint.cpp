@@ -49,7 +49,8 @@ int ceil_of(double x) {
 // Pixels (along one axis) whose centre's ray can touch the object: the tangent slopes m = a/c of the lines
 // from the eye touching the circle of centre (a0, c0) and radius r (the object's trace in the plane through
 // the forward axis and this axis), widened by the slack, mapped to pixel centres -1 + (2i+1)/count on the
-// screen at distance d_f. increasing = false for rows, whose screen y = 1 - (2i+1)/count decreases with i.
+// screen at distance d_f through the core's pixel <-> screen pair. increasing = false for rows, whose screen
+// y decreases with i.
 PixelRange axis_pixels(const Depth& d, double a0, double df, int count, bool increasing) {
   if (!d.bounded) return PixelRange{0, count - 1};
   const double spread = d.r * std::sqrt(a0 * a0 + (d.c0 - d.r) * (d.c0 + d.r));
@@ -57,10 +58,9 @@ PixelRange axis_pixels(const Depth& d, double a0, double df, int count, bool inc
   const double widen = kRelativeSlack * (std::abs(m_lo) + std::abs(m_hi) + 1.0) + d.slope_slack;
   m_lo -= widen;
   m_hi += widen;
-  const double half = 0.5 * count;
-  auto index_of = [&](double slope) {  // pixel i has its centre at index i
-    const double screen = increasing ? df * slope : -df * slope;
-    return std::clamp((screen + 1.0) * half - 0.5, -2.0, double(count) + 1.0);
+  auto index_of = [&](double slope) {  // pixel i has its centre at index i, raster coordinate i + 1/2
+    const double screen = increasing ? df * slope : -df * slope;  // rows: raster y grows as screen y falls
+    return std::clamp(raster_from_screen(screen, count) - 0.5, -2.0, double(count) + 1.0);
   };
   double a = index_of(m_lo), b = index_of(m_hi);
   if (a > b) std::swap(a, b);

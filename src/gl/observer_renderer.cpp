@@ -3,42 +3,30 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/matrix.hpp>
 
 #include "embedded_shaders.h"
 
 namespace raycam::gl {
 
 namespace {
-// Unit sphere as (position) vertices and triangle indices, z the polar axis.
-void make_unit_sphere(int slices, int stacks, std::vector<float>& vertices, std::vector<unsigned>& indices) {
-  const float pi = 3.14159265f;
-  for (int stack = 0; stack <= stacks; ++stack) {
-    const float phi = pi * float(stack) / stacks;
-    for (int slice = 0; slice <= slices; ++slice) {
-      const float theta = 2.0f * pi * float(slice) / slices;
-      vertices.insert(vertices.end(), {std::cos(theta) * std::sin(phi), std::sin(theta) * std::sin(phi), std::cos(phi)});
-    }
-  }
-  for (int stack = 0; stack < stacks; ++stack)
-    for (int slice = 0; slice < slices; ++slice) {
-      const unsigned a = stack * (slices + 1) + slice, b = a + slices + 1;
-      indices.insert(indices.end(), {a, b, a + 1, a + 1, b, b + 1});
-    }
-}
+const glm::vec3 kLightDirection = glm::normalize(glm::vec3(0.4f, 0.3f, 0.85f));
 }  // namespace
 
 ObserverRenderer::ObserverRenderer()
     : sphere_program_(shaders::k_sphere_vert, shaders::k_sphere_frag, "sphere"),
       line_program_(shaders::k_lines_vert, shaders::k_lines_frag, "lines"),
-      quad_program_(shaders::k_image_quad_vert, shaders::k_image_quad_frag, "image_quad") {
+      quad_program_(shaders::k_image_quad_vert, shaders::k_image_quad_frag, "image_quad"),
+      layer_program_(shaders::k_sphere_layer_vert, shaders::k_sphere_layer_frag, "sphere_layer") {
   glGenVertexArrays(1, &sphere_vao_);
   glBindVertexArray(sphere_vao_);
-  glGenBuffers(1, &sphere_mesh_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
+  // Every sphere is one quad (a triangle strip), sized and turned towards the eye by sphere.vert.
+  const float corners[] = {-1, -1, 1, -1, -1, 1, 1, 1};
+  glGenBuffers(1, &sphere_corner_vbo_);
+  glBindBuffer(GL_ARRAY_BUFFER, sphere_corner_vbo_);
+  glBufferData(GL_ARRAY_BUFFER, sizeof corners, corners, GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
-  glGenBuffers(1, &sphere_index_vbo_);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
   // Per-instance: centre + radius (vec4), colour (vec3).
   glGenBuffers(1, &sphere_instance_vbo_);
   glBindBuffer(GL_ARRAY_BUFFER, sphere_instance_vbo_);
@@ -70,30 +58,59 @@ ObserverRenderer::ObserverRenderer()
 }
 
 ObserverRenderer::~ObserverRenderer() {
-  const GLuint buffers[] = {sphere_mesh_vbo_, sphere_index_vbo_, sphere_instance_vbo_, line_vbo_, quad_vbo_};
-  glDeleteBuffers(5, buffers);
+  const GLuint buffers[] = {sphere_corner_vbo_, sphere_instance_vbo_, line_vbo_, quad_vbo_};
+  glDeleteBuffers(4, buffers);
   const GLuint arrays[] = {sphere_vao_, line_vao_, quad_vao_};
   glDeleteVertexArrays(3, arrays);
   if (framebuffer_) glDeleteFramebuffers(1, &framebuffer_);
   if (colour_texture_) glDeleteTextures(1, &colour_texture_);
   if (depth_buffer_) glDeleteRenderbuffers(1, &depth_buffer_);
+  const GLuint layers[] = {layer_colour_, layer_depth_};
+  if (layer_colour_) glDeleteTextures(2, layers);
+}
+
+bool ObserverRenderer::uses_layer() const {
+  return drawing_ == SphereDrawing::cpu_layer ||
+         (drawing_ == SphereDrawing::automatic && std::size_t(sphere_count_) >= kSphereLayerFrom);
+}
+
+void ObserverRenderer::draw_sphere_layer(const ObserverFrame& frame, int width, int height) {
+  SphereLayerView view;
+  view.view_projection = glm::dmat4(frame.view_projection);
+  view.eye = glm::dvec3(frame.observer_eye);
+  view.light_direction = glm::dvec3(kLightDirection);
+  view.width = width;
+  view.height = height;
+  cast_sphere_layer(spheres_, view, layer_);
+  if (!layer_colour_) {
+    GLuint textures[2];
+    glGenTextures(2, textures);
+    layer_colour_ = textures[0];
+    layer_depth_ = textures[1];
+    for (const GLuint texture : textures) {
+      glBindTexture(GL_TEXTURE_2D, texture);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+  }
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, layer_colour_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, layer_.rgba.data());
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, layer_depth_);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, height, 0, GL_RED, GL_FLOAT, layer_.depth.data());
+  layer_program_.use();
+  layer_program_.set("layer_colour", 0);
+  layer_program_.set("layer_depth", 1);
+  glBindVertexArray(quad_vao_);  // any vertex array: the triangle comes from gl_VertexID
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 void ObserverRenderer::set_spheres(const std::vector<Sphere>& spheres) {
-  const std::size_t count = std::min(spheres.size(), kMaxSpheresDrawn);
-  // Fewer triangles per sphere when there are many: llvmpipe rasterises on the CPU, and a thousand small
-  // spheres need no more than a coarse mesh each.
-  const int slices = count <= 100 ? 32 : count <= 1000 ? 16 : 8, stacks = slices * 2 / 3;
-  std::vector<float> vertices;
-  std::vector<unsigned> indices;
-  make_unit_sphere(slices, stacks, vertices, indices);
-  sphere_index_count_ = GLsizei(indices.size());
-  glBindVertexArray(sphere_vao_);
-  glBindBuffer(GL_ARRAY_BUFFER, sphere_mesh_vbo_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, sphere_index_vbo_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
-  glBindVertexArray(0);
+  const std::size_t count = spheres.size();
+  spheres_ = spheres;
   std::vector<float> instances;
   instances.reserve(count * 7);
   for (std::size_t i = 0; i < count; ++i) {
@@ -139,11 +156,17 @@ GLuint ObserverRenderer::render(const ObserverFrame& frame, int width, int heigh
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
 
-  sphere_program_.use();
-  sphere_program_.set("view_projection", frame.view_projection);
-  sphere_program_.set("light_direction", glm::normalize(glm::vec3(0.4f, 0.3f, 0.85f)));
-  glBindVertexArray(sphere_vao_);
-  glDrawElementsInstanced(GL_TRIANGLES, sphere_index_count_, GL_UNSIGNED_INT, nullptr, sphere_count_);
+  if (uses_layer()) {
+    draw_sphere_layer(frame, width, height);
+  } else {
+    sphere_program_.use();
+    sphere_program_.set("view_projection", frame.view_projection);
+    sphere_program_.set("clip_to_world", glm::inverse(frame.view_projection));
+    sphere_program_.set("observer_eye", frame.observer_eye);
+    sphere_program_.set("light_direction", kLightDirection);
+    glBindVertexArray(sphere_vao_);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, sphere_count_);
+  }
 
   if (frame.image_texture) {
     // Image order corners → uv with (0,0) at the top-left texel row 0.

@@ -1,19 +1,19 @@
-// The observer's 3D view: the scene's spheres (instanced, lightly shaded), coloured lines (the camera's
-// frustum, screen, rays, axes) and the camera's colour map on its screen square, rasterised into an
-// offscreen texture that the UI shows as an image. World: z up, as everywhere in raycam.
+// The observer's 3D view: the scene's spheres (ray-cast impostors, one instanced draw call, lightly shaded),
+// coloured lines (the camera's frustum, screen, rays, axes) and the camera's colour map on its screen square,
+// rasterised into an offscreen texture that the UI shows as an image. World: z up, as everywhere in raycam.
 #pragma once
 
 #include <array>
 #include <cstddef>
-#include <vector>
-
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "gl.h"
 #include "raycam/scene.h"
 #include "shader_program.h"
+#include "sphere_layer.h"
 
 namespace raycam::gl {
 
@@ -24,6 +24,7 @@ struct ObserverLine {
 
 struct ObserverFrame {
   glm::mat4 view_projection{1.0f};
+  glm::vec3 observer_eye{0.0f};  // where view_projection looks from (the impostors cast rays from it)
   Rgb8 background{};
   std::vector<ObserverLine> lines;
   // The camera's screen, corners in image order (top-left, top-right, bottom-right, bottom-left), and the
@@ -32,27 +33,41 @@ struct ObserverFrame {
   GLuint image_texture = 0;
 };
 
+// How the spheres are drawn: GL impostors (one instanced draw call), or cast on the CPU into a layer that
+// one full-screen triangle draws with its depth (gl/sphere_layer.h). Same picture; automatic picks the
+// layer from kSphereLayerFrom spheres on, where llvmpipe's cost per primitive dominates.
+enum class SphereDrawing { automatic, impostors, cpu_layer };
+
 class ObserverRenderer {
  public:
-  // Spheres beyond this count are not drawn in the observer view (the ray caster still sees them all).
-  static constexpr std::size_t kMaxSpheresDrawn = 100000;
+  // Measured with `raycam-cli shot --soak` at 1280×720 (README, "Speed").
+  static constexpr std::size_t kSphereLayerFrom = 20000;
 
   ObserverRenderer();
   ~ObserverRenderer();
   ObserverRenderer(const ObserverRenderer&) = delete;
   ObserverRenderer& operator=(const ObserverRenderer&) = delete;
 
-  // Uploads the spheres' instance data; call only when the scene changed.
+  // Uploads the spheres' instance data (and keeps a copy for the CPU layer); call only when the scene
+  // changed.
   void set_spheres(const std::vector<Sphere>& spheres);
+  void set_sphere_drawing(SphereDrawing drawing) { drawing_ = drawing; }
   // Draws into a width × height offscreen target and returns its colour texture (rows bottom-up, as GL).
   GLuint render(const ObserverFrame& frame, int width, int height);
 
  private:
   void resize_target(int width, int height);
 
-  ShaderProgram sphere_program_, line_program_, quad_program_;
-  GLuint sphere_vao_ = 0, sphere_mesh_vbo_ = 0, sphere_index_vbo_ = 0, sphere_instance_vbo_ = 0;
-  GLsizei sphere_index_count_ = 0, sphere_count_ = 0;
+  bool uses_layer() const;
+  void draw_sphere_layer(const ObserverFrame& frame, int width, int height);
+
+  ShaderProgram sphere_program_, line_program_, quad_program_, layer_program_;
+  SphereDrawing drawing_ = SphereDrawing::automatic;
+  std::vector<Sphere> spheres_;  // for the CPU layer
+  SphereLayer layer_;
+  GLuint layer_colour_ = 0, layer_depth_ = 0;
+  GLuint sphere_vao_ = 0, sphere_corner_vbo_ = 0, sphere_instance_vbo_ = 0;
+  GLsizei sphere_count_ = 0;
   GLuint line_vao_ = 0, line_vbo_ = 0;
   GLuint quad_vao_ = 0, quad_vbo_ = 0;
   GLuint framebuffer_ = 0, colour_texture_ = 0, depth_buffer_ = 0;

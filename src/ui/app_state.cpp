@@ -3,10 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <glm/trigonometric.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "raycam/view_setup.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -23,37 +25,29 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
 }
 
 void place_cameras(AppState& state) {
+  // One Camera per change, M_d composed once in its constructor. The arccos route re-derives the angles
+  // from P and C as the handout's free placement does (the mistake near a pole).
   if (state.dimension == 2) {
-    Camera2D camera(state.max_pixels_2d);
+    const Orbit2D& o = state.orbit2d;
+    const Orbit2D orbit = state.arccos_route
+                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
+                              : o;
+    Camera2D camera(state.max_pixels_2d, orbit, state.mistakes);
     camera.set_res(state.res);
-    camera.set_mistakes(state.mistakes);
-    if (state.arccos_route) {
-      const Orbit2D& o = state.orbit2d;
-      camera.set_free(o.target + o.d * glm::dvec2(std::cos(o.theta), std::sin(o.theta)), o.target, o.df,
-                      AngleRoute::handout_arccos);
-    } else {
-      camera.set_orbit(state.orbit2d);
-    }
     state.camera2d = camera;
   } else {
-    Camera3D camera(state.max_columns_3d, state.max_rows_3d);
+    const Orbit3D& o = state.orbit3d;
+    const Orbit3D orbit = state.arccos_route
+                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
+                              : o;
+    Camera3D camera(state.max_columns_3d, state.max_rows_3d, orbit, state.mistakes);
     camera.set_res(state.res);
-    camera.set_mistakes(state.mistakes);
-    if (state.arccos_route) {
-      const Orbit3D& o = state.orbit3d;
-      const glm::dvec3 direction{std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi)};
-      camera.set_free(o.target + o.d * direction, o.target, o.df, AngleRoute::handout_arccos);
-    } else {
-      camera.set_orbit(state.orbit3d);
-    }
     state.camera3d = camera;
   }
 }
 
 bool uses_reference_caster(const AppState& state) {
-  const ReferenceOptions& o = state.accuracy.options;
-  return o.scalar != Scalar::float64 || o.samples_per_pixel != 1 || o.camera_relative ||
-         (state.accuracy.exact && state.dimension == 2);
+  return needs_reference_caster(state.accuracy.options, state.accuracy.exact && state.dimension == 2);
 }
 
 bool recast_if_needed(AppState& state, bool interacting) {
@@ -135,8 +129,8 @@ bool save_preset(AppState& state, const std::string& path) {
     SceneFile file = state.file;
     file.camera = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
     if (state.arccos_route) {  // save what the student set, not what the mistake produced
-      file.camera.theta_deg = (state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta) * 180.0 / 3.141592653589793;
-      if (state.dimension == 3) file.camera.phi_deg = state.orbit3d.phi * 180.0 / 3.141592653589793;
+      file.camera.theta_deg = glm::degrees(state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta);
+      if (state.dimension == 3) file.camera.phi_deg = glm::degrees(state.orbit3d.phi);
     }
     save_scene_file(file, path);
     state.message = trf("saved the camera preset to %s", path.c_str());
@@ -147,6 +141,23 @@ bool save_preset(AppState& state, const std::string& path) {
     state.message_is_error = true;
     return false;
   }
+}
+
+void switch_dimension(AppState& state, int dimension) {
+  if (dimension == state.dimension) return;
+  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
+    state.scene_path.clear();
+    state.message = trf("switched to the built-in %dD demo scene", dimension);
+    state.message_is_error = false;
+  }
+  state.file.dimension = dimension;
+  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
+  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
+  state.dimension = dimension;
+  state.construction_step = -1;
+  state.pinned_pixel.reset();
+  ++state.scene_version;
+  state.cameras_dirty = true;
 }
 
 int construction_steps(const AppState& state) {

@@ -47,6 +47,7 @@ struct AppState {
   // ---- the lesson ----
   ClassicMistakes mistakes;
   bool arccos_route = false;  // free placement through the handout's arccos (the mistake near a pole)
+  std::string mistake_look_at;  // after a mistake's "show me": what to look at (empty: nothing shown)
   int construction_step = -1;  // -1: the final camera; 0..steps: the handout's frames a → d
   std::optional<PixelIndex> pinned_pixel;   // clicked, or --inspect
   std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
@@ -101,6 +102,10 @@ bool save_preset(AppState& state, const std::string& path);
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
 bool uses_reference_caster(const AppState& state);
+
+// Switches between the 2D and 3D cameras; a scene file holds one kind of scene, so the other kind is the
+// built-in demo scene.
+void switch_dimension(AppState& state, int dimension);
 
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
 int construction_steps(const AppState& state);

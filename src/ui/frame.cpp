@@ -4,11 +4,14 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "fonts.h"
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "observer_renderer.h"
 #include "panels.h"
 #include "raycam/transform.h"
@@ -17,7 +20,8 @@
 namespace raycam::ui {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
+constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
+const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
@@ -25,6 +29,25 @@ bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra
   ImGui::SetNextWindowPos({r.x, r.y});
   ImGui::SetNextWindowSize({r.w, r.h});
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
+}
+
+// The image widget shows the canonical screen: in 3D the square [-1, 1]² with +y up; in 2D the segment
+// with canonical +x at the left (column 0 is the eye's left). fx, fy: the mouse in the widget, 0…1. The
+// pixel comes from the core's pixel <-> screen pair, as the caster's pixel centres do.
+PixelIndex pixel_under(const AppState& state, double fx, double fy) {
+  auto pixel_of = [](double raster, int count) { return std::clamp(int(std::floor(raster)), 0, count - 1); };
+  PixelIndex pixel;
+  if (state.dimension == 2) {
+    const Camera2D& camera = state.camera2d;
+    pixel.column =
+        camera.column_of_pixel(pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
+  } else {
+    const Camera3D& camera = state.camera3d;
+    const glm::dvec2 raster = camera.raster_from_screen({2.0 * fx - 1.0, 1.0 - 2.0 * fy});
+    pixel.column = pixel_of(raster.x, camera.columns());
+    pixel.row = pixel_of(raster.y, camera.rows());
+  }
+  return pixel;
 }
 
 // Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
@@ -40,7 +63,8 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
     } else {
       theta -= io.MouseDelta.x * 0.01;
-      if (!is_2d) state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, kPi);
+      if (!is_2d)
+        state.orbit3d.phi = std::clamp(state.orbit3d.phi - io.MouseDelta.y * 0.01, 0.0, glm::pi<double>());
     }
     state.cameras_dirty = true;
   }
@@ -91,7 +115,8 @@ void apply_theme(const AppState& state) {
 void prepare_frame(const AppState& state) { update_fonts(state.font_scale); }
 
 // ---- layout and build ----------------------------------------------------------------------------------
-FrameRenderer::FrameRenderer() : observer_(std::make_unique<gl::ObserverRenderer>()) {}
+FrameRenderer::FrameRenderer()
+    : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
 FrameRenderer::~FrameRenderer() = default;
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
@@ -105,6 +130,11 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (state.dimension == 3 && state.scene_version != uploaded_scene_version_) {
     observer_->set_spheres(state.file.scene3d.spheres);
     uploaded_scene_version_ = state.scene_version;
+  }
+  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
+    discs_->set_discs(overhead_discs(state));
+    uploaded_disc_version_ = state.scene_version;
+    uploaded_disc_dimension_ = state.dimension;
   }
   state.hovered_pixel.reset();
 
@@ -150,10 +180,22 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
-  const std::string title =
+  std::string title =
       is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
             : trf("Image: %d × %d###image", state.map.width, state.map.height);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not; first,
+  // because a narrow header clips the end.
+  const std::string mistakes = mistakes_on(state);
+  if (!mistakes.empty()) title = trf("MISTAKE ON: %s", mistakes.c_str()) + "  |  " + title;
+  const int header_colours = mistakes.empty() ? 0 : 2;
+  if (header_colours) {
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, kMistakeHeader);
+  }
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  ImGui::PopStyleColor(header_colours);
+  layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
+  if (open) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
     const ImVec2 size = is_2d ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
@@ -161,11 +203,13 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_.id())), size, {0, 0}, {1, 1});
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
     layout.image = {low.x, low.y, high.x - low.x, high.y - low.y};
+    // A frame just outside the image, so that where the background ends shows against the window.
+    ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
+                                        0, 0, 1.0f);
     if (ImGui::IsItemHovered() && state.map.width > 0) {
       const ImVec2 mouse = ImGui::GetIO().MousePos;
-      PixelIndex pixel;
-      pixel.column = std::clamp(int((mouse.x - low.x) / (high.x - low.x) * state.map.width), 0, state.map.width - 1);
-      pixel.row = std::clamp(int((mouse.y - low.y) / (high.y - low.y) * state.map.height), 0, state.map.height - 1);
+      const PixelIndex pixel =
+          pixel_under(state, (mouse.x - low.x) / (high.x - low.x), (mouse.y - low.y) / (high.y - low.y));
       state.hovered_pixel = pixel;
       if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
     }
@@ -194,7 +238,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, *discs_);
       draw->PopClipRect();
     }
   }
@@ -224,21 +268,22 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const glm::dvec3 target = state.orbit3d.target;
       const double reach = state.orbit3d.d + state.orbit3d.df;
       const double distance = 1.7 * reach * state.observer.zoom;
-      const double yaw = state.observer.yaw_deg * kPi / 180, pitch = state.observer.pitch_deg * kPi / 180;
+      const double yaw = glm::radians(double(state.observer.yaw_deg)),
+                   pitch = glm::radians(double(state.observer.pitch_deg));
       const glm::dvec3 observer_eye = target + distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
       const glm::mat4 view = glm::lookAt(glm::vec3(observer_eye), glm::vec3(target), glm::vec3(0, 0, 1));
       const glm::mat4 projection = glm::perspective(glm::radians(45.0f), size.x / size.y, float(distance * 0.01), float(distance * 50));
 
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
+      frame.observer_eye = glm::vec3(observer_eye);
       frame.background = state.file.scene3d.background;
-      const glm::dmat4& m = camera.world_from_camera();
       const glm::dvec3 eye = camera.eye();
-      const glm::dvec3 canonical[4] = {{-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
+      const std::array<glm::dvec3, 4> corners = camera.screen_corners();
       const glm::vec4 cyan{0, 0.9f, 1, 1}, faint_cyan{0, 0.9f, 1, 0.45f};
-      for (int i = 0; i < 4; ++i) {
-        const glm::dvec3 corner = transform_point(m, canonical[i]), next = transform_point(m, canonical[(i + 1) % 4]);
-        frame.screen_corners[std::size_t(i)] = glm::vec3(corner);
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        const glm::dvec3 corner = corners[i], next = corners[(i + 1) % corners.size()];
+        frame.screen_corners[i] = glm::vec3(corner);
         frame.lines.push_back({glm::vec3(corner), glm::vec3(next), cyan});
         frame.lines.push_back({glm::vec3(eye), glm::vec3(eye + glm::normalize(corner - eye) * (1.4 * reach)), faint_cyan});
       }
@@ -255,11 +300,18 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         offset[a] = cross;
         frame.lines.push_back({t - offset, t + offset, yellow});
       }
+      // The same rays as the image and the overhead view (the middle row), to where the caster hit.
+      for (const InspectedRay& ray : primary_ray_fan(state, kObserverFanRays)) {
+        const Rgb8 c =
+            ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : Rgb8{200, 200, 200};
+        frame.lines.push_back({glm::vec3(ray.origin),
+                               glm::vec3(ray.end(2.0 * reach)),
+                               {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, ray.hit.id >= 0 ? 0.9f : 0.25f}});
+      }
       if (const auto pixel = active_pixel(state)) {
         const InspectedRay ray = inspect_pixel(state, *pixel);
-        const double length = ray.hit.id >= 0 ? ray.hit.t : 2.0 * reach;
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
-        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.origin + length * ray.direction), {1, 0, 1, 1}});
+        frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.end(2.0 * reach)), {1, 0, 1, 1}});
       }
       const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
       // GL textures are bottom-up: flip v.

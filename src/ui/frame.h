@@ -26,6 +26,7 @@ struct Rect {
 struct FrameLayout {
   Rect panel;
   Rect image;     // the colour bar or texture, exactly
+  Rect image_header;  // the image window's title bar (names a classic mistake that is on)
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only
@@ -45,7 +46,9 @@ class FrameRenderer {
 
   gl::ColourMapTexture texture_;
   std::unique_ptr<gl::ObserverRenderer> observer_;
-  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0;
+  std::unique_ptr<gl::DiscLayer> discs_;
+  std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
+  int uploaded_disc_dimension_ = 0;
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at

@@ -1,6 +1,25 @@
 #include "inspection.h"
 
+#include <algorithm>
+
 namespace raycam::ui {
+
+namespace {
+// The object the caster put in this pixel, and t along the ray from the caster's formula. The reference
+// caster (accuracy knobs) may round differently: then t can be "no hit" while the id says hit, and the
+// views draw the ray to a far point in the object's colour.
+template <class Ray, class Objects>
+Hit hit_as_cast(const AppState& state, PixelIndex pixel, const Ray& ray, const Objects& objects) {
+  Hit hit;
+  if (pixel.row >= state.map.height || pixel.column >= state.map.width) return hit;
+  hit.id = state.map.id_at(pixel.row, pixel.column);
+  if (hit.id < 0 || std::size_t(hit.id) >= objects.size()) return Hit{};
+  const auto& object = objects[std::size_t(hit.id)];
+  hit.t =
+      nearest_hit_t(ray.origin, ray.direction, object.centre, object.radius, state.accuracy.options.formula);
+  return hit;
+}
+}  // namespace
 
 InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
   InspectedRay out;
@@ -11,19 +30,19 @@ InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
     const glm::dvec2 p0 = camera.canonical_pixel(out.k);
     const Ray2D ray = camera.primary_ray(out.k);
     out.canonical_pixel = {p0, 0.0};
-    out.canonical_direction = {p0 - glm::dvec2(0.0, 1.0), 0.0};
+    out.canonical_direction = {p0 - kCanonicalEye2D, 0.0};  // u_k^0 = P_k^0 - E0
     out.origin = {ray.origin, 0.0};
     out.direction = {ray.direction, 0.0};
-    out.hit = nearest_hit(state.file.scene2d.circles, ray, IntersectFormula::stable);
+    out.hit = hit_as_cast(state, pixel, ray, state.file.scene2d.circles);
   } else {
     const Camera3D& camera = state.camera3d;
     const glm::dvec3 p0 = camera.canonical_pixel(pixel.row, pixel.column);
     const Ray3D ray = camera.primary_ray(pixel.row, pixel.column);
     out.canonical_pixel = p0;
-    out.canonical_direction = p0 - glm::dvec3(0.0, 0.0, 1.0);
+    out.canonical_direction = p0 - kCanonicalEye3D;
     out.origin = ray.origin;
     out.direction = ray.direction;
-    out.hit = nearest_hit(state.file.scene3d.spheres, ray, IntersectFormula::stable);
+    out.hit = hit_as_cast(state, pixel, ray, state.file.scene3d.spheres);
   }
   return out;
 }
@@ -32,6 +51,17 @@ std::optional<PixelIndex> active_pixel(const AppState& state) {
   std::optional<PixelIndex> pixel = state.hovered_pixel ? state.hovered_pixel : state.pinned_pixel;
   if (pixel && (pixel->column >= state.map.width || pixel->row >= state.map.height)) return std::nullopt;
   return pixel;
+}
+
+std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays) {
+  std::vector<InspectedRay> fan;
+  const int n = state.map.width;
+  if (n <= 0 || max_rays <= 0) return fan;
+  const int stride = std::max(1, (n + max_rays - 1) / max_rays);
+  const int row = state.map.height / 2;
+  for (int column = stride / 2; column < n; column += stride)
+    fan.push_back(inspect_pixel(state, {row, column}));
+  return fan;
 }
 
 }  // namespace raycam::ui

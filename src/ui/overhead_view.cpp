@@ -12,33 +12,32 @@ namespace raycam::ui {
 
 namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
-constexpr std::size_t kMaxDiscs = 20000;  // objects drawn from above; the caster still sees all of them
+constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
-glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }
+glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
+glm::dvec2 xy(glm::dvec2 p) { return p; }
 
 double camera_reach(const AppState& state) {
   return state.dimension == 2 ? state.orbit2d.d + state.orbit2d.df : state.orbit3d.d + state.orbit3d.df;
 }
 
 // The camera's eye and screen corners in the world (2D: the two screen ends), seen from above.
-std::vector<glm::dvec2> camera_outline(const AppState& state, glm::dvec2* eye) {
-  if (state.dimension == 2) {
-    const glm::dmat3& m = state.camera2d.world_from_camera();
-    *eye = transform_point(m, glm::dvec2(0.0, 1.0));
-    return {transform_point(m, glm::dvec2(-1.0, 0.0)), transform_point(m, glm::dvec2(1.0, 0.0))};
-  }
-  const glm::dmat4& m = state.camera3d.world_from_camera();
-  *eye = xy(transform_point(m, glm::dvec3(0.0, 0.0, 1.0)));
-  return {xy(transform_point(m, glm::dvec3(-1, 1, 0))), xy(transform_point(m, glm::dvec3(1, 1, 0))),
-          xy(transform_point(m, glm::dvec3(1, -1, 0))), xy(transform_point(m, glm::dvec3(-1, -1, 0)))};
+template <class Matrix>
+std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dvec2* eye) {
+  *eye = xy(eye_of(world_from_camera));
+  std::vector<glm::dvec2> outline;
+  for (const auto& corner : screen_corners_of(world_from_camera)) outline.push_back(xy(corner));
+  return outline;
 }
 }  // namespace
 
 // ---- fitting -------------------------------------------------------------------------------------------
 OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size) {
   glm::dvec2 eye;
-  std::vector<glm::dvec2> points = camera_outline(state, &eye);
+  std::vector<glm::dvec2> points = state.dimension == 2
+                                       ? camera_outline(state.camera2d.world_from_camera(), &eye)
+                                       : camera_outline(state.camera3d.world_from_camera(), &eye);
   points.push_back(eye);
   const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
   points.push_back(target);
@@ -52,8 +51,7 @@ OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size
   if (state.dimension == 2)
     for (const Circle& c : state.file.scene2d.circles) include(c.centre, c.radius);
   else
-    for (std::size_t i = 0; i < std::min(state.file.scene3d.spheres.size(), kMaxDiscs); ++i)
-      include(xy(state.file.scene3d.spheres[i].centre), state.file.scene3d.spheres[i].radius);
+    for (const Sphere& s : state.file.scene3d.spheres) include(xy(s.centre), s.radius);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
   const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));
@@ -85,18 +83,12 @@ void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVe
 template <class Matrix>
 void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world_from_camera, ImU32 colour,
                  double fov_length, bool draw_fov) {
-  std::vector<glm::dvec2> corners;
   glm::dvec2 eye;
-  if constexpr (std::is_same_v<Matrix, glm::dmat3>) {
-    eye = transform_point(world_from_camera, glm::dvec2(0.0, 1.0));
-    corners = {transform_point(world_from_camera, glm::dvec2(-1.0, 0.0)), transform_point(world_from_camera, glm::dvec2(1.0, 0.0))};
-    draw->AddLine(m.to_screen(corners[0]), m.to_screen(corners[1]), colour, 4.0f);
-  } else {
-    eye = xy(transform_point(world_from_camera, glm::dvec3(0.0, 0.0, 1.0)));
-    for (const glm::dvec3& c : {glm::dvec3(-1, 1, 0), glm::dvec3(1, 1, 0), glm::dvec3(1, -1, 0), glm::dvec3(-1, -1, 0)})
-      corners.push_back(xy(transform_point(world_from_camera, c)));
-    for (int i = 0; i < 4; ++i) draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % 4]), colour, 3.0f);
-  }
+  const std::vector<glm::dvec2> corners = camera_outline(world_from_camera, &eye);
+  const bool segment = corners.size() == 2;  // 2D: the screen is a segment
+  for (std::size_t i = 0; i + (segment ? 1 : 0) < corners.size(); ++i)
+    draw->AddLine(m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % corners.size()]), colour,
+                  segment ? 4.0f : 3.0f);
   if (draw_fov)
     for (const glm::dvec2& corner : corners) {
       const glm::dvec2 along = corner - eye;
@@ -106,67 +98,81 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
 }
 
-template <class Objects>
-void draw_discs(ImDrawList* draw, const OverheadMapping& m, const Objects& objects, const std::vector<std::size_t>& order) {
-  for (std::size_t i : order) {
-    const auto& object = objects[i];
-    const float radius = std::max(1.0f, float(object.radius) * m.scale);
-    draw->AddCircleFilled(m.to_screen(xy(glm::dvec3(object.centre, 0.0))), radius, colour_of(object.colour),
-                          std::clamp(int(radius), 8, 48));
-  }
-}
-
-// Primary rays of the 2D bar (or of the middle image row in 3D), each drawn to its hit in the colour it
-// returns; misses faint, to the edge of the view.
+// Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
+// the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
+// lines; many are drawn as translucent wedges between neighbours that hit the same object, so that a dense
+// fan reads as a beam instead of hatching over the discs.
 void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state, double far_length) {
-  const int n = state.map.width;
-  const int stride = std::max(1, (n + kMaxFanRays - 1) / kMaxFanRays);
-  const int row = state.map.height / 2;
-  for (int column = stride / 2; column < n; column += stride) {
-    glm::dvec2 from, direction;
-    Hit hit;
-    if (state.dimension == 2) {
-      const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
-      from = ray.origin;
-      direction = ray.direction;
-      hit = nearest_hit(state.file.scene2d.circles, ray, IntersectFormula::stable);
-    } else {
-      const Ray3D ray = state.camera3d.primary_ray(row, column);
-      from = xy(ray.origin);
-      direction = xy(ray.direction);
-      hit = nearest_hit(state.file.scene3d.spheres, ray, IntersectFormula::stable);
+  const std::vector<InspectedRay> fan = primary_ray_fan(state, kMaxFanRays);
+  const Rgb8 miss_colour{200, 200, 200};
+  auto colour = [&](const InspectedRay& ray) {
+    return ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : miss_colour;
+  };
+  auto from = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.origin)); };
+  auto to = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.end(far_length))); };
+  if (fan.size() <= std::size_t(kMaxFanLines)) {
+    for (const InspectedRay& ray : fan) {
+      const bool missed = ray.hit.id < 0;
+      draw->AddLine(from(ray), to(ray), colour_of(colour(ray), missed ? 70 : 230), missed ? 1.0f : 1.5f);
+      if (!missed) draw->AddCircleFilled(to(ray), 2.5f, colour_of(colour(ray)));
     }
-    const bool missed = hit.id < 0;
-    const glm::dvec2 to = from + direction * (missed ? far_length : hit.t);
-    const Rgb8 colour = missed ? Rgb8{200, 200, 200} : state.map.colour_at(row, column);
-    draw->AddLine(m.to_screen(from), m.to_screen(to), colour_of(colour, missed ? 50 : 200), 1.0f);
+    return;
+  }
+  // Without anti-aliased edges: the faint seams between neighbouring wedges would themselves read as
+  // hatching.
+  const ImDrawListFlags flags = draw->Flags;
+  draw->Flags &= ~ImDrawListFlags_AntiAliasedFill;
+  for (std::size_t i = 0; i + 1 < fan.size(); ++i) {
+    const InspectedRay &a = fan[i], &b = fan[i + 1];
+    if (a.hit.id != b.hit.id) continue;
+    const int alpha = a.hit.id < 0 ? 14 : 70;
+    draw->AddTriangleFilled(from(a), to(a), to(b), colour_of(colour(a), alpha));
+    draw->AddTriangleFilled(from(a), to(b), from(b), colour_of(colour(a), alpha));
+  }
+  draw->Flags = flags;
+  for (std::size_t i = 0; i < fan.size(); ++i) {  // the edges of each beam, where the object changes
+    const bool edge = i == 0 || i + 1 == fan.size() || fan[i - 1].hit.id != fan[i].hit.id ||
+                      fan[i + 1].hit.id != fan[i].hit.id;
+    if (edge)
+      draw->AddLine(from(fan[i]), to(fan[i]), colour_of(colour(fan[i]), fan[i].hit.id < 0 ? 60 : 200), 1.0f);
   }
 }
 }  // namespace
 
+std::vector<gl::Disc> overhead_discs(const AppState& state) {
+  std::vector<gl::Disc> discs;
+  if (state.dimension == 2) {
+    for (const Circle& c : state.file.scene2d.circles) discs.push_back({c.centre, c.radius, c.colour});
+    return discs;
+  }
+  const auto& spheres = state.file.scene3d.spheres;
+  std::vector<std::size_t> order(spheres.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
+  });
+  discs.reserve(order.size());
+  for (std::size_t i : order) discs.push_back({xy(spheres[i].centre), spheres[i].radius, spheres[i].colour});
+  return discs;
+}
+
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(state.dimension == 2 ? state.file.scene2d.background : state.file.scene3d.background));
   draw_axes(draw, m, clip_min, clip_max);
   const double far_length = 3.0 * camera_reach(state);
 
-  if (state.dimension == 2) {
-    std::vector<std::size_t> order(state.file.scene2d.circles.size());
-    std::iota(order.begin(), order.end(), 0);
-    draw_discs(draw, m, state.file.scene2d.circles, order);
-  } else {
-    // From above, the highest sphere top hides the others: draw from the lowest top up.
-    const auto& spheres = state.file.scene3d.spheres;
-    std::vector<std::size_t> order(std::min(spheres.size(), kMaxDiscs));
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
-    });
-    std::vector<Circle> discs;  // the spheres' silhouettes from above
-    for (const Sphere& s : spheres) discs.push_back({xy(s.centre), s.radius, s.colour, {}});
-    draw_discs(draw, m, discs, order);
-  }
+  // One texel per framebuffer pixel (a HiDPI window has more of them than UI pixels).
+  const ImVec2 density = ImGui::GetIO().DisplayFramebufferScale;
+  gl::DiscPlacement placement;
+  placement.origin = {(m.origin.x - clip_min.x) * density.x, (m.origin.y - clip_min.y) * density.y};
+  placement.scale = m.scale * density.x;
+  placement.width = int(std::lround((clip_max.x - clip_min.x) * density.x));
+  placement.height = int(std::lround((clip_max.y - clip_min.y) * density.y));
+  if (placement.width > 0 && placement.height > 0)
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs.texture(placement))), clip_min,
+                   clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
@@ -181,10 +187,8 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
 
   if (inspected) {
-    const glm::dvec2 from = xy(inspected->origin), direction = xy(inspected->direction);
-    const double length = inspected->hit.id >= 0 ? inspected->hit.t : far_length;
-    const ImVec2 end = m.to_screen(from + direction * length);
-    draw->AddLine(m.to_screen(from), end, kInspectedRayColour, 3.0f);
+    const ImVec2 end = m.to_screen(xy(inspected->end(far_length)));
+    draw->AddLine(m.to_screen(xy(inspected->origin)), end, kInspectedRayColour, 3.0f);
     if (inspected->hit.id >= 0) draw->AddCircle(end, 6.0f, kInspectedRayColour, 16, 2.0f);
   }
 }
@@ -200,7 +204,7 @@ int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_
     return best;
   }
   const auto& spheres = state.file.scene3d.spheres;
-  for (std::size_t i = 0; i < std::min(spheres.size(), kMaxDiscs); ++i) {
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
     const double top = spheres[i].centre.z + spheres[i].radius;
     if (glm::length(xy(spheres[i].centre) - p) <= spheres[i].radius && top > best_top) best = int(i), best_top = top;
   }

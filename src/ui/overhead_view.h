@@ -1,13 +1,16 @@
 // The overhead views: the world seen from above (2D: the plane itself; 3D: looking down -z), with x to the
-// right and y up, drawn with ImGui's draw list so that they look the same in a window and headless.
+// right and y up, drawn with ImGui's draw list so that they look the same in a window and headless; the
+// objects' discs are one cached image in that list (gl/disc_layer.h).
 #pragma once
 
-#include <optional>
-
-#include <glm/vec2.hpp>
 #include <imgui.h>
 
+#include <glm/vec2.hpp>
+#include <optional>
+#include <vector>
+
 #include "app_state.h"
+#include "disc_layer.h"
 #include "inspection.h"
 
 namespace raycam::ui {
@@ -23,9 +26,14 @@ struct OverheadMapping {
 // Fits the scene's objects, the target and the camera (eye and screen) into the rectangle, with a margin.
 OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size);
 
-// Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray.
+// Every object's disc seen from above, in drawing order (3D: from the lowest sphere top up, so the highest
+// hides the others). Give it to a DiscLayer when the scene changes.
+std::vector<gl::Disc> overhead_discs(const AppState& state);
+
+// Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray. `discs` must hold
+// overhead_discs(state).
 void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const AppState& state,
-                   const std::optional<InspectedRay>& inspected);
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs);
 
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const AppState& state, ImVec2 screen_point);
@@ -36,5 +44,6 @@ inline constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
 inline constexpr ImU32 kScreenColour = IM_COL32(0, 230, 255, 255);
 inline constexpr ImU32 kInspectedRayColour = IM_COL32(255, 0, 255, 255);
 inline constexpr ImU32 kConstructionColour = IM_COL32(255, 150, 40, 255);
+inline constexpr ImU32 kImageFrameColour = IM_COL32(170, 175, 190, 255);  // around the colour bar and image
 
 }  // namespace raycam::ui

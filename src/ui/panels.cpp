@@ -8,19 +8,22 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 #include <iterator>
 
 #include "inspection.h"
+#include "mistake_lessons.h"
 #include "raycam/view_setup.h"
 #include "text.h"
 
 namespace raycam::ui {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
+const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
 bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
@@ -29,11 +32,12 @@ bool slider_double(const char* label, double& value, double lo, double hi, const
   return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
 }
 
+// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
-  double degrees = radians / kDegree;
+  double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
   if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
-  radians = degrees * kDegree;
+  radians = glm::radians(degrees);
   return true;
 }
 
@@ -54,22 +58,6 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
-void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    state.message = trf("switched to the built-in %dD demo scene", dimension);
-    state.message_is_error = false;
-  }
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
-  state.construction_step = -1;
-  state.pinned_pixel.reset();
-  ++state.scene_version;
-  state.cameras_dirty = true;
-}
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
@@ -118,7 +106,7 @@ void camera_section(AppState& state) {
     }
   }
   ImGui::Text(tr("n = %d × %d, field of view %.1f°"), state.map.width, state.map.height,
-              2.0 * std::atan(1.0 / df) / kDegree);
+              glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()));
   if (ImGui::Button(tr("Reset camera"))) {
     if (is_2d) state.orbit2d = Orbit2D{};
     else state.orbit3d = Orbit3D{};
@@ -150,7 +138,7 @@ void construction_section(AppState& state) {
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), p.alpha / kDegree);
+    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), glm::degrees(p.alpha));
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("R(α)")) {
       matrix_table<3>("R", p.rotation);
@@ -218,14 +206,14 @@ namespace {
 void arccos_error_line(const AppState& state) {
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
-    const glm::dvec2 cp(std::cos(o.theta), std::sin(o.theta));
+    const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, 2 * kPi);
     ImGui::TextColored(kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
                        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
   } else {
     const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi), std::cos(o.phi));
+    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
     ImGui::TextColored(kDim, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
@@ -235,21 +223,25 @@ void arccos_error_line(const AppState& state) {
 }  // namespace
 
 void mistakes_section(AppState& state) {
-  const bool any = any_mistake(state.mistakes) || state.arccos_route;
+  const bool any = !mistakes_on(state).empty();
   if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
-  const char* language = language_code(current_language());  // the texts live beside the mistakes, in the core
-  for (const MistakeInfo& mistake : kClassicMistakes) {  // one definition: core/classic_mistakes.cpp
-    if (!(state.dimension == 2 ? mistake.in_2d : mistake.in_3d)) continue;
-    changed |= ImGui::Checkbox(mistake_label(mistake, language), &(state.mistakes.*mistake.flag));
-    explain(mistake_explanation(mistake, language));
+  for (const MistakeLesson& lesson : mistake_lessons()) {
+    if (!mistake_applies(state, lesson)) continue;
+    ImGui::PushID(lesson.id);
+    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    if (lesson.show_me) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
+    }
+    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
+    explain(mistake_text(state, lesson).c_str());
+    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
+      ImGui::TextColored(kLookAt, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+    if (!lesson.info) arccos_error_line(state);
+    ImGui::PopID();
   }
-  changed |= ImGui::Checkbox(tr("arccos route near a pole"), &state.arccos_route);
-  explain(
-      tr("placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
-         "loses half the digits and the camera snaps to the axis."));
-  arccos_error_line(state);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -416,10 +408,13 @@ void handle_shortcuts(AppState& state) {
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
-  if (pressed(ImGuiKey_LeftArrow)) theta -= 5 * kDegree, changed = true;
-  if (pressed(ImGuiKey_RightArrow)) theta += 5 * kDegree, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow)) state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - 5 * kDegree), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow)) state.orbit3d.phi = std::min(3.141592653589793, state.orbit3d.phi + 5 * kDegree), changed = true;
+  const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
+  if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
+  if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
+  if (!is_2d && pressed(ImGuiKey_UpArrow))
+    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+  if (!is_2d && pressed(ImGuiKey_DownArrow))
+    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

@@ -74,12 +74,74 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
       {"arccos route near a pole", "route arccos près d'un pôle"},
-      {"placing the camera from P and C with the handout's arccos: near θ = 0 (2D) or φ = 0 (3D) arccos "
-       "loses "
-       "half the digits and the camera snaps to the axis.",
-       "placer la caméra à partir de P et C avec l'arccos du TD : près de θ = 0 (2D) ou φ = 0 (3D), arccos "
-       "perd "
-       "la moitié des chiffres et la caméra saute sur l'axe."},
+      {"show me", "montre-moi"},
+      {"Look: %s", "Regarder : %s"},
+
+      // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
+      {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
+      {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "
+       "symmetric "
+       "image.",
+       "Chaque rayon part à un demi-pixel (1/n = %.3g) de son centre : une scène symétrique ne donne plus "
+       "une "
+       "image symétrique."},
+      {"At n = %d half a pixel is too small to see: show me.",
+       "Avec n = %d un demi-pixel est trop petit pour se voir : montre-moi."},
+      {"Here |u| = %.2f on the axis to %.2f at the edges.", "Ici |u| = %.2f sur l'axe à %.2f aux bords."},
+      {"The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only if "
+       "|u| = "
+       "1, and otherwise grows with how far the object is: rays miss everything not touching the screen, so "
+       "the "
+       "image is background (the ground too). With the naive formula objects swell instead.",
+       "Le test stable prend |f − (f·u)u| pour la distance du rayon au centre ; ce n'est une distance que si "
+       "|u| = 1, sinon elle grandit avec l'éloignement de l'objet : les rayons manquent tout ce qui ne "
+       "touche pas "
+       "l'écran, l'image n'est que fond (le sol aussi). Avec la formule naïve, les objets gonflent au "
+       "contraire."},
+      {"The naive test Δ = b² − c uses b = f·u, too big by |u|: a ray hits when it passes within √(r² + "
+       "(|u|² − "
+       "1)·b²) of the centre, so every object swells, the far ones most, and covers its neighbours; t is "
+       "wrong "
+       "too. With the stable formula objects vanish instead.",
+       "Le test naïf Δ = b² − c utilise b = f·u, trop grand d'un facteur |u| : un rayon touche s'il passe à "
+       "moins "
+       "de √(r² + (|u|² − 1)·b²) du centre, donc chaque objet gonfle, les lointains le plus, et recouvre ses "
+       "voisins ; t est faux aussi. Avec la formule stable, les objets disparaissent au contraire."},
+      {"Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
+       "error "
+       "√(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). Show me "
+       "goes "
+       "to 3D, where the pole makes it visible.",
+       "Placer la caméra à partir de P et C avec l'arccos du TD : un arrondi ε de l'entrée devient une "
+       "erreur "
+       "d'angle √(2ε), au plus ~1e-8 rad en 2D : aucun pixel ne bouge, quels que soient les réglages (les "
+       "nombres ci-dessous le montrent). « Montre-moi » passe en 3D, où le pôle la rend visible."},
+      {"Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes "
+       "an "
+       "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.",
+       "Placer la caméra à partir de P et C avec l'arccos du TD : près d'un pôle, un arrondi ε de l'entrée "
+       "devient "
+       "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
+      {"res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the image "
+       "jump "
+       "half a pixel",
+       "res 0,05 : chaque rayon part du bord gauche d'un pixel (graduations sur l'écran) ; cocher et "
+       "décocher pour "
+       "voir l'image sauter d'un demi-pixel"},
+      {"d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image",
+       "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
+      {"res·N = 12.75: floor gives 12 pixels, round 13; count them",
+       "res·N = 12,75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
+      {"d_f = 3: without H the field of view stays 90°, as at d_f = 1",
+       "d_f = 3 : sans H l'angle d'ouverture reste 90°, comme avec d_f = 1"},
+      {"the object nearest the target is now between the eye and the screen: the correct camera does not see "
+       "it, "
+       "the mistaken one shows it",
+       "l'objet le plus proche de la cible est maintenant entre l'œil et l'écran : la caméra correcte ne le "
+       "voit "
+       "pas, la caméra erronée le montre"},
+      {"φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare",
+       "φ = 1e-7° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
       {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
       {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
 

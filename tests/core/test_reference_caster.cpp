@@ -133,3 +133,43 @@ TEST_CASE("bad knobs are refused with the field named", "[reference]") {
   CHECK_THROWS_WITH(parse_scalar("half", "--precision"), Catch::Contains("--precision"));
   CHECK_THROWS_WITH(parse_formula("fast", "--intersect"), Catch::Contains("--intersect"));
 }
+
+TEST_CASE("one rule picks the caster: where it says fast, the fast caster gives the reference's image",
+          "[reference][caster-choice]") {
+  CHECK_FALSE(needs_reference_caster(ReferenceOptions{}, false));
+  CHECK(needs_reference_caster(ReferenceOptions{}, true));  // the exact 2D bar
+  CHECK(needs_reference_caster(ReferenceOptions{Scalar::float32}, false));
+  CHECK(needs_reference_caster(ReferenceOptions{Scalar::extended}, false));
+  CHECK(needs_reference_caster(ReferenceOptions{Scalar::float64, IntersectFormula::stable, 4}, false));
+  CHECK(needs_reference_caster(ReferenceOptions{Scalar::float64, IntersectFormula::stable, 1, true}, false));
+  // The formula alone never needs the reference caster: the fast caster takes it, with the same result.
+  Random random(23);
+  for (IntersectFormula formula : {IntersectFormula::stable, IntersectFormula::naive}) {
+    const ReferenceOptions options{Scalar::float64, formula};
+    REQUIRE_FALSE(needs_reference_caster(options, false));
+    CastOptions fast;
+    fast.formula = formula;
+    for (int trial = 0; trial < 20; ++trial) {
+      const Scene2D scene2d = random_scene_2d(random, random.integer(1, 10), 4.0);
+      Camera2D camera2d(
+          random.integer(1, 300),
+          Orbit2D{
+              {0, 0}, random.log_uniform(0.5, 1e3), random.uniform(-kPi, kPi), random.log_uniform(0.1, 10)});
+      const CoverageImage reference2d = reference_cast(camera2d, scene2d, options);
+      const ColourMap fast2d = cast_primary_rays(camera2d, scene2d, fast);
+      CHECK(reference2d.ids == fast2d.ids);
+      CHECK(to_colour_map(reference2d).colours == fast2d.colours);
+      const Scene3D scene3d = random_scene_3d(random, random.integer(1, 8), 3.0);
+      Camera3D camera3d(random.integer(1, 40), random.integer(1, 40),
+                        Orbit3D{{0, 0, 0},
+                                random.log_uniform(0.5, 1e3),
+                                random.uniform(-kPi, kPi),
+                                random.uniform(0, kPi),
+                                2.0});
+      const CoverageImage reference3d = reference_cast(camera3d, scene3d, options);
+      const ColourMap fast3d = cast_primary_rays(camera3d, scene3d, fast);
+      CHECK(reference3d.ids == fast3d.ids);
+      CHECK(to_colour_map(reference3d).colours == fast3d.colours);
+    }
+  }
+}

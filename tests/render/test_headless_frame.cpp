@@ -2,7 +2,6 @@
 // the core's colour map (recomputed here from the same parameters in radians), the overhead mapping's
 // positions of the eye, target and screen, and the inspected ray's hit point — plus reviewed reference PNGs.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <set>
 #include <string>
@@ -11,6 +10,7 @@
 #include "app_options.h"
 #include "headless_renderer.h"
 #include "image_compare.h"
+#include "inspection.h"
 #include "raycam/ray_caster.h"
 #include "raycam/transform.h"
 
@@ -163,6 +163,38 @@ TEST_CASE("the window matches the reviewed reference screenshots", "[render][ref
               << ")");
     CHECK(d.ok);
   }
+}
+
+TEST_CASE("a classic mistake that is on is named in the image's header, in red", "[render][mistakes]") {
+  auto header_is_red = [](const Shot& shot) {
+    const ui::Rect& h = shot.layout.image_header;
+    const Rgb8 c = pixel(shot.image, h.x + h.w - 6, h.y + h.h / 2);  // right end: no title text there
+    return c.r > 120 && c.g < 60 && c.b < 60;
+  };
+  CHECK_FALSE(header_is_red(shoot({})));
+  CHECK_FALSE(header_is_red(shoot({"--view", "2d"})));
+  CHECK(header_is_red(shoot({"--mistake", "pixel-edges"})));
+  CHECK(header_is_red(shoot({"--view", "2d", "--mistake", "arccos"})));
+}
+
+TEST_CASE("the overhead view draws each ray to the hit the caster found, mistakes included",
+          "[render][mistakes]") {
+  // Naive formula without renormalising: the bar is full of swollen objects, and the view must show those
+  // hits where the caster put them (it used to draw every ray as a miss).
+  const Shot shot =
+      shoot({"--view", "2d", "--size", "24", "--mistake", "no-renormalise", "--intersect", "naive"});
+  const ui::OverheadMapping& m = shot.layout.overhead_mapping;
+  int hits = 0;
+  for (int column = 0; column < shot.state.map.width; ++column) {
+    const ui::InspectedRay ray = ui::inspect_pixel(shot.state, {0, column});
+    if (ray.hit.id < 0) continue;
+    ++hits;
+    const Rgb8 c = shot.state.file.scene2d.circles[std::size_t(ray.hit.id)].colour;
+    INFO("column " << column);
+    CHECK(colour_near(shot.image, m.to_screen({ray.end(0).x, ray.end(0).y}), IM_COL32(c.r, c.g, c.b, 255), 1,
+                      30));
+  }
+  CHECK(hits == shot.state.map.width);  // at d_f = 1.5 the swollen circles cover the whole bar
 }
 
 TEST_CASE("the screenshot comparison fails on one changed digit and ignores only the masked timings",

@@ -6,18 +6,12 @@
 #include <fstream>
 
 #include "app_options.h"
+#include "app_state_for.h"
 #include "raycam/exact_bar.h"
 
 using namespace raycam;
+using raycam::test::state_for;
 
-namespace {
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();)
-    if (!ui::parse_app_option(args, i, options)) throw std::logic_error("not an app option: " + args[i]);
-  return ui::make_app_state(options);
-}
-}  // namespace
 
 TEST_CASE("a bad scene file shows an error naming it and keeps the current scene", "[ui][input]") {
   ui::AppState state = state_for({});
@@ -115,4 +109,18 @@ TEST_CASE("a knob the scene cannot take shows an error and the fast image, never
   CastOptions plain;
   plain.method = CastMethod::plain;
   CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+}
+
+TEST_CASE("placing the app's camera composes M_d once per change, with or without a mistake", "[ui][cache]") {
+  ui::AppState state = state_for({});
+  for (bool printed : {false, true})
+    for (bool arccos : {false, true})
+      for (int dimension : {2, 3}) {
+        state.dimension = dimension;
+        state.mistakes.printed_rotation_sign = printed;
+        state.arccos_route = arccos;
+        const long long before = placements_built_on_this_thread();
+        ui::place_cameras(state);
+        CHECK(placements_built_on_this_thread() - before == 1);
+      }
 }

@@ -1,0 +1,190 @@
+#include "mistake_lessons.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+#include <stdexcept>
+
+#include "text.h"
+
+namespace raycam::ui {
+
+namespace {
+double& focal(AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
+double focal(const AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
+int max_side(const AppState& state) {
+  return state.dimension == 2 ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
+}
+
+// ---- pixel edges ---------------------------------------------------------------------------------------
+std::string pixel_edges_does(const AppState& state) {
+  const int n = std::max(state.map.width, 1);
+  std::string text =
+      trf("Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
+          "gives a symmetric image.",
+          1.0 / n);
+  if (n > 32) text += " " + trf("At n = %d half a pixel is too small to see: show me.", n);
+  return text;
+}
+void pixel_edges_show(AppState& state) { state.res = std::max(0.05, 1.0 / max_side(state)); }
+
+// ---- res truncated -------------------------------------------------------------------------------------
+void res_truncated_show(AppState& state) { state.res = 12.75 / max_side(state); }  // round 13, floor 12
+
+// ---- forgot to renormalise -----------------------------------------------------------------------------
+// u_k = M_d·(P_k^0 - E0) keeps the length of (x, y, -d_f): |u| = sqrt(x² + y² + d_f²), from d_f on the axis
+// to sqrt(1 + d_f²) (2D) or sqrt(2 + d_f²) (3D) at the edges. With f = origin - centre and b̂ = f·û:
+// - naive: Δ = b² - c with b = |u|·b̂ accepts a ray when its distance p to the centre satisfies
+//   p² ≤ r² + (|u|² - 1)·b̂²: objects swell with their distance;
+// - stable: |f - b·u|² = p² + (|u|² - 1)²·b̂², so a ray hits only if p² + (|u|² - 1)²·b̂² ≤ r²: unless
+//   |u| ≈ 1, only objects whose nearest point is close to the screen (b̂ small) are hit.
+// (tests/ui/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
+std::string renormalise_does(const AppState& state) {
+  const double df = focal(state), edge = std::sqrt((state.dimension == 2 ? 1.0 : 2.0) + df * df);
+  std::string text = trf("Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
+  if (state.accuracy.options.formula == IntersectFormula::stable)
+    text +=
+        tr("The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only "
+           "if |u| = 1, and otherwise grows with how far the object is: rays miss everything not touching "
+           "the screen, so the image is background (the ground too). With the naive formula objects swell "
+           "instead.");
+  else
+    text +=
+        tr("The naive test Δ = b² − c uses b = f·u, too big by |u|: a ray hits when it passes within "
+           "√(r² + (|u|² − 1)·b²) of the centre, so every object swells, the far ones most, and covers its "
+           "neighbours; t is wrong too. With the stable formula objects vanish instead.");
+  return text;
+}
+void renormalise_show(AppState& state) { focal(state) = 1.0; }
+
+// ---- scaling H forgotten -------------------------------------------------------------------------------
+void focal_scale_show(AppState& state) {
+  if (std::abs(focal(state) - 1.0) < 0.5) focal(state) = 3.0;  // at d_f = 1, H is the identity anyway
+}
+
+// ---- rays from the eye, hits behind the ray --------------------------------------------------------------
+// Both only change what lies between the eye and the screen. Keep the camera's direction and move it so that
+// the object nearest the target sits just behind the screen, between it and the eye: the correct camera
+// does not see it, the mistaken one does.
+template <class Vector, class Objects>
+void put_object_behind_screen(const Objects& objects, Vector& target, double d, double& df, const Vector& view) {
+  if (objects.empty()) return;
+  const auto nearest = std::min_element(objects.begin(), objects.end(), [&](const auto& a, const auto& b) {
+    return glm::length(a.centre - target) < glm::length(b.centre - target);
+  });
+  const Vector screen_centre = nearest->centre + view * (1.25 * nearest->radius);
+  target = screen_centre + view * d;
+  df = std::max(df, 3.0 * nearest->radius);  // the eye behind the object
+}
+void object_behind_screen_show(AppState& state) {
+  try {
+    place_cameras(state);  // the current view direction
+  } catch (const std::invalid_argument&) {
+    return;  // parameters out of range: the recast says why
+  }
+  if (state.dimension == 2)
+    put_object_behind_screen(state.file.scene2d.circles, state.orbit2d.target, state.orbit2d.d, state.orbit2d.df,
+                             state.camera2d.view_direction());
+  else
+    put_object_behind_screen(state.file.scene3d.spheres, state.orbit3d.target, state.orbit3d.d, state.orbit3d.df,
+                             state.camera3d.view_direction());
+}
+
+// ---- arccos route --------------------------------------------------------------------------------------
+std::string arccos_does(const AppState& state) {
+  if (state.dimension == 2)
+    return tr(
+        "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
+        "error √(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
+        "Show me goes to 3D, where the pole makes it visible.");
+  return tr(
+      "Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes an "
+      "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
+}
+void arccos_show(AppState& state) {
+  if (state.dimension == 2) switch_dimension(state, 3);
+  state.orbit3d.phi = glm::radians(1e-7);
+  if (std::abs(std::remainder(state.orbit3d.theta, 2 * glm::pi<double>())) < glm::radians(20.0))
+    state.orbit3d.theta = glm::radians(60.0);
+}
+
+const char* kNothingToAdd = "";
+}  // namespace
+
+const std::vector<MistakeLesson>& mistake_lessons() {
+  static const std::vector<MistakeLesson> lessons = [] {
+    std::vector<MistakeLesson> all;
+    for (const MistakeInfo& info : kClassicMistakes) all.push_back({info.id, &info, nullptr, nullptr, kNothingToAdd});
+    auto extend = [&](const char* id, std::string (*does)(const AppState&), void (*show)(AppState&), const char* look) {
+      for (MistakeLesson& lesson : all)
+        if (std::string(lesson.id) == id) lesson.what_it_does = does, lesson.show_me = show, lesson.look_at = look;
+    };
+    extend("pixel_edges", pixel_edges_does, pixel_edges_show,
+           tr_later(
+               "res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the "
+               "image jump half a pixel"));
+    extend("skip_renormalise", renormalise_does, renormalise_show,
+           tr_later("d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of "
+                    "the image"));
+    extend("res_truncated", nullptr, res_truncated_show,
+           tr_later("res·N = 12.75: floor gives 12 pixels, round 13; count them"));
+    extend("no_focal_scale", nullptr, focal_scale_show,
+           tr_later("d_f = 3: without H the field of view stays 90°, as at d_f = 1"));
+    const char* behind = tr_later(
+        "the object nearest the target is now between the eye and the screen: the "
+        "correct camera does not see it, the mistaken one shows it");
+    extend("eye_origin", nullptr, object_behind_screen_show, behind);
+    extend("no_t_min", nullptr, object_behind_screen_show, behind);
+    all.push_back(
+        {"arccos", nullptr, arccos_does, arccos_show,
+         tr_later("φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare")});
+    return all;
+  }();
+  return lessons;
+}
+
+const MistakeLesson* find_lesson(const std::string& id) {
+  for (const MistakeLesson& lesson : mistake_lessons())
+    if (id == lesson.id) return &lesson;
+  return nullptr;
+}
+
+bool& mistake_flag(AppState& state, const MistakeLesson& lesson) {
+  return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
+}
+bool mistake_is_on(const AppState& state, const MistakeLesson& lesson) {
+  return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
+}
+bool mistake_applies(const AppState& state, const MistakeLesson& lesson) {
+  return !lesson.info || (state.dimension == 2 ? lesson.info->in_2d : lesson.info->in_3d);
+}
+const char* mistake_label(const MistakeLesson& lesson) {
+  return lesson.info ? mistake_label(*lesson.info, language_code(current_language()))
+                     : tr("arccos route near a pole");
+}
+
+std::string mistake_text(const AppState& state, const MistakeLesson& lesson) {
+  std::string text = lesson.info ? mistake_explanation(*lesson.info, language_code(current_language())) : "";
+  if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state);
+  return text;
+}
+
+void show_mistake(AppState& state, const MistakeLesson& lesson) {
+  mistake_flag(state, lesson) = true;
+  if (lesson.show_me) lesson.show_me(state);
+  state.mistake_look_at = lesson.look_at;
+  state.cameras_dirty = true;
+}
+
+std::string mistakes_on(const AppState& state) {
+  std::string names;
+  for (const MistakeLesson& lesson : mistake_lessons())
+    if (mistake_is_on(state, lesson) && mistake_applies(state, lesson))
+      names += (names.empty() ? "" : ", ") + std::string(mistake_label(lesson));
+  return names;
+}
+
+}  // namespace raycam::ui

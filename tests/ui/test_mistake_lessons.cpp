@@ -1,0 +1,142 @@
+// The classic mistakes as the app teaches them: each one changes the image (at once, or after its "show me"),
+// and what the panel says forgetting to renormalise does is what the caster does, checked against the
+// conditions derived by hand in mistake_lessons.cpp (not against the caster's own output).
+#include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "app_options.h"
+#include "app_state_for.h"
+#include "inspection.h"
+#include "mistake_lessons.h"
+
+using namespace raycam;
+using raycam::test::state_for;
+
+namespace {
+
+std::vector<int> ids_now(ui::AppState& state) {
+  state.cameras_dirty = true;
+  REQUIRE(ui::recast_if_needed(state));
+  return state.map.ids;
+}
+
+int count_differences(const std::vector<int>& a, const std::vector<int>& b) {
+  if (a.size() != b.size()) return int(std::max(a.size(), b.size()));  // another pixel count: all changed
+  int differences = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differences += a[i] != b[i];
+  return differences;
+}
+}  // namespace
+
+TEST_CASE("every classic mistake changes the image, at once or after its show me", "[ui][mistakes]") {
+  for (const char* view : {"2d", "3d"})
+    for (const ui::MistakeLesson& lesson : ui::mistake_lessons()) {
+      ui::AppState state = state_for({"--view", view});
+      if (!ui::mistake_applies(state, lesson)) continue;
+      ui::show_mistake(state, lesson);
+      CHECK(state.mistake_look_at == lesson.look_at);
+      CHECK(ui::mistakes_on(state) == ui::mistake_label(lesson));
+      const std::vector<int> with_mistake = ids_now(state);
+      ui::mistake_flag(state, lesson) = false;
+      const std::vector<int> without = ids_now(state);
+      INFO(view << " " << lesson.id << ": " << state.map.width << "x" << state.map.height << ", "
+                << count_differences(with_mistake, without) << " pixels differ");
+      // At least 2% of the pixels (one pixel of a 13-pixel bar).
+      CHECK(count_differences(with_mistake, without) * 50 >= int(without.size()));
+      CHECK(ui::mistakes_on(state).empty());
+    }
+}
+
+TEST_CASE("show me moves to where the mistake shows", "[ui][mistakes]") {
+  auto lesson = [](const std::string& id) {
+    const ui::MistakeLesson* found = ui::find_lesson(id);
+    REQUIRE(found);
+    return *found;
+  };
+  ui::AppState edges = state_for({"--view", "2d"});
+  ui::show_mistake(edges, lesson("pixel_edges"));
+  CHECK(edges.res == Approx(0.05));
+  ui::AppState arccos = state_for({"--view", "2d", "--theta", "5"});
+  ui::show_mistake(arccos, lesson("arccos"));
+  CHECK(arccos.dimension == 3);  // in 2D the error never moves a pixel
+  CHECK(arccos.orbit3d.phi < 1e-8);
+  CHECK(std::abs(arccos.orbit3d.theta) > 0.3);  // theta must not be ~0, or losing it would change nothing
+  ui::AppState renormalise = state_for({"--df", "3"});
+  ui::show_mistake(renormalise, lesson("skip_renormalise"));
+  CHECK(renormalise.orbit3d.df == 1.0);
+}
+
+// One circle, so that each pixel's hit or miss is decided by that circle alone. With f = origin - centre,
+// b̂ = f·û, p² = |f|² - b̂² (squared distance from the centre to the ray's line), an un-normalised u hits
+//   naive:  when p² ≤ r² + (|u|² - 1)·b̂²  (swollen),
+//   stable: when p² + (|u|² - 1)²·b̂² ≤ r²  (shrunk to nothing unless |u| ≈ 1 or b̂ ≈ 0),
+// with the object in front (b̂ < 0) and the origin outside it.
+TEST_CASE("forgetting to renormalise does what the panel says, with both formulas", "[ui][mistakes]") {
+  for (const IntersectFormula formula : {IntersectFormula::naive, IntersectFormula::stable})
+    for (const double df : {1.0, 1.5, 3.0}) {
+      ui::AppState state =
+          state_for({"--view", "2d", "--df", std::to_string(df), "--d", "6", "--mistake", "no-renormalise"});
+      state.accuracy.options.formula = formula;
+      const Circle circle{{0.4, 0.3}, 1.0, {200, 10, 10}, "lone"};
+      state.file.scene2d.circles = {circle};
+      ids_now(state);
+      int predicted_hits = 0, hits = 0, disagreements = 0;
+      for (int column = 0; column < state.map.width; ++column) {
+        const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
+        const double length = glm::length(ray.direction);
+        const glm::dvec2 f = ray.origin - circle.centre;
+        const double b_unit = glm::dot(f, ray.direction / length);
+        const double p2 = glm::dot(f, f) - b_unit * b_unit, r2 = circle.radius * circle.radius,
+                     stretch = length * length - 1.0;
+        const bool hit = b_unit < 0 && (formula == IntersectFormula::naive
+                                            ? p2 <= r2 + stretch * b_unit * b_unit
+                                            : p2 + stretch * stretch * b_unit * b_unit <= r2);
+        predicted_hits += hit;
+        hits += state.map.ids[std::size_t(column)] == 0;
+        disagreements += hit != (state.map.ids[std::size_t(column)] == 0);
+      }
+      INFO((formula == IntersectFormula::naive ? "naive" : "stable")
+           << " df " << df << ": " << hits << " hits, predicted " << predicted_hits);
+      CHECK(disagreements <= 1);  // a ray grazing the predicted boundary may round either way
+      // And the panel's words: the naive formula swells the circle (more hits than the correct camera); the
+      // stable one loses it except where |u| ≈ 1 (d_f = 1, near the axis).
+      ui::AppState correct = state;
+      correct.mistakes.skip_renormalise = false;
+      const std::vector<int> right = ids_now(correct);
+      int right_hits = 0;
+      for (int id : right) right_hits += id == 0;
+      if (formula == IntersectFormula::naive) {
+        CHECK(hits > right_hits);
+        CHECK_THAT(ui::mistake_text(state, *ui::find_lesson("skip_renormalise")), Catch::Contains("swells"));
+      } else {
+        CHECK(hits <= right_hits);
+        if (df > 1.0) CHECK(hits == 0);
+        CHECK_THAT(ui::mistake_text(state, *ui::find_lesson("skip_renormalise")), Catch::Contains("background"));
+      }
+    }
+}
+
+TEST_CASE("the views draw the caster's hits, mistakes included", "[ui][mistakes]") {
+  for (const char* intersect : {"naive", "stable"})
+    for (const char* view : {"2d", "3d"}) {
+      ui::AppState state = state_for({"--view", view, "--mistake", "no-renormalise", "--intersect", intersect,
+                                      "--size", view == std::string("2d") ? "64" : "64x64"});
+      ids_now(state);
+      const std::vector<ui::InspectedRay> fan = ui::primary_ray_fan(state, 1000);
+      REQUIRE(fan.size() == std::size_t(state.map.width));
+      int hits = 0;
+      for (const ui::InspectedRay& ray : fan) {
+        const int row = state.map.height / 2;
+        CHECK(ray.hit.id == state.map.id_at(row, ray.pixel.column));
+        if (ray.hit.id >= 0) {
+          ++hits;
+          CHECK(std::isfinite(ray.hit.t));
+        }
+      }
+      // Before, the views always used the stable formula: with the naive one they drew every ray as a miss
+      // while the bar was full of swollen objects.
+      if (std::string(intersect) == "naive") CHECK(hits > 0);
+    }
+}
