@@ -24,9 +24,9 @@ CORE_TESTS="^core:"
 
 # --- the bugs the suite caught before issue 15 ---
 mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = 1.5707963267948966/kRollPsi0 = -1.5707963267948966/' "$CORE" "$CORE_TESTS"
-mutant pixel-edges src/core/camera3d.cpp 's/return -1.0 + (2.0 \* column + offset) \/ columns_;/return -1.0 + (2.0 * column) \/ columns_;/' "$CORE" "$CORE_TESTS"
+mutant pixel-edges src/core/camera3d.cpp 's/mistakes_.pixel_edges ? column : column + 0.5/column/' "$CORE" "$CORE_TESTS"
 mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) ray.direction/if (false) ray.direction/' "$CORE" "$CORE_TESTS"
-mutant printed-rotation-2d src/core/camera2d.cpp 's/placement.alpha = view_angle - kHalfPi;/placement.alpha = view_angle + kHalfPi;/' "$CORE" "$CORE_TESTS"
+mutant printed-rotation-2d src/core/camera2d.cpp 's/placement.alpha = view_angle - \(.*\);/placement.alpha = view_angle + \1;/' "$CORE" "$CORE_TESTS"
 mutant negative-t-hits include/raycam/intersect.h 's/if (c > T(0) && b > T(0)) return kNoHit<T>;//; s/if (t_near >= T(0)) return t_near;/return t_near;/' "$CORE" "$CORE_TESTS"
 mutant mirrored-bar include/raycam/camera2d.h 's/int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }/int column_of_pixel(int k) const { return k; }/' "$CORE" "$CORE_TESTS"
 mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/std::max(0, ceil_of(a - kIndexSlack))/std::max(0, ceil_of(a - kIndexSlack) + 1)/' "$CORE" "$CORE_TESTS"
