@@ -53,15 +53,16 @@ Scene2D demo_scene_2d() {
 }
 
 Scene3D demo_scene_3d() {
-  // A red sphere on the target, three around it, and a large grey "ground" sphere below so that world
-  // up is visible in the image.
+  // A red sphere on the target, three around it, and a grey "ground" below them so that world up is visible
+  // in the image. The ground is a sphere small enough to stay inside the default orbit: every point at
+  // distance 8 (the default d) from the target is at least 8 - 4.4 = 3.6 > 3.2 from its centre, so the camera
+  // never enters it, whatever θ and φ (a ground of radius 100 just below the objects swallowed the camera
+  // for φ above ~99°). From above it is a disc under the objects.
   Scene3D scene;
   scene.spheres = {
-      {{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"},
-      {{2.2, 0.6, 0.2}, 0.7, {60, 190, 80}, "green"},
-      {{-1.2, 2.0, -0.2}, 0.8, {60, 110, 230}, "blue"},
-      {{0.2, -1.6, 1.3}, 0.5, {240, 200, 60}, "yellow"},
-      {{0.0, 0.0, -101.0}, 100.0, {120, 120, 120}, "ground"},
+      {{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"},       {{2.2, 0.6, 0.2}, 0.7, {60, 190, 80}, "green"},
+      {{-1.2, 2.0, -0.2}, 0.8, {60, 110, 230}, "blue"},   {{0.2, -1.6, 1.3}, 0.5, {240, 200, 60}, "yellow"},
+      {{0.0, 0.0, -4.4}, 3.2, {120, 120, 120}, "ground"},
   };
   return scene;
 }

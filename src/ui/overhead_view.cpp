@@ -33,7 +33,7 @@ std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dve
 }  // namespace
 
 // ---- fitting -------------------------------------------------------------------------------------------
-OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size) {
+void fit_overhead(AppState& state) {
   glm::dvec2 eye;
   std::vector<glm::dvec2> points = state.dimension == 2
                                        ? camera_outline(state.camera2d.world_from_camera(), &eye)
@@ -54,6 +54,13 @@ OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size
     for (const Sphere& s : state.file.scene3d.spheres) include(xy(s.centre), s.radius);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
+  state.overhead_low = low;
+  state.overhead_high = high;
+  state.overhead_fit_pending = false;
+}
+
+OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size) {
+  const glm::dvec2 low = state.overhead_low, high = state.overhead_high;
   const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));
   const double margin = 0.08;
   OverheadMapping mapping;

@@ -23,8 +23,12 @@ struct OverheadMapping {
   glm::dvec2 to_world(ImVec2 s) const { return {(s.x - origin.x) / scale, (origin.y - s.y) / scale}; }
 };
 
-// Fits the scene's objects, the target and the camera (eye and screen) into the rectangle, with a margin.
-OverheadMapping fit_overhead(const AppState& state, ImVec2 top_left, ImVec2 size);
+// Fits the world rectangle of the view (state.overhead_low/high) to the scene's objects near the target,
+// the target and the camera (eye and screen). Called when a scene is loaded, the camera reset, or on "fit";
+// never every frame, so that the view holds still while the camera moves.
+void fit_overhead(AppState& state);
+// The mapping that shows the state's world rectangle centred in the screen rectangle, with a margin.
+OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size);
 
 // Every object's disc seen from above, in drawing order (3D: from the lowest sphere top up, so the highest
 // hides the others). Give it to a DiscLayer when the scene changes.
