@@ -6,7 +6,9 @@
 // loop's own ray and intersection code, only on the pixels an object can cover.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "raycam/camera2d.h"
@@ -33,6 +35,8 @@ inline constexpr CastMethod kCastMethods[] = {CastMethod::automatic, CastMethod:
                                              CastMethod::footprint, CastMethod::binned};
 // "automatic", "plain", ...: the names the command line and the app show.
 const char* cast_method_name(CastMethod method);
+// The method of that name, or nothing (a pure lookup: what to say about a bad name is the caller's business).
+std::optional<CastMethod> cast_method_named(std::string_view name);
 
 struct CastOptions {
   IntersectFormula formula = IntersectFormula::stable;
@@ -63,5 +67,9 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
                        const CastOptions& options = {}, CastStats* stats = nullptr);
 void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out,
                        const CastOptions& options = {}, CastStats* stats = nullptr);
+
+// For `bench speed`: the accelerated casters' first stage alone (every sphere culled or projected to its
+// pixel box, on options.threads threads), writing no map; returns how many spheres survive culling.
+int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options = {});
 
 }  // namespace raycam

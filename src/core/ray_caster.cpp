@@ -124,4 +124,14 @@ const char* cast_method_name(CastMethod method) {
   return "?";
 }
 
+std::optional<CastMethod> cast_method_named(std::string_view name) {
+  for (const auto& [value, known] : kMethodNames)
+    if (name == known) return value;
+  return std::nullopt;
+}
+
+int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {
+  return detail::project_visible(camera, scene, options);
+}
+
 }  // namespace raycam
