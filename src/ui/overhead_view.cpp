@@ -183,12 +183,16 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
-  if (state.dimension == 2) draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
-  else draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
+  if (state.dimension == 2)
+    draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
+  else
+    draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
   if (!final_camera) {
     // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
     if (state.dimension == 2) draw_camera(draw, m, construction_step(state.camera2d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
-    else draw_camera(draw, m, construction_step(state.camera3d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
+    else
+      draw_camera(draw, m, construction_step(state.camera3d.placement(), state.construction_step),
+                  kConstructionColour, far_length * 0.3, true);
   }
   const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
