@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <glm/gtc/constants.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 
@@ -39,7 +40,7 @@ enum class AngleRoute {
 struct Orbit2D {
   glm::dvec2 target{0.0, 0.0};
   double d = 6.0;
-  double theta = 1.5707963267948966;  // π/2: above the target, looking down -y like the canonical camera
+  double theta = glm::half_pi<double>();  // above the target, looking down -y like the canonical camera
   double df = 1.5;
 };
 

@@ -13,7 +13,9 @@
 #pragma once
 
 #include <array>
+#include <glm/gtc/constants.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -30,14 +32,14 @@ inline constexpr std::array<glm::dvec3, 4> kCanonicalScreenCorners3D{
     glm::dvec3{-1.0, 1.0, 0.0}, glm::dvec3{1.0, 1.0, 0.0}, glm::dvec3{1.0, -1.0, 0.0},
     glm::dvec3{-1.0, -1.0, 0.0}};
 
-inline constexpr double kRollPsi0 = 1.5707963267948966;  // +π/2 radians (see header comment)
+inline constexpr double kRollPsi0 = glm::half_pi<double>();  // +π/2 radians (see header comment)
 
 // Angles in radians.
 struct Orbit3D {
   glm::dvec3 target{0.0};
   double d = 8.0;
-  double theta = 0.5235987755982988;  // π/6 (30°)
-  double phi = 1.0471975511965976;    // π/3 (60°)
+  double theta = glm::radians(30.0);
+  double phi = glm::radians(60.0);
   double df = 2.0;
 };
 

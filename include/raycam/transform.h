@@ -15,15 +15,15 @@ namespace raycam {
 
 // ---- 2D -------------------------------------------------------------------------------------------
 glm::dmat3 scaling_2d(double sx, double sy);
-glm::dmat3 rotation_2d(double angle);
+glm::dmat3 rotation_2d(double angle);  // angle in radians, counter-clockwise
 glm::dmat3 translation_2d(glm::dvec2 offset);
 glm::dvec2 transform_point(const glm::dmat3& m, glm::dvec2 p);
 glm::dvec2 transform_vector(const glm::dmat3& m, glm::dvec2 v);
 
 // ---- 3D -------------------------------------------------------------------------------------------
 glm::dmat4 scaling_3d(double sx, double sy, double sz);
-glm::dmat4 rotation_z(double angle);  // turns +x towards +y
-glm::dmat4 rotation_y(double angle);  // turns +z towards +x
+glm::dmat4 rotation_z(double angle);  // angle in radians; turns +x towards +y
+glm::dmat4 rotation_y(double angle);  // angle in radians; turns +z towards +x
 glm::dmat4 translation_3d(glm::dvec3 offset);
 glm::dvec3 transform_point(const glm::dmat4& m, glm::dvec3 p);
 glm::dvec3 transform_vector(const glm::dmat4& m, glm::dvec3 v);

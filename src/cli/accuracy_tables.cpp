@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <map>
 #include <stdexcept>
 #include <vector>
@@ -14,7 +15,6 @@
 namespace raycam::cli {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 
 struct Config {
   Scalar scalar;
@@ -127,30 +127,30 @@ void run_angle_table(const std::string& csv_path) {
     rows.push_back(row);
   };
   // 2D: the angle of a unit vector near +x (x_v ≈ 1) and near -x (x_v ≈ -1).
-  for (double base : {0.0, kPi}) {
+  for (double base : {0.0, glm::pi<double>()}) {
     sweep(std::string("2D angle near ") + (base == 0.0 ? "0 (x=+1)" : "pi (x=-1)"),
           [&](double delta, double& truth, double& a, double& s) {
-            truth = base == 0.0 ? delta : kPi - delta;
+            truth = base == 0.0 ? delta : glm::pi<double>() - delta;
             const glm::dvec2 v(std::cos(truth), std::sin(truth));
             a = polar_angle(v, AngleRoute::handout_arccos);
             s = polar_angle(v, AngleRoute::stable);
           });
   }
   // 3D: φ near the poles (z ≈ ±1), then θ near 0 and π at φ = 1 (x/sin φ ≈ ±1).
-  for (double base : {0.0, kPi}) {
+  for (double base : {0.0, glm::pi<double>()}) {
     sweep(std::string("3D phi near ") + (base == 0.0 ? "0 (pole +z)" : "pi (pole -z)"),
           [&](double delta, double& truth, double& a, double& s) {
-            truth = base == 0.0 ? delta : kPi - delta;
+            truth = base == 0.0 ? delta : glm::pi<double>() - delta;
             const glm::dvec3 v(std::cos(0.7) * std::sin(truth), std::sin(0.7) * std::sin(truth),
                                std::cos(truth));
             a = spherical_angles(v, AngleRoute::handout_arccos).phi;
             s = spherical_angles(v, AngleRoute::stable).phi;
           });
   }
-  for (double base : {0.0, kPi}) {
+  for (double base : {0.0, glm::pi<double>()}) {
     sweep(std::string("3D theta near ") + (base == 0.0 ? "0" : "pi") + " at phi=1",
           [&](double delta, double& truth, double& a, double& s) {
-            truth = base == 0.0 ? delta : kPi - delta;
+            truth = base == 0.0 ? delta : glm::pi<double>() - delta;
             const glm::dvec3 v(std::cos(truth) * std::sin(1.0), std::sin(truth) * std::sin(1.0),
                                std::cos(1.0));
             a = spherical_angles(v, AngleRoute::handout_arccos).theta;

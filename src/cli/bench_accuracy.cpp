@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -19,7 +20,6 @@
 namespace raycam::cli {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 
 // ---- Options --------------------------------------------------------------------------------------------
 enum class Placement { orbit, arccos, stable };
@@ -211,14 +211,14 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   s.size = size2d;
   s.name = "2d-classic";
   s.scene2d = cluster_2d({0, 0});
-  s.orbit2d = Orbit2D{{0, 0}, 6.0, kPi / 2, 1.5};
+  s.orbit2d = Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5};
   scenes.push_back(s);
   s.name = "2d-far";
-  s.orbit2d = Orbit2D{{0, 0}, 1e4, kPi / 2 + 0.3, 2500.0};
+  s.orbit2d = Orbit2D{{0, 0}, 1e4, glm::half_pi<double>() + 0.3, 2500.0};
   scenes.push_back(s);
   s.name = "2d-translated";
   s.scene2d = cluster_2d({1e6, -7e5});
-  s.orbit2d = Orbit2D{{1e6, -7e5}, 6.0, kPi / 2, 1.5};
+  s.orbit2d = Orbit2D{{1e6, -7e5}, 6.0, glm::half_pi<double>(), 1.5};
   scenes.push_back(s);
   StandardScene t;
   t.dimension = 3;

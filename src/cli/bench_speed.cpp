@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <glm/trigonometric.hpp>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -27,7 +28,6 @@
 namespace raycam::cli {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 // Plain and culled test every pixel against every visible object: beyond this many tests (~1 s) they are
 // skipped, and ids are checked on sampled pixels instead.
 constexpr double kMaxPlainTests = 2e8;
@@ -138,7 +138,7 @@ Scene3D random_scene(int count) {
 
 Camera3D bench_camera(int columns, int rows) {
   Camera3D camera(columns, rows);
-  camera.set_orbit({{0, 0, 0}, 35.0, 30 * kDegree, 60 * kDegree, 2.0});  // the whole cube in view
+  camera.set_orbit({{0, 0, 0}, 35.0, glm::radians(30.0), glm::radians(60.0), 2.0});  // the whole cube in view
   return camera;
 }
 

@@ -11,6 +11,7 @@ namespace raycam::cli {
 using Args = std::vector<std::string>;
 
 int run_render(const Args& args);
+int run_check(const Args& args);  // check_command.cpp, on the raycam_check library (src/check)
 int run_shot(const Args& args);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
 // `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp), dispatched by run_bench.
 int run_bench(const Args& args);

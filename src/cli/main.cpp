@@ -19,6 +19,8 @@ struct Command {
 const Command kCommands[] = {
     {"render", "cast the primary rays and write the colour map (PNG) and object ids (text)",
      raycam::cli::run_render},
+    {"check", "grade a student's camera program (stdin case -> stdout ids) and name its classic mistakes",
+     raycam::cli::run_check},
     {"bench", "benchmarks: `bench speed` (casters against Embree), `bench accuracy` (time against error)",
      raycam::cli::run_bench},
 #ifdef RAYCAM_HAVE_SHOT

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -78,7 +79,7 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
     Orbit3D& o3 = state.orbit3d;
     o2.theta += jump * (unit(random) - 0.5) * 0.2;
     o3.theta += jump * (unit(random) - 0.5) * 0.2;
-    o3.phi = std::clamp(o3.phi + jump * (unit(random) - 0.5) * 0.2, 0.0, 3.141592653589793);
+    o3.phi = std::clamp(o3.phi + jump * (unit(random) - 0.5) * 0.2, 0.0, glm::pi<double>());
     o2.d = o3.d = std::clamp(o3.d * std::exp((unit(random) - 0.5) * 0.1 * jump), 0.1, 200.0);
     o2.df = o3.df = std::clamp(o3.df * std::exp((unit(random) - 0.5) * 0.1 * jump), 0.05, 20.0);
     if (unit(random) < 0.02) state.res = std::clamp(unit(random), 0.01, 1.0);

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "raycam/exact_bar.h"
 
 namespace raycam {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 
 std::string label(const char* key, double value) {
   char text[64];
@@ -67,21 +67,25 @@ struct Builder2D {
 std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
   Builder2D b{long_sweep ? 1024 : 128, {}};
   const glm::dvec2 origin(0.0);
-  const Orbit2D base{origin, 6.0, kPi / 2, 1.5};
+  const Orbit2D base{origin, 6.0, glm::half_pi<double>(), 1.5};
 
   const std::vector<double> distances =
       long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3, 1e4, 1e5, 1e6, 1e7}
                  : std::vector<double>{1e-3, 1, 1e3, 1e5, 1e7};
   for (double d : distances)
-    b.add("d", label("d", d), Orbit2D{origin, d, kPi / 2, zoomed_df(d, 1.5)}, cluster_2d(origin));
+    b.add("d", label("d", d), Orbit2D{origin, d, glm::half_pi<double>(), zoomed_df(d, 1.5)},
+          cluster_2d(origin));
 
   const std::vector<double> focals =
       long_sweep ? std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3} : std::vector<double>{1e-3, 1, 1e3};
   for (double df : focals)
-    b.add("df", label("df", df), Orbit2D{origin, 6.0, kPi / 2, df}, cluster_2d(origin));
+    b.add("df", label("df", df), Orbit2D{origin, 6.0, glm::half_pi<double>(), df}, cluster_2d(origin));
 
-  std::vector<double> thetas = {kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0), 2 * kPi};
-  if (long_sweep) thetas.insert(thetas.end(), {3 * kPi, -5 * kPi, 1e6, std::nextafter(2 * kPi, 0.0)});
+  std::vector<double> thetas = {glm::pi<double>(), -glm::pi<double>(), std::nextafter(glm::pi<double>(), 4.0),
+                                std::nextafter(-glm::pi<double>(), -4.0), glm::two_pi<double>()};
+  if (long_sweep)
+    thetas.insert(thetas.end(), {3 * glm::pi<double>(), -5 * glm::pi<double>(), 1e6,
+                                 std::nextafter(glm::two_pi<double>(), 0.0)});
   for (double theta : thetas)
     b.add("theta", label("theta", theta), Orbit2D{origin, 6.0, theta, 1.5}, cluster_2d(origin));
 
@@ -92,13 +96,14 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
       long_sweep ? std::vector<double>{1e2, 1e3, 1e4, 1e5, 1e6, 1e7} : std::vector<double>{1e3, 1e5, 1e7};
   for (double shift : shifts) {
     const glm::dvec2 target(shift, -0.7 * shift);
-    b.add("translate", label("shift", shift), Orbit2D{target, 6.0, kPi / 2, 1.5}, cluster_2d(target));
+    b.add("translate", label("shift", shift), Orbit2D{target, 6.0, glm::half_pi<double>(), 1.5},
+          cluster_2d(target));
   }
   for (double angle : long_sweep ? std::vector<double>{0.3, 1.0, 2.5, -2.0} : std::vector<double>{1.0, 2.5}) {
-    b.add("rotate", label("angle", angle), Orbit2D{origin, 6.0, kPi / 2 + angle, 1.5},
+    b.add("rotate", label("angle", angle), Orbit2D{origin, 6.0, glm::half_pi<double>() + angle, 1.5},
           cluster_2d(origin, angle));
     const glm::dvec2 far(1e6, 1e6);
-    b.add("rotate", label("angle@1e6", angle), Orbit2D{far, 6.0, kPi / 2 + angle, 1.5},
+    b.add("rotate", label("angle@1e6", angle), Orbit2D{far, 6.0, glm::half_pi<double>() + angle, 1.5},
           cluster_2d(far, angle));
   }
 
@@ -129,8 +134,9 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
     scene.circles.push_back(Circle{{-0.5, -2.0}, 1.5, Rgb8{0, 0, 255}, ""});
     scene.circles.push_back(Circle{{0.5, -2.0}, 1.5, Rgb8{0, 255, 255}, ""});
     Builder2D odd{b.pixels + 1, {}};
-    odd.add("equal depth", "identical + crossing on axis", Orbit2D{{0, 0}, 6.0, kPi / 2, 1.5}, scene);
-    odd.add("equal depth", "crossing pair only", Orbit2D{{0, 0}, 6.0, kPi / 2, 1.5},
+    odd.add("equal depth", "identical + crossing on axis", Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5},
+            scene);
+    odd.add("equal depth", "crossing pair only", Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5},
             Scene2D{kDefaultBackground, {scene.circles[2], scene.circles[3]}});
     for (auto& c : odd.cases) b.cases.push_back(std::move(c));
   }
@@ -167,14 +173,20 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
     b.add("df", label("df", df), Orbit3D{origin, 8.0, 0.5, 1.0, df}, cluster_3d(origin));
 
   const double tiny = std::nextafter(0.0, 1.0);
-  std::vector<double> phis = {0.0,      kPi,      std::nextafter(kPi, 0.0), std::nextafter(kPi, 4.0),
-                              4 * tiny, -4 * tiny};
-  if (long_sweep) phis.insert(phis.end(), {1e-300, 1e-16, 1e-8, -1e-8, kPi - 1e-8, kPi + 1e-8});
+  std::vector<double> phis = {0.0,
+                              glm::pi<double>(),
+                              std::nextafter(glm::pi<double>(), 0.0),
+                              std::nextafter(glm::pi<double>(), 4.0),
+                              4 * tiny,
+                              -4 * tiny};
+  if (long_sweep)
+    phis.insert(phis.end(), {1e-300, 1e-16, 1e-8, -1e-8, glm::pi<double>() - 1e-8, glm::pi<double>() + 1e-8});
   for (double phi : phis)
     b.add("phi", label("phi", phi), Orbit3D{origin, 8.0, 0.5, phi, 2.0}, cluster_3d(origin));
 
-  std::vector<double> thetas = {kPi, -kPi, std::nextafter(kPi, 4.0), std::nextafter(-kPi, -4.0)};
-  if (long_sweep) thetas.insert(thetas.end(), {2 * kPi, 3 * kPi, 1e6});
+  std::vector<double> thetas = {glm::pi<double>(), -glm::pi<double>(), std::nextafter(glm::pi<double>(), 4.0),
+                                std::nextafter(-glm::pi<double>(), -4.0)};
+  if (long_sweep) thetas.insert(thetas.end(), {glm::two_pi<double>(), 3 * glm::pi<double>(), 1e6});
   for (double theta : thetas)
     b.add("theta", label("theta", theta), Orbit3D{origin, 8.0, theta, 1.0, 2.0}, cluster_3d(origin));
 
@@ -216,7 +228,7 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
     scene.spheres.push_back(Sphere{{0, 0, 0}, 1.0, Rgb8{0, 255, 0}, ""});
     b.add("equal depth", "identical spheres", base, scene);
     Builder3D odd{b.side + 1, {}};
-    odd.add("equal depth", "crossing pair", Orbit3D{origin, 8.0, 0.0, kPi / 2, 2.0},
+    odd.add("equal depth", "crossing pair", Orbit3D{origin, 8.0, 0.0, glm::half_pi<double>(), 2.0},
             Scene3D{kDefaultBackground,
                     {Sphere{{0, -0.5, 0}, 1.5, Rgb8{0, 0, 255}, ""},
                      Sphere{{0, 0.5, 0}, 1.5, Rgb8{0, 255, 255}, ""}}});

@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <glm/trigonometric.hpp>
 #include <stdexcept>
 
 #include "raycam/limits.h"
@@ -10,7 +11,6 @@
 namespace raycam {
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 
 [[noreturn]] void bad_flag(const std::string& flag, const std::string& expected, const std::string& got) {
   throw std::invalid_argument(flag + ": expected " + expected + ", got '" + got + "'");
@@ -162,7 +162,7 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     Orbit2D orbit;
     if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1]};
     if (preset.d) orbit.d = *preset.d;
-    if (preset.theta_deg) orbit.theta = *preset.theta_deg * kDegree;
+    if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
     if (preset.df) orbit.df = *preset.df;
     setup.camera2d.set_orbit(orbit);
     if (preset.res) setup.camera2d.set_res(*preset.res);
@@ -179,8 +179,8 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     Orbit3D orbit;
     if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1], (*preset.target)[2]};
     if (preset.d) orbit.d = *preset.d;
-    if (preset.theta_deg) orbit.theta = *preset.theta_deg * kDegree;
-    if (preset.phi_deg) orbit.phi = *preset.phi_deg * kDegree;
+    if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
+    if (preset.phi_deg) orbit.phi = glm::radians(*preset.phi_deg);
     if (preset.df) orbit.df = *preset.df;
     setup.camera3d.set_orbit(orbit);
     if (preset.res) setup.camera3d.set_res(*preset.res);
@@ -193,7 +193,7 @@ CameraPreset preset_of(const Camera2D& camera) {
   const Orbit2D& orbit = camera.orbit();
   preset.target = std::vector<double>{orbit.target.x, orbit.target.y};
   preset.d = orbit.d;
-  preset.theta_deg = orbit.theta / kDegree;
+  preset.theta_deg = glm::degrees(orbit.theta);
   preset.df = orbit.df;
   preset.res = camera.res();
   preset.size = std::vector<int>{camera.max_pixels()};
@@ -205,8 +205,8 @@ CameraPreset preset_of(const Camera3D& camera) {
   const Orbit3D& orbit = camera.orbit();
   preset.target = std::vector<double>{orbit.target.x, orbit.target.y, orbit.target.z};
   preset.d = orbit.d;
-  preset.theta_deg = orbit.theta / kDegree;
-  preset.phi_deg = orbit.phi / kDegree;
+  preset.theta_deg = glm::degrees(orbit.theta);
+  preset.phi_deg = glm::degrees(orbit.phi);
   preset.df = orbit.df;
   preset.res = camera.res_columns();
   preset.size = std::vector<int>{camera.max_columns(), camera.max_rows()};

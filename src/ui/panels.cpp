@@ -21,7 +21,6 @@ namespace raycam::ui {
 
 namespace {
 const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
-constexpr double kPi = glm::pi<double>();
 const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
 const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
 
@@ -215,14 +214,15 @@ void arccos_error_line(const AppState& state) {
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
     const glm::dvec2 cp = polar_direction(o.theta);
-    const double truth = std::remainder(o.theta, 2 * kPi);
-    ImGui::TextColored(kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
-                       std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, 2 * kPi)),
-                       std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, 2 * kPi)));
+    const double truth = std::remainder(o.theta, glm::two_pi<double>());
+    ImGui::TextColored(
+        kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
+        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
+        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
   } else {
     const Orbit3D& o = state.orbit3d;
     const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
-    const double truth = std::abs(std::remainder(o.phi, 2 * kPi));  // polar angle in [0, pi]
+    const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
     ImGui::TextColored(kDim, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
                        std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
@@ -423,7 +423,7 @@ void handle_shortcuts(AppState& state) {
   if (!is_2d && pressed(ImGuiKey_UpArrow))
     state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
   if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(kPi, state.orbit3d.phi + kStep), changed = true;
+    state.orbit3d.phi = std::min(glm::pi<double>(), state.orbit3d.phi + kStep), changed = true;
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

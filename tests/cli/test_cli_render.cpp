@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <glm/trigonometric.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,7 +14,6 @@
 using namespace raycam;
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 
 int run(const std::string& arguments) {
   const std::string command = std::string(RAYCAM_CLI) + " " + arguments + " > /dev/null 2>&1";
@@ -45,7 +45,7 @@ TEST_CASE("render --ids matches the core in 3D", "[cli]") {
   REQUIRE(run("render --mode 3d --size 40x30 --theta 120 --phi 70 --d 7 --df 1.7 --target 0.5,0,0.2 --ids "
               "cli3d.txt") == 0);
   Camera3D camera(40, 30);
-  camera.set_orbit({{0.5, 0, 0.2}, 7.0, 120 * kDegree, 70 * kDegree, 1.7});
+  camera.set_orbit({{0.5, 0, 0.2}, 7.0, glm::radians(120.0), glm::radians(70.0), 1.7});
   check_same(read_ids("cli3d.txt"), cast_primary_rays(camera, demo_scene_3d()));
 }
 
@@ -55,7 +55,7 @@ TEST_CASE("render --ids matches the core in 2D, with res", "[cli]") {
       0);
   Camera2D camera(200);
   camera.set_res(0.5);
-  camera.set_orbit({{0, 0}, 5.0, -30 * kDegree, 1.0});
+  camera.set_orbit({{0, 0}, 5.0, -glm::radians(30.0), 1.0});
   const ColourMap map = cast_primary_rays(camera, demo_scene_2d());
   CHECK(map.width == 100);
   check_same(read_ids("cli2d.txt"), map);
@@ -71,7 +71,7 @@ TEST_CASE("render with a scene file uses its preset, flags override it", "[cli]"
   }
   REQUIRE(run("render --scene cli_scene.json --theta 45 --ids cli_scene.txt") == 0);
   Camera3D camera(16, 16);
-  camera.set_orbit({{0, 0, 0}, 5.0, 45 * kDegree, 90 * kDegree, 1.0});
+  camera.set_orbit({{0, 0, 0}, 5.0, glm::radians(45.0), glm::radians(90.0), 1.0});
   Scene3D scene;
   scene.spheres = {{{0, 0, 0}, 1.0, {255, 0, 0}, ""}};
   check_same(read_ids("cli_scene.txt"), cast_primary_rays(camera, scene));
@@ -79,7 +79,7 @@ TEST_CASE("render with a scene file uses its preset, flags override it", "[cli]"
 
 TEST_CASE("render --method and --threads give the plain loop's ids; accuracy knobs reach the caster", "[cli]") {
   Camera3D camera(96, 64);
-  camera.set_orbit({{0, 0, 0}, 8.0, 30 * kDegree, 60 * kDegree, 2.0});
+  camera.set_orbit({{0, 0, 0}, 8.0, glm::radians(30.0), glm::radians(60.0), 2.0});
   CastOptions plain;
   plain.method = CastMethod::plain;
   const ColourMap expected = cast_primary_rays(camera, demo_scene_3d(), plain);

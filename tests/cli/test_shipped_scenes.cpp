@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <fstream>
+#include <glm/trigonometric.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,7 +17,6 @@
 using namespace raycam;
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 
 std::vector<std::vector<int>> read_ids(const std::string& path) {
   std::ifstream in(path);
@@ -37,15 +37,15 @@ ColourMap expected_map(const SceneFile& file) {
   if (file.dimension == 2) {
     Camera2D camera(p.size ? (*p.size)[0] : 256);
     camera.set_res(p.res.value_or(1.0));
-    camera.set_orbit({{(*p.target)[0], (*p.target)[1]}, *p.d, *p.theta_deg * kDegree, *p.df});
+    camera.set_orbit({{(*p.target)[0], (*p.target)[1]}, *p.d, glm::radians(*p.theta_deg), *p.df});
     return cast_primary_rays(camera, file.scene2d, plain);
   }
   Camera3D camera(p.size ? (*p.size)[0] : 256, p.size ? (*p.size)[1] : 256);
   camera.set_res(p.res.value_or(1.0));
   camera.set_orbit({{(*p.target)[0], (*p.target)[1], (*p.target)[2]},
                     *p.d,
-                    *p.theta_deg * kDegree,
-                    *p.phi_deg * kDegree,
+                    glm::radians(*p.theta_deg),
+                    glm::radians(*p.phi_deg),
                     *p.df});
   // 2000 spheres: the plain loop would take seconds; the fast casters equal it (test_accelerated_caster).
   if (file.scene3d.spheres.size() > 100) plain.method = CastMethod::automatic;

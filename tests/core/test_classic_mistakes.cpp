@@ -1,6 +1,7 @@
 // The classic mistakes (include/raycam/classic_mistakes.h): each one does what its name says, checked against
 // formulas written here, and the accelerated casters stay exact for the mistakes that keep them.
 #include <catch2/catch.hpp>
+#include <glm/trigonometric.hpp>
 #include <set>
 #include <string>
 
@@ -68,7 +69,7 @@ TEST_CASE("the mistake table names the issue's thirteen IDs once each, in both l
 }
 
 TEST_CASE("mistakes on M_d: degrees as radians, no focal scale, theta/phi swapped, roll -pi/2", "[mistake]") {
-  const Orbit3D orbit{{0.5, -1, 2}, 7.0, 30 * kPi / 180, 70 * kPi / 180, 2.5};
+  const Orbit3D orbit{{0.5, -1, 2}, 7.0, glm::radians(30.0), glm::radians(70.0), 2.5};
   Camera3D camera(8, 8);
   camera.set_orbit(orbit);
   const glm::dmat4 right = camera.world_from_camera();
@@ -98,7 +99,7 @@ TEST_CASE("mistakes on M_d: degrees as radians, no focal scale, theta/phi swappe
   CHECK(camera.image_up().z < 0);  // world up now at the bottom
 
   Camera2D bar(16);
-  bar.set_orbit({{1, 2}, 5.0, 40 * kPi / 180, 1.5});
+  bar.set_orbit({{1, 2}, 5.0, glm::radians(40.0), 1.5});
   bar.set_mistakes(only(&ClassicMistakes::degrees_as_radians));
   const glm::dvec2 expected = glm::dvec2(1, 2) + 5.0 * glm::dvec2(std::cos(40.0), std::sin(40.0));
   CHECK(glm::length(bar.screen_centre() - expected) < 1e-12);

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <fstream>
+#include <glm/gtc/constants.hpp>
 
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
@@ -126,7 +127,7 @@ TEST_CASE("view flags: precedence, degrees, and errors naming the flag", "[view_
   };
   const ViewSetup setup =
       parse({"--mode", "3d", "--theta", "90", "--phi", "90", "--d", "4", "--size", "20x10"});
-  CHECK(setup.camera3d.orbit().theta == Approx(3.141592653589793 / 2));
+  CHECK(setup.camera3d.orbit().theta == Approx(glm::half_pi<double>()));
   CHECK(setup.camera3d.columns() == 20);
   CHECK(setup.camera3d.rows() == 10);
   CHECK(glm::length(setup.camera3d.screen_centre() - glm::dvec3(0, 4, 0)) < 1e-12);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <random>
 #include <vector>
 
@@ -12,7 +13,7 @@
 
 namespace raycam::test {
 
-inline constexpr double kPi = 3.141592653589793;
+inline constexpr double kPi = glm::pi<double>();  // the tests' short name for GLM's
 
 struct Random {
   std::mt19937_64 engine;

@@ -3,6 +3,7 @@
 // positions of the eye, target and screen, and the inspected ray's hit point — plus reviewed reference PNGs.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <glm/trigonometric.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -17,7 +18,6 @@
 using namespace raycam;
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 
 struct Shot {
   ui::AppState state;
@@ -73,7 +73,7 @@ TEST_CASE("the 2D colour bar on screen is the core's colour map, pixel for pixel
   for (double theta : {90.0, 20.0, -135.0}) {
     const Shot shot = shoot({"--view", "2d", "--size", "200", "--theta", std::to_string(theta), "--df", "1.2", "--d", "7"});
     Camera2D camera(200);
-    camera.set_orbit({{0, 0}, 7.0, theta * kDegree, 1.2});
+    camera.set_orbit({{0, 0}, 7.0, glm::radians(theta), 1.2});
     check_image_region_holds(shot, cast_primary_rays(camera, demo_scene_2d()));
   }
 }
@@ -81,7 +81,7 @@ TEST_CASE("the 2D colour bar on screen is the core's colour map, pixel for pixel
 TEST_CASE("the 3D image on screen is the core's colour map, pixel for pixel", "[render][3d]") {
   const Shot shot = shoot({"--size", "64x48", "--theta", "200", "--phi", "70", "--d", "6", "--df", "1.5"});
   Camera3D camera(64, 48);
-  camera.set_orbit({{0, 0, 0}, 6.0, 200 * kDegree, 70 * kDegree, 1.5});
+  camera.set_orbit({{0, 0, 0}, 6.0, glm::radians(200.0), glm::radians(70.0), 1.5});
   check_image_region_holds(shot, cast_primary_rays(camera, demo_scene_3d()));
 }
 

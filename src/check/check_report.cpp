@@ -1,0 +1,214 @@
+// Section index: terminal text · JSON report · CSV · difference images.
+#include "check_report.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "check_texts.h"
+#include "raycam/colour_map.h"
+
+namespace raycam::check {
+
+namespace {
+using json = nlohmann::json;
+
+std::string pixel_text(const std::string& lang, const CaseResult& r) {
+  if (!r.worst) return {};
+  const WorstPixel& w = *r.worst;
+  return r.dimension == 2 ? textf(lang, "pixel k = %d: expected %d, got %d", w.column, w.expected, w.got)
+                          : textf(lang, "row %d, column %d: expected %d, got %d", w.row, w.column, w.expected, w.got);
+}
+
+std::string case_list(const std::vector<int>& cases) {
+  std::string list;
+  for (int c : cases) list += (list.empty() ? "" : ", ") + std::to_string(c);
+  return list;
+}
+
+int failing(const StudentReport& report) { return int(report.results.size()) - report.passed(); }
+
+// The first lines of a program's stderr, indented.
+std::string stderr_excerpt(const std::string& err) {
+  std::string out;
+  int lines = 0;
+  for (std::size_t start = 0; start < err.size() && lines < 6; ++lines) {
+    std::size_t end = err.find('\n', start);
+    if (end == std::string::npos) end = err.size();
+    out += "      | " + err.substr(start, std::min<std::size_t>(end - start, 160)) + "\n";
+    start = end + 1;
+  }
+  return out;
+}
+}  // namespace
+
+// ---- terminal text -----------------------------------------------------------------------------------------
+std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
+  const std::string& lang = h.lang;
+  std::string out = textf(lang, "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n", cases.size(),
+                          h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
+  if (!h.sandboxed && !h.sandbox_note.empty()) out += textf(lang, "warning: %s\n", h.sandbox_note.c_str());
+  out += textf(lang, "%5s  %3s  %-10s  %15s  %s\n", text(lang, "case"), text(lang, "dim"), text(lang, "status"),
+               text(lang, "wrong pixels"), text(lang, "worst pixel or reason"));
+  for (const CaseResult& r : report.results) {
+    const std::string wrong = r.status == CaseStatus::pass || r.status == CaseStatus::fail
+                                  ? std::to_string(r.wrong_pixels) + " / " + std::to_string(r.pixels)
+                                  : std::string();
+    const std::string why = r.status == CaseStatus::fail ? pixel_text(lang, r) : r.detail;
+    out += textf(lang, "%5d  %dD   %-10s  %15s  %s%s\n", r.number, r.dimension, text(lang, status_name(r.status)),
+                 wrong.c_str(), why.c_str(), r.md == "differs" ? text(lang, " (md differs)") : "");
+  }
+  const int n = int(report.results.size());
+  out += textf(lang, "score: %d / %d cases passed (%.0f %%)\n", report.passed(), n,
+               n ? 100.0 * report.passed() / n : 0.0);
+  bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
+  for (const CaseResult& r : report.results)
+    answered = answered || (r.answer && r.status != CaseStatus::pass);
+  if (answered) {
+    if (report.diagnosis.empty()) {
+      out += text(lang, "diagnosis: no classic mistake, alone or in pairs, reproduces your output.\n");
+    } else {
+      out += text(lang, "diagnosis (mistakes that reproduce your output exactly):\n");
+      for (std::size_t i = 0; i < report.diagnosis.size(); ++i) {
+        const Explanation& e = report.diagnosis[i];
+        out += textf(lang, "  %zu. %s: explains %zu of %d failing cases (%s)\n", i + 1, e.id().c_str(),
+                     e.cases.size(), failing(report), case_list(e.cases).c_str());
+        out += "     " + e.text(lang) + "\n";
+      }
+    }
+  }
+  for (const CaseResult& r : report.results)
+    if (r.status != CaseStatus::pass && !r.stderr_text.empty())
+      out += textf(lang, "stderr of case %d:\n", r.number) + stderr_excerpt(r.stderr_text);
+  return out;
+}
+
+// ---- JSON report -------------------------------------------------------------------------------------------
+std::string json_report(const ReportHeader& h, const StudentReport& report) {
+  json root;
+  root["cases"] = report.results.size();
+  root["passed"] = report.passed();
+  root["seed"] = h.seed;
+  root["mode"] = h.mode;
+  root["sandbox"] = h.sandboxed;
+  if (!h.sandbox_note.empty()) root["sandbox_note"] = h.sandbox_note;
+  json diagnosis = json::array();
+  for (const Explanation& e : report.diagnosis) {
+    json mistakes = json::array();
+    for (const MistakeInfo* m : e.mistakes) mistakes.push_back(m->id);
+    diagnosis.push_back({{"mistake", e.id()},
+                         {"mistakes", mistakes},
+                         {"explains", e.cases.size()},
+                         {"cases", e.cases},
+                         {"text", e.text(h.lang)}});
+  }
+  root["diagnosis"] = diagnosis;
+  json results = json::array();
+  for (const CaseResult& r : report.results) {
+    json entry = {{"case", r.number},        {"dimension", r.dimension},         {"status", status_name(r.status)},
+                  {"wrong_pixels", r.wrong_pixels}, {"pixels", r.pixels}, {"ambiguous_pixels", r.ambiguous_pixels},
+                  {"md", r.md},             {"seconds", r.seconds}};
+    if (r.worst) {
+      json pixel = r.dimension == 2 ? json{{"k", r.worst->column}} : json{{"row", r.worst->row}, {"column", r.worst->column}};
+      pixel["expected"] = r.worst->expected;
+      pixel["got"] = r.worst->got;
+      entry["worst_pixel"] = pixel;
+    }
+    if (!r.detail.empty()) entry["detail"] = r.detail;
+    if (!r.stderr_text.empty()) entry["stderr"] = r.stderr_text;
+    entry["explained_by"] = r.explained_by;
+    results.push_back(entry);
+  }
+  root["results"] = results;
+  // Student output may hold any bytes: replace invalid UTF-8 rather than fail.
+  return root.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+// ---- CSV -------------------------------------------------------------------------------------------------
+namespace {
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+}  // namespace
+
+std::string csv_header() {
+  return "student,passed,cases,score,top_diagnosis,explains,fail,crash,timeout,bad_output,sandbox\n";
+}
+
+std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed) {
+  const int n = int(report.results.size());
+  char score[32];
+  std::snprintf(score, sizeof score, "%.1f", n ? 100.0 * report.passed() / n : 0.0);
+  const bool explained = !report.diagnosis.empty();
+  return csv_field(student) + "," + std::to_string(report.passed()) + "," + std::to_string(n) + "," + score + "," +
+         (explained ? report.diagnosis[0].id() : std::string()) + "," +
+         (explained ? std::to_string(report.diagnosis[0].cases.size()) : std::string("0")) + "," +
+         std::to_string(report.count(CaseStatus::fail)) + "," + std::to_string(report.count(CaseStatus::crash)) + "," +
+         std::to_string(report.count(CaseStatus::timeout)) + "," + std::to_string(report.count(CaseStatus::bad_output)) +
+         "," + (sandboxed ? "yes" : "no") + "\n";
+}
+
+// ---- difference images -------------------------------------------------------------------------------------
+namespace {
+constexpr Rgb8 kGap{255, 255, 255};
+constexpr Rgb8 kInvalid{255, 0, 255};
+constexpr Rgb8 kWrong{255, 0, 0};
+constexpr Rgb8 kAmbiguous{255, 220, 0};
+
+Rgb8 colour_of(const SceneFile& file, int id) {
+  const std::size_t count = file.dimension == 2 ? file.scene2d.circles.size() : file.scene3d.spheres.size();
+  if (id < 0) return file.dimension == 2 ? file.scene2d.background : file.scene3d.background;
+  if (std::size_t(id) >= count) return kInvalid;
+  return file.dimension == 2 ? file.scene2d.circles[std::size_t(id)].colour : file.scene3d.spheres[std::size_t(id)].colour;
+}
+
+// Protocol index → where it is drawn: a 2D bar in image order (column 0 = the eye's left = pixel n-1).
+int drawn_column(int dimension, int columns, int column) { return dimension == 2 ? columns - 1 - column : column; }
+}  // namespace
+
+std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
+                                                 const std::vector<CaseImage>& references,
+                                                 const StudentReport& report) {
+  std::filesystem::create_directories(dir);
+  std::vector<std::string> written;
+  for (const CaseResult& r : report.results) {
+    if (!r.answer || r.status == CaseStatus::pass) continue;
+    const std::size_t i = std::size_t(r.number - 1);
+    const SceneFile& file = cases[i].file;
+    const CaseImage& ref = references[i];
+    const Answer& answer = *r.answer;
+    const int height = std::max(ref.rows, answer.rows);
+    const int x_student = ref.columns + 1, x_difference = x_student + answer.columns + 1;
+    ColourMap canvas(x_difference + ref.columns, height, kGap);
+    auto put = [&](int x, int y, Rgb8 colour) { canvas.colours[canvas.index(y, x)] = colour; };
+    for (int y = 0; y < ref.rows; ++y)
+      for (int x = 0; x < ref.columns; ++x) {
+        const std::size_t p = std::size_t(y) * ref.columns + x;
+        const int drawn = drawn_column(ref.dimension, ref.columns, x);
+        put(drawn, y, colour_of(file, ref.ids[p]));
+        const bool inside = y < answer.rows && x < answer.columns;
+        const int got = inside ? answer.ids[std::size_t(y) * answer.columns + x] : -2;
+        Rgb8 difference = colour_of(file, ref.ids[p]);
+        difference = {std::uint8_t(difference.r / 3), std::uint8_t(difference.g / 3), std::uint8_t(difference.b / 3)};
+        if (got != ref.ids[p]) difference = ref.ambiguous[p] ? kAmbiguous : kWrong;
+        put(x_difference + drawn, y, difference);
+      }
+    for (int y = 0; y < answer.rows; ++y)
+      for (int x = 0; x < answer.columns; ++x)
+        put(x_student + drawn_column(ref.dimension, answer.columns, x), y,
+            colour_of(file, answer.ids[std::size_t(y) * answer.columns + x]));
+    // A 2D bar is one pixel high: drawn 48 high and at least ~6 image pixels per map pixel.
+    const int scale_x = std::max(1, 480 / std::max(1, canvas.width));
+    const int scale_y = ref.dimension == 2 ? 48 : scale_x;
+    std::string name = case_file_name(r.number, int(cases.size()));  // case_NN.json → case_NN.png
+    const std::string path = dir + "/" + name.replace(name.size() - 5, 5, ".png");
+    write_png(canvas, path, scale_x, scale_y);
+    written.push_back(path);
+  }
+  return written;
+}
+
+}  // namespace raycam::check

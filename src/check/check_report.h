@@ -1,0 +1,38 @@
+// What `check` writes: the table, score and diagnosis on the terminal (French or English), the --report JSON,
+// a --batch CSV row, and the --diff-dir images.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "check_run.h"
+
+namespace raycam::check {
+
+struct ReportHeader {
+  std::string mode;  // "2d", "3d", "both"
+  unsigned long long seed = kDefaultSeed;
+  bool sandboxed = false;
+  std::string sandbox_note;  // why not, or what it isolates
+  std::string lang = "en";
+};
+
+// The terminal text: one line per case, the score, the diagnosis, then the stderr of failing runs.
+std::string text_report(const ReportHeader& header, const std::vector<CheckCase>& cases, const StudentReport& report);
+
+// --report: {"cases": N, "passed": P, "diagnosis": [{"mistake": ID, "explains": K, "text": ...}...],
+//            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.
+std::string json_report(const ReportHeader& header, const StudentReport& report);
+
+// --batch --csv: the header line, and one row per student.
+std::string csv_header();
+std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed);
+
+// --diff-dir: DIR/case_NN.png for every failing case with an answer: reference | student | difference (wrong
+// pixels red, ambiguous ones yellow, agreeing ones dimmed); 2D bars in image order, drawn tall. Returns the
+// paths written. Throws std::runtime_error naming a path that cannot be written.
+std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
+                                                 const std::vector<CaseImage>& references,
+                                                 const StudentReport& report);
+
+}  // namespace raycam::check

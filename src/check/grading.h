@@ -1,0 +1,62 @@
+// Grading one case, and the diagnosis over the failing ones.
+//
+// Pass rule: every pixel equals the reference, except pixels the reference marks ambiguous (case_image.h).
+// Diagnosis: for each failing case with a well-formed answer (a wrong size included: res_truncated makes
+// one), the case is rendered again with each classic mistake on, alone and in pairs, and a candidate is kept
+// when its image equals the answer at every pixel it does not itself mark ambiguous (and its M_d equals the
+// answer's "md", when given). A pair is kept only when it reproduces a case neither of its mistakes alone
+// reproduces. Explanations are sorted by the number of failing cases they reproduce, most first, then single
+// mistakes before pairs, then the table's order (so in 3D upside_down comes before mirrored+rows_flipped).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "answer.h"
+#include "battery.h"
+#include "case_image.h"
+#include "raycam/classic_mistakes.h"
+
+namespace raycam::check {
+
+enum class CaseStatus { pass, fail, crash, timeout, bad_output };
+const char* status_name(CaseStatus status);  // "pass", "fail", "crash", "timeout", "bad-output"
+
+// The wrong pixel deepest inside a region where the reference is one id (the clearest error to look at).
+struct WorstPixel {
+  int row = 0, column = 0;  // 2D: row 0, column = pixel k
+  int expected = -1, got = -1;
+  int depth = 0;  // pixels to the nearest reference edge or ambiguous pixel
+};
+
+struct CaseResult {
+  int number = 0;  // 1-based, as the case files
+  int dimension = 2;
+  CaseStatus status = CaseStatus::pass;
+  long long pixels = 0, wrong_pixels = 0, ambiguous_pixels = 0;
+  std::optional<WorstPixel> worst;
+  std::string md = "absent";  // "absent", "match", "differs"
+  std::string detail;         // why a case crashed, timed out or gave a bad output
+  std::string stderr_text;    // the program's stderr (capped)
+  double seconds = 0;
+  std::optional<Answer> answer;           // kept for the diagnosis and the difference images
+  std::vector<std::string> explained_by;  // explanation IDs reproducing this case
+};
+
+// The verdict on an answer (the program exited 0 and printed `parsed`).
+CaseResult grade_answer(const CaseImage& reference, const ParsedAnswer& parsed);
+
+// M_d equal up to rounding: |a - b| ≤ 1e-6·max(1, max |b|) entry by entry.
+bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected);
+
+struct Explanation {
+  std::vector<const MistakeInfo*> mistakes;  // one or two
+  std::vector<int> cases;                    // the case numbers it reproduces
+  std::string id() const;                    // "mirrored" or "mirrored+rows_flipped"
+  std::string text(const std::string& lang) const;
+};
+
+std::vector<Explanation> diagnose(const std::vector<CheckCase>& cases, std::vector<CaseResult>& results);
+
+}  // namespace raycam::check

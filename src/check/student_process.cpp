@@ -1,0 +1,324 @@
+// Section index: splitting a command · finding programs · the child (after fork: async-signal-safe calls
+// only) · the parent's poll loop · the sandbox.
+#include "student_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace raycam::check {
+
+namespace fs = std::filesystem;
+
+// ---- splitting a command ---------------------------------------------------------------------------------
+std::vector<std::string> split_command(const std::string& command, const std::string& field) {
+  std::vector<std::string> words;
+  std::string word;
+  bool in_word = false;
+  for (std::size_t i = 0; i < command.size(); ++i) {
+    const char c = command[i];
+    if (c == ' ' || c == '\t' || c == '\n') {
+      if (in_word) words.push_back(word);
+      word.clear();
+      in_word = false;
+    } else if (c == '\'') {
+      const std::size_t end = command.find('\'', i + 1);
+      if (end == std::string::npos) throw std::invalid_argument(field + ": unclosed ' in \"" + command + "\"");
+      word += command.substr(i + 1, end - i - 1);
+      in_word = true;
+      i = end;
+    } else if (c == '"') {
+      in_word = true;
+      for (++i;; ++i) {
+        if (i >= command.size()) throw std::invalid_argument(field + ": unclosed \" in \"" + command + "\"");
+        if (command[i] == '"') break;
+        if (command[i] == '\\' && i + 1 < command.size() && std::strchr("\"\\$`", command[i + 1])) ++i;
+        word += command[i];
+      }
+    } else if (c == '\\' && i + 1 < command.size()) {
+      word += command[++i];
+      in_word = true;
+    } else {
+      word += c;
+      in_word = true;
+    }
+  }
+  if (in_word) words.push_back(word);
+  if (words.empty()) throw std::invalid_argument(field + ": expected a command, got an empty string");
+  return words;
+}
+
+std::vector<std::string> absolutise_paths(std::vector<std::string> words) {
+  for (std::string& word : words) {
+    if (word.empty() || word[0] == '/' || word[0] == '-') continue;
+    std::error_code error;
+    if (fs::exists(word, error)) word = fs::absolute(word, error).lexically_normal().string();
+  }
+  return words;
+}
+
+// ---- finding programs ------------------------------------------------------------------------------------
+std::string find_program(const std::string& name) {
+  if (name.empty()) return {};
+  if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? name : std::string();
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
+  for (std::size_t start = 0; start <= dirs.size();) {
+    std::size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    const std::string dir = dirs.substr(start, end - start);
+    const std::string candidate = (dir.empty() ? "." : dir) + "/" + name;
+    struct stat info;
+    if (stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) && access(candidate.c_str(), X_OK) == 0)
+      return candidate;
+    start = end + 1;
+  }
+  return {};
+}
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+struct Pipe {
+  int read = -1, write = -1;
+  Pipe() {
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    read = fds[0];
+    write = fds[1];
+  }
+  ~Pipe() {
+    close_read();
+    close_write();
+  }
+  void close_read() {
+    if (read >= 0) ::close(read);
+    read = -1;
+  }
+  void close_write() {
+    if (write >= 0) ::close(write);
+    write = -1;
+  }
+};
+
+// A NULL-terminated char* array over strings that outlive it (built before fork: no allocation after).
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+  std::vector<char*> pointers;
+  for (std::string& s : strings) pointers.push_back(s.data());
+  pointers.push_back(nullptr);
+  return pointers;
+}
+
+std::vector<std::string> child_environment(const std::string& work) {
+  const char* path = std::getenv("PATH");
+  return {"PATH=" + std::string(path ? path : "/usr/local/bin:/usr/bin:/bin"), "HOME=" + work, "TMPDIR=" + work,
+          "LANG=C.UTF-8", "LC_ALL=C.UTF-8", "PYTHONDONTWRITEBYTECODE=1"};
+}
+
+// The bwrap command line around `argv` (see the header for what each part isolates).
+std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& work, const std::vector<std::string>& argv) {
+  std::vector<std::string> words = {sandbox.bwrap, "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
+                                    "--tmpfs", "/tmp", "--tmpfs", "/run"};
+  for (const std::string& hidden : sandbox.hidden) words.insert(words.end(), {"--tmpfs", hidden});
+  std::vector<std::string> shown = sandbox.shown;
+  // The program's own files under /tmp would vanish behind the empty /tmp: show their folders again.
+  for (const std::string& word : argv) {
+    std::error_code error;
+    if (word.rfind("/tmp/", 0) == 0 && fs::exists(word, error))
+      shown.push_back(fs::is_directory(word, error) ? word : fs::path(word).parent_path().string());
+  }
+  for (const std::string& dir : shown) words.insert(words.end(), {"--ro-bind", dir, dir});
+  words.insert(words.end(), {"--bind", work, work, "--remount-ro", "/tmp", "--remount-ro", "/run"});
+  for (const std::string& hidden : sandbox.hidden) words.insert(words.end(), {"--remount-ro", hidden});
+  words.insert(words.end(), {"--remount-ro", "/dev", "--unshare-all", "--unshare-user", "--uid", "65534", "--gid",
+                             "65534", "--die-with-parent", "--new-session", "--chdir", work, "--"});
+  words.insert(words.end(), argv.begin(), argv.end());
+  return words;
+}
+
+void stop(pid_t pid) {
+  kill(-pid, SIGKILL);  // the process group: whatever it started (bwrap's namespace dies with its first child)
+  kill(pid, SIGKILL);
+}
+
+// ---- the child (after fork: async-signal-safe calls only) -------------------------------------------------
+[[noreturn]] void exec_child(const char* program, char* const* argv, char* const* envp, const char* work, int in,
+                             int out, int err, int report, const RunLimits& limits) {
+  setpgid(0, 0);
+  signal(SIGPIPE, SIG_DFL);  // ignored in raycam-cli; an ignored signal would stay ignored across exec
+  const rlimit memory{rlim_t(limits.memory_bytes), rlim_t(limits.memory_bytes)};
+  const rlimit file{rlim_t(limits.file_bytes), rlim_t(limits.file_bytes)};
+  const rlimit no_core{0, 0};
+  setrlimit(RLIMIT_AS, &memory);
+  setrlimit(RLIMIT_FSIZE, &file);
+  setrlimit(RLIMIT_CORE, &no_core);
+  if (dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 || dup2(report, 3) < 0) _exit(127);
+  fcntl(3, F_SETFD, FD_CLOEXEC);
+  close_range(4, ~0U, 0);  // nothing else of ours leaks into the student's program
+  if (chdir(work) == 0) execve(program, argv, envp);
+  const int code = errno;
+  ssize_t ignored = write(3, &code, sizeof code);
+  (void)ignored;
+  _exit(127);
+}
+}  // namespace
+
+// ---- the parent's poll loop ------------------------------------------------------------------------------
+RunResult run_student(const std::vector<std::string>& argv_in, const std::string& input, const RunLimits& limits,
+                      const std::optional<Sandbox>& sandbox) {
+  static std::once_flag ignore_sigpipe;
+  std::call_once(ignore_sigpipe, [] { signal(SIGPIPE, SIG_IGN); });  // a student closing stdin early
+  RunResult result;
+  if (argv_in.empty()) {
+    result.error = "empty command";
+    return result;
+  }
+  std::vector<std::string> argv = argv_in;
+  const std::string program = find_program(argv[0]);
+  if (program.empty()) {
+    result.error = "cannot find an executable program '" + argv[0] + "'";
+    return result;
+  }
+  argv[0] = program;
+
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/raycam-check-XXXXXX";
+  if (!mkdtemp(pattern.data())) {
+    result.error = "cannot create a temporary directory: " + std::string(std::strerror(errno));
+    return result;
+  }
+  const std::string work = pattern;
+  std::vector<std::string> command = sandbox ? sandboxed(*sandbox, work, argv) : argv;
+  std::vector<std::string> environment = child_environment(work);
+  std::vector<char*> c_argv = c_strings(command), c_envp = c_strings(environment);
+
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.timeout_seconds));
+  try {
+    Pipe in, out, err, report;
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+    if (pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), work.c_str(), in.read, out.write, err.write,
+                             report.write, limits);
+    setpgid(pid, pid);  // also here: whichever runs first, the group exists before we may signal it
+    in.close_read();
+    out.close_write();
+    err.close_write();
+    report.close_write();
+    int exec_errno = 0;
+    if (read(report.read, &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
+      waitpid(pid, nullptr, 0);
+      result.error = "cannot run '" + argv[0] + "': " + std::strerror(exec_errno);
+      std::error_code ignored;
+      fs::remove_all(work, ignored);
+      return result;
+    }
+    fcntl(in.write, F_SETFL, O_NONBLOCK);
+    std::size_t written = 0;
+    if (input.empty()) in.close_write();
+    bool too_large = false, timed_out = false;
+    char buffer[65536];
+    while (out.read >= 0 || err.read >= 0) {
+      const auto now = Clock::now();
+      if (now >= deadline) {
+        timed_out = true;
+        break;
+      }
+      pollfd fds[3];
+      int count = 0;
+      if (in.write >= 0) fds[count++] = {in.write, POLLOUT, 0};
+      if (out.read >= 0) fds[count++] = {out.read, POLLIN, 0};
+      if (err.read >= 0) fds[count++] = {err.read, POLLIN, 0};
+      const int wait_ms =
+          int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
+      if (poll(fds, nfds_t(count), wait_ms) < 0 && errno != EINTR) break;
+      for (int i = 0; i < count; ++i) {
+        if (!fds[i].revents) continue;
+        if (fds[i].fd == in.write) {
+          const ssize_t n = write(in.write, input.data() + written, input.size() - written);
+          if (n > 0) written += std::size_t(n);
+          if (n < 0 && errno != EAGAIN) in.close_write();  // EPIPE: the program does not read its input
+          if (written == input.size()) in.close_write();
+          continue;
+        }
+        const bool is_out = fds[i].fd == out.read;
+        const ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
+        if (n <= 0) {
+          if (n == 0 || errno != EAGAIN) (is_out ? out : err).close_read();
+          continue;
+        }
+        std::string& sink = is_out ? result.out : result.err;
+        const std::size_t cap = is_out ? limits.max_stdout_bytes : limits.max_stderr_bytes;
+        sink.append(buffer, std::min(std::size_t(n), cap - std::min(cap, sink.size())));
+        if (is_out && result.out.size() >= limits.max_stdout_bytes) too_large = true;
+      }
+      if (too_large) break;
+    }
+    // Output closed: wait for the exit, still under the deadline (a program may close stdout and go on).
+    int status = 0;
+    pid_t done = 0;
+    while (!timed_out && !too_large && (done = waitpid(pid, &status, WNOHANG)) == 0) {
+      if (Clock::now() >= deadline) timed_out = true;
+      else usleep(2000);
+    }
+    if (timed_out || too_large) {
+      stop(pid);
+      waitpid(pid, &status, 0);
+      result.end = timed_out ? RunResult::End::timed_out : RunResult::End::output_too_large;
+    } else if (WIFEXITED(status)) {
+      result.end = RunResult::End::exited;
+      result.exit_code = WEXITSTATUS(status);
+    } else {
+      result.end = RunResult::End::signalled;
+      result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    }
+    kill(-pid, SIGKILL);  // anything it left behind in its group
+  } catch (const std::exception& error) {
+    result.end = RunResult::End::could_not_start;
+    result.error = error.what();
+  }
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::error_code ignored;
+  fs::remove_all(work, ignored);
+  return result;
+}
+
+// ---- the sandbox ---------------------------------------------------------------------------------------
+std::optional<Sandbox> probe_sandbox(std::string& why) {
+  static std::mutex mutex;
+  static bool probed = false;
+  static std::optional<Sandbox> found;
+  static std::string reason;
+  std::lock_guard<std::mutex> lock(mutex);
+  if (!probed) {
+    probed = true;
+    const std::string bwrap = find_program("bwrap");
+    if (bwrap.empty()) {
+      reason = "bwrap not found (Debian package bubblewrap)";
+    } else {
+      RunLimits limits;
+      limits.timeout_seconds = 10;
+      const RunResult probe = run_student({"true"}, "", limits, Sandbox{bwrap, {}, {}});
+      if (probe.end == RunResult::End::exited && probe.exit_code == 0) found = Sandbox{bwrap, {}, {}};
+      else
+        reason = "bwrap cannot start a sandbox here: " +
+                 (probe.err.empty() ? probe.error : probe.err.substr(0, probe.err.find('\n')));
+    }
+  }
+  why = reason;
+  return found;
+}
+
+}  // namespace raycam::check

@@ -1,0 +1,62 @@
+// Running one untrusted student program on one case: no shell, a fresh temporary directory, the case on
+// stdin, a timeout, capped output, stderr kept, and (where it works) a bubblewrap sandbox.
+//
+// The sandbox (bwrap): the whole system read-only, /tmp, /run and /dev read-only and empty, the program's
+// own temporary directory the only writable place, no network (a new network namespace: not even the host's
+// loopback), new user/PID/IPC/UTS namespaces (the program runs as "nobody" and all its processes die with
+// it), and an address-space cap. Without the sandbox the same limits apply except the isolation.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raycam::check {
+
+// The command split like a shell word list, without a shell: words separated by blanks, '…' quotes
+// literally, "…" quotes with \" \\ \$ \` escapes, \ escapes one character outside quotes. Nothing is
+// expanded. Throws std::invalid_argument naming `field` on an unclosed quote or an empty command.
+std::vector<std::string> split_command(const std::string& command, const std::string& field);
+
+// Words naming an existing file or directory relative to the current directory become absolute paths:
+// the program runs in a fresh directory, where "python3 camera.py" would find nothing.
+std::vector<std::string> absolutise_paths(std::vector<std::string> words);
+
+struct RunLimits {
+  double timeout_seconds = 10.0;
+  std::size_t max_stdout_bytes = std::size_t(16) << 20;  // over this the program is stopped: bad output
+  std::size_t max_stderr_bytes = std::size_t(16) << 10;  // kept for the report; the rest is read and dropped
+  long long memory_bytes = 2LL << 30;                     // address space (RLIMIT_AS)
+  long long file_bytes = 64LL << 20;                      // largest file it may write (RLIMIT_FSIZE)
+};
+
+struct Sandbox {
+  std::string bwrap;  // absolute path of bwrap
+  // Folders hidden behind an empty read-only tmpfs (a class's submissions), and those shown again
+  // read-only inside them (this student's own).
+  std::vector<std::string> hidden, shown;
+};
+
+struct RunResult {
+  enum class End { exited, signalled, timed_out, output_too_large, could_not_start };
+  End end = End::could_not_start;
+  int exit_code = 0;
+  int signal = 0;
+  std::string out, err;
+  double seconds = 0;
+  std::string error;  // could_not_start: why
+};
+
+// Runs `argv` (argv[0] looked up in PATH if it has no '/') with `input` on stdin. Never throws for what the
+// program does; SIGPIPE is ignored in this process from the first call.
+RunResult run_student(const std::vector<std::string>& argv, const std::string& input, const RunLimits& limits,
+                      const std::optional<Sandbox>& sandbox);
+
+// Whether bwrap exists and can start a sandbox here (checked once per process by running `true` in it).
+// On failure `why` says what went wrong.
+std::optional<Sandbox> probe_sandbox(std::string& why);
+
+// The program found in PATH (or as given when it has a '/'); empty if none is executable.
+std::string find_program(const std::string& name);
+
+}  // namespace raycam::check

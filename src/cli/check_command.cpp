@@ -1,0 +1,236 @@
+// `raycam-cli check`: grades a student's camera program (or answer files, or a whole class) on a battery of
+// cases and names the classic mistakes that reproduce its output (README, "Check your own camera").
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <thread>
+
+#include "check_report.h"
+#include "check_texts.h"
+#include "commands.h"
+#include "raycam/scene_file.h"
+
+namespace raycam::cli {
+
+namespace {
+namespace fs = std::filesystem;
+using namespace raycam::check;
+
+struct CheckFlags {
+  std::string student, write_cases, answers, batch, student_cmd, csv, report, diff_dir, lang, mode = "both";
+  int cases = 0;  // 0: the designed cases of the mode
+  unsigned long long seed = kDefaultSeed;
+  double timeout = 10.0;
+  int memory_mb = 2048;
+  int threads = 0;
+  bool require_sandbox = false, no_sandbox = false;
+};
+
+void write_text_file(const std::string& path, const std::string& text) {
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!(out << text) || !out.flush()) throw std::runtime_error(path + ": cannot write");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write");
+}
+
+// The sandbox to use, or none: refuses with --require-sandbox, warns on the terminal otherwise.
+std::optional<Sandbox> choose_sandbox(const CheckFlags& flags, ReportHeader& header) {
+  if (flags.no_sandbox) {
+    header.sandbox_note = "--no-sandbox given";
+  } else {
+    std::string why;
+    if (std::optional<Sandbox> sandbox = probe_sandbox(why)) {
+      header.sandboxed = true;
+      return sandbox;
+    }
+    if (flags.require_sandbox)
+      throw std::invalid_argument(textf(header.lang, "the sandbox cannot start and --require-sandbox was given: %s",
+                                        why.c_str()));
+    header.sandbox_note = why;
+  }
+  std::fprintf(stderr, "raycam-cli check: %s\n",
+               textf(header.lang, "running student programs WITHOUT a sandbox (%s): they can read and write what you can",
+                     header.sandbox_note.c_str())
+                   .c_str());
+  return std::nullopt;
+}
+
+int threads_of(const CheckFlags& flags) {
+  return flags.threads > 0 ? flags.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+RunLimits limits_of(const CheckFlags& flags) {
+  RunLimits limits;
+  limits.timeout_seconds = flags.timeout;
+  limits.memory_bytes = static_cast<long long>(flags.memory_mb) << 20;
+  return limits;
+}
+
+// Table, score, diagnosis; --report and --diff-dir. Exit 0 when every case passes, 1 otherwise.
+int finish(const CheckFlags& flags, const ReportHeader& header, const std::vector<CheckCase>& cases,
+           const std::vector<CaseImage>& references, const StudentReport& report) {
+  std::fputs(text_report(header, cases, report).c_str(), stdout);
+  if (!flags.report.empty()) write_text_file(flags.report, json_report(header, report));
+  if (!flags.diff_dir.empty()) {
+    const std::vector<std::string> written = write_difference_images(flags.diff_dir, cases, references, report);
+    std::printf("%s", textf(header.lang, "wrote %zu difference images to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
+  }
+  return report.passed() == int(cases.size()) ? 0 : 1;
+}
+
+// ---- --batch ---------------------------------------------------------------------------------------------
+std::string substituted(std::string word, const std::string& dir, const std::string& name) {
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{dir}", dir}, {"{name}", name}})
+    for (std::size_t at; (at = word.find(key)) != std::string::npos;) word.replace(at, key.size(), value);
+  return word;
+}
+
+int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<CheckCase>& cases,
+              const std::vector<CaseImage>& references) {
+  if (flags.student_cmd.empty() || flags.csv.empty())
+    throw std::invalid_argument("--batch: needs --student-cmd TEMPLATE and --csv FILE");
+  const fs::path root = fs::absolute(flags.batch).lexically_normal();
+  if (!fs::is_directory(root)) throw std::invalid_argument("--batch: '" + flags.batch + "' is not a folder");
+  const std::vector<std::string> words = split_command(flags.student_cmd, "--student-cmd");
+  const std::optional<Sandbox> sandbox = choose_sandbox(flags, header);
+
+  std::vector<Submission> submissions;
+  for (const fs::directory_entry& entry : fs::directory_iterator(root))
+    if (entry.is_directory() && entry.path().filename().string()[0] != '.') {
+      Submission s;
+      s.name = entry.path().filename().string();
+      for (const std::string& word : words) s.argv.push_back(substituted(word, entry.path().string(), s.name));
+      if (sandbox) s.sandbox = Sandbox{sandbox->bwrap, {root.string()}, {entry.path().string()}};
+      submissions.push_back(s);
+    }
+  std::sort(submissions.begin(), submissions.end(), [](auto& a, auto& b) { return a.name < b.name; });
+  if (submissions.empty()) throw std::invalid_argument("--batch: no submission folder in '" + flags.batch + "'");
+
+  // Rows are appended as students finish (nothing is lost if the run is interrupted), then sorted at the end.
+  std::ofstream csv(flags.csv, std::ios::trunc);
+  if (!csv) throw std::runtime_error(flags.csv + ": cannot write");
+  csv << csv_header() << std::flush;
+  const int threads = threads_of(flags);
+  std::fprintf(stderr, "%s", textf(header.lang, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
+                                   cases.size(), threads).c_str());
+  const bool terminal = isatty(2);
+  std::size_t students_done = 0;
+  auto on_run = [&](std::size_t done, std::size_t total) {
+    if (!terminal) return;
+    const int width = 30, filled = int(width * done / total);
+    std::fprintf(stderr, "\r[%s%s] %zu/%zu runs, %zu/%zu students", std::string(std::size_t(filled), '#').c_str(),
+                 std::string(std::size_t(width - filled), '.').c_str(), done, total, students_done, submissions.size());
+    std::fflush(stderr);
+  };
+  std::vector<std::string> rows(submissions.size());
+  auto on_student = [&](std::size_t s, const StudentReport& report) {
+    ++students_done;
+    rows[s] = csv_row(submissions[s].name, report, bool(sandbox));
+    csv << rows[s] << std::flush;
+    if (!terminal)
+      std::fprintf(stderr, "%zu/%zu %s: %d/%zu\n", students_done, submissions.size(), submissions[s].name.c_str(),
+                   report.passed(), cases.size());
+    if (!flags.report.empty()) {
+      fs::create_directories(flags.report);
+      write_text_file(flags.report + "/" + submissions[s].name + ".json", json_report(header, report));
+    }
+    if (!flags.diff_dir.empty())
+      write_difference_images(flags.diff_dir + "/" + submissions[s].name, cases, references, report);
+  };
+  const std::vector<StudentReport> reports =
+      check_submissions(submissions, cases, references, limits_of(flags), threads, on_run, on_student);
+  if (terminal) std::fprintf(stderr, "\n");
+  csv.close();
+  std::string sorted = csv_header();
+  for (const std::string& row : rows) sorted += row;
+  write_text_file(flags.csv, sorted);
+  std::printf("%s", textf(header.lang, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
+  for (const StudentReport& report : reports)
+    if (report.passed() != int(cases.size())) return 1;
+  return 0;
+}
+}  // namespace
+
+int run_check(const Args& args) {
+  CheckFlags flags;
+  CLI::App app{"Grades a student's camera program on a battery of cases and names the classic mistakes that "
+               "reproduce its output. The program reads one case (a scene file, JSON) on stdin and prints "
+               "{\"ids\": ..., \"md\": ...} (README, \"Check your own camera\").",
+               "raycam-cli check"};
+  auto* source = app.add_option_group("what to grade");
+  source->add_option("--student", flags.student, "the program: \"COMMAND ARGS\" (split like a shell, run without one)");
+  source->add_option("--write-cases", flags.write_cases, "write the cases as case_NN.json into DIR and stop");
+  source->add_option("--answers", flags.answers, "grade DIR/answer_NN.json, made by hand");
+  source->add_option("--batch", flags.batch, "grade every folder of DIR (one student each) with --student-cmd");
+  source->require_option(1);
+  app.add_option("--student-cmd", flags.student_cmd,
+                 "--batch: the command for one student; {dir} is its folder, {name} its name");
+  app.add_option("--csv", flags.csv, "--batch: one row per student (score, top diagnosis, faults)");
+  app.add_option("--mode", flags.mode, "2d, 3d or both")->check(CLI::IsMember({"2d", "3d", "both"}));
+  app.add_option("--cases", flags.cases, "number of cases (default: the designed ones, 6 per dimension)")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--seed", flags.seed, "the battery's seed (default 2026, shared by a class)");
+  app.add_option("--timeout", flags.timeout, "seconds per case, in [0.1, 3600]")->check(CLI::Range(0.1, 3600.0));
+  app.add_option("--memory", flags.memory_mb, "address-space cap per run, MiB, in [64, 65536]")
+      ->check(CLI::Range(64, 65536));
+  app.add_option("--threads", flags.threads, "runs at once, in [1, 256] (default: every core)")->check(CLI::Range(1, 256));
+  app.add_option("--report", flags.report, "JSON report (--batch: a folder of them)");
+  app.add_option("--diff-dir", flags.diff_dir, "PNG per failing case: reference | student | difference");
+  app.add_option("--lang", flags.lang, "fr or en (default: from LANG)")->check(CLI::IsMember({"fr", "en"}));
+  app.add_flag("--require-sandbox", flags.require_sandbox, "refuse to run programs when bubblewrap cannot start");
+  app.add_flag("--no-sandbox", flags.no_sandbox, "run programs without bubblewrap (a warning is printed)");
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  } catch (const CLI::ParseError& error) {
+    throw std::invalid_argument(error.what());
+  }
+  if (flags.require_sandbox && flags.no_sandbox)
+    throw std::invalid_argument("--require-sandbox and --no-sandbox contradict each other");
+
+  ReportHeader header;
+  header.lang = check_language(flags.lang);
+  header.mode = flags.mode;
+  header.seed = flags.seed;
+  const BatteryMode mode = parse_battery_mode(flags.mode, "--mode");
+  const std::vector<CheckCase> cases =
+      make_battery(mode, flags.cases > 0 ? flags.cases : designed_case_count(mode), flags.seed);
+
+  if (!flags.write_cases.empty()) {
+    fs::create_directories(flags.write_cases);
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      write_text_file(flags.write_cases + "/" + case_file_name(int(i) + 1, int(cases.size())),
+                      scene_to_json(cases[i].file));
+    std::printf("%s", textf(header.lang, "wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
+                            cases.size(), flags.write_cases.c_str()).c_str());
+    return 0;
+  }
+  const std::vector<CaseImage> references = reference_images(cases);
+  if (!flags.answers.empty()) {
+    header.sandbox_note = "answer files: no program run";
+    return finish(flags, header, cases, references, check_answer_files(flags.answers, cases, references));
+  }
+  if (!flags.batch.empty()) return run_batch(flags, header, cases, references);
+
+  Submission submission;
+  submission.name = "student";
+  submission.argv = absolutise_paths(split_command(flags.student, "--student"));
+  if (find_program(submission.argv[0]).empty())
+    throw std::invalid_argument("--student: cannot find an executable program '" + submission.argv[0] + "'");
+  submission.sandbox = choose_sandbox(flags, header);
+  const std::vector<StudentReport> reports =
+      check_submissions({submission}, cases, references, limits_of(flags), threads_of(flags));
+  return finish(flags, header, cases, references, reports[0]);
+}
+
+}  // namespace raycam::cli

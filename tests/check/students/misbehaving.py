@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Test students that misbehave, one way each (first argument):
+  crash      raises an exception (exit 1, a traceback on stderr)
+  abort      kills itself with SIGABRT
+  hang       sleeps forever, never answers
+  garbage    prints something that is not JSON
+  huge       prints far more than the output cap
+  no-read    answers without reading its input, after closing stdin
+  bad-ids    valid JSON, an id out of range
+  escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
+"""
+import json
+import os
+import socket
+import sys
+import time
+
+mode = sys.argv[1]
+if mode == "crash":
+    json.load(sys.stdin)
+    raise RuntimeError("the student's program fell over")
+if mode == "abort":
+    os.abort()
+if mode == "hang":
+    time.sleep(3600)
+if mode == "garbage":
+    print("hello, I am not JSON {")
+    sys.exit(0)
+if mode == "huge":
+    chunk = "[" * (1 << 20)
+    for _ in range(64):  # 64 MiB, over the 16 MiB cap
+        sys.stdout.write(chunk)
+    sys.exit(0)
+if mode == "no-read":
+    sys.stdin.close()
+    print('{"ids": []}')
+    sys.exit(0)
+if mode == "bad-ids":
+    case = json.load(sys.stdin)
+    print(json.dumps({"ids": [99] * 3}))
+    sys.exit(0)
+if mode == "escape":
+    port, path = int(sys.argv[2]), sys.argv[3]
+    try:
+        with socket.create_connection(("127.0.0.1", port), timeout=2) as s:
+            s.sendall(b"escaped")
+        print("connected", file=sys.stderr)
+    except OSError as error:
+        print("socket stopped:", error, file=sys.stderr)
+    try:
+        with open(path, "w") as out:
+            out.write("escaped")
+        print("wrote", path, file=sys.stderr)
+    except OSError as error:
+        print("write stopped:", error, file=sys.stderr)
+    print('{"ids": []}')
+    sys.exit(0)
+sys.exit("unknown mode " + mode)

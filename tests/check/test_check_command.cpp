@@ -1,0 +1,301 @@
+// `raycam-cli check` end to end, with "student" programs written for these tests independently of raycam's
+// core (tests/check/students/): the examples pass, each classic mistake and some pairs are named, programs
+// that crash, hang, print garbage or too much are reported per case, the sandbox stops a program that
+// writes outside its folder or opens a socket, --answers, --batch (CSV), --diff-dir and bad usage.
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "raycam/classic_mistakes.h"
+#include "raycam/scene_file.h"
+#include "student_process.h"
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+constexpr int kDefaultCases = 12;  // the designed battery, 6 per dimension
+
+// A folder of this test process's own (CTest runs the test cases as parallel processes in one folder).
+std::string scratch(const std::string& name) {
+  const std::string dir = "check_scratch_" + std::to_string(getpid()) + "_" + name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+struct Checked {
+  int exit_code = -1;
+  json report;  // --report FILE (--batch: a folder, read by the test)
+  std::string report_path;
+  std::string output;
+};
+
+// Runs `raycam-cli check ARGS --report FILE` and reads back the report (when one was written).
+Checked check(const std::string& args, const std::string& name) {
+  const std::string dir = scratch(name);
+  const std::string report = dir + "/report.json", output = dir + "/output.txt";
+  const std::string command =
+      std::string(RAYCAM_CLI) + " check " + args + " --report " + report + " > " + output + " 2>&1";
+  Checked result;
+  const int status = std::system(command.c_str());
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream text(output);
+  std::stringstream buffer;
+  buffer << text.rdbuf();
+  result.output = buffer.str();
+  result.report_path = report;
+  std::ifstream in(report);
+  if (in && fs::is_regular_file(report)) result.report = json::parse(in);
+  return result;
+}
+
+std::string mistaken(const std::string& mistakes, bool md = false) {
+  return std::string("--student \"") + MISTAKEN_STUDENT + " --mistake " + mistakes + (md ? " --md" : "") +
+         "\"";
+}
+
+std::string top_diagnosis(const Checked& c) {
+  return c.report["diagnosis"].empty() ? std::string("(none)")
+                                       : c.report["diagnosis"][0]["mistake"].get<std::string>();
+}
+
+bool sandbox_works() {
+  std::string why;
+  return bool(raycam::check::probe_sandbox(why));
+}
+
+// PNG width and height from the IHDR chunk (bytes 16-23, big-endian).
+std::pair<int, int> png_size(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char header[24] = {};
+  in.read(reinterpret_cast<char*>(header), 24);
+  auto be = [&](int at) {
+    return (header[at] << 24) | (header[at + 1] << 16) | (header[at + 2] << 8) | header[at + 3];
+  };
+  return {be(16), be(20)};
+}
+}  // namespace
+
+TEST_CASE("the example students (C++ and Python) pass the default battery", "[check][cli]") {
+  for (const std::string student :
+       {std::string(EXAMPLE_STUDENT_CPP), std::string("python3 ") + EXAMPLE_STUDENT_PY}) {
+    INFO(student);
+    const Checked c = check("--student \"" + student + "\"", "examples");
+    CHECK(c.exit_code == 0);
+    CHECK(c.report["cases"] == kDefaultCases);
+    CHECK(c.report["passed"] == kDefaultCases);
+    CHECK(c.report["sandbox"] == sandbox_works());
+    for (const json& r : c.report["results"]) CHECK(r["md"] == "match");
+  }
+}
+
+TEST_CASE("check names each classic mistake first, alone", "[check][cli][diagnosis]") {
+  for (const raycam::MistakeInfo& mistake : raycam::kClassicMistakes) {
+    INFO(mistake.id);
+    const Checked c = check(mistaken(mistake.id), std::string("single_") + mistake.id);
+    CHECK(c.exit_code == 1);
+    const int failing = kDefaultCases - c.report["passed"].get<int>();
+    CHECK(failing > 0);
+    CHECK(top_diagnosis(c) == mistake.id);
+    CHECK(c.report["diagnosis"][0]["explains"] == failing);
+  }
+}
+
+TEST_CASE("check names pairs of mistakes", "[check][cli][diagnosis]") {
+  // The pair's ID lists its mistakes in the table's order.
+  for (const auto& [given, named] :
+       {std::pair<std::string, std::string>{"no_t_min,mirrored", "mirrored+no_t_min"},
+        {"degrees_as_radians,pixel_edges", "pixel_edges+degrees_as_radians"},
+        {"eye_origin,skip_renormalise", "skip_renormalise+eye_origin"},
+        {"theta_phi_swapped,no_focal_scale", "no_focal_scale+theta_phi_swapped"},
+        {"res_truncated,direction_translated", "direction_translated+res_truncated"}}) {
+    INFO(given);
+    const Checked c = check(mistaken(given), "pair");
+    CHECK(c.exit_code == 1);
+    CHECK(top_diagnosis(c) == named);
+    CHECK(c.report["diagnosis"][0]["explains"] == kDefaultCases - c.report["passed"].get<int>());
+  }
+}
+
+TEST_CASE("upside down and mirrored + rows flipped give one image; md tells them apart",
+          "[check][cli][diagnosis]") {
+  Checked c = check(mistaken("upside_down"), "upside_ids");
+  REQUIRE(c.report["diagnosis"].size() >= 2);
+  CHECK(c.report["diagnosis"][0]["mistake"] == "upside_down");  // the simplest first
+  CHECK(c.report["diagnosis"][1]["mistake"] == "mirrored+rows_flipped");
+  CHECK(c.report["diagnosis"][0]["explains"] == c.report["diagnosis"][1]["explains"]);
+
+  c = check(mistaken("upside_down", true), "upside_md");
+  REQUIRE(c.report["diagnosis"].size() == 1);
+  CHECK(c.report["diagnosis"][0]["mistake"] == "upside_down");
+
+  c = check(mistaken("mirrored,rows_flipped", true), "flipped_md");
+  CHECK(top_diagnosis(c) == "mirrored+rows_flipped");
+  for (const json& d : c.report["diagnosis"]) CHECK(d["mistake"] != "upside_down");
+}
+
+TEST_CASE("crashing, hanging, garbage-printing and huge-output students are reported per case",
+          "[check][cli]") {
+  const std::string student = std::string("--student \"python3 ") + MISBEHAVING_PY + " ";
+  for (const auto& [mode, status, detail] :
+       {std::tuple<const char*, const char*, const char*>{"crash", "crash", "exit status 1"},
+        {"abort", "crash", "SIGABRT"},
+        {"hang", "timeout", "timeout"},
+        {"garbage", "bad-output", "not JSON"},
+        {"huge", "bad-output", "MiB on stdout"},
+        {"no-read", "bad-output", "expected 48 ids, got 0"},
+        {"bad-ids", "bad-output", "expected an id in [-1, 3]"}}) {
+    INFO(mode);
+    const Checked c = check(student + mode + "\" --cases 2 --timeout 1", std::string("bad_") + mode);
+    CHECK(c.exit_code == 1);  // reported, not crashed: a crash of raycam-cli would give no report
+    REQUIRE(c.report["results"].size() == 2);
+    for (const json& r : c.report["results"]) CHECK(r["status"] == status);
+    CHECK_THAT(c.report["results"][0]["detail"].get<std::string>(), Catch::Contains(detail));
+  }
+  const Checked crashed = check(student + "crash\" --cases 1", "bad_crash_stderr");
+  CHECK_THAT(crashed.report["results"][0]["stderr"].get<std::string>(), Catch::Contains("fell over"));
+  CHECK_THAT(crashed.output, Catch::Contains("fell over"));
+}
+
+TEST_CASE("the sandbox stops a student writing outside its folder or opening a socket",
+          "[check][cli][sandbox]") {
+  // A TCP server on the host's loopback, and a file path outside the student's folder.
+  const int server = socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(bind(server, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0);
+  REQUIRE(listen(server, 4) == 0);
+  socklen_t length = sizeof address;
+  getsockname(server, reinterpret_cast<sockaddr*>(&address), &length);
+  fcntl(server, F_SETFL, O_NONBLOCK);
+  const std::string outside = fs::absolute(scratch("escape")).string() + "/escaped.txt";
+  const std::string student = std::string("--student \"python3 ") + MISBEHAVING_PY + " escape " +
+                              std::to_string(ntohs(address.sin_port)) + " " + outside + "\" --cases 1";
+  auto connections = [&] {
+    int count = 0;
+    for (int fd; (fd = accept(server, nullptr, nullptr)) >= 0; ++count) close(fd);
+    return count;
+  };
+
+  if (sandbox_works()) {
+    const Checked c = check(student + " --require-sandbox", "escape_sandboxed");
+    CHECK(c.report["sandbox"] == true);
+    CHECK(connections() == 0);
+    CHECK_FALSE(fs::exists(outside));
+    CHECK_THAT(c.report["results"][0]["stderr"].get<std::string>(), Catch::Contains("write stopped"));
+  } else {
+    const Checked c = check(student + " --require-sandbox", "escape_refused");
+    CHECK(c.exit_code == 2);  // refused: nothing ran
+    CHECK_THAT(c.output, Catch::Contains("--require-sandbox"));
+  }
+  // Without the sandbox the same program gets out: the checks above can fail.
+  const Checked open = check(student + " --no-sandbox", "escape_open");
+  CHECK(open.report["sandbox"] == false);
+  CHECK_THAT(open.output, Catch::Contains("WITHOUT a sandbox"));
+  CHECK(connections() == 1);
+  CHECK(fs::exists(outside));
+  close(server);
+}
+
+TEST_CASE("write-cases then answers: answer files made by hand are graded", "[check][cli]") {
+  const std::string dir = scratch("answers");
+  const Checked written = check("--write-cases " + dir, "write_cases");
+  CHECK(written.exit_code == 0);
+  for (int i = 1; i <= kDefaultCases; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "%s/case_%02d.json", dir.c_str(), i);
+    CHECK_NOTHROW(raycam::load_scene_file(name));  // the scene-file format of the README
+    std::string answer = name;
+    answer.replace(answer.find("case_"), 5, "answer_");
+    REQUIRE(std::system((std::string(EXAMPLE_STUDENT_CPP) + " < " + name + " > " + answer).c_str()) == 0);
+  }
+  Checked c = check("--answers " + dir, "answers_all");
+  CHECK(c.exit_code == 0);
+  CHECK(c.report["passed"] == kDefaultCases);
+
+  fs::remove(dir + "/answer_03.json");
+  c = check("--answers " + dir, "answers_missing");
+  CHECK(c.exit_code == 1);
+  CHECK(c.report["passed"] == kDefaultCases - 1);
+  CHECK(c.report["results"][2]["status"] == "bad-output");
+}
+
+TEST_CASE("batch grades every folder in parallel into one CSV row each (a hanging one included)",
+          "[check][cli][batch]") {
+  const std::string root = scratch("batch");
+  auto student = [&](const std::string& name, const std::string& command) {
+    fs::create_directories(root + "/" + name);
+    const std::string run = root + "/" + name + "/run.sh";
+    std::ofstream(run) << "#!/bin/sh\nexec " << command << "\n";
+    fs::permissions(run, fs::perms::owner_exec, fs::perm_options::add);
+  };
+  student("alice", EXAMPLE_STUDENT_CPP);
+  student("bob", std::string(MISTAKEN_STUDENT) + " --mistake mirrored");
+  student("carol", std::string("python3 ") + MISBEHAVING_PY + " hang");
+  const std::string csv = root + "/grades.csv";
+  const Checked c =
+      check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + csv + " --cases 2 --timeout 1",
+            "batch_run");
+  CHECK(c.exit_code == 1);
+  std::ifstream in(csv);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0].rfind("student,passed,cases,score,top_diagnosis", 0) == 0);
+  CHECK(lines[1].rfind("alice,2,2,100.0,,0,0,0,0,0,", 0) == 0);
+  CHECK(lines[2].rfind("bob,0,2,0.0,mirrored,2,2,0,0,0,", 0) == 0);
+  CHECK(lines[3].rfind("carol,0,2,0.0,,0,0,0,2,0,", 0) == 0);
+  std::ifstream bob(c.report_path + "/bob.json");  // --report in --batch: one report per student
+  REQUIRE(bob);
+  CHECK(json::parse(bob)["diagnosis"][0]["mistake"] == "mirrored");
+}
+
+TEST_CASE("diff-dir writes reference then student then difference per failing case (2D bars tall)",
+          "[check][cli]") {
+  const std::string dir = scratch("diff");
+  const Checked c = check(mistaken("mirrored") + " --cases 2 --diff-dir " + dir, "diff_run");
+  CHECK(c.exit_code == 1);
+  const auto [width2, height2] = png_size(dir + "/case_01.png");  // 2D, 48 pixels
+  CHECK(width2 >= 3 * 48);
+  CHECK(height2 >= 32);
+  const auto [width3, height3] = png_size(dir + "/case_02.png");  // 3D, 40 × 30
+  CHECK(width3 >= 3 * 40);
+  CHECK(height3 >= 30);
+  CHECK(double(width3) / height3 >= 3.0 * 40 / 30);  // three panels side by side, square pixels
+}
+
+TEST_CASE("bad usage exits 2 with the flag named", "[check][cli]") {
+  CHECK(check("", "usage_none").exit_code == 2);
+  CHECK(check("--student true --answers x", "usage_two").exit_code == 2);
+  for (const auto& [args, named] : {std::pair<std::string, std::string>{"--student true --mode 4d", "--mode"},
+                                    {"--batch . --student-cmd x", "--csv"},
+                                    {"--student \"'unclosed\"", "--student: unclosed"},
+                                    {"--student no-such-program-raycam", "no-such-program-raycam"},
+                                    {"--student true --timeout 0", "--timeout"}}) {
+    INFO(args);
+    const Checked c = check(args, "usage");
+    CHECK(c.exit_code == 2);
+    CHECK_THAT(c.output, Catch::Contains(named));
+  }
+}
+
+TEST_CASE("lang fr gives the table and the score and the diagnosis in French", "[check][cli]") {
+  const Checked c = check(mistaken("mirrored") + " --lang fr", "french");
+  CHECK_THAT(c.output, Catch::Contains("cas réussis"));
+  CHECK_THAT(c.output, Catch::Contains("diagnostic"));
+  CHECK_THAT(c.output, Catch::Contains("le pixel k va à l'indice k"));
+  CHECK_THAT(c.report["diagnosis"][0]["text"].get<std::string>(), Catch::Contains("le pixel k"));
+}

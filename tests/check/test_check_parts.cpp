@@ -1,0 +1,165 @@
+// The check library's parts: splitting a command without a shell, running a program (exit codes, stdin,
+// timeout, output cap), reading answers, ambiguous pixels, grading.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "answer.h"
+#include "case_image.h"
+#include "grading.h"
+#include "student_process.h"
+
+using namespace raycam;
+using namespace raycam::check;
+
+TEST_CASE("a command is split like a shell word list and never given to a shell", "[check][process]") {
+  using V = std::vector<std::string>;
+  CHECK(split_command("python3  camera.py\t--fast", "--student") == V{"python3", "camera.py", "--fast"});
+  CHECK(split_command("prog 'a b' \"c \\\"d\\\"\" e\\ f ''", "--student") ==
+        V{"prog", "a b", "c \"d\"", "e f", ""});
+  CHECK(split_command("echo $HOME; rm -rf x", "--student") == V{"echo", "$HOME;", "rm", "-rf", "x"});
+  CHECK_THROWS_WITH(split_command("prog 'open", "--student"), Catch::Contains("--student: unclosed '"));
+  CHECK_THROWS_WITH(split_command("  ", "--student-cmd"),
+                    Catch::Contains("--student-cmd: expected a command"));
+
+  // Run for real: the ';' and '$HOME' reach echo as text (a shell would have run `rm` and expanded $HOME).
+  const RunResult run =
+      run_student(split_command("echo $HOME; rm -rf x", "t"), "", RunLimits{}, std::nullopt);
+  CHECK(run.end == RunResult::End::exited);
+  CHECK(run.out == "$HOME; rm -rf x\n");
+}
+
+TEST_CASE("running a program: stdin, exit status, signals, timeout, output cap, missing program",
+          "[check][process]") {
+  RunLimits limits;
+  limits.timeout_seconds = 5;
+  const std::string big(3 << 20, 'x');  // larger than a pipe buffer: input and output must be interleaved
+  RunResult run = run_student({"cat"}, big, limits, std::nullopt);
+  CHECK(run.end == RunResult::End::exited);
+  CHECK(run.out == big);
+
+  run = run_student({"sh", "-c", "echo oops >&2; exit 3"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::exited);
+  CHECK(run.exit_code == 3);
+  CHECK(run.err == "oops\n");
+
+  run = run_student({"sh", "-c", "kill -SEGV $$"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::signalled);
+  CHECK(run.signal == 11);
+
+  limits.timeout_seconds = 0.3;
+  run = run_student({"sleep", "30"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::timed_out);
+  CHECK(run.seconds < 5);
+
+  limits.timeout_seconds = 20;
+  limits.max_stdout_bytes = 1 << 16;
+  run = run_student({"yes"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::output_too_large);
+  CHECK(run.out.size() == limits.max_stdout_bytes);
+
+  run = run_student({"no-such-program-raycam"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::could_not_start);
+  CHECK_THAT(run.error, Catch::Contains("no-such-program-raycam"));
+}
+
+TEST_CASE("the program runs in a fresh empty folder that is removed afterwards", "[check][process]") {
+  const RunResult run =
+      run_student({"sh", "-c", "pwd; ls -A | wc -l; touch mine"}, "", RunLimits{}, std::nullopt);
+  REQUIRE(run.end == RunResult::End::exited);
+  const std::string folder = run.out.substr(0, run.out.find('\n'));
+  CHECK_THAT(folder, Catch::Contains("raycam-check-"));
+  CHECK(run.out.substr(run.out.find('\n') + 1) == "0\n");
+  CHECK(access(folder.c_str(), F_OK) != 0);
+}
+
+TEST_CASE("answers: shapes, sizes, ids and md are checked, with the field named", "[check][answer]") {
+  ParsedAnswer a = parse_answer(R"({"ids": [-1, 0, 2.0, 1], "md": [[1,0,0],[0,1,0],[0,0,1]]})", 2, 1, 4, 3);
+  CHECK(a.error.empty());
+  REQUIRE(a.answer);
+  CHECK(a.answer->ids == std::vector<int>{-1, 0, 2, 1});
+  CHECK(a.answer->md->size() == 9);
+
+  a = parse_answer(R"({"ids": [[0, 1], [1, -1], [0, 0]]})", 3, 3, 2, 2);
+  CHECK(a.error.empty());
+  CHECK(a.answer->ids == std::vector<int>{0, 1, 1, -1, 0, 0});
+
+  a = parse_answer(R"({"ids": [0, 1, 1]})", 2, 1, 4, 3);
+  CHECK(a.wrong_size);
+  CHECK(a.answer);  // kept for the diagnosis (res_truncated)
+  CHECK_THAT(a.error, Catch::Contains("expected 4 ids, got 3"));
+
+  CHECK_THAT(parse_answer(R"({"ids": [0, 3]})", 2, 1, 2, 3).error,
+             Catch::Contains("ids[1] = 3: expected an id in [-1, 2]"));
+  CHECK_THAT(parse_answer(R"({"ids": [0, 0.5]})", 2, 1, 2, 3).error,
+             Catch::Contains("ids[1]: expected an integer"));
+  CHECK_THAT(parse_answer(R"({"ids": [[0], [0, 1]]})", 3, 2, 1, 3).error,
+             Catch::Contains("ids[1]: 2 columns"));
+  CHECK_THAT(parse_answer(R"({"ids": [0], "md": [[1, 2]]})", 2, 1, 1, 3).error,
+             Catch::Contains("md: expected 3 rows"));
+  CHECK_THAT(parse_answer("hello", 2, 1, 1, 3).error, Catch::Contains("not JSON"));
+  CHECK_THAT(parse_answer("[1, 2]", 2, 1, 2, 3).error, Catch::Contains("\"ids\""));
+  CHECK_FALSE(parse_answer("hello", 2, 1, 1, 3).answer);
+}
+
+namespace {
+SceneFile bar_case(std::vector<Circle> circles, int size) {
+  SceneFile file;
+  file.dimension = 2;
+  file.scene2d.circles = std::move(circles);
+  // The canonical camera itself: θ = 90°, d = 1, d_f = 1 puts the screen on y = 1, the eye at (0, 2).
+  file.camera = {std::vector<double>{0, 0}, 1.0, 90.0, std::nullopt, 1.0, 1.0, std::vector<int>{size}};
+  return file;
+}
+}  // namespace
+
+TEST_CASE("ambiguous pixels: a grazing centre ray and a tie, nothing else", "[check][ambiguous]") {
+  // 4 pixels, centres at x = -0.75, -0.25, 0.25, 0.75 on the screen y = 1, eye (0, 2): pixel 3's ray
+  // starts at (0.75, 1) along (0.75, -1)/1.25. A circle centred on the ray's normal at distance r touches it.
+  const glm::dvec2 origin(0.75, 1.0), direction = glm::dvec2(0.75, -1.0) / 1.25, normal(0.8, 0.6);
+  const glm::dvec2 touch = origin + 2.0 * direction;
+  SceneFile grazing = bar_case({{touch + 0.5 * normal, 0.5, {}, ""}}, 4);
+  CaseImage image = render_case(grazing);
+  CHECK(image.ambiguous == std::vector<std::uint8_t>{0, 0, 0, 1});
+
+  // The same circle pulled 1% of its radius away: no longer ambiguous.
+  grazing.scene2d.circles[0].centre = touch + 0.505 * normal;
+  CHECK(render_case(grazing).ambiguous == std::vector<std::uint8_t>{0, 0, 0, 0});
+
+  // Two equal circles: every pixel that sees them ties; the lower index is the answer.
+  SceneFile tie = bar_case({{{0, -3}, 3.5, {}, ""}, {{0, -3}, 3.5, {}, ""}}, 4);
+  image = render_case(tie);
+  CHECK(image.ids == std::vector<int>{0, 0, 0, 0});
+  CHECK(image.ambiguous == std::vector<std::uint8_t>{1, 1, 1, 1});
+
+  // A ray starting on a surface: the screen point (−0.25, 1) on a circle.
+  SceneFile on_surface = bar_case({{{-0.25, 0.5}, 0.5, {}, ""}}, 4);
+  CHECK(render_case(on_surface).ambiguous == std::vector<std::uint8_t>{0, 1, 0, 0});
+}
+
+TEST_CASE("grading: wrong pixels, the deepest one, ambiguous pixels forgiven, md compared",
+          "[check][grading]") {
+  CaseImage reference;
+  reference.dimension = 2;
+  reference.columns = 9;
+  reference.ids = {-1, 0, 0, 0, 0, 0, 0, 0, -1};
+  reference.ambiguous = {0, 1, 0, 0, 0, 0, 0, 0, 0};
+  reference.md = {2, 0, 1, 0, 2, 0, 0, 0, 1};
+  ParsedAnswer parsed;
+  parsed.answer =
+      Answer{1, 9, {-1, -1, 1, 0, 1, 0, 0, 0, -1}, std::vector<double>{2, 0, 1, 0, 2, 0, 0, 0, 1.0000001}};
+  CaseResult result = grade_answer(reference, parsed);
+  CHECK(result.status == CaseStatus::fail);
+  CHECK(result.wrong_pixels == 2);  // pixel 1 is ambiguous and forgiven
+  REQUIRE(result.worst);
+  CHECK(result.worst->column == 4);  // three pixels from the nearest edge, against one for pixel 2
+  CHECK(result.worst->expected == 0);
+  CHECK(result.worst->got == 1);
+  CHECK(result.md == "match");
+  parsed.answer->md->at(2) = 1.1;
+  CHECK(grade_answer(reference, parsed).md == "differs");
+  parsed.answer->ids = reference.ids;
+  parsed.answer->ids[1] = 3;  // only the ambiguous pixel differs
+  CHECK(grade_answer(reference, parsed).status == CaseStatus::pass);
+}
