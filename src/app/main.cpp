@@ -40,7 +40,7 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
   auto* state = static_cast<AppState*>(glfwGetWindowUserPointer(window));
   if (key == GLFW_KEY_F1) state->show_help = !state->show_help;
   if (key == GLFW_KEY_F11) state->request_fullscreen = true;
-  if (key == GLFW_KEY_F12) state->request_screenshot = true;
+  if (key == GLFW_KEY_F12) raycam::ui::request_screenshot(*state);
   if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS)) state->request_quit = true;
 }
 
@@ -65,6 +65,7 @@ void toggle_fullscreen(GLFWwindow* window, int& saved_x, int& saved_y, int& save
 
 int main(int argc, char** argv) {
   raycam::ui::AppOptions options;
+  options.demo_on_bad_scene = true;  // open on the demo scene and show why the file did not open
   Run run;
   AppState state;
   try {
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
   {
     raycam::ui::FrameRenderer frame;
     int saved[4] = {0, 0, options.width, options.height};
+    std::string applied_title = "raycam";
     for (int frame_index = 0; !glfwWindowShouldClose(window) && !state.request_quit; ++frame_index) {
       const auto start = std::chrono::steady_clock::now();
       glfwPollEvents();
@@ -137,6 +139,10 @@ int main(int argc, char** argv) {
       if (run.frames > 0) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // scripted: no stray hover
       ImGui::NewFrame();
       frame.build(state, width, height);
+      if (state.window_title != applied_title) {  // the UI names the mode and the scene; the host applies it
+        glfwSetWindowTitle(window, state.window_title.c_str());
+        applied_title = state.window_title;
+      }
       ImGui::Render();
       glViewport(0, 0, width, height);
       glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
@@ -144,15 +150,14 @@ int main(int argc, char** argv) {
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       const bool last = run.frames > 0 && frame_index + 1 >= run.frames;
       if (state.request_screenshot || (last && !run.screenshot.empty())) {
-        const std::string path = last && !run.screenshot.empty() ? run.screenshot : "raycam-screenshot.png";
+        const std::string path = last && !run.screenshot.empty() ? run.screenshot : state.screenshot_path;
         try {
           glFinish();
           raycam::gl::write_png(raycam::gl::read_framebuffer(width, height), path);  // back buffer, before the swap
-          state.message = "wrote " + path;
-          state.message_is_error = false;
+          set_message(state, raycam::ui::MessageSource::files, false,
+                      raycam::ui::trf("wrote %s", path.c_str()));
         } catch (const std::exception& error) {
-          state.message = error.what();
-          state.message_is_error = true;
+          set_message(state, raycam::ui::MessageSource::files, true, error.what());
           if (last) exit_code = 1;
         }
         state.request_screenshot = false;

@@ -1,6 +1,7 @@
 // Scene files (JSON). Section index: field readers · objects · camera preset · parse · write.
 #include "raycam/scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -250,6 +251,53 @@ json object_json(const Object& object, const char* type, int dimension) {
 }
 }  // namespace
 
+namespace {
+// JSON for people: a value that fits on one line of at most kReadableLine characters and holds no array or
+// object bigger than a short array of scalars stays on one line ("center": [1, 2, 3], and each object of
+// "objects" as one line, as in README's example); anything bigger is indented by 2.
+constexpr std::size_t kReadableLine = 120;
+
+bool is_flat(const json& value) {
+  if (value.is_array())
+    return value.size() <= 4 &&
+           std::all_of(value.begin(), value.end(), [](const json& v) { return v.is_primitive(); });
+  if (value.is_object())
+    return std::all_of(value.begin(), value.end(),
+                       [](const json& v) { return v.is_primitive() || (v.is_array() && is_flat(v)); });
+  return true;
+}
+
+std::string one_line(const json& value) {
+  if (value.is_primitive()) return value.dump();
+  std::string text = value.is_array() ? "[" : "{";
+  bool first = true;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (!first) text += ", ";
+    first = false;
+    if (value.is_object()) text += json(it.key()).dump() + ": ";
+    text += one_line(*it);
+  }
+  return text + (value.is_array() ? "]" : "}");
+}
+
+std::string readable_json(const json& value, int indent) {
+  if (value.is_primitive() || value.empty()) return value.dump();
+  const std::string flat = one_line(value);
+  if (is_flat(value) && flat.size() + std::size_t(indent) <= kReadableLine) return flat;
+  const std::string inner(std::size_t(indent + 2), ' ');
+  std::string text = value.is_array() ? "[\n" : "{\n";
+  bool first = true;
+  for (auto it = value.begin(); it != value.end(); ++it) {
+    if (!first) text += ",\n";
+    first = false;
+    text += inner;
+    if (value.is_object()) text += json(it.key()).dump() + ": ";
+    text += readable_json(*it, indent + 2);
+  }
+  return text + "\n" + std::string(std::size_t(indent), ' ') + (value.is_array() ? "]" : "}");
+}
+}  // namespace
+
 std::string scene_to_json(const SceneFile& file) {
   json root;
   root["dimension"] = file.dimension;
@@ -272,7 +320,7 @@ std::string scene_to_json(const SceneFile& file) {
   if (p.res) camera["res"] = *p.res;
   if (p.size) camera["size"] = file.dimension == 2 ? json((*p.size)[0]) : json(*p.size);
   if (!camera.empty()) root["camera"] = camera;
-  return root.dump(2) + "\n";
+  return readable_json(root, 0) + "\n";
 }
 
 void save_scene_file(const SceneFile& file, const std::string& path) {

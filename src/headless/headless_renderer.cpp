@@ -31,6 +31,8 @@ HeadlessRenderer::HeadlessRenderer(int width, int height) : context_(std::make_u
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini next to the user's files
   io.DisplaySize = ImVec2(float(width), float(height));
+  for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;  // our key indices are ImGui's own
+  mouse_x_ = mouse_y_ = -FLT_MAX;                                       // no mouse: nothing hovered
   ImGui_ImplOpenGL3_Init("#version 330 core");
   frame_ = std::make_unique<ui::FrameRenderer>();
 }
@@ -46,7 +48,13 @@ void HeadlessRenderer::run_frame(ui::AppState& state) {
   const auto start = std::chrono::steady_clock::now();
   ImGuiIO& io = ImGui::GetIO();
   io.DeltaTime = 1.0f / 60.0f;
-  io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // no mouse: nothing hovered
+  io.MousePos = ImVec2(mouse_x_, mouse_y_);
+  for (int button = 0; button < 3; ++button) io.MouseDown[button] = mouse_down_[button];
+  io.MouseWheel = wheel_;
+  wheel_ = 0.0f;
+  for (bool& down : io.KeysDown) down = false;
+  if (pressed_key_ >= 0) io.KeysDown[pressed_key_] = true;
+  pressed_key_ = -1;
   raycam::ui::prepare_frame(state);          // fonts at the current scale, before the backend's frame
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
@@ -64,6 +72,15 @@ gl::RgbaImage HeadlessRenderer::render_settled(ui::AppState& state, int frames) 
   for (int i = 0; i < std::max(frames, 2); ++i) run_frame(state);
   return read_back();
 }
+
+void HeadlessRenderer::move_mouse(float x, float y) {
+  mouse_x_ = x;
+  mouse_y_ = y;
+}
+void HeadlessRenderer::set_mouse_button(int button, bool down) { mouse_down_[button] = down; }
+void HeadlessRenderer::scroll(float wheel) { wheel_ += wheel; }
+void HeadlessRenderer::press_key(int imgui_key) { pressed_key_ = imgui_key; }
+void HeadlessRenderer::type_text(const char* utf8) { ImGui::GetIO().AddInputCharactersUTF8(utf8); }
 
 gl::RgbaImage HeadlessRenderer::read_back() const { return gl::read_framebuffer(width_, height_); }
 

@@ -24,6 +24,14 @@ class HeadlessRenderer {
   gl::RgbaImage render_settled(ui::AppState& state, int frames = 3);
   gl::RgbaImage read_back() const;
 
+  // Input, as a window system would send it, through ImGui's IO: the next run_frame sees it. The mouse
+  // stays where it was put (outside the window until then); a pressed key is released after one frame.
+  void move_mouse(float x, float y);
+  void set_mouse_button(int button, bool down);
+  void scroll(float wheel);
+  void press_key(int imgui_key);  // ImGuiKey_Tab, ImGuiKey_LeftArrow, ...
+  void type_text(const char* utf8);
+
   const ui::FrameLayout& layout() const { return layout_; }
   int width() const { return width_; }
   int height() const { return height_; }
@@ -33,6 +41,10 @@ class HeadlessRenderer {
   std::unique_ptr<Context> context_;
   std::unique_ptr<ui::FrameRenderer> frame_;
   ui::FrameLayout layout_;
+  float mouse_x_, mouse_y_;
+  bool mouse_down_[3] = {false, false, false};
+  float wheel_ = 0.0f;
+  int pressed_key_ = -1;
   int width_, height_;
 };
 

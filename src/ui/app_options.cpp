@@ -74,12 +74,34 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
   return true;
 }
 
-AppState make_app_state(const AppOptions& options) {
-  const ViewSetup setup = make_view_setup(options.view);
+namespace {
+ViewSetup checked_view_setup(const ViewFlags& flags) {
+  const ViewSetup setup = make_view_setup(flags);
   if (setup.dimension == 2) validate(setup.file.scene2d);
   else validate(setup.file.scene3d);
+  return setup;
+}
+}  // namespace
+
+AppState make_app_state(const AppOptions& options) {
   AppState state;
-  adopt_view_setup(state, setup);
+  std::optional<ViewSetup> setup;
+  try {
+    setup = checked_view_setup(options.view);
+  } catch (const std::exception& error) {
+    if (!options.demo_on_bad_scene || !options.view.scene_path) throw;
+    // The app opens on the demo scene and says why the file did not open (a bad flag still stops it).
+    ViewFlags without_file = options.view;
+    without_file.scene_path.reset();
+    setup = checked_view_setup(without_file);
+    const std::string& path = *options.view.scene_path;
+    const std::string reason = error.what();
+    set_message(state, MessageSource::files, true,
+                reason.find(path) == std::string::npos
+                    ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
+                    : trf("cannot open: %s", reason.c_str()));
+  }
+  adopt_view_setup(state, *setup);
   state.mistakes = options.mistakes;
   state.arccos_route = options.arccos_route;
   if (options.step) {

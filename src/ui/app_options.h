@@ -24,6 +24,8 @@ struct AppOptions {
   std::optional<Language> language;  // --lang fr|en; default: the environment (LANGUAGE, LC_ALL, LANG)
   AccuracyFlags accuracy;    // --precision --intersect --spp --frame --exact (--placement: use --mistake arccos)
   CastOptions cast_options;  // --method
+  bool demo_on_bad_scene =
+      false;  // the app: a scene that cannot be opened gives the demo and an error message
 };
 
 // If args[i] is a shared option, consumes it (and its value) and returns true. Throws std::invalid_argument

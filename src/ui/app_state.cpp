@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 #include <string>
@@ -69,8 +71,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   try {
     place_cameras(state);
   } catch (const std::exception& error) {  // a parameter out of range: keep the last image, say why
-    state.message = error.what();
-    state.message_is_error = true;
+    set_message(state, MessageSource::camera, true, error.what());
     state.cameras_dirty = false;
     return false;
   }
@@ -97,8 +98,8 @@ bool recast_if_needed(AppState& state, bool interacting) {
                               static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
       cast = true;
     } catch (const std::invalid_argument& error) {  // e.g. the exact bar refuses a huge scene: say so, draw fast
-      state.message = std::string(error.what()) + " (drawn with the fast caster)";
-      state.message_is_error = true;
+      set_message(state, MessageSource::caster, true,
+                  std::string(error.what()) + tr(" (drawn with the fast caster)"));
     }
   }
   if (!cast) {
@@ -127,12 +128,19 @@ bool open_scene(AppState& state, const std::string& path) {
     state.construction_step = -1;
     ++state.scene_version;
     state.cameras_dirty = true;
-    state.message = trf("opened %s", path.c_str());
-    state.message_is_error = false;
+    std::snprintf(state.path_input, sizeof state.path_input, "%s", path.c_str());
+    state.save_path[0] = '\0';  // Save as starts empty: never the file just opened unless the user types it
+    state.overwrite_pending.clear();
+    set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
-    state.message = error.what();  // the scene on screen stays as it was
-    state.message_is_error = true;
+    // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
+    std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
+    const std::string reason = error.what();
+    set_message(state, MessageSource::files, true,
+                reason.find(path) == std::string::npos
+                    ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
+                    : trf("cannot open: %s", reason.c_str()));
     return false;
   }
 }
@@ -147,22 +155,62 @@ bool save_preset(AppState& state, const std::string& path) {
       if (state.dimension == 3) file.camera.phi_deg = glm::degrees(state.orbit3d.phi);
     }
     save_scene_file(file, path);
-    state.message = trf("saved the camera preset to %s", path.c_str());
-    state.message_is_error = false;
+    set_message(state, MessageSource::files, false, trf("saved the camera preset to %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
-    state.message = error.what();
-    state.message_is_error = true;
+    set_message(state, MessageSource::files, true, trf("cannot save: %s", error.what()));
     return false;
   }
+}
+
+bool save_preset_as(AppState& state, const std::string& path, bool overwrite) {
+  state.overwrite_pending.clear();
+  if (path.empty()) {
+    set_message(state, MessageSource::files, true, tr("Save as: type the path of the file to write"));
+    return false;
+  }
+  if (!overwrite && std::filesystem::exists(path)) {
+    state.overwrite_pending = path;  // the panel asks; nothing is written yet
+    return false;
+  }
+  return save_preset(state, path);
+}
+
+void set_message(AppState& state, MessageSource source, bool is_error, std::string text) {
+  state.message = std::move(text);
+  state.message_is_error = is_error;
+  state.message_source = source;
+}
+
+std::string next_screenshot_path(const std::string& directory) {
+  for (int i = 1;; ++i) {
+    char name[64];
+    std::snprintf(name, sizeof name, "raycam-screenshot-%03d.png", i);
+    const std::filesystem::path path = std::filesystem::path(directory) / name;
+    if (!std::filesystem::exists(path) || i >= 99999) return path.lexically_normal().string();
+  }
+}
+
+void request_screenshot(AppState& state) {
+  std::error_code ignored;
+  state.screenshot_path =
+      std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string();
+  state.request_screenshot = true;
+}
+
+std::string window_title(const AppState& state) {
+  const std::string scene = state.scene_path.empty()
+                                ? std::string(tr("demo scene"))
+                                : std::filesystem::path(state.scene_path).filename().string();
+  return "raycam — " + std::to_string(state.dimension) + "D — " + scene;
 }
 
 void switch_dimension(AppState& state, int dimension) {
   if (dimension == state.dimension) return;
   if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
     state.scene_path.clear();
-    state.message = trf("switched to the built-in %dD demo scene", dimension);
-    state.message_is_error = false;
+    set_message(state, MessageSource::camera, false,
+                trf("switched to the built-in %dD demo scene", dimension));
   }
   state.file.dimension = dimension;
   if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();

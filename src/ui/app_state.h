@@ -31,6 +31,10 @@ struct ObserverOrbit {
   float zoom = 1.0f;
 };
 
+// Where a message came from: it is shown in that panel section (or above the status line when the section
+// is closed).
+enum class MessageSource { general, camera, files, caster };
+
 struct AppState {
   // ---- scene and camera parameters (the sliders' model) ----
   int dimension = 3;
@@ -83,16 +87,34 @@ struct AppState {
   bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
 
   // ---- requests to the executable (only it knows about windows and files of pixels) ----
-  bool request_screenshot = false;
+  bool request_screenshot = false;  // write the frame to screenshot_path (request_screenshot() picks it)
+  std::string screenshot_path;
   bool request_fullscreen = false;
   bool request_quit = false;
+  std::string window_title = "raycam";  // "raycam — 3D — many3d.json": the frame sets it, the host applies it
 
-  // ---- messages and text inputs ----
+  // ---- messages: one at a time, shown next to what caused it until dismissed or replaced ----
   std::string message;
   bool message_is_error = false;
-  char path_input[512] = {};
+  MessageSource message_source = MessageSource::general;
+
+  // ---- text inputs (Open and Save as have their own paths) ----
+  char path_input[512] = {};      // Open
+  char save_path[512] = {};       // Save as: never filled with the opened file's path
+  std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   char export_path[512] = "raycam-colour-map.png";
 };
+
+// Sets the one message on screen (replacing any other).
+void set_message(AppState& state, MessageSource source, bool is_error, std::string text);
+
+// Asks the host for a screenshot at the next free raycam-screenshot-NNN.png in the current directory.
+void request_screenshot(AppState& state);
+// The first raycam-screenshot-NNN.png (NNN from 001) that does not exist in `directory`.
+std::string next_screenshot_path(const std::string& directory = ".");
+
+// "raycam — 3D — many3d.json" (the demo scene: its translated name).
+std::string window_title(const AppState& state);
 
 // Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
 void adopt_view_setup(AppState& state, const ViewSetup& setup);
@@ -107,6 +129,9 @@ bool recast_if_needed(AppState& state, bool interacting = false);
 bool open_scene(AppState& state, const std::string& path);
 // Saves the current camera as the scene file's preset (written atomically). Returns success.
 bool save_preset(AppState& state, const std::string& path);
+// Save as: an existing file is replaced only when `overwrite` is true; otherwise state.overwrite_pending
+// names it and the panel asks. Returns true if it saved.
+bool save_preset_as(AppState& state, const std::string& path, bool overwrite);
 
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.

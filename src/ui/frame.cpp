@@ -1,7 +1,14 @@
-// Section index: theme · layout and build · image window · overhead window · observer window.
+// Section index: view input · theme · layout and build · image window · overhead window · observer window.
+//
+// One frame, in the order that keeps everything it shows true to one state (same-frame truth):
+//   1. input: keys, then the mouse on the views (hit-tested on last frame's windows, as ImGui does);
+//   2. the panel's controls (camera, mistakes, caster, files, lecture) change the state;
+//   3. the cast (only if something changed);
+//   4. everything derived is drawn from that state: the M_d tables, the ray inspector, the image and views.
 #include "frame.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::FindWindowByName, the hovered window
 
 #include <algorithm>
 #include <array>
@@ -18,6 +25,7 @@
 #include "panels.h"
 #include "raycam/transform.h"
 #include "text.h"
+#include "theme.h"
 
 namespace raycam::ui {
 
@@ -27,10 +35,26 @@ const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header whi
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
+// The long title if it fits the window's width, else the short one: a title is never cut.
+std::string fitting_title(const std::string& full, const std::string& brief, float width) {
+  const std::string shown = full.substr(0, full.find("##"));
+  const float room = width - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().WindowPadding.x;
+  return ImGui::CalcTextSize(shown.c_str()).x <= room ? full : brief;
+}
+
 bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
   ImGui::SetNextWindowPos({r.x, r.y});
   ImGui::SetNextWindowSize({r.w, r.h});
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
+}
+
+// Is the mouse over this window's drawing area? ImGui decided the hovered window at NewFrame from last
+// frame's windows; the area is last frame's too. So the input pass needs no window of its own this frame.
+bool view_hovered(const char* window_id, const Rect& area) {
+  const ImGuiWindow* window = ImGui::FindWindowByName(window_id);
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  return window && GImGui->HoveredWindow == window && area.w > 0 && mouse.x >= area.x && mouse.y >= area.y &&
+         mouse.x < area.x + area.w && mouse.y < area.y + area.h;
 }
 
 // The image widget shows the canonical screen: in 3D the square [-1, 1]² with +y up; in 2D the segment
@@ -54,12 +78,13 @@ PixelIndex pixel_under(const AppState& state, double fx, double fy) {
 
 // Mouse on the overhead or observer view: drag orbits the camera, the wheel changes d (shift: d_f),
 // a double-click on an object makes it the target.
-void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const OverheadMapping* mapping,
-                      const ObserverCamera* observer = nullptr) {
+void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_turns_around_target,
+                      const OverheadMapping* mapping, const ObserverCamera* observer = nullptr) {
   ImGuiIO& io = ImGui::GetIO();
   const bool is_2d = state.dimension == 2;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f)) {
+  if (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) &&
+      (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     if (drag_turns_around_target && mapping) {  // the camera follows the mouse around the target
       const glm::dvec2 target = is_2d ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
       const glm::dvec2 towards = mapping->to_world(io.MousePos) - target;
@@ -69,14 +94,14 @@ void orbit_with_mouse(AppState& state, bool drag_turns_around_target, const Over
     }
     state.cameras_dirty = true;
   }
-  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f && !io.KeyCtrl) {
+  if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
     double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
     double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
     if (io.KeyShift) df = std::clamp(df * std::pow(1.1, io.MouseWheel), 0.05, 20.0);
     else d = std::clamp(d * std::pow(0.9, io.MouseWheel), 0.1, 200.0);
     state.cameras_dirty = true;
   }
-  if (mapping && ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+  if (mapping && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     const int id = object_under(*mapping, state, io.MousePos);
     if (id >= 0) {
       if (is_2d) state.orbit2d.target = state.file.scene2d.circles[std::size_t(id)].centre;
@@ -94,18 +119,8 @@ void apply_theme(const AppState& state) {
   static const ImGuiContext* applied_to = nullptr;  // a new context starts with the default style
   if (applied_to != ImGui::GetCurrentContext() || applied_scale != state.font_scale ||
       applied_contrast != state.high_contrast) {
-    ImGuiStyle style;  // fresh sizes, then scaled: ScaleAllSizes is relative
-    if (state.high_contrast) {
-      ImGui::StyleColorsLight(&style);
-      style.Colors[ImGuiCol_Text] = {0, 0, 0, 1};
-      style.Colors[ImGuiCol_WindowBg] = {1, 1, 1, 1};
-      style.FrameBorderSize = 1.0f;
-    } else {
-      ImGui::StyleColorsDark(&style);
-      style.FrameBorderSize = 0.0f;
-    }
-    style.ScaleAllSizes(state.font_scale);
-    ImGui::GetStyle() = style;
+    ImGui::GetStyle() = make_style(state.high_contrast, state.font_scale);
+    set_current_theme(state.high_contrast);
     applied_contrast = state.high_contrast;
     applied_scale = state.font_scale;
     applied_to = ImGui::GetCurrentContext();
@@ -113,17 +128,95 @@ void apply_theme(const AppState& state) {
   set_language(state.language);
 }
 
-void prepare_frame(const AppState& state) { update_fonts(state.font_scale); }
+void prepare_frame(const AppState& state) {
+  update_fonts(state.font_scale);
+  take_tab_key();
+}
 
 // ---- layout and build ----------------------------------------------------------------------------------
 FrameRenderer::FrameRenderer()
     : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
 FrameRenderer::~FrameRenderer() = default;
 
+Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const {
+  const float scale = state.font_scale;
+  const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
+  // The panel never takes more than 40% of the width: the image and the views keep the rest at any scale
+  // (labels that do not fit beside their widget go above it: panels.cpp, labelled()).
+  layout.panel = {0, 0, std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f),
+                  float(height)};
+  const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
+  if (state.dimension == 2) {
+    const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
+    image_area_ = {right_x, 0, right_w, bar_h};
+    overhead_area_ = {right_x, bar_h, right_w, body_h - bar_h};
+    observer_area_ = {};
+  } else {
+    const float top_h = body_h * 0.6f;  // the image keeps the larger share, at every font scale
+    const float image_w = std::min(right_w * 0.6f, top_h - ImGui::GetFrameHeightWithSpacing() + 16.0f);
+    image_area_ = {right_x, 0, image_w, top_h};
+    overhead_area_ = {right_x + image_w, 0, right_w - image_w, top_h};
+    observer_area_ = {right_x, top_h, right_w, body_h - top_h};
+  }
+  return {right_x, body_h, right_w, status_height};
+}
+
+void FrameRenderer::view_input(AppState& state) {
+  ImGuiIO& io = ImGui::GetIO();
+  const bool over_overhead = view_hovered("###overhead", last_.overhead);
+  const bool over_observer = state.dimension == 3 && view_hovered("###observer", last_.observer);
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    left_drag_ = over_overhead ? Drag::overhead : over_observer ? Drag::observer : Drag::none;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) right_drag_observer_ = over_observer;
+  if (!io.MouseDown[ImGuiMouseButton_Left]) left_drag_ = Drag::none;
+  if (!io.MouseDown[ImGuiMouseButton_Right]) right_drag_observer_ = false;
+  orbit_with_mouse(state, over_overhead, left_drag_ == Drag::overhead, true, &last_.overhead_mapping);
+  if (state.dimension != 3) return;
+  orbit_with_mouse(state, over_observer, left_drag_ == Drag::observer, false, nullptr, &observer_view_);
+  if (right_drag_observer_ && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+    state.observer.yaw_deg -= io.MouseDelta.x * 0.4f;
+    state.observer.pitch_deg = std::clamp(state.observer.pitch_deg + io.MouseDelta.y * 0.4f, -89.0f, 89.0f);
+  }
+  if (over_observer && io.KeyCtrl && io.MouseWheel != 0.0f)
+    state.observer.zoom = std::clamp(state.observer.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
+}
+
+void FrameRenderer::hover_image(AppState& state) {
+  state.hovered_pixel.reset();
+  const Rect& r = last_.image;
+  if (state.map.width <= 0 || !view_hovered("###image", r)) return;
+  const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const PixelIndex pixel = pixel_under(state, (mouse.x - r.x) / r.w, (mouse.y - r.y) / r.h);
+  state.hovered_pixel = pixel;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
+}
+
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state);
+  // 1. input
   handle_shortcuts(state);
+  view_input(state);
+  // 2. the panel's controls
+  FrameLayout layout;
+  layout_areas(state, width, height, layout);
+  const bool panel_open = begin_fixed_window("raycam###panel", layout.panel);
+  if (panel_open) {
+    camera_section(state);
+    mistakes_section(state);
+    caster_section(state);
+    files_section(state);
+    lecture_section(state);
+  }
+  // 3. the cast, once every control had its say (a control may also have switched 2D/3D or opened a file)
   recast_if_needed(state, ImGui::IsAnyMouseDown());
+  const Rect status_area = layout_areas(state, width, height, layout);
+  hover_image(state);
+  // 4. what is derived from the state, all after the cast
+  if (panel_open) {
+    construction_section(state);
+    inspector_section(state);
+  }
+  ImGui::End();
   if (state.map_version != uploaded_map_version_) {
     texture_.upload(state.map);
     uploaded_map_version_ = state.map_version;
@@ -137,53 +230,45 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     uploaded_disc_version_ = state.scene_version;
     uploaded_disc_dimension_ = state.dimension;
   }
-  state.hovered_pixel.reset();
+  image_window(state, image_area_, layout);
+  overhead_window(state, overhead_area_, layout);
+  if (state.dimension == 3) observer_window(state, observer_area_, layout);
+  shown_.placement = shown_matrix();
+  shown_.map_version = state.map_version;
+  layout.shown = shown_;
 
-  const float scale = state.font_scale;
-  const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
-  FrameLayout layout;
-  layout.panel = {0, 0, std::clamp(390.0f * scale, 300.0f, width * 0.45f), float(height)};
-  const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
-  Rect image_area, overhead_area, observer_area;
-  if (state.dimension == 2) {
-    const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
-    image_area = {right_x, 0, right_w, bar_h};
-    overhead_area = {right_x, bar_h, right_w, body_h - bar_h};
-  } else {
-    const float top_h = body_h * 0.5f;
-    const float image_w = std::min(right_w * 0.5f, top_h - ImGui::GetFrameHeightWithSpacing() + 16.0f);
-    image_area = {right_x, 0, image_w, top_h};
-    overhead_area = {right_x + image_w, 0, right_w - image_w, top_h};
-    observer_area = {right_x, top_h, right_w, body_h - top_h};
+  // The message, if no open section showed it: its own line above the status line, wrapped, never clipped.
+  layout.status = status_area;
+  if (!state.message.empty() && !message_shown_this_frame(state)) {
+    const float wrap = status_area.w - 2 * ImGui::GetStyle().WindowPadding.x;
+    const float lines = std::ceil(ImGui::CalcTextSize(state.message.c_str(), nullptr, false, wrap).y /
+                                  ImGui::GetTextLineHeightWithSpacing());
+    const float h = (lines + 1) * ImGui::GetTextLineHeightWithSpacing() +
+                    2 * ImGui::GetStyle().WindowPadding.y + ImGui::GetStyle().ItemSpacing.y;
+    layout.message = {status_area.x, status_area.y - h, status_area.w, h};
+    if (begin_fixed_window("##message", layout.message,
+                           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
+      show_message(state, state.message_source);
+    ImGui::End();
   }
-  image_window(state, image_area, layout);  // first: it decides which pixel is hovered
-  overhead_window(state, overhead_area, layout);
-  if (state.dimension == 3) observer_window(state, observer_area, layout);
-
-  if (begin_fixed_window("raycam###panel", layout.panel)) {
-    camera_section(state);
-    construction_section(state);
-    inspector_section(state);
-    mistakes_section(state);
-    caster_section(state);
-    files_section(state);
-    lecture_section(state);
-  }
-  ImGui::End();
-  layout.status = {right_x, body_h, right_w, status_height};
   if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state);
   ImGui::End();
   help_overlay(state);
+  state.window_title = window_title(state);
   ++state.frame_count;
+  last_ = layout;
   return layout;
 }
 
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
-  std::string title =
+  std::string title = fitting_title(
       is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-            : trf("Image: %d × %d###image", state.map.width, state.map.height);
+            : trf("Image: %d × %d###image", state.map.width, state.map.height),
+      is_2d ? trf("Colour bar: n = %d###image", state.map.width)
+            : trf("%d × %d###image", state.map.width, state.map.height),
+      area.w);
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not; first,
   // because a narrow header clips the end.
   const std::string mistakes = mistakes_on(state);
@@ -207,13 +292,6 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     // A frame just outside the image, so that where the background ends shows against the window.
     ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
                                         0, 0, 1.0f);
-    if (ImGui::IsItemHovered() && state.map.width > 0) {
-      const ImVec2 mouse = ImGui::GetIO().MousePos;
-      const PixelIndex pixel =
-          pixel_under(state, (mouse.x - low.x) / (high.x - low.x), (mouse.y - low.y) / (high.y - low.y));
-      state.hovered_pixel = pixel;
-      if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) state.pinned_pixel = pixel;
-    }
     if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
@@ -225,13 +303,16 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const char* title = state.dimension == 2
-                          ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                          : tr("Overhead view: looking down the z axis###overhead");
-  if (begin_fixed_window(title, area, ImGuiWindowFlags_NoScrollbar)) {
+  const std::string title =
+      fitting_title(state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
+                                         : tr("Overhead view: looking down the z axis###overhead"),
+                    tr("Overhead view###overhead"), area.w);
+  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     if (ImGui::SmallButton(tr("Fit view (F)"))) state.overhead_fit_pending = true;
     ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", tr("holds still while the camera moves; drag: the camera around C"));
+    ImGui::PopTextWrapPos();
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##overhead_input", size);
@@ -239,7 +320,6 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       if (state.overhead_fit_pending)
         fit_overhead(state);  // on load, reset or "fit" only: the view holds still
       layout.overhead_mapping = overhead_mapping(state, top_left, size);
-      orbit_with_mouse(state, true, &layout.overhead_mapping);
       ImDrawList* draw = ImGui::GetWindowDrawList();
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
@@ -253,23 +333,18 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
 
 // ---- observer window -----------------------------------------------------------------------------------
 void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  if (begin_fixed_window(
-          tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
-             "turn the observer, ctrl+wheel: zoom)###observer"),
-          area, ImGuiWindowFlags_NoScrollbar)) {
+  const std::string title =
+      fitting_title(tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+                       "turn the observer, ctrl+wheel: zoom)###observer"),
+                    fitting_title(tr("Observer: the camera among the spheres###observer"),
+                                  tr("Observer###observer"), area.w),
+                    area.w);
+  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);
       layout.observer = {top_left.x, top_left.y, size.x, size.y};
       const double aspect = double(size.x) / double(size.y);
-      orbit_with_mouse(state, false, nullptr, &observer_view_);  // the view the user saw and dragged in
-      ImGuiIO& io = ImGui::GetIO();
-      if (ImGui::IsItemHovered() && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
-        state.observer.yaw_deg -= io.MouseDelta.x * 0.4f;
-        state.observer.pitch_deg = std::clamp(state.observer.pitch_deg + io.MouseDelta.y * 0.4f, -89.0f, 89.0f);
-      }
-      if (ImGui::IsItemHovered() && io.KeyCtrl && io.MouseWheel != 0.0f)
-        state.observer.zoom = std::clamp(state.observer.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
 
       const Camera3D& camera = state.camera3d;
       const glm::dvec3 target = state.orbit3d.target;
@@ -319,11 +394,24 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
         frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.end(2.0 * reach)), {1, 0, 1, 1}});
       }
-      if (constructing)  // the handout's frames
+      if (constructing)  // the handout's frames; GL lines are one pixel wide, so the key parts get a band
         for (const ConstructionSegment& segment :
-             construction_camera(construction_step(camera.placement(), state.construction_step), 1.5))
-          frame.overlay_lines.push_back(
-              {glm::vec3(segment.from), glm::vec3(segment.to), construction_colour(segment.part)});
+             construction_camera(construction_step(camera.placement(), state.construction_step), 1.5)) {
+          const glm::vec4 colour = construction_colour(segment.part);
+          frame.overlay_lines.push_back({glm::vec3(segment.from), glm::vec3(segment.to), colour});
+          if (segment.part == ConstructionPart::screen || segment.part == ConstructionPart::field_edge)
+            continue;
+          const glm::dvec3 along = glm::normalize(segment.to - segment.from);
+          const glm::dvec3 side =
+              glm::normalize(std::abs(along.z) < 0.9 ? glm::cross(along, glm::dvec3(0, 0, 1))
+                                                     : glm::cross(along, glm::dvec3(1, 0, 0)));
+          const glm::dvec3 other = glm::cross(along, side);
+          for (const glm::dvec3& offset : {side, -side, other, -other}) {
+            const glm::dvec3 shift = 0.004 * observer.distance * offset;  // about a pixel
+            frame.overlay_lines.push_back(
+                {glm::vec3(segment.from + shift), glm::vec3(segment.to + shift), colour});
+          }
+        }
       const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
       // GL textures are bottom-up: flip v.
       ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,

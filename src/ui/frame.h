@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/mat4x4.hpp>
 #include <memory>
 
 #include "app_state.h"
@@ -23,6 +24,12 @@ struct Rect {
   float x = 0, y = 0, w = 0, h = 0;
 };
 
+// What the frame showed, for the tests that check it agrees with the core in that very frame.
+struct ShownValues {
+  glm::dmat4 placement{1.0};      // the M_d the construction table showed (2D: embedded in a 4×4)
+  std::uint64_t map_version = 0;  // the colour map the image texture held
+};
+
 // Where things were drawn this frame: tests sample the screenshot there.
 struct FrameLayout {
   Rect panel;
@@ -33,6 +40,8 @@ struct FrameLayout {
   Rect observer;  // 3D only
   ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
   Rect status;    // the status line (frame time, work done and skipped)
+  Rect message;   // the message line above the status line, when no open panel section showed the message
+  ShownValues shown;
 };
 
 class FrameRenderer {
@@ -42,6 +51,11 @@ class FrameRenderer {
   FrameLayout build(AppState& state, int width, int height);
 
  private:
+  enum class Drag { none, overhead, observer };
+  // Sets the panel's rectangle and the views' areas; returns the status line's.
+  Rect layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const;
+  void view_input(AppState& state);
+  void hover_image(AppState& state);
   void image_window(AppState& state, const Rect& area, FrameLayout& layout);
   void overhead_window(AppState& state, const Rect& area, FrameLayout& layout);
   void observer_window(AppState& state, const Rect& area, FrameLayout& layout);
@@ -51,6 +65,11 @@ class FrameRenderer {
   std::unique_ptr<gl::DiscLayer> discs_;
   std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
   int uploaded_disc_dimension_ = 0;
+  FrameLayout last_;  // last frame's rectangles: where the mouse input of this frame lands
+  mutable Rect image_area_, overhead_area_, observer_area_;
+  Drag left_drag_ = Drag::none;
+  bool right_drag_observer_ = false;
+  ShownValues shown_;
   ObserverCamera observer_view_;  // last frame's, for the mouse
 };
 

@@ -3,6 +3,7 @@
 #include "panels.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::ClearActiveID: Tab leaves a text field
 
 #include <algorithm>
 #include <array>
@@ -11,24 +12,56 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 #include <iterator>
+#include <map>
+#include <optional>
+#include <string>
 
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "raycam/view_setup.h"
 #include "text.h"
+#include "theme.h"
 
 namespace raycam::ui {
 
 namespace {
-const ImVec4 kDim{0.65f, 0.68f, 0.75f, 1.0f};
-const ImVec4 kError{1.0f, 0.35f, 0.3f, 1.0f};
-const ImVec4 kLookAt{1.0f, 0.75f, 0.3f, 1.0f};  // what a "show me" asks the student to look at
+int g_tab_key = -1;                    // the host's key index of Tab, taken away from ImGui (take_tab_key)
+long long g_message_shown_frame = -1;  // the frame in which a section showed the message
+glm::dmat4 g_shown_matrix{1.0};        // the last product the construction table showed
+std::map<std::string, std::pair<ImVec2, ImVec2>> g_widget_rects;  // by "###id": where tests click
+
+// The label beside the widget when both fit, else on its own line above a full-width widget: a label is
+// never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
+template <class Widget>
+bool labelled(const char* label, Widget widget) {
+  const std::string text = label;
+  const std::size_t hidden = text.find("##");
+  const std::string shown = text.substr(0, hidden);
+  const std::string id = hidden == std::string::npos
+                             ? "##" + text
+                             : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  bool changed = false;
+  if (label_width <= avail * 0.45f) {
+    ImGui::SetNextItemWidth(avail - label_width);
+    changed = widget(label);
+  } else {
+    ImGui::TextUnformatted(shown.c_str());
+    ImGui::SetNextItemWidth(avail);
+    changed = widget(id.c_str());
+  }
+  g_widget_rects[id] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+  return changed;
+}
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
 bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
                    bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+  return labelled(label, [&](const char* l) {
+    return ImGui::SliderScalar(l, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+  });
 }
 
 // radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
@@ -40,8 +73,14 @@ bool slider_degrees(const char* label, double& radians, double lo_deg, double hi
   return true;
 }
 
+// Puts the next item on this line if `width` pixels still fit, else on the next line.
+void same_line_if_fits(float width) {
+  const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
 void explain(const char* text) {
-  ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   ImGui::TextWrapped("%s", text);
   ImGui::PopStyleColor();
 }
@@ -64,7 +103,7 @@ void camera_section(AppState& state) {
   if (!ImGui::CollapsingHeader(tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int dimension = state.dimension;
   bool mode_changed = ImGui::RadioButton(tr("2D camera"), &dimension, 2);
-  ImGui::SameLine();
+  same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr("3D camera")).x);
   mode_changed |= ImGui::RadioButton(tr("3D camera"), &dimension, 3);
   if (mode_changed) switch_dimension(state, dimension);
 
@@ -80,35 +119,39 @@ void camera_section(AppState& state) {
   changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     float target[2] = {float(state.orbit2d.target.x), float(state.orbit2d.target.y)};
-    if (ImGui::DragFloat2(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
-                          ImGuiSliderFlags_AlwaysClamp)) {
+    if (labelled(tr("target C###target"), [&](const char* l) {
+          return ImGui::DragFloat2(l, target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        })) {
       state.orbit2d.target = {target[0], target[1]};
       changed = true;
     }
     int n = state.max_pixels_2d;
-    if (ImGui::InputInt(tr("N max pixels###N"), &n, 16, 256)) {
+    if (labelled(tr("N max pixels###N"), [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
       state.max_pixels_2d = std::clamp(n, 1, 4096);
       changed = true;
     }
   } else {
     float target[3] = {float(state.orbit3d.target.x), float(state.orbit3d.target.y), float(state.orbit3d.target.z)};
-    if (ImGui::DragFloat3(tr("target C###target"), target, 0.05f, -1000.0f, 1000.0f, "%.2f",
-                          ImGuiSliderFlags_AlwaysClamp)) {
+    if (labelled(tr("target C###target"), [&](const char* l) {
+          return ImGui::DragFloat3(l, target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+        })) {
       state.orbit3d.target = {target[0], target[1], target[2]};
       changed = true;
     }
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
-    if (ImGui::InputInt2(tr("max size W, H###size"), size)) {
+    if (labelled(tr("max size W, H###size"), [&](const char* l) { return ImGui::InputInt2(l, size); })) {
       state.max_columns_3d = std::clamp(size[0], 1, 2048);
       state.max_rows_3d = std::clamp(size[1], 1, 2048);
       changed = true;
     }
   }
-  ImGui::Text(tr("n = %d × %d, field of view %.1f°"), state.map.width, state.map.height,
-              glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()));
+  ImGui::TextWrapped(
+      "%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
+                glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()))
+                .c_str());
   if (ImGui::Button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
-  ImGui::SameLine();
   explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
+  show_message(state, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -153,6 +196,7 @@ void construction_section(AppState& state) {
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
+    g_shown_matrix = glm::dmat4(construction_step(p, step));
     matrix_table<3>("M", construction_step(p, step));
   } else {
     const Placement3D& p = state.camera3d.placement();
@@ -172,6 +216,7 @@ void construction_section(AppState& state) {
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
+    g_shown_matrix = construction_step(p, step);
     matrix_table<4>("M", construction_step(p, step));
   }
 }
@@ -216,14 +261,14 @@ void arccos_error_line(const AppState& state) {
     const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, glm::two_pi<double>());
     ImGui::TextColored(
-        kDim, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
+        current_theme().hint, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
         std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
         std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
   } else {
     const Orbit3D& o = state.orbit3d;
     const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
-    ImGui::TextColored(kDim, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
+    ImGui::TextColored(current_theme().hint, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
                        std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
                        std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
   }
@@ -246,7 +291,7 @@ void mistakes_section(AppState& state) {
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
     explain(mistake_text(state, lesson).c_str());
     if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
-      ImGui::TextColored(kLookAt, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+      ImGui::TextColored(current_theme().look_at, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
     if (!lesson.info) arccos_error_line(state);
     ImGui::PopID();
   }
@@ -262,7 +307,7 @@ bool choice(const char* label, T& value, const Options& options) {
   for (const auto& [v, name] : options)
     if (v == value) current = name;
   bool changed = false;
-  if (ImGui::BeginCombo(label, tr(current))) {
+  if (labelled(label, [&](const char* l) { return ImGui::BeginCombo(l, tr(current)); })) {
     for (const auto& [v, name] : options)
       if (ImGui::Selectable(tr(name), v == value) && v != value) {
         value = v;
@@ -306,67 +351,129 @@ void caster_section(AppState& state) {
               ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
                    "settings to use for what: README, Accuracy.")
               : tr("double, 1 sample, world coordinates: the fast caster."));
+  show_message(state, MessageSource::caster);
   if (changed) state.cameras_dirty = true;
 }
 
 // ---- files ---------------------------------------------------------------------------------------------
 void files_section(AppState& state) {
+  const bool has_message = !state.message.empty() && state.message_source == MessageSource::files;
+  if (has_message || !state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
   if (!ImGui::CollapsingHeader(tr("Scene file###files"))) return;
-  ImGui::InputText(tr("path###path"), state.path_input, sizeof state.path_input);
-  if (ImGui::Button(tr("Open"))) open_scene(state, state.path_input);
-  ImGui::SameLine();
-  if (ImGui::Button(tr("Save camera preset"))) save_preset(state, state.path_input);
+  // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
+  const auto path_box = [](const char* label, char* buffer, std::size_t size) {
+    return labelled(label, [&](const char* l) {
+      return ImGui::InputText(l, buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
+    });
+  };
+  bool open = path_box(tr("open###open_path"), state.path_input, sizeof state.path_input);
+  open |= ImGui::Button(tr("Open"));
+  if (open) open_scene(state, state.path_input);
   explain(tr("or drop a scene file on the window"));
-  ImGui::InputText(tr("export###export"), state.export_path, sizeof state.export_path);
+  bool save = path_box(tr("save as###save_path"), state.save_path, sizeof state.save_path);
+  save |= ImGui::Button(tr("Save camera preset as…"));
+  if (save) save_preset_as(state, state.save_path, false);
+  if (!state.overwrite_pending.empty()) {  // asked before replacing a file
+    ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
+    ImGui::TextWrapped("%s", trf("%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::Button(tr("Replace"))) save_preset_as(state, state.overwrite_pending, true);
+    same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
+    if (ImGui::Button(tr("Cancel"))) state.overwrite_pending.clear();
+  }
+  labelled(tr("export###export"),
+           [&](const char* l) { return ImGui::InputText(l, state.export_path, sizeof state.export_path); });
   if (ImGui::Button(tr("Export colour map PNG"))) {
     try {
       write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
-      state.message = trf("wrote %s", state.export_path);
-      state.message_is_error = false;
+      set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path));
     } catch (const std::exception& error) {
-      state.message = error.what();
-      state.message_is_error = true;
+      set_message(state, MessageSource::files, true, error.what());
     }
   }
-  ImGui::SameLine();
-  if (ImGui::Button(tr("Screenshot (F12)"))) state.request_screenshot = true;
+  same_line_if_fits(ImGui::CalcTextSize(tr("Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (ImGui::Button(tr("Screenshot (F12)"))) request_screenshot(state);
+  show_message(state, MessageSource::files);
 }
 
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
   if (!ImGui::CollapsingHeader(tr("Lecture mode###lecture"))) return;
-  ImGui::SliderFloat(tr("font scale###font_scale"), &state.font_scale, 0.75f, 3.0f, "%.2f",
-                     ImGuiSliderFlags_AlwaysClamp);
+  // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
+  static float editing = -1.0f;
+  float scale = editing > 0 ? editing : state.font_scale;
+  labelled(tr("font scale###font_scale"), [&](const char* l) {
+    return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  });
+  if (ImGui::IsItemActive()) {
+    editing = scale;
+  } else {
+    state.font_scale = scale;
+    editing = -1.0f;
+  }
   ImGui::Checkbox(tr("high contrast"), &state.high_contrast);
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(tr("Language / Langue###language"), state.language, kLanguages);
   if (ImGui::Button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
-  ImGui::SameLine();
+  same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (ImGui::Button(tr("Help (F1)"))) state.show_help = !state.show_help;
+}
+
+// ---- messages ------------------------------------------------------------------------------------------
+bool show_message(AppState& state, MessageSource source) {
+  if (state.message.empty() || state.message_source != source) return false;
+  const ThemeColours& theme = current_theme();
+  ImGui::PushStyleColor(ImGuiCol_Text, state.message_is_error ? theme.error : theme.confirmation);
+  ImGui::TextWrapped("%s", state.message.c_str());  // wrapped: never clipped
+  ImGui::PopStyleColor();
+  if (ImGui::SmallButton(tr("Dismiss###dismiss_message"))) state.message.clear();
+  g_message_shown_frame = state.frame_count;
+  return true;
+}
+
+bool message_shown_this_frame(const AppState& state) { return g_message_shown_frame == state.frame_count; }
+
+const glm::dmat4& shown_matrix() { return g_shown_matrix; }
+
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id) {
+  const auto found = g_widget_rects.find(id);
+  if (found == g_widget_rects.end()) return std::nullopt;
+  return found->second;
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
 void status_line(const AppState& state) {
+  // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
+  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                                       : cast_method_name(state.cast_options.method));
+  std::string line = trf("frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
+  if (state.refine_pending) line += std::string(" · ") + tr("coarse preview while dragging");
+  if (ImGui::CalcTextSize(line.c_str()).x > ImGui::GetContentRegionAvail().x)
+    line = trf("frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms);
+  ImGui::TextUnformatted(line.c_str());
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    status_counters(state);
+    ImGui::EndTooltip();
+  }
+}
+
+void status_counters(const AppState& state) {
   // Work skipped, against what the handout's plain loop would do (every object for every pixel).
+  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+                                                       : cast_method_name(state.cast_options.method));
   const CastStats& w = state.stats;
-  const double objects = double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
+  const double objects =
+      double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
   const double plain_tests = double(w.rays) * objects;
-  ImGui::Text(tr("frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | "
-                 "tests %lld (%.1f%% of plain) | culled %lld"),
-              state.frame_ms, state.cast_ms,
-              tr(uses_reference_caster(state) ? tr_later("reference caster")
-                                              : cast_method_name(state.cast_options.method)),
-              state.cast_count, state.frame_count, w.rays, w.pixels_skipped, w.intersection_tests,
-              plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0, w.objects_culled);
-  if (state.refine_pending) {
-    ImGui::SameLine();
-    ImGui::TextColored(kDim, "| %s", tr("coarse preview while dragging"));
-  }
-  if (!state.message.empty()) {
-    ImGui::SameLine();
-    ImGui::TextColored(state.message_is_error ? kError : kDim, "| %s", state.message.c_str());
-  }
+  ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
+  ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
+  ImGui::TextUnformatted(trf("rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
+  ImGui::TextUnformatted(trf("intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
+                             plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0)
+                             .c_str());
+  ImGui::TextUnformatted(trf("objects culled %lld", w.objects_culled).c_str());
 }
 
 // ---- help ----------------------------------------------------------------------------------------------
@@ -408,9 +515,29 @@ void help_overlay(AppState& state) {
 }
 
 // ---- shortcuts -----------------------------------------------------------------------------------------
+bool editing_text() {
+  // ImGui 1.86 keeps io.WantTextInput true after a field was left with Esc: ask which widget is active.
+  const ImGuiContext& g = *GImGui;
+  return g.ActiveId != 0 && g.InputTextState.ID == g.ActiveId;
+}
+
+void take_tab_key() {
+  ImGuiIO& io = ImGui::GetIO();
+  if (io.KeyMap[ImGuiKey_Tab] >= 0) {  // ImGui moves the focus between text fields on Tab: Tab is ours
+    g_tab_key = io.KeyMap[ImGuiKey_Tab];
+    io.KeyMap[ImGuiKey_Tab] = -1;
+  }
+}
+
 void handle_shortcuts(AppState& state) {
   ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
+  if (g_tab_key >= 0 && ImGui::IsKeyPressed(g_tab_key, false) &&
+      !io.KeyCtrl) {  // always 2D/3D, even in a field
+    ImGui::ClearActiveID();
+    switch_dimension(state, state.dimension == 2 ? 3 : 2);
+    return;
+  }
+  if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
   const bool is_2d = state.dimension == 2;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
   double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
@@ -427,7 +554,6 @@ void handle_shortcuts(AppState& state) {
   if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();
-  if (pressed(ImGuiKey_Tab)) switch_dimension(state, is_2d ? 3 : 2);
   const int steps = construction_steps(state);
   for (ImWchar c : io.InputQueueCharacters) {
     if (c == '+' || c == '=') d = std::max(0.1, d / 1.1), changed = true;

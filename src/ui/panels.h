@@ -2,6 +2,13 @@
 // widgets report "changed", and only then is anything recomputed).
 #pragma once
 
+#include <imgui.h>
+
+#include <glm/mat4x4.hpp>
+#include <optional>
+#include <string>
+#include <utility>
+
 #include "app_state.h"
 
 namespace raycam::ui {
@@ -14,8 +21,23 @@ void caster_section(AppState& state);
 void files_section(AppState& state);
 void lecture_section(AppState& state);
 void status_line(const AppState& state);
+// The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
+void status_counters(const AppState& state);
+// Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).
+bool show_message(AppState& state, MessageSource source);
+// Did a section show the message this frame? If not, the frame shows it above the status line.
+bool message_shown_this_frame(const AppState& state);
+// The matrix the construction table showed last (2D: its 3×3 in the top-left of a 4×4).
+const glm::dmat4& shown_matrix();
+// Where the labelled widget "###id" (e.g. "###theta") was last drawn, as (min, max) screen corners.
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id);
+// Is a text field (or a slider typed into with ctrl+click) being edited now?
+bool editing_text();
+// Takes Tab away from ImGui's focus cycling (call before ImGui::NewFrame, after the backend set its keys).
+void take_tab_key();
 void help_overlay(AppState& state);
-// Arrow keys, +/-, [ ], PgUp/PgDn, Tab, Esc (F1/F11/F12 come from the executable).
+// Tab (always: 2D/3D), then, unless a text field is being edited: arrow keys, +/-, [ ], PgUp/PgDn, Esc
+// (F1/F11/F12 come from the executable).
 void handle_shortcuts(AppState& state);
 
 }  // namespace raycam::ui

@@ -18,6 +18,12 @@ const std::vector<Translation>& translation_table() {
       {"Colour bar: n = %d pixels, column 0 = the eye's left###image",
        "Barre de couleurs : n = %d pixels, colonne 0 = gauche de l'œil###image"},
       {"Image: %d × %d###image", "Image : %d × %d###image"},
+      {"Colour bar: n = %d###image", "Barre de couleurs : n = %d###image"},
+      {"%d × %d###image", "%d × %d###image"},
+      {"Overhead view###overhead", "Vue de dessus###overhead"},
+      {"Observer: the camera among the spheres###observer",
+       "Observateur : la caméra parmi les sphères###observer"},
+      {"Observer###observer", "Observateur###observer"},
       {"Overhead view: the plane, the camera and its rays###overhead",
        "Vue de dessus : le plan, la caméra et ses rayons###overhead"},
       {"Overhead view: looking down the z axis###overhead",
@@ -217,9 +223,19 @@ const std::vector<Translation>& translation_table() {
 
       // ---- panels.cpp: files ----
       {"Scene file###files", "Fichier de scène###files"},
-      {"path###path", "chemin###path"},
+      {"open###open_path", "ouvrir###open_path"},
       {"Open", "Ouvrir"},
-      {"Save camera preset", "Enregistrer la caméra"},
+      {"save as###save_path", "enregistrer sous###save_path"},
+      {"Save camera preset as…", "Enregistrer la caméra sous…"},
+      {"%s already exists. Replace it?", "%s existe déjà. Le remplacer ?"},
+      {"Replace", "Remplacer"},
+      {"Cancel", "Annuler"},
+      {"Save as: type the path of the file to write",
+       "Enregistrer sous : tapez le chemin du fichier à écrire"},
+      {"cannot open %s: %s", "impossible d'ouvrir %s : %s"},
+      {"cannot open: %s", "impossible d'ouvrir : %s"},
+      {"cannot save: %s", "impossible d'enregistrer : %s"},
+      {"demo scene", "scène de démonstration"},
       {"or drop a scene file on the window", "ou déposez un fichier de scène sur la fenêtre"},
       {"export###export", "export###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
@@ -236,11 +252,16 @@ const std::vector<Translation>& translation_table() {
       {"Help (F1)", "Aide (F1)"},
 
       // ---- panels.cpp: status line ----
-      {"frame %.1f ms | cast %.2f ms (%s), %lld casts in %lld frames | rays %lld, %lld skipped | tests %lld "
-       "(%.1f%% of plain) | culled %lld",
-       "image %.1f ms | lancer %.2f ms (%s), %lld lancers en %lld images | rayons %lld, %lld évités | tests "
-       "%lld "
-       "(%.1f%% de la boucle simple) | élagués %lld"},
+      {"frame %.1f ms · cast %.2f ms (%s)", "affichage %.1f ms · lancer %.2f ms (%s)"},
+      {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer %.2f ms"},
+      {"caster: %s", "lanceur : %s"},
+      {"%lld casts in %lld frames", "%lld lancers en %lld images"},
+      {"rays %lld, %lld pixels skipped", "rayons %lld, %lld pixels évités"},
+      {"intersection tests %lld (%.1f%% of the plain loop)",
+       "tests d'intersection %lld (%.1f%% de la boucle simple)"},
+      {"objects culled %lld", "objets élagués %lld"},
+      {" (drawn with the fast caster)", " (dessiné avec le lanceur rapide)"},
+      {"Dismiss###dismiss_message", "Fermer###dismiss_message"},
       {"coarse preview while dragging", "aperçu grossier pendant le glissement"},
 
       // ---- panels.cpp: help ----

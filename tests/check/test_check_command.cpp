@@ -27,9 +27,9 @@ using json = nlohmann::json;
 namespace {
 constexpr int kDefaultCases = 12;  // the designed battery, 6 per dimension
 
-// A folder of this test process's own (CTest runs the test cases as parallel processes in one folder).
+// A folder of its own for each test case (CTest runs them as parallel processes in one folder).
 std::string scratch(const std::string& name) {
-  const std::string dir = "check_scratch_" + std::to_string(getpid()) + "_" + name;
+  const std::string dir = "check_scratch_" + name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -194,7 +194,7 @@ TEST_CASE("the status line prints the cast's work counts", "[ui][status]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
     ui::AppState state = state_for({"--view", view});
-    const std::string shown = text.capture([&] { ui::status_line(state); });
+    const std::string shown = text.capture([&] { ui::status_counters(state); });  // the status line's tooltip
     INFO(shown);
     const CastStats& w = state.stats;
     CHECK(w.rays == std::int64_t(state.map.width) * state.map.height);  // one answer per pixel

@@ -1,0 +1,202 @@
+// The window driven through its own input path (mouse and keys sent to ImGui's IO, as the GLFW backend
+// sends them), checked in the very frame that follows: same-frame truth, the keyboard, the window title,
+// messages that stay visible, lecture mode's layout.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "app_options.h"
+#include "headless_renderer.h"
+#include "panels.h"
+#include "raycam/ray_caster.h"
+
+using namespace raycam;
+
+namespace {
+constexpr double kDegree = 3.141592653589793 / 180.0;
+
+ui::AppState state_for(const std::vector<std::string>& args) {
+  ui::AppOptions options;
+  options.language = ui::Language::en;
+  for (std::size_t i = 0; i < args.size();) REQUIRE(ui::parse_app_option(args, i, options));
+  return ui::make_app_state(options);
+}
+
+// The image region of the frame holds exactly `expected`, sampled at pixel centres.
+int wrong_pixels(const gl::RgbaImage& image, const ui::Rect& r, const ColourMap& expected) {
+  REQUIRE(r.w >= 2 * expected.width);
+  REQUIRE(r.h >= 2 * expected.height);
+  int wrong = 0;
+  for (int row = 0; row < expected.height; ++row)
+    for (int column = 0; column < expected.width; ++column) {
+      const std::uint8_t* p = image.at(int(r.x + (column + 0.5) * r.w / expected.width),
+                                       int(r.y + (row + 0.5) * r.h / expected.height));
+      wrong += Rgb8{p[0], p[1], p[2]} != expected.colour_at(row, column);
+    }
+  return wrong;
+}
+
+// The frame just rendered agrees with the core for the state's current parameters: the M_d the table
+// showed is the core's placement matrix, and the image is the core's colour map (both computed here).
+void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const ui::AppState& state) {
+  const gl::RgbaImage image = renderer.read_back();
+  const ui::FrameLayout& layout = renderer.layout();
+  const Orbit3D& o = state.orbit3d;
+  Camera3D camera(64, 64);
+  camera.set_orbit({o.target, o.d, o.theta, o.phi, o.df});
+  const glm::dmat4 expected = camera.world_from_camera();
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) CHECK(layout.shown.placement[c][r] == Approx(expected[c][r]).margin(1e-12));
+  CHECK(layout.shown.map_version == state.map_version);
+  CHECK(wrong_pixels(image, layout.image, cast_primary_rays(camera, state.file.scene3d)) == 0);
+}
+
+// A key pressed for one frame and released the next, as fingers do.
+void tap(headless::HeadlessRenderer& renderer, ui::AppState& state, int key) {
+  renderer.press_key(key);
+  renderer.run_frame(state);
+  renderer.run_frame(state);
+}
+
+// Ctrl+click, as ImGui's sliders take it to type a value: hover, press with ctrl held, release.
+void ctrl_click(headless::HeadlessRenderer& renderer, ui::AppState& state, ImVec2 at) {
+  renderer.move_mouse(at.x, at.y);
+  renderer.run_frame(state);
+  ImGui::GetIO().KeyCtrl = true;
+  renderer.set_mouse_button(0, true);
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, false);
+  ImGui::GetIO().KeyCtrl = false;
+  renderer.run_frame(state);
+}
+
+ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
+  return {(r.first.x + r.second.x) / 2, (r.first.y + r.second.y) / 2};
+}
+}  // namespace
+
+TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
+          "[render][input][same-frame]") {
+  ui::AppState state = state_for({"--size", "64x64"});
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.render_settled(state);
+  const auto theta = ui::widget_rect("###theta");
+  REQUIRE(theta);
+  const float y = centre(*theta).y;
+  const double before = state.orbit3d.theta;
+  renderer.move_mouse(theta->first.x + 0.8f * (theta->second.x - theta->first.x),
+                      y);  // hover first, as a hand does
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, true);  // the slider jumps to the mouse: this frame changes θ
+  renderer.run_frame(state);
+  CHECK(std::abs(state.orbit3d.theta - before) > 30 * kDegree);
+  check_frame_agrees_with_core(renderer, state);
+  // ... and while dragging, every frame.
+  for (float x : {0.3f, 0.55f, 0.1f}) {
+    renderer.move_mouse(theta->first.x + x * (theta->second.x - theta->first.x), y);
+    renderer.run_frame(state);
+    check_frame_agrees_with_core(renderer, state);
+  }
+  renderer.set_mouse_button(0, false);
+  renderer.run_frame(state);
+}
+
+TEST_CASE("a mistake toggled in the panel shows in the image and the table of the same frame",
+          "[render][input][same-frame]") {
+  ui::AppState state = state_for({"--size", "64x64", "--theta", "10", "--phi", "75"});
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.render_settled(state);
+  state.mistakes.printed_rotation_sign = true;  // what the checkbox sets (the section is closed here)
+  state.cameras_dirty = true;
+  renderer.run_frame(state);
+  Camera3D camera(64, 64);
+  camera.set_mistakes(state.mistakes);
+  camera.set_orbit(state.orbit3d);
+  CHECK(renderer.layout().shown.placement == camera.world_from_camera());
+  CHECK(wrong_pixels(renderer.read_back(), renderer.layout().image,
+                     cast_primary_rays(camera, state.file.scene3d)) == 0);
+}
+
+TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees with the core",
+          "[render][input]") {
+  ui::AppState state = state_for({"--size", "64x64"});
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.render_settled(state);
+  const ui::Rect view = renderer.layout().overhead;
+  const ImVec2 target = renderer.layout().overhead_mapping.to_screen(glm::dvec2(state.orbit3d.target));
+  renderer.move_mouse(view.x + view.w - 10, target.y);  // to the right of the target: θ = 0 there
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, true);
+  renderer.run_frame(state);
+  renderer.move_mouse(target.x, view.y + 10);  // straight above the target: θ = 90°
+  renderer.run_frame(state);
+  CHECK(state.orbit3d.theta == Approx(90 * kDegree).margin(1 * kDegree));  // within a screen pixel
+  check_frame_agrees_with_core(renderer, state);
+  renderer.set_mouse_button(0, false);
+  renderer.run_frame(state);
+}
+
+TEST_CASE(
+    "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
+    "[render][input][keyboard]") {
+  ui::AppState state = state_for({});
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.render_settled(state);
+  CHECK(state.window_title == "raycam — 3D — demo scene");
+  for (int dimension : {2, 3, 2, 3}) {
+    tap(renderer, state, ImGuiKey_Tab);
+    CHECK(state.dimension == dimension);
+    CHECK(state.window_title == "raycam — " + std::to_string(dimension) + "D — demo scene");
+    CHECK_FALSE(ui::editing_text());  // Tab never puts a field into text editing
+  }
+  // Right arrow: θ + 5°.
+  const double theta = state.orbit3d.theta;
+  tap(renderer, state, ImGuiKey_RightArrow);
+  CHECK(state.orbit3d.theta == Approx(theta + 5 * kDegree));
+  // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
+  const auto d_slider = ui::widget_rect("###d");
+  REQUIRE(d_slider);
+  ctrl_click(renderer, state, centre(*d_slider));
+  REQUIRE(ui::editing_text());
+  const double d = state.orbit3d.d, theta_editing = state.orbit3d.theta;
+  tap(renderer, state, ImGuiKey_LeftArrow);
+  renderer.type_text("+");
+  renderer.run_frame(state);
+  CHECK(state.orbit3d.theta == theta_editing);
+  // Esc leaves the field (the typed text is dropped), and the arrows act on the camera again.
+  tap(renderer, state, ImGuiKey_Escape);
+  CHECK_FALSE(ui::editing_text());
+  CHECK(state.orbit3d.d == d);
+  tap(renderer, state, ImGuiKey_LeftArrow);
+  CHECK(state.orbit3d.theta == Approx(theta_editing - 5 * kDegree));
+  // Tab from inside a text field: leaves it and switches.
+  ctrl_click(renderer, state, centre(*d_slider));
+  REQUIRE(ui::editing_text());
+  tap(renderer, state, ImGuiKey_Tab);
+  CHECK(state.dimension == 2);
+  CHECK_FALSE(ui::editing_text());
+}
+
+TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed or replaced",
+          "[render][messages]") {
+  ui::AppState state = state_for({});
+  headless::HeadlessRenderer renderer(1280, 800);
+  renderer.render_settled(state);
+  CHECK_FALSE(ui::open_scene(state, "no/such/scene_file_for_the_test.json"));
+  for (int frame = 0; frame < 30; ++frame) renderer.run_frame(state);  // stays
+  const ui::FrameLayout& layout = renderer.layout();
+  REQUIRE(state.message_is_error);
+  CHECK_THAT(state.message, Catch::Contains("no/such/scene_file_for_the_test.json"));
+  // Shown in the Scene file section (opened for it): the panel, not the status line.
+  CHECK(layout.message.w == 0);
+  const auto dismiss = ui::widget_rect("###dismiss_message");
+  (void)dismiss;
+  // Fits at 3× font: nothing wider than the window, the status line inside its area.
+  state.font_scale = 3.0f;
+  for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
+  CHECK(renderer.layout().panel.w <= 0.4f * 1280 + 0.5f);
+  CHECK(renderer.layout().status.x + renderer.layout().status.w <= 1280.5f);
+}

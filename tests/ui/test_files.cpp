@@ -1,0 +1,142 @@
+// Files are safe: Open and Save as have their own paths, replacing a file needs a yes, a failed open
+// changes nothing but the message, saved scenes stay readable, screenshots never overwrite each other, and
+// a scene that cannot be opened at startup gives the demo scene and an error naming it.
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+#include "app_options.h"
+
+using namespace raycam;
+namespace fs = std::filesystem;
+
+namespace {
+ui::AppState state_for(const std::vector<std::string>& args, bool demo_on_bad_scene = false) {
+  ui::AppOptions options;
+  options.language = ui::Language::en;
+  options.demo_on_bad_scene = demo_on_bad_scene;
+  for (std::size_t i = 0; i < args.size();)
+    if (!ui::parse_app_option(args, i, options)) options.view.scene_path = args[i++];
+  return ui::make_app_state(options);
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A scratch directory of its own, removed at the end.
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("raycam-files-" + std::to_string(::getpid()));
+  Scratch() { fs::create_directories(dir); }
+  ~Scratch() { fs::remove_all(dir); }
+};
+}  // namespace
+
+TEST_CASE("a failed open leaves the scene, the camera and the Open box as they were, and says why",
+          "[ui][files]") {
+  Scratch scratch;
+  const std::string good = (scratch.dir / "good.json").string();
+  ui::AppState state = state_for({"--theta", "40"});
+  REQUIRE(ui::save_preset(state, good));
+  REQUIRE(ui::open_scene(state, good));
+  CHECK(std::string(state.path_input) == good);
+  state.orbit3d.theta = 1.25;  // the student moved the camera since
+  const auto spheres = state.file.scene3d.spheres.size();
+  const std::string missing = (scratch.dir / "typo.json").string();
+  std::snprintf(state.path_input, sizeof state.path_input, "%s", missing.c_str());  // typed in the box
+  CHECK_FALSE(ui::open_scene(state, missing));
+  CHECK(state.message_is_error);
+  CHECK(state.message_source == ui::MessageSource::files);
+  CHECK_THAT(state.message, Catch::Contains("typo.json"));
+  CHECK(state.file.scene3d.spheres.size() == spheres);
+  CHECK(state.orbit3d.theta == 1.25);
+  CHECK(state.scene_path == good);
+  CHECK(std::string(state.path_input) == good);  // the box shows the file on screen again
+}
+
+TEST_CASE("Save as never writes over a file without a yes, and never defaults to the opened file",
+          "[ui][files]") {
+  Scratch scratch;
+  const std::string opened = (scratch.dir / "lesson.json").string();
+  ui::AppState state = state_for({});
+  REQUIRE(ui::save_preset(state, opened));
+  REQUIRE(ui::open_scene(state, opened));
+  CHECK(std::string(state.save_path).empty());  // Save as starts empty after an open
+  const std::string before = read(opened);
+  state.orbit3d.d = 3.5;
+  CHECK_FALSE(ui::save_preset_as(state, opened, false));  // exists: asks
+  CHECK(state.overwrite_pending == opened);
+  CHECK(read(opened) == before);                   // nothing written yet
+  CHECK(ui::save_preset_as(state, opened, true));  // the user said yes
+  CHECK(state.overwrite_pending.empty());
+  CHECK(read(opened) != before);
+  CHECK_THAT(state.message, Catch::Contains(opened));
+  CHECK_FALSE(state.message_is_error);
+  const std::string fresh = (scratch.dir / "new.json").string();
+  CHECK(ui::save_preset_as(state, fresh, false));  // a new file needs no question
+  CHECK(fs::exists(fresh));
+  CHECK_FALSE(ui::save_preset_as(state, "", false));
+  CHECK(state.message_is_error);
+}
+
+TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][files]") {
+  Scratch scratch;
+  const std::string path = (scratch.dir / "scene.json").string();
+  ui::AppState state = state_for({SCENES_DIR "/classic3d.json"});
+  const std::size_t objects = state.file.scene3d.spheres.size();
+  REQUIRE(ui::save_preset(state, path));
+  const std::string text = read(path);
+  std::istringstream lines(text);
+  std::string line;
+  int count = 0, centres = 0;
+  while (std::getline(lines, line)) {
+    ++count;
+    if (line.find("\"center\": [") != std::string::npos) {
+      ++centres;
+      CHECK(line.find(']', line.find("\"center\"")) != std::string::npos);  // the array closes on its line
+      CHECK(line.find("\"radius\"") != std::string::npos);                  // the whole object is on it
+    }
+  }
+  CHECK(centres == int(objects));
+  CHECK(count <= int(objects) + 16);     // a few header lines, one line per object, the camera (dump(2): 60)
+  REQUIRE(ui::open_scene(state, path));  // and it still reads back
+  CHECK(state.file.scene3d.spheres.size() == objects);
+}
+
+TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
+  Scratch scratch;
+  const std::string first = ui::next_screenshot_path(scratch.dir.string());
+  CHECK(fs::path(first).filename() == "raycam-screenshot-001.png");
+  std::ofstream(first) << "x";
+  CHECK(fs::path(ui::next_screenshot_path(scratch.dir.string())).filename() == "raycam-screenshot-002.png");
+  ui::AppState state = state_for({});
+  ui::request_screenshot(state);
+  CHECK(state.request_screenshot);
+  CHECK(fs::path(state.screenshot_path).is_absolute());  // the message can say exactly where
+}
+
+TEST_CASE("started with a scene that cannot be opened, the app shows the demo and the error naming the file",
+          "[ui][files]") {
+  const ui::AppState state = state_for({"no_such_dir/lesson3.json"}, true);
+  CHECK(state.scene_path.empty());
+  CHECK(state.file.scene3d.spheres.size() == demo_scene_3d().spheres.size());
+  CHECK(state.message_is_error);
+  CHECK_THAT(state.message, Catch::Contains("no_such_dir/lesson3.json"));
+  CHECK(ui::window_title(state) == "raycam — 3D — demo scene");
+  // A bad flag still stops it; and raycam-cli shot (no fallback) refuses the file.
+  CHECK_THROWS_WITH(state_for({"no_such_dir/lesson3.json", "--d", "-1"}, true), Catch::Contains("--d"));
+  CHECK_THROWS(state_for({"no_such_dir/lesson3.json"}, false));
+}
+
+TEST_CASE("the window title names the mode and the scene file", "[ui][title]") {
+  const ui::AppState state = state_for({SCENES_DIR "/many3d.json"});
+  CHECK(ui::window_title(state) == "raycam — 3D — many3d.json");
+  ui::set_language(ui::Language::fr);
+  CHECK(ui::window_title(state_for({"--view", "2d"})) == "raycam — 2D — scène de démonstration");
+  ui::set_language(ui::Language::en);
+}
