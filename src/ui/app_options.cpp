@@ -87,6 +87,8 @@ ViewSetup checked_view_setup(const ViewFlags& flags) {
 
 AppState make_app_state(const AppOptions& options) {
   AppState state;
+  state.language = options.language.value_or(language_from_environment());
+  set_language(state.language);  // the messages made below are in the window's language
   std::optional<ViewSetup> setup;
   try {
     setup = checked_view_setup(options.view);
@@ -121,7 +123,6 @@ AppState make_app_state(const AppOptions& options) {
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
   state.check_command = options.check_command;
-  state.language = options.language.value_or(language_from_environment());
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
     const int columns = state.dimension == 2 ? state.camera2d.pixel_count() : state.camera3d.columns();

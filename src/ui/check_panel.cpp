@@ -210,6 +210,10 @@ bool CameraCheck::up_to_date() const {
   return view_->latest && view_->latest->key == last_key_;
 }
 
+bool CameraCheck::waiting() const {
+  return busy() || (command_[0] != '\0' && automatic_ && last_key_ != submitted_key_) || check_now_;
+}
+
 bool CameraCheck::busy() const {
   std::lock_guard<std::mutex> lock(view_->mutex);
   return view_->running || view_->pending.has_value();

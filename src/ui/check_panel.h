@@ -45,6 +45,8 @@ class CameraCheck {
   bool busy() const;
   // The latest verdict is for the camera, scene and command seen at the last update().
   bool up_to_date() const;
+  // A verdict is on its way (quiet time, queued or running): the window keeps drawing to show it.
+  bool waiting() const;
 
  private:
   std::string case_key(const AppState& state) const;

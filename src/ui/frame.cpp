@@ -151,7 +151,8 @@ Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, F
     overhead_area_ = {right_x, bar_h, right_w, body_h - bar_h};
     observer_area_ = {};
   } else {
-    const float top_h = body_h * 0.6f;  // the image keeps the larger share, at every font scale
+    // The image keeps at least half the window's height at every font scale (the views give way).
+    const float top_h = body_h * std::min(0.75f, 0.6f + 0.05f * (scale - 1.0f));
     const float image_w = std::min(right_w * 0.6f, top_h - ImGui::GetFrameHeightWithSpacing() + 16.0f);
     image_area_ = {right_x, 0, image_w, top_h};
     overhead_area_ = {right_x + image_w, 0, right_w - image_w, top_h};
@@ -216,6 +217,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     state.check_command.clear();
   }
   check_.update(state, ImGui::GetTime());
+  state.check_waiting = check_.waiting();
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
@@ -316,10 +318,12 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                     tr("Overhead view###overhead"), area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     if (ImGui::SmallButton(tr("Fit view (F)"))) state.overhead_fit_pending = true;
+    // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
+    const char* hint = tr("holds still while the camera moves; drag: the camera around C");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);
     ImGui::SameLine();
-    ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextDisabled("%s", tr("holds still while the camera moves; drag: the camera around C"));
-    ImGui::PopTextWrapPos();
+    if (ImGui::CalcTextSize(hint).x <= ImGui::GetContentRegionAvail().x) ImGui::TextDisabled("%s", hint);
+    else ImGui::NewLine();
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##overhead_input", size);

@@ -200,3 +200,30 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK(renderer.layout().panel.w <= 0.4f * 1280 + 0.5f);
   CHECK(renderer.layout().status.x + renderer.layout().status.w <= 1280.5f);
 }
+
+TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the window and the panel 40% at most",
+          "[render][lecture]") {
+  for (const char* language : {"en", "fr"})
+    for (const char* view : {"3d", "2d"})
+      for (const float scale : {1.0f, 1.5f, 2.0f, 3.0f}) {
+        ui::AppState state = state_for({"--view", view, "--lang", language});
+        state.font_scale = scale;
+        headless::HeadlessRenderer renderer(1280, 800);
+        renderer.render_settled(state);
+        const ui::FrameLayout& layout = renderer.layout();
+        INFO(language << " " << view << " at " << scale << "×");
+        CHECK(ImGui::GetFontSize() == Approx(std::round(15.0f * scale)));  // rasterised at the size, not stretched
+        CHECK(ImGui::GetIO().FontGlobalScale == 1.0f);
+        CHECK(layout.panel.w <= 0.4f * 1280 + 0.5f);
+        if (std::string(view) == "3d") CHECK(std::min(layout.image.w, layout.image.h) >= 0.5f * 800);
+        else CHECK(layout.image.w >= 0.5f * 1280);  // the bar spans the right-hand side
+        // The status line's one line fits its area.
+        CHECK(layout.status.x + layout.status.w <= 1280.5f);
+        // Every labelled widget of the panel lies inside the panel (its label beside it or above it).
+        for (const char* id : {"###df", "###d", "###theta", "###res", "###target"}) {
+          const auto rect = ui::widget_rect(id);
+          REQUIRE(rect);
+          CHECK(rect->second.x <= layout.panel.x + layout.panel.w);
+        }
+      }
+}

@@ -150,9 +150,9 @@ TEST_CASE("the window matches the reviewed reference screenshots", "[render][ref
         shoot(is_2d ? std::vector<std::string>{"--lang", "en", "--view", "2d", "--inspect", "100,0"}
                     : std::vector<std::string>{"--lang", "en", "--inspect", "120,140", "--step", "3"});
     const std::string reference_path = std::string(RAYCAM_REFERENCE_DIR) + "/" + name + ".png";
-    // Masked: the status line only. Its timings change every run and shift the rest of the line, so its
-    // other numbers are checked as text against the state instead (tests/ui/test_panel_text.cpp). Every
-    // panel number is compared here: one changed digit fails.
+    // Masked: the status line only, which holds the timings (they change every run) and, after them, the
+    // caster's name that they shift. Its work counters live in a tooltip and are checked as text against the
+    // state (tests/ui/test_panel_text.cpp). Every panel number is compared here: one changed digit fails.
     test::ScreenshotRules rules;
     const ui::Rect& status = shot.layout.status;
     rules.masked.push_back(

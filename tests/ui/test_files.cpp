@@ -136,7 +136,6 @@ TEST_CASE("started with a scene that cannot be opened, the app shows the demo an
 TEST_CASE("the window title names the mode and the scene file", "[ui][title]") {
   const ui::AppState state = state_for({SCENES_DIR "/many3d.json"});
   CHECK(ui::window_title(state) == "raycam — 3D — many3d.json");
-  ui::set_language(ui::Language::fr);
-  CHECK(ui::window_title(state_for({"--view", "2d"})) == "raycam — 2D — scène de démonstration");
+  CHECK(ui::window_title(state_for({"--view", "2d", "--lang", "fr"})) == "raycam — 2D — scène de démonstration");
   ui::set_language(ui::Language::en);
 }
