@@ -53,6 +53,7 @@ AppState make_app_state(const AppOptions& options) {
   state.cast_options = options.cast_options;
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
+  state.check_command = options.check_command;
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
     const int columns = state.dimension == 2 ? state.camera2d.pixel_count() : state.camera3d.columns();

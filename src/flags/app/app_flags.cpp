@@ -74,6 +74,9 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
       *group, "--lang", "fr|en", "language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)",
       one_of({"en", "fr"}),
       [&options](int index) { options.language = index == 0 ? ui::Language::en : ui::Language::fr; });
+  add_checked_option<std::string>(*group, "--check", "\"CMD\"",
+                                  "Check my camera: run your program on the camera whenever it changes",
+                                  file_name(), [&options](std::string command) { options.check_command = command; });
   group->add_flag_callback(
       "--high-contrast", [&options] { options.high_contrast = true; },
       "lecture mode: light, high-contrast theme");
