@@ -91,6 +91,31 @@ const std::vector<Translation>& translation_table() {
       {"fit the overhead view to the scene and the camera",
        "cadrer la vue de dessus sur la scène et la caméra"},
 
+      // ---- overhead_view.cpp: the construction's intermediate camera ----
+      {"eye E: z = %.2f", "œil E : z = %.2f"},
+      {"side view: x →, z ↑", "vue de côté : x →, z ↑"},
+      {"k = 0", "k = 0"},
+      {"eye's left (column 0)", "gauche de l'œil (colonne 0)"},
+
+      // ---- panels.cpp: the 3D construction, step by step (i11views) ----
+      {"Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
+       "(red), "
+       "image up (green), view (blue).",
+       "Dessinés en orange dans les deux vues : l'écran (son bord haut en vert), l'œil, et les axes droite "
+       "de "
+       "l'image (rouge), haut de l'image (vert), visée (bleu)."},
+      {"Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+       "(−cos θ "
+       "cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: world up "
+       "points "
+       "down and the image is upside down.",
+       "Pourquoi ψ0 = +π/2 : après R_y(φ)·R_z(ψ0), le haut de l'image R·(0, 1, 0) doit avoir z > 0. Avec "
+       "+π/2 "
+       "c'est (−cos θ cos φ, −sin θ cos φ, sin φ), et sin φ > 0. Le TD imprime −π/2, le vecteur opposé : le "
+       "haut "
+       "du monde pointe vers le bas et l'image est à l'envers."},
+      {"show the handout's ψ0 = −π/2", "montrer le ψ0 = −π/2 du TD"},
+
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
       {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
       {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "
@@ -275,6 +300,34 @@ const std::vector<Translation>& translation_table() {
       {"make an object the target", "prendre un objet comme cible"},
       {"click a pixel", "clic sur un pixel"},
       {"pin the ray inspector", "fixer l'inspecteur de rayon"},
+
+      // ---- check_panel.cpp: Check my camera ----
+      {"Check my camera###check", "Vérifier ma caméra###check"},
+      {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
+       "whenever "
+       "they change (README, \"Check your own camera\").",
+       "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
+       "vérifié "
+       "à chaque changement (README, \"Check your own camera\")."},
+      {"program###check_command", "programme###check_command"},
+      {"an answer file, not a program###check_is_file",
+       "un fichier de réponse, pas un programme###check_is_file"},
+      {"check when the camera changes###check_auto", "vérifier quand la caméra change###check_auto"},
+      {"Check now###check_now", "Vérifier###check_now"},
+      {"running… (%.1f s)", "en cours… (%.1f s)"},
+      {"pass: every pixel agrees", "réussi : chaque pixel est juste"},
+      {"fail: %lld of %lld pixels wrong (in red on the image)",
+       "échec : %lld pixels faux sur %lld (en rouge sur l'image)"},
+      {"%s: %s", "%s : %s"},
+      {"(for the camera before your last change)", "(pour la caméra d'avant votre dernier changement)"},
+      {"no sandbox: bubblewrap is not available here",
+       "pas de bac à sable : bubblewrap n'est pas disponible ici"},
+      {"no classic mistake reproduces this image", "aucune erreur classique ne reproduit cette image"},
+      {"pass", "réussi"},
+      {"fail", "échec"},
+      {"crash", "plantage"},
+      {"timeout", "trop long"},
+      {"bad-output", "sortie invalide"},
   };
   return table;
 }
