@@ -8,7 +8,8 @@ side=$(awk -F, 'NR > 1 && $2 > s { s = $2 } END { print s }' "$csv")
 threads=$(awk -F, 'NR > 1 && $3 > t { t = $3 } END { print t }' "$csv")
 data=$(mktemp)
 trap 'rm -f "$data"' EXIT
-for variant in plain footprint binned automatic "embree packet1" "embree packet16" "embree p16 ray table"; do
+for variant in "fill only" "rays only" projection plain footprint binned automatic "embree packet1" "embree packet16" \
+  "embree p16 ray table"; do
   echo "\"$variant\""
   awk -F, -v side="$side" -v threads="$threads" -v v="\"$variant\"" \
     '$2 == side && $3 == threads && $4 == v { print ($1 > 0 ? $1 : 0.5), $5 }' "$csv"
@@ -22,7 +23,7 @@ set xlabel "spheres K"
 set ylabel "median ms per ${side}x${side} image (${threads} threads)"
 set key outside right
 set grid
-set title "raycam's casters against Embree 3 (lower is better)"
-plot for [i=0:6] "$data" index i using 1:2 with linespoints title columnheader(1)
+set title "raycam's casters against Embree 3 and the floor (lower is better)"
+plot for [i=0:9] "$data" index i using 1:2 with linespoints title columnheader(1)
 GP
 echo "wrote $png"

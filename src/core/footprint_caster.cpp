@@ -121,6 +121,12 @@ struct Workspace {
   std::vector<BandScratch> scratch;  // one per worker
 };
 
+// The calling thread's: its helpers write into it, each their own part.
+Workspace& calling_thread_workspace() {
+  thread_local Workspace workspace;
+  return workspace;
+}
+
 // Splats a candidate's box (clipped to the band's rows) into the band's depth buffer.
 void splat(const Camera3D& camera, const std::vector<Candidate>& visible, int j, int row_begin, int row_end,
            IntersectFormula formula, BandScratch& scratch) {
@@ -153,7 +159,7 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   const int rows = camera.rows(), columns = camera.columns();
   const long long pixels = static_cast<long long>(rows) * columns;
   const int threads = resolve_threads(options.threads);
-  thread_local Workspace workspace;  // the calling thread's: its helpers write into it, each their own part
+  Workspace& workspace = calling_thread_workspace();
   project_spheres(camera, scene, options.formula, threads, workspace.projection);
   const std::vector<Candidate>& visible = workspace.projection.visible;
 
@@ -210,6 +216,12 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
   }
   stats.pixels_skipped = pixels - touched;
   stats.threads = int(scratch.size());
+}
+
+int project_visible(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {
+  Workspace& workspace = calling_thread_workspace();
+  project_spheres(camera, scene, options.formula, resolve_threads(options.threads), workspace.projection);
+  return int(workspace.projection.visible.size());
 }
 
 void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,

@@ -130,4 +130,8 @@ CastMethod parse_cast_method(const std::string& name, const std::string& flag) {
   throw std::invalid_argument(flag + ": expected automatic, plain, culled, footprint or binned, got '" + name + "'");
 }
 
+int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {
+  return detail::project_visible(camera, scene, options);
+}
+
 }  // namespace raycam

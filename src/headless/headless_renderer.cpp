@@ -1,13 +1,12 @@
 #include "headless_renderer.h"
 
-#include <cfloat>
-#include <chrono>
-#include <stdexcept>
-#include <vector>
-
 #include <GL/osmesa.h>  // the only file that includes OSMesa
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
+
+#include <cfloat>
+#include <stdexcept>
+#include <vector>
 
 #include "gl.h"
 
@@ -44,28 +43,25 @@ HeadlessRenderer::~HeadlessRenderer() {
   OSMesaDestroyContext(context_->mesa);
 }
 
-void HeadlessRenderer::run_frame(ui::AppState& state) {
-  const auto start = std::chrono::steady_clock::now();
+ui::FramebufferSize HeadlessRenderer::begin(const ui::AppState&) {
   ImGuiIO& io = ImGui::GetIO();
   io.DeltaTime = 1.0f / 60.0f;
-  io.MousePos = ImVec2(mouse_x_, mouse_y_);
+  io.DisplaySize = ImVec2(float(width_), float(height_));
+  io.MousePos = ImVec2(mouse_x_, mouse_y_);  // the input a test injected (none: nothing hovered)
   for (int button = 0; button < 3; ++button) io.MouseDown[button] = mouse_down_[button];
   io.MouseWheel = wheel_;
   wheel_ = 0.0f;
   for (bool& down : io.KeysDown) down = false;
   if (pressed_key_ >= 0) io.KeysDown[pressed_key_] = true;
   pressed_key_ = -1;
-  raycam::ui::prepare_frame(state);          // fonts at the current scale, before the backend's frame
   ImGui_ImplOpenGL3_NewFrame();
-  ImGui::NewFrame();
-  layout_ = frame_->build(state, width_, height_);
-  ImGui::Render();
-  glViewport(0, 0, width_, height_);
-  glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glFinish();
-  state.frame_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return {width_, height_};
+}
+
+void HeadlessRenderer::present() { glFinish(); }
+
+void HeadlessRenderer::run_frame(ui::AppState& state) {
+  layout_ = ui::run_frame(*this, *frame_, state).layout;
 }
 
 gl::RgbaImage HeadlessRenderer::render_settled(ui::AppState& state, int frames) {

@@ -1,20 +1,22 @@
 // The app's frame rendered with no display: an OSMesa GL 3.3 core context (llvmpipe) instead of a window.
-// The frame itself is the very code the GLFW app runs (raycam_ui's FrameRenderer).
+// A FrameHost (frame_host.h), like the GLFW window: the frame and the loop body are the very code the app
+// runs (ui::run_frame).
 #pragma once
 
 #include <memory>
 
 #include "app_state.h"
 #include "frame.h"
+#include "frame_host.h"
 #include "framebuffer_image.h"
 
 namespace raycam::headless {
 
-class HeadlessRenderer {
+class HeadlessRenderer : public ui::FrameHost {
  public:
   // Throws std::runtime_error if no OSMesa context can be created.
   HeadlessRenderer(int width, int height);
-  ~HeadlessRenderer();
+  ~HeadlessRenderer() override;
   HeadlessRenderer(const HeadlessRenderer&) = delete;
   HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
@@ -22,7 +24,11 @@ class HeadlessRenderer {
   void run_frame(ui::AppState& state);
   // Runs `frames` frames (at least 2) and reads the last one back.
   gl::RgbaImage render_settled(ui::AppState& state, int frames = 3);
-  gl::RgbaImage read_back() const;
+
+  // FrameHost: no events to wait for, no mouse (nothing hovered), a fixed 60 Hz clock for ImGui.
+  ui::FramebufferSize begin(const ui::AppState& state) override;
+  void present() override;
+  gl::RgbaImage read_back() const override;
 
   // Input, as a window system would send it, through ImGui's IO: the next run_frame sees it. The mouse
   // stays where it was put (outside the window until then); a pressed key is released after one frame.

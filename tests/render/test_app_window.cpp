@@ -1,8 +1,11 @@
 // The real GLFW app under Xvfb: it starts, runs a few frames, its screenshot is not blank, shows the scene's
 // colours, and equals the headless twin's picture for the same arguments (up to the status line's timings).
-#include <catch2/catch.hpp>
+#include <sys/wait.h>
 
+#include <catch2/catch.hpp>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include "image_compare.h"
@@ -44,4 +47,50 @@ TEST_CASE("the GLFW window's screenshot equals the headless shot", "[app][xvfb]"
     if (d.differing > d.compared / 1000) test::write_diff(app, shot, 24, "app_vs_shot_" + view + ".diff.png");
     CHECK(d.differing <= d.compared / 1000);
   }
+}
+
+namespace {
+struct WindowRun {
+  int exit_code = -1;
+  long long frames = -1, casts = -1;
+};
+
+// Runs the interactive app (no --frames) under Xvfb for `seconds`, with `input` (xdotool commands, or
+// nothing) sent after it settled, then asks it to quit with SIGTERM and reads its exit line.
+WindowRun run_window(const std::string& name, double seconds, const std::string& input) {
+  const std::string out = "window_" + name + ".txt";
+  const std::string script = std::string(RAYCAM_APP) + " --width 1024 --height 640 > " + out +
+                             " 2>&1 & pid=$!; sleep 2; " + input + "; sleep " + std::to_string(seconds) +
+                             "; kill -TERM $pid; wait $pid";
+  WindowRun result;
+  const int status =
+      std::system((std::string(XVFB_RUN) + " -a -s '-screen 0 1024x640x24' sh -c '" + script + "'").c_str());
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(out);
+  std::string line;
+  while (std::getline(in, line))
+    if (std::sscanf(line.c_str(), "raycam: %lld frames drawn, %lld casts", &result.frames, &result.casts) ==
+        2)
+      break;
+  return result;
+}
+}  // namespace
+
+TEST_CASE("an idle window waits for events instead of drawing, and draws at once on input",
+          "[app][xvfb][idle]") {
+  // Idle: the start-up frames (GlfwHost::kSettleFrames after the first events) and nothing while nobody
+  // touches it. Redrawing continuously, it drew hundreds of frames a second.
+  const WindowRun idle = run_window("idle", 3.0, "true");
+  REQUIRE(idle.exit_code == 0);  // SIGTERM leaves the loop cleanly
+  INFO("frames drawn in ~5 s with no input: " << idle.frames);
+  CHECK(idle.frames >= 1);
+  CHECK(idle.frames <= 12);
+  // Input: a drag in the overhead view moves the camera, so the window redraws and casts again.
+  const WindowRun dragged = run_window("drag", 1.0,
+                                       "xdotool mousemove 850 150 sleep 0.3 mousedown 1 sleep 0.3 mousemove "
+                                       "880 170 sleep 0.3 mousemove 920 200 sleep 0.3 mouseup 1");
+  REQUIRE(dragged.exit_code == 0);
+  INFO("frames " << dragged.frames << ", casts " << dragged.casts);
+  CHECK(dragged.casts >= 2);
+  CHECK(dragged.frames > idle.frames);
 }

@@ -1,0 +1,175 @@
+// The GLFW host and the window's loop. With main.cpp, the only files that include GLFW.
+#include "glfw_host.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <csignal>
+#include <cstdio>
+#include <string>
+
+#include "gl.h"
+
+namespace raycam::app {
+
+namespace {
+volatile std::sig_atomic_t quit_signal = 0;  // SIGINT / SIGTERM: leave the loop cleanly
+extern "C" void on_quit_signal(int) { quit_signal = 1; }
+
+struct Callbacks {  // what the callbacks reach through the window's user pointer
+  ui::AppState* state;
+  GlfwHost* host;
+};
+Callbacks& callbacks_of(GLFWwindow* window) {
+  return *static_cast<Callbacks*>(glfwGetWindowUserPointer(window));
+}
+void note(GLFWwindow* window) { callbacks_of(window).host->note_event(); }
+
+void key_callback(GLFWwindow* window, int key, int, int action, int) {
+  note(window);
+  if (action != GLFW_PRESS) return;
+  ui::AppState& state = *callbacks_of(window).state;
+  if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
+  if (key == GLFW_KEY_F11) state.request_fullscreen = true;
+  if (key == GLFW_KEY_F12) state.request_screenshot = true;
+  if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
+    state.request_quit = true;
+}
+
+void drop_callback(GLFWwindow* window, int count, const char** paths) {
+  note(window);
+  // A bad file shows its error in the status line and keeps the current scene.
+  if (count > 0) ui::open_scene(*callbacks_of(window).state, paths[0]);
+}
+
+// Every other event only wakes the loop (ImGui's backend installs its own after these and chains to them).
+void install_wake_callbacks(GLFWwindow* window) {
+  glfwSetKeyCallback(window, key_callback);
+  glfwSetDropCallback(window, drop_callback);
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { note(w); });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { note(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { note(w); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { note(w); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { note(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { note(w); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
+  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { note(w); });
+  glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { note(w); });
+}
+
+void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
+  if (glfwGetWindowMonitor(window)) {
+    glfwSetWindowMonitor(window, nullptr, saved[0], saved[1], saved[2], saved[3], 0);
+    return;
+  }
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  if (!monitor) return;
+  glfwGetWindowPos(window, &saved[0], &saved[1]);
+  glfwGetWindowSize(window, &saved[2], &saved[3]);
+  const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+  glfwSetWindowMonitor(window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+}  // namespace
+
+bool GlfwHost::should_close() const { return quit_signal || glfwWindowShouldClose(window_); }
+
+ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
+  if (scripted_) {
+    glfwPollEvents();
+  } else {
+    // Sleep until there is something to draw: input (the callbacks set settle_frames_), pending work, or
+    // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
+    for (;;) {
+      const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
+      const bool busy = !minimised && (settle_frames_ > 0 || ui::frame_needs_redraw(state));
+      if (busy || should_close()) break;
+      glfwWaitEventsTimeout(kIdleWaitSeconds);
+    }
+    settle_frames_ = std::max(0, settle_frames_ - 1);
+    glfwPollEvents();
+  }
+  glfwGetFramebufferSize(window_, &size_.width, &size_.height);
+  if (size_.empty() || should_close()) return {};  // minimised (or leaving): no frame
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // scripted: no stray hover
+  return size_;
+}
+
+void GlfwHost::present() { glfwSwapBuffers(window_); }
+
+gl::RgbaImage GlfwHost::read_back() const {
+  return gl::read_framebuffer(size_.width, size_.height);
+}  // back buffer
+
+int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppState& state) {
+  glfwSetErrorCallback([](int, const char* message) { std::fprintf(stderr, "raycam: GLFW: %s\n", message); });
+  if (!glfwInit()) {
+    std::fprintf(stderr,
+                 "raycam: cannot open a window (no display?). For a headless render use: raycam-cli shot\n");
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "raycam", nullptr, nullptr);
+  if (!window) {
+    glfwTerminate();
+    std::fprintf(stderr, "raycam: cannot create a GL 3.3 core window\n");
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(run.frames > 0 ? 0 : 1);
+  GlfwHost host(window, run.frames > 0);
+  Callbacks callbacks{&state, &host};
+  glfwSetWindowUserPointer(window, &callbacks);
+  install_wake_callbacks(window);  // before ImGui's backend, which chains to them
+  std::signal(SIGINT, on_quit_signal);
+  std::signal(SIGTERM, on_quit_signal);
+
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  int exit_code = 0;
+  {
+    ui::FrameRenderer frame;
+    int saved[4] = {0, 0, options.width, options.height};
+    std::string applied_title = "raycam";
+    for (int drawn = 0; !host.should_close() && !state.request_quit;) {
+      const bool last = run.frames > 0 && drawn + 1 >= run.frames;
+      if (last && !run.screenshot.empty()) {
+        state.screenshot_path = run.screenshot;
+        state.request_screenshot = true;
+      }
+      const ui::FrameResult result = ui::run_frame(host, frame, state);
+      if (!result.drawn) continue;
+      if (state.window_title != applied_title) {  // the UI names the mode and the scene; the host applies it
+        glfwSetWindowTitle(window, state.window_title.c_str());
+        applied_title = state.window_title;
+      }
+      ++drawn;
+      if (result.screenshot_failed && last) exit_code = 1;
+      if (state.request_fullscreen) {
+        toggle_fullscreen(window, saved);
+        state.request_fullscreen = false;
+      }
+      if (last) break;
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  std::printf("raycam: %lld frames drawn, %lld casts\n", state.frame_count, state.cast_count);
+  if (exit_code != 0) std::fprintf(stderr, "raycam: error: %s\n", state.message.c_str());
+  return exit_code;
+}
+
+}  // namespace raycam::app

@@ -1,0 +1,50 @@
+// One host interface for the app's frame, whatever shows it (Polyscope's engine idea): a GLFW window
+// (src/app/glfw_host.cpp) or an OSMesa buffer (src/headless/headless_renderer.cpp). The frame itself, and
+// the loop body that drives it, are the same code for both: run_frame below.
+//
+// Each host is its own executable's: TOOLCHAIN.md forbids libGL and OSMesa in one binary, so this header
+// names neither.
+#pragma once
+
+#include <string>
+
+#include "app_state.h"
+#include "frame.h"
+#include "framebuffer_image.h"
+
+namespace raycam::ui {
+
+struct FramebufferSize {
+  int width = 0, height = 0;
+  bool empty() const { return width <= 0 || height <= 0; }
+};
+
+class FrameHost {
+ public:
+  virtual ~FrameHost() = default;
+  // Waits for what the next frame needs (a window: events, or nothing when `state` has work pending; a
+  // buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty when
+  // there is nothing to draw (minimised): the frame is skipped.
+  virtual FramebufferSize begin(const AppState& state) = 0;
+  // Shows the frame just drawn (a window swaps its buffers; a buffer finishes drawing).
+  virtual void present() = 0;
+  // The frame just drawn, read before present() (a window's back buffer), top row first.
+  virtual gl::RgbaImage read_back() const = 0;
+};
+
+struct FrameResult {
+  bool drawn = false;  // false: the host had nothing to draw (minimised)
+  bool screenshot_failed = false;
+  FrameLayout layout;
+};
+
+// The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
+// framebuffer, a requested screenshot saved (state.request_screenshot, to state.screenshot_path), present.
+FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state);
+
+// True while the window must keep drawing without waiting for input: the cameras changed, a coarse
+// preview waits for its refinement, a request is waiting for the executable. Anything that makes the image
+// change with no input (a background cast) adds its condition here.
+bool frame_needs_redraw(const AppState& state);
+
+}  // namespace raycam::ui
