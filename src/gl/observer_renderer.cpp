@@ -184,10 +184,11 @@ GLuint ObserverRenderer::render(const ObserverFrame& frame, int width, int heigh
     glDrawArrays(GL_TRIANGLES, 0, 6);
   }
 
-  if (!frame.lines.empty()) {
+  auto draw_lines = [&](const std::vector<ObserverLine>& lines) {
+    if (lines.empty()) return;
     std::vector<float> vertices;
-    vertices.reserve(frame.lines.size() * 14);
-    for (const ObserverLine& line : frame.lines) {
+    vertices.reserve(lines.size() * 14);
+    for (const ObserverLine& line : lines) {
       for (const glm::vec3& p : {line.from, line.to})
         vertices.insert(vertices.end(), {p.x, p.y, p.z, line.colour.r, line.colour.g, line.colour.b, line.colour.a});
     }
@@ -198,8 +199,11 @@ GLuint ObserverRenderer::render(const ObserverFrame& frame, int width, int heigh
     glBindVertexArray(line_vao_);
     glBindBuffer(GL_ARRAY_BUFFER, line_vbo_);
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STREAM_DRAW);
-    glDrawArrays(GL_LINES, 0, GLsizei(frame.lines.size() * 2));
-  }
+    glDrawArrays(GL_LINES, 0, GLsizei(lines.size() * 2));
+  };
+  draw_lines(frame.lines);
+  glDisable(GL_DEPTH_TEST);  // the overlay shows through the spheres
+  draw_lines(frame.overlay_lines);
 
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);

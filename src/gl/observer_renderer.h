@@ -27,6 +27,9 @@ struct ObserverFrame {
   glm::vec3 observer_eye{0.0f};  // where view_projection looks from (the impostors cast rays from it)
   Rgb8 background{};
   std::vector<ObserverLine> lines;
+  // Drawn over everything, with no depth test: the construction's intermediate camera, which sits inside the
+  // objects around the origin until T(OP) moves it.
+  std::vector<ObserverLine> overlay_lines;
   // The camera's screen, corners in image order (top-left, top-right, bottom-right, bottom-left), and the
   // texture to show on it (0: none).
   std::array<glm::vec3, 4> screen_corners{};

@@ -16,6 +16,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "construction_view.h"
 #include "fonts.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
@@ -382,7 +383,9 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         frame.lines.push_back({t - offset, t + offset, yellow});
       }
       // The same rays as the image and the overhead view (the middle row), to where the caster hit.
-      for (const InspectedRay& ray : primary_ray_fan(state, kObserverFanRays)) {
+      const bool constructing =
+          state.construction_step >= 0 && state.construction_step < kConstructionSteps3D;
+      for (const InspectedRay& ray : primary_ray_fan(state, constructing ? 0 : kObserverFanRays)) {
         const Rgb8 c =
             ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : Rgb8{200, 200, 200};
         frame.lines.push_back({glm::vec3(ray.origin),
@@ -394,6 +397,24 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
         frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.end(2.0 * reach)), {1, 0, 1, 1}});
       }
+      if (constructing)  // the handout's frames; GL lines are one pixel wide, so the key parts get a band
+        for (const ConstructionSegment& segment :
+             construction_camera(construction_step(camera.placement(), state.construction_step), 1.5)) {
+          const glm::vec4 colour = construction_colour(segment.part);
+          frame.overlay_lines.push_back({glm::vec3(segment.from), glm::vec3(segment.to), colour});
+          if (segment.part == ConstructionPart::screen || segment.part == ConstructionPart::field_edge)
+            continue;
+          const glm::dvec3 along = glm::normalize(segment.to - segment.from);
+          const glm::dvec3 side =
+              glm::normalize(std::abs(along.z) < 0.9 ? glm::cross(along, glm::dvec3(0, 0, 1))
+                                                     : glm::cross(along, glm::dvec3(1, 0, 0)));
+          const glm::dvec3 other = glm::cross(along, side);
+          for (const glm::dvec3& offset : {side, -side, other, -other}) {
+            const glm::dvec3 shift = 0.004 * observer.distance * offset;  // about a pixel
+            frame.overlay_lines.push_back(
+                {glm::vec3(segment.from + shift), glm::vec3(segment.to + shift), colour});
+          }
+        }
       const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
       // GL textures are bottom-up: flip v.
       ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,

@@ -20,12 +20,20 @@ ObserverCamera observer_camera(const AppState& state, double aspect) {
   // target (farther ones, and a ground larger than the orbit, would shrink the camera to a few pixels).
   glm::dvec3 low = camera.eye(), high = low;
   auto include = [&](glm::dvec3 p) { low = glm::min(low, p), high = glm::max(high, p); };
-  for (const glm::dvec3& corner : camera.screen_corners()) include(corner);
-  include(target);
-  const double near_target = state.orbit3d.d;
-  for (const Sphere& s : state.file.scene3d.spheres)
-    if (glm::length(s.centre - target) + s.radius <= near_target + 1e-9)
-      include(s.centre - s.radius), include(s.centre + s.radius);
+  if (state.construction_step >= 0 && state.construction_step < kConstructionSteps3D) {
+    // A construction step before T(OP): the intermediate camera sits at the origin; frame it closely, so that
+    // each factor's change (eye pushed back, axes rolled, tilted, turned) is large on screen.
+    const glm::dmat4 m = construction_step(camera.placement(), state.construction_step);
+    low = high = eye_of(m);
+    for (const glm::dvec3& corner : screen_corners_of(m)) include(corner), include(corner * 1.5);
+  } else {
+    for (const glm::dvec3& corner : camera.screen_corners()) include(corner);
+    include(target);
+    const double near_target = state.orbit3d.d;
+    for (const Sphere& s : state.file.scene3d.spheres)
+      if (glm::length(s.centre - target) + s.radius <= near_target + 1e-9)
+        include(s.centre - s.radius), include(s.centre + s.radius);
+  }
   ObserverCamera observer;
   observer.look_at = 0.5 * (low + high);
   const double radius = std::max(0.5 * glm::length(high - low), 1e-6);

@@ -6,7 +6,9 @@
 #include <numeric>
 #include <vector>
 
+#include "construction_view.h"
 #include "raycam/transform.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -105,6 +107,106 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
   draw->AddCircleFilled(m.to_screen(eye), 5.0f, colour == kScreenColour ? kEyeColour : colour);
 }
 
+// The 3D construction's intermediate camera seen from above (construction_view.h). Axes that point straight
+// up or down (the view before R_y tilts it) shrink to a point: marked ⊗ (into the ground) or ⊙ (out of it).
+void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera) {
+  constexpr double kAxisLength = 1.5;
+  auto colour = [](ConstructionPart part) {
+    const glm::vec4 c = construction_colour(part);
+    return IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), int(c.a * 255));
+  };
+  const std::vector<ConstructionSegment> segments = construction_camera(world_from_camera, kAxisLength);
+  for (const ConstructionSegment& segment : segments)  // a dark halo first: readable over any disc
+    if (segment.part != ConstructionPart::field_edge)
+      draw->AddLine(m.to_screen(xy(segment.from)), m.to_screen(xy(segment.to)), IM_COL32(0, 0, 0, 200), 5.0f);
+  for (const ConstructionSegment& segment : segments) {
+    const ImVec2 from = m.to_screen(xy(segment.from)), to = m.to_screen(xy(segment.to));
+    const bool axis = segment.part == ConstructionPart::right_axis ||
+                      segment.part == ConstructionPart::up_axis ||
+                      segment.part == ConstructionPart::view_axis;
+    const float width = segment.part == ConstructionPart::top_edge ? 4.0f
+                        : axis                                     ? 2.5f
+                        : segment.part == ConstructionPart::screen ? 3.0f
+                                                                   : 1.0f;
+    draw->AddLine(from, to, colour(segment.part), width);
+    if (!axis) continue;
+    const double projected = glm::length(xy(segment.to - segment.from)) / kAxisLength;
+    if (projected > 0.2) {
+      draw->AddCircleFilled(to, 3.5f, colour(segment.part));  // the arrow's head
+    } else {  // (almost) vertical: a circle with a cross (down, away from the viewer) or a dot (up)
+      draw->AddCircle(from, 8.0f, colour(segment.part), 16, 2.0f);
+      if (segment.to.z < segment.from.z) {
+        draw->AddLine({from.x - 5, from.y - 5}, {from.x + 5, from.y + 5}, colour(segment.part), 2.0f);
+        draw->AddLine({from.x - 5, from.y + 5}, {from.x + 5, from.y - 5}, colour(segment.part), 2.0f);
+      } else {
+        draw->AddCircleFilled(from, 3.0f, colour(segment.part));
+      }
+    }
+  }
+  const glm::dvec3 eye = eye_of(world_from_camera);
+  const ImVec2 at = m.to_screen(xy(eye));
+  draw->AddCircleFilled(at, 5.0f, kConstructionColour);
+  draw->AddText({at.x + 8, at.y - 18}, kConstructionColour, trf("eye E: z = %.2f", eye.z).c_str());
+
+  // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in the
+  // corner shows it, and the tilt, at a fixed scale.
+  const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
+  const float side = std::min(170.0f, 0.4f * std::min(clip_max.x - clip_min.x, clip_max.y - clip_min.y));
+  const ImVec2 low{clip_min.x + 6, clip_max.y - side - 6}, high{clip_min.x + 6 + side, clip_max.y - 6};
+  draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
+  draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
+  draw->AddText({low.x + 4, low.y + 2}, IM_COL32(200, 200, 210, 255), tr("side view: x →, z ↑"));
+  double reach = 1.0;
+  for (const ConstructionSegment& segment : segments)
+    reach = std::max({reach, std::abs(segment.from.x), std::abs(segment.from.z), std::abs(segment.to.x),
+                      std::abs(segment.to.z)});
+  reach = std::pow(2.0, std::ceil(std::log2(reach)));  // steps of the scale, so that it rarely changes
+  const float scale = 0.45f * side / float(reach);
+  const ImVec2 centre{0.5f * (low.x + high.x), 0.5f * (low.y + high.y) + 6};
+  auto side_point = [&](glm::dvec3 p) {
+    return ImVec2{centre.x + scale * float(p.x), centre.y - scale * float(p.z)};
+  };
+  draw->PushClipRect(low, high, true);
+  draw->AddLine({low.x, centre.y}, {high.x, centre.y}, IM_COL32(255, 255, 255, 40));
+  for (const ConstructionSegment& segment : segments)
+    draw->AddLine(side_point(segment.from), side_point(segment.to), colour(segment.part),
+                  segment.part == ConstructionPart::field_edge ? 1.0f : 2.0f);
+  draw->AddCircleFilled(side_point(eye), 4.0f, kConstructionColour);
+  draw->PopClipRect();
+}
+
+// The 2D screen segment's landmarks: pixel k = 0 (the handout's first pixel, at canonical x near -1) and the
+// other end, the eye's left, where the colour bar's column 0 is; and, when the pixels are few enough to
+// tell apart, their edges as ticks (the rays leave from the centres between them, or from the ticks under
+// the "pixel edges" mistake).
+void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camera2D& camera) {
+  const glm::dmat3& world_from_camera = camera.world_from_camera();
+  auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
+  const int n = camera.pixel_count();
+  const ImVec2 minus = at(-1.0), plus = at(1.0);
+  glm::dvec2 along{plus.x - minus.x, plus.y - minus.y};
+  const double length = glm::length(along);
+  if (length < 1.0) return;
+  along /= length;
+  const glm::dvec2 normal{-along.y, along.x};
+  if (n <= 64 && length / n >= 4.0)
+    for (int i = 0; i <= n; ++i) {
+      const ImVec2 p = at(-1.0 + 2.0 * i / n);
+      draw->AddLine({p.x - float(5 * normal.x), p.y - float(5 * normal.y)},
+                    {p.x + float(5 * normal.x), p.y + float(5 * normal.y)}, kScreenColour, 1.5f);
+    }
+  const ImVec2 first = at(camera.canonical_pixel(0).x);
+  draw->AddCircleFilled(first, 5.0f, kFirstPixelColour);
+  auto label = [&](ImVec2 end, double outward, const char* text) {
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    const float x = end.x + float(outward * along.x * 12.0) - (outward * along.x < 0 ? size.x : 0.0f);
+    const float y = end.y + float(outward * along.y * 12.0) - 0.5f * size.y;
+    draw->AddText({x, y}, kFirstPixelColour, text);
+  };
+  label(minus, -1.0, tr("k = 0"));
+  label(plus, 1.0, tr("eye's left (column 0)"));
+}
+
 // Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
 // the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
 // lines; many are drawn as translucent wedges between neighbours that hit the same object, so that a dense
@@ -183,12 +285,16 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
-  if (state.dimension == 2) draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
-  else draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
+  if (state.dimension == 2) {
+    draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
+    mark_screen_segment(draw, m, state.camera2d);
+  } else
+    draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
   if (!final_camera) {
     // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
     if (state.dimension == 2) draw_camera(draw, m, construction_step(state.camera2d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
-    else draw_camera(draw, m, construction_step(state.camera3d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
+    else
+      draw_construction_3d(draw, m, construction_step(state.camera3d.placement(), state.construction_step));
   }
   const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);

@@ -48,6 +48,7 @@ inline constexpr ImU32 kTargetColour = IM_COL32(255, 230, 0, 255);
 inline constexpr ImU32 kScreenColour = IM_COL32(0, 230, 255, 255);
 inline constexpr ImU32 kInspectedRayColour = IM_COL32(255, 0, 255, 255);
 inline constexpr ImU32 kConstructionColour = IM_COL32(255, 150, 40, 255);
+inline constexpr ImU32 kFirstPixelColour = IM_COL32(255, 200, 120, 255);  // k = 0 and the eye's left, in 2D
 inline constexpr ImU32 kImageFrameColour = IM_COL32(170, 175, 190, 255);  // around the colour bar and image
 
 }  // namespace raycam::ui

@@ -222,6 +222,19 @@ void construction_section(AppState& state) {
   if (ImGui::SliderInt(tr("step###step"), &step, 0, steps, "%d"))
     state.construction_step = step == steps ? -1 : step;
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
+  if (state.dimension == 3) {
+    explain(tr(
+        "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
+        "(red), image up (green), view (blue)."));
+    if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
+      explain(tr(
+          "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+          "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
+          "world up points down and the image is upside down."));
+      if (ImGui::Checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+        state.cameras_dirty = true;
+    }
+  }
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
     ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());

@@ -96,6 +96,31 @@ const std::vector<Translation>& translation_table() {
       {"fit the overhead view to the scene and the camera",
        "cadrer la vue de dessus sur la scène et la caméra"},
 
+      // ---- overhead_view.cpp: the construction's intermediate camera ----
+      {"eye E: z = %.2f", "œil E : z = %.2f"},
+      {"side view: x →, z ↑", "vue de côté : x →, z ↑"},
+      {"k = 0", "k = 0"},
+      {"eye's left (column 0)", "gauche de l'œil (colonne 0)"},
+
+      // ---- panels.cpp: the 3D construction, step by step (i11views) ----
+      {"Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
+       "(red), "
+       "image up (green), view (blue).",
+       "Dessinés en orange dans les deux vues : l'écran (son bord haut en vert), l'œil, et les axes droite "
+       "de "
+       "l'image (rouge), haut de l'image (vert), visée (bleu)."},
+      {"Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+       "(−cos θ "
+       "cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: world up "
+       "points "
+       "down and the image is upside down.",
+       "Pourquoi ψ0 = +π/2 : après R_y(φ)·R_z(ψ0), le haut de l'image R·(0, 1, 0) doit avoir z > 0. Avec "
+       "+π/2 "
+       "c'est (−cos θ cos φ, −sin θ cos φ, sin φ), et sin φ > 0. Le TD imprime −π/2, le vecteur opposé : le "
+       "haut "
+       "du monde pointe vers le bas et l'image est à l'envers."},
+      {"show the handout's ψ0 = −π/2", "montrer le ψ0 = −π/2 du TD"},
+
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
       {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
       {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "

@@ -252,3 +252,39 @@ TEST_CASE("the overhead view holds still while the camera moves, and fits again 
   CHECK(after.scale < before.scale);
   CHECK(inside(after.to_screen({eye.x, eye.y})));
 }
+
+TEST_CASE("each step of the 3D construction looks different from above and in the observer view",
+          "[render][construction]") {
+  // Each factor moves something the views can show: H the eye (label, narrower field), the roll the axes and
+  // the screen's top edge, R_y the tilt, R_z(θ) the turn about z, T the position. Step 5 is the final camera.
+  std::vector<Shot> shots;
+  for (int step = 0; step <= 5; ++step) shots.push_back(shoot({"--step", std::to_string(step)}));
+  auto differing = [](const Shot& a, const Shot& b, const ui::Rect& r) {
+    int count = 0;
+    for (int y = int(r.y); y < int(r.y + r.h); ++y)
+      for (int x = int(r.x); x < int(r.x + r.w); ++x) count += pixel(a.image, x, y) != pixel(b.image, x, y);
+    return count;
+  };
+  for (int step = 0; step < 5; ++step) {
+    INFO("step " << step << " to " << step + 1);
+    CHECK(differing(shots[step], shots[step + 1], shots[step].layout.overhead) > 300);
+    CHECK(differing(shots[step], shots[step + 1], shots[step].layout.observer) > 300);
+  }
+}
+
+TEST_CASE("the 2D screen segment marks pixel k = 0, and the eye's left at the other end",
+          "[render][overhead]") {
+  for (const char* theta : {"90", "20", "-135"}) {
+    const Shot shot = shoot({"--view", "2d", "--theta", theta, "--res", "0.1"});
+    const Camera2D& camera = shot.state.camera2d;
+    const ui::OverheadMapping& m = shot.layout.overhead_mapping;
+    INFO("theta " << theta);
+    // Pixel k = 0 is at canonical x = -1 + 1/n: M_d carries it into the world; column 0 (the eye's left) is
+    // the pixel k = n-1 at the other end, and has no such mark.
+    const glm::dvec2 first = transform_point(camera.world_from_camera(), camera.canonical_pixel(0));
+    const glm::dvec2 last =
+        transform_point(camera.world_from_camera(), camera.canonical_pixel(camera.pixel_count() - 1));
+    CHECK(colour_near(shot.image, m.to_screen(first), ui::kFirstPixelColour, 1, 20));
+    CHECK_FALSE(colour_near(shot.image, m.to_screen(last), ui::kFirstPixelColour, 1, 20));
+  }
+}

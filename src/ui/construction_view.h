@@ -1,0 +1,30 @@
+// The construction of M_d drawn step by step (the handout's frames): the intermediate camera after the first
+// `step` factors, as 3D segments that the overhead view projects from above and the observer view draws in
+// 3D. Its screen (top edge marked: the image's up side), the eye's field-of-view edges, and its axes from the
+// screen centre: image right (red), image up (green), view direction (blue). Each step moves something
+// visible: H pushes the eye back and narrows the edges, the roll turns the axes, R_y tilts, R_z(θ) turns
+// about z, T carries the camera to P.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <vector>
+
+namespace raycam::ui {
+
+enum class ConstructionPart { screen, top_edge, field_edge, right_axis, up_axis, view_axis };
+
+struct ConstructionSegment {
+  glm::dvec3 from{0.0}, to{0.0};
+  ConstructionPart part = ConstructionPart::screen;
+};
+
+// axis_length: world length of the axes and of the field-of-view edges beyond the eye (both in 3D, so that
+// H's narrower field shows even from above).
+std::vector<ConstructionSegment> construction_camera(const glm::dmat4& world_from_camera, double axis_length);
+
+// Colour of each part, RGBA in [0, 1].
+glm::vec4 construction_colour(ConstructionPart part);
+
+}  // namespace raycam::ui
