@@ -23,7 +23,7 @@ CORE="raycam_core_tests"
 CORE_TESTS="^core:"
 
 # --- the bugs the suite caught before issue 15 ---
-mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = 1.5707963267948966/kRollPsi0 = -1.5707963267948966/' "$CORE" "$CORE_TESTS"
+mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = \([^;]*\);/kRollPsi0 = -(\1);/' "$CORE" "$CORE_TESTS"
 mutant pixel-edges src/core/camera3d.cpp 's/mistakes_.pixel_edges ? column : column + 0.5/column/' "$CORE" "$CORE_TESTS"
 mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) ray.direction/if (false) ray.direction/' "$CORE" "$CORE_TESTS"
 mutant printed-rotation-2d src/core/camera2d.cpp 's/placement.alpha = view_angle - \(.*\);/placement.alpha = view_angle + \1;/' "$CORE" "$CORE_TESTS"

@@ -340,7 +340,11 @@ void mistakes_section(AppState& state) {
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
     explain(mistake_text(state, lesson).c_str());
     if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
-      ImGui::TextColored(current_theme().look_at, "%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+    {
+      ImGui::PushStyleColor(ImGuiCol_Text, current_theme().look_at);  // wrapped: not cut at the panel's edge
+      ImGui::TextWrapped("%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+      ImGui::PopStyleColor();
+    }
     if (!lesson.info) arccos_error_line(state);
     ImGui::PopID();
   }
