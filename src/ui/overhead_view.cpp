@@ -201,7 +201,11 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camer
     const ImVec2 size = ImGui::CalcTextSize(text);
     const float x = end.x + float(outward * along.x * 12.0) - (outward * along.x < 0 ? size.x : 0.0f);
     const float y = end.y + float(outward * along.y * 12.0) - 0.5f * size.y;
-    draw->AddText({x, y}, kFirstPixelColour, text);
+    const ImVec2 clip_min = draw->GetClipRectMin(),
+                 clip_max = draw->GetClipRectMax();  // never cut (3× fonts)
+    draw->AddText({std::clamp(x, clip_min.x + 2, std::max(clip_min.x + 2, clip_max.x - size.x - 2)),
+                   std::clamp(y, clip_min.y + 2, std::max(clip_min.y + 2, clip_max.y - size.y - 2))},
+                  kFirstPixelColour, text);
   };
   label(minus, -1.0, tr("k = 0"));
   label(plus, 1.0, tr("eye's left (column 0)"));
