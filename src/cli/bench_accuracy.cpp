@@ -16,6 +16,7 @@
 #include "raycam/exact_bar.h"
 #include "raycam/ray_caster.h"
 #include "raycam/reference_caster.h"
+#include "raycam/standard_scenes.h"
 
 namespace raycam::cli {
 
@@ -160,20 +161,8 @@ struct StandardScene {
   CoverageImage reference;
 };
 
-Scene2D cluster_2d(glm::dvec2 t) {
-  return Scene2D{kDefaultBackground,
-                 {Circle{t + glm::dvec2(-1.5, -0.3), 1.0, Rgb8{230, 60, 50}, "red"},
-                  Circle{t + glm::dvec2(1.3, 0.6), 0.7, Rgb8{60, 190, 80}, "green"},
-                  Circle{t + glm::dvec2(0.2, -2.6), 1.2, Rgb8{60, 110, 230}, "blue"},
-                  Circle{t + glm::dvec2(3.5, -2.0), 0.5, Rgb8{240, 200, 60}, "yellow"}}};
-}
-Scene3D cluster_3d(glm::dvec3 t) {
-  return Scene3D{kDefaultBackground,
-                 {Sphere{t + glm::dvec3(0, 0, 0), 1.0, Rgb8{230, 60, 50}, "red"},
-                  Sphere{t + glm::dvec3(2.2, 0.6, 0.2), 0.7, Rgb8{60, 190, 80}, "green"},
-                  Sphere{t + glm::dvec3(-1.2, 2.0, -0.2), 0.8, Rgb8{60, 110, 230}, "blue"},
-                  Sphere{t + glm::dvec3(0.2, -1.6, 1.3), 0.5, Rgb8{240, 200, 60}, "yellow"}}};
-}
+Scene2D cluster_2d(glm::dvec2 t) { return testkit::demo_cluster_2d(t); }
+Scene3D cluster_3d(glm::dvec3 t) { return testkit::demo_cluster_3d(t); }
 
 Camera2D make_camera(const StandardScene& s, Placement placement) {
   Camera2D camera(s.size);

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <glm/trigonometric.hpp>
 #include <map>
 #include <memory>
 #include <random>
@@ -24,12 +25,11 @@
 #include <thread>
 #include <vector>
 
-#include <glm/trigonometric.hpp>
-
 #include "commands.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
+#include "raycam/standard_scenes.h"
 #include "raycam/view_setup.h"
 #ifdef RAYCAM_HAVE_EMBREE
 #include "embree_caster.h"
@@ -132,18 +132,6 @@ SpeedOptions parse_options(const Args& args, bool& help) {
 
 // ---- fixtures
 // ----------------------------------------------------------------------------------------------
-Scene3D random_scene(int count) {
-  std::mt19937_64 engine(20261122u + unsigned(count));
-  std::uniform_real_distribution<double> coordinate(-10.0, 10.0);
-  const double radius = 2.0 * std::pow(double(std::max(count, 1)), -1.0 / 3.0);
-  Scene3D scene;
-  for (int i = 0; i < count; ++i) {
-    const double x = coordinate(engine), y = coordinate(engine), z = coordinate(engine);
-    scene.spheres.push_back({{x, y, z}, radius, {std::uint8_t(40 + i % 200), std::uint8_t(i * 7), 200}, ""});
-  }
-  return scene;
-}
-
 Camera3D bench_camera(int columns, int rows) {
   Camera3D camera(columns, rows);
   camera.set_orbit({{0, 0, 0}, 35.0, glm::radians(30.0), glm::radians(60.0), 2.0});  // the whole cube in view
@@ -171,7 +159,7 @@ class SceneGrid {
     auto found = scenes_.find(count);
     if (found != scenes_.end()) return *found->second;
     auto fixture = std::make_unique<SceneFixture>();
-    fixture->scene = random_scene(count);
+    fixture->scene = testkit::random_spheres(count);
 #ifdef RAYCAM_HAVE_EMBREE
     fixture->embree = std::make_unique<bench::EmbreeCaster>(fixture->scene);
 #endif

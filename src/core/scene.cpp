@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "demo_scenes.inc"  // generated: raycam::generated::demo_scene_2d/3d
 #include "raycam/limits.h"
 #include "validation.h"
 
@@ -41,30 +42,14 @@ void validate(const Scene3D& scene) {
   }
 }
 
-Scene2D demo_scene_2d() {
-  // Three circles around the origin; the default camera sits above them (θ = 90°) looking down.
-  Scene2D scene;
-  scene.circles = {
-      {{-1.5, -0.3}, 1.0, {230, 60, 50}, "red"},
-      {{1.3, 0.6}, 0.7, {60, 190, 80}, "green"},
-      {{0.2, -2.6}, 1.2, {60, 110, 230}, "blue"},
-  };
-  return scene;
-}
-
-Scene3D demo_scene_3d() {
-  // A red sphere on the target, three around it, and a grey "ground" below them so that world up is visible
-  // in the image. The ground is a sphere small enough to stay inside the default orbit: every point at
-  // distance 8 (the default d) from the target is at least 8 - 4.4 = 3.6 > 3.2 from its centre, so the camera
-  // never enters it, whatever θ and φ (a ground of radius 100 just below the objects swallowed the camera
-  // for φ above ~99°). From above it is a disc under the objects.
-  Scene3D scene;
-  scene.spheres = {
-      {{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"},       {{2.2, 0.6, 0.2}, 0.7, {60, 190, 80}, "green"},
-      {{-1.2, 2.0, -0.2}, 0.8, {60, 110, 230}, "blue"},   {{0.2, -1.6, 1.3}, 0.5, {240, 200, 60}, "yellow"},
-      {{0.0, 0.0, -4.4}, 3.2, {120, 120, 120}, "ground"},
-  };
-  return scene;
-}
+// The demo scenes are scenes/classic2d.json and classic3d.json, compiled in at build time
+// (embed_demo_scenes.cmake): one definition, and the file a student opens is the built-in scene. In 3D, a
+// red sphere on the target, three around it, and a grey "ground" below them so that world up is visible in
+// the image. The ground is a sphere small enough to stay inside the default orbit: every point at distance 8
+// (the default d) from the target is at least 8 - 4.4 = 3.6 > 3.2 from its centre, so the camera never
+// enters it, whatever θ and φ (a ground of radius 100 just below the objects swallowed the camera for φ
+// above ~99°). From above it is a disc under the objects.
+Scene2D demo_scene_2d() { return generated::demo_scene_2d(); }
+Scene3D demo_scene_3d() { return generated::demo_scene_3d(); }
 
 }  // namespace raycam

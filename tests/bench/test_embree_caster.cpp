@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdint>
+#include <glm/gtc/constants.hpp>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -18,7 +19,7 @@ using namespace raycam;
 using raycam::bench::EmbreeCaster;
 
 namespace {
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 
 double uniform(std::mt19937_64& engine, double lo, double hi) {
   return std::uniform_real_distribution<double>(lo, hi)(engine);

@@ -112,3 +112,26 @@ TEST_CASE("every shipped scene renders the core's ids and their colours", "[cli]
     }
   }
 }
+
+TEST_CASE("the built-in demo scenes are scenes/classic2d.json and classic3d.json, object for object",
+          "[cli][scenes]") {
+  // One definition: the built-in scenes are generated from these files at build time.
+  const SceneFile file2d = load_scene_file(std::string(RAYCAM_SCENES) + "/classic2d.json");
+  const Scene2D demo2d = demo_scene_2d();
+  REQUIRE(file2d.scene2d.circles.size() == demo2d.circles.size());
+  CHECK(file2d.scene2d.background == demo2d.background);
+  for (std::size_t i = 0; i < demo2d.circles.size(); ++i) {
+    CHECK(file2d.scene2d.circles[i].centre == demo2d.circles[i].centre);
+    CHECK(file2d.scene2d.circles[i].radius == demo2d.circles[i].radius);
+    CHECK(file2d.scene2d.circles[i].colour == demo2d.circles[i].colour);
+    CHECK(file2d.scene2d.circles[i].name == demo2d.circles[i].name);
+  }
+  const SceneFile file3d = load_scene_file(std::string(RAYCAM_SCENES) + "/classic3d.json");
+  const Scene3D demo3d = demo_scene_3d();
+  REQUIRE(file3d.scene3d.spheres.size() == demo3d.spheres.size());
+  for (std::size_t i = 0; i < demo3d.spheres.size(); ++i) {
+    CHECK(file3d.scene3d.spheres[i].centre == demo3d.spheres[i].centre);
+    CHECK(file3d.scene3d.spheres[i].radius == demo3d.spheres[i].radius);
+    CHECK(file3d.scene3d.spheres[i].colour == demo3d.spheres[i].colour);
+  }
+}

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <glm/trigonometric.hpp>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,6 @@
 using namespace raycam;
 
 namespace {
-constexpr double kDegree = 3.141592653589793 / 180.0;
 
 ui::AppState state_for(const std::vector<std::string>& args) {
   ui::AppOptions options;
@@ -92,7 +92,7 @@ TEST_CASE("a slider dragged with the mouse: image and M_d table match the core i
   renderer.run_frame(state);
   renderer.set_mouse_button(0, true);  // the slider jumps to the mouse: this frame changes θ
   renderer.run_frame(state);
-  CHECK(std::abs(state.orbit3d.theta - before) > 30 * kDegree);
+  CHECK(std::abs(state.orbit3d.theta - before) > glm::radians(30.0));
   check_frame_agrees_with_core(renderer, state);
   // ... and while dragging, every frame.
   for (float x : {0.3f, 0.55f, 0.1f}) {
@@ -133,7 +133,8 @@ TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees w
   renderer.run_frame(state);
   renderer.move_mouse(target.x, view.y + 10);  // straight above the target: θ = 90°
   renderer.run_frame(state);
-  CHECK(state.orbit3d.theta == Approx(90 * kDegree).margin(1 * kDegree));  // within a screen pixel
+  CHECK(state.orbit3d.theta ==
+        Approx(glm::radians(90.0)).margin(glm::radians(1.0)));  // within a screen pixel
   check_frame_agrees_with_core(renderer, state);
   renderer.set_mouse_button(0, false);
   renderer.run_frame(state);
@@ -155,7 +156,7 @@ TEST_CASE(
   // Right arrow: θ + 5°.
   const double theta = state.orbit3d.theta;
   tap(renderer, state, ImGuiKey_RightArrow);
-  CHECK(state.orbit3d.theta == Approx(theta + 5 * kDegree));
+  CHECK(state.orbit3d.theta == Approx(theta + glm::radians(5.0)));
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
   const auto d_slider = ui::widget_rect("###d");
   REQUIRE(d_slider);
@@ -171,7 +172,7 @@ TEST_CASE(
   CHECK_FALSE(ui::editing_text());
   CHECK(state.orbit3d.d == d);
   tap(renderer, state, ImGuiKey_LeftArrow);
-  CHECK(state.orbit3d.theta == Approx(theta_editing - 5 * kDegree));
+  CHECK(state.orbit3d.theta == Approx(theta_editing - glm::radians(5.0)));
   // Tab from inside a text field: leaves it and switches.
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());

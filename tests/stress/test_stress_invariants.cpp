@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include "raycam/exact_bar.h"
 #include "raycam/ray_caster.h"
@@ -11,7 +12,7 @@
 using namespace raycam;
 
 namespace {
-constexpr double kPi = 3.141592653589793;
+constexpr double kPi = glm::pi<double>();
 
 // Scale of the numbers involved: errors are judged relative to it.
 double scale_of(glm::dvec3 target, double d, double df) { return glm::length(target) + d + df; }

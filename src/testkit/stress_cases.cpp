@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "raycam/exact_bar.h"
+#include "raycam/standard_scenes.h"
 
 namespace raycam {
 
@@ -18,33 +19,12 @@ std::string label(const char* key, double value) {
   return text;
 }
 
-// ---- Scenes: a small cluster around the target, the classic2d/classic3d layout ------------------------
+// ---- Scenes: the demo scene's objects around the target (one definition: raycam/standard_scenes.h) ----
 Scene2D cluster_2d(glm::dvec2 target, double rotation = 0.0) {
-  const glm::dvec2 offsets[] = {{-1.5, -0.3}, {1.3, 0.6}, {0.2, -2.6}, {3.5, -2.0}};
-  const double radii[] = {1.0, 0.7, 1.2, 0.5};
-  const Rgb8 colours[] = {{230, 60, 50}, {60, 190, 80}, {60, 110, 230}, {240, 200, 60}};
-  Scene2D scene;
-  const double c = std::cos(rotation), s = std::sin(rotation);
-  for (int i = 0; i < 4; ++i) {
-    const glm::dvec2 o = offsets[i];
-    scene.circles.push_back(
-        Circle{target + glm::dvec2(c * o.x - s * o.y, s * o.x + c * o.y), radii[i], colours[i], ""});
-  }
-  return scene;
+  return testkit::demo_cluster_2d(target, rotation);
 }
-
 Scene3D cluster_3d(glm::dvec3 target, double rotation_z = 0.0) {
-  const glm::dvec3 offsets[] = {{0, 0, 0}, {2.2, 0.6, 0.2}, {-1.2, 2.0, -0.2}, {0.2, -1.6, 1.3}};
-  const double radii[] = {1.0, 0.7, 0.8, 0.5};
-  const Rgb8 colours[] = {{230, 60, 50}, {60, 190, 80}, {60, 110, 230}, {240, 200, 60}};
-  Scene3D scene;
-  const double c = std::cos(rotation_z), s = std::sin(rotation_z);
-  for (int i = 0; i < 4; ++i) {
-    const glm::dvec3 o = offsets[i];
-    scene.spheres.push_back(
-        Sphere{target + glm::dvec3(c * o.x - s * o.y, s * o.x + c * o.y, o.z), radii[i], colours[i], ""});
-  }
-  return scene;
+  return testkit::demo_cluster_3d(target, rotation_z);
 }
 
 // Orbit zoomed so that a scene of half-size ~4 around the target fills the view at any distance:
