@@ -65,6 +65,8 @@ bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppO
     options.font_scale = float(scale);
   } else if (flag == "--lang") {
     options.language = parse_language_flag(next_value(args, i), flag);
+  } else if (flag == "--check") {
+    options.check_command = next_value(args, i);
   } else if (flag == "--high-contrast") {
     options.high_contrast = true;
     ++i;
@@ -120,6 +122,7 @@ AppState make_app_state(const AppOptions& options) {
   state.cast_options = options.cast_options;
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
+  state.check_command = options.check_command;
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
     const int columns = state.dimension == 2 ? state.camera2d.pixel_count() : state.camera3d.columns();
@@ -144,6 +147,7 @@ const char* app_options_help() {
          "  --font-scale S      lecture mode: scale every font by S in [0.5, 4]\n"
          "  --high-contrast     lecture mode: light, high-contrast theme\n"
          "  --lang fr|en        language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)\n"
+         "  --check \"CMD\"       Check my camera: run your program on the camera whenever it changes\n"
          "  --method M          the caster: automatic (default), plain, culled, footprint, binned (same "
          "image)\n"
          "  --precision P --intersect F --spp N --frame F --exact\n"

@@ -21,6 +21,7 @@ struct AppOptions {
   bool arccos_route = false;
   float font_scale = 1.0f;
   bool high_contrast = false;
+  std::string check_command;         // --check "CMD": the "Check my camera" panel's program
   std::optional<Language> language;  // --lang fr|en; default: the environment (LANGUAGE, LC_ALL, LANG)
   AccuracyFlags accuracy;    // --precision --intersect --spp --frame --exact (--placement: use --mistake arccos)
   CastOptions cast_options;  // --method

@@ -98,6 +98,10 @@ struct AppState {
   bool message_is_error = false;
   MessageSource message_source = MessageSource::general;
 
+  // ---- Check my camera (check_panel.h) ----
+  std::string check_command;  // --check CMD: handed to the panel at the next frame, then cleared
+  bool check_waiting = false;  // a verdict is on its way: the window keeps drawing (frame_needs_redraw)
+
   // ---- text inputs (Open and Save as have their own paths) ----
   char path_input[512] = {};      // Open
   char save_path[512] = {};       // Save as: never filled with the opened file's path

@@ -213,9 +213,16 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   const Rect status_area = layout_areas(state, width, height, layout);
   hover_image(state);
   // 4. what is derived from the state, all after the cast
+  if (!state.check_command.empty()) {  // --check CMD: the panel's program from the command line
+    check_.set_command(state.check_command, false);
+    state.check_command.clear();
+  }
+  check_.update(state, ImGui::GetTime());
+  state.check_waiting = check_.waiting();
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
+    check_.section(state, ImGui::GetTime());
   }
   ImGui::End();
   if (state.map_version != uploaded_map_version_) {
@@ -293,6 +300,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     // A frame just outside the image, so that where the background ends shows against the window.
     ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
                                         0, 0, 1.0f);
+    check_.overlay(state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
+                   high.y);                        // the student's wrong pixels
     if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "app_state.h"
+#include "check_panel.h"
 #include "colour_map_texture.h"
 #include "observer_view.h"
 #include "overhead_view.h"
@@ -71,6 +72,7 @@ class FrameRenderer {
   bool right_drag_observer_ = false;
   ShownValues shown_;
   ObserverCamera observer_view_;  // last frame's, for the mouse
+  CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at

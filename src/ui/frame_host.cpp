@@ -45,7 +45,7 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
 
 bool frame_needs_redraw(const AppState& state) {
   return state.cameras_dirty || state.refine_pending || state.request_screenshot ||
-         state.request_fullscreen || state.request_quit;
+         state.request_fullscreen || state.request_quit || state.check_waiting;
 }
 
 }  // namespace raycam::ui

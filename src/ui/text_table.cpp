@@ -300,6 +300,34 @@ const std::vector<Translation>& translation_table() {
       {"make an object the target", "prendre un objet comme cible"},
       {"click a pixel", "clic sur un pixel"},
       {"pin the ray inspector", "fixer l'inspecteur de rayon"},
+
+      // ---- check_panel.cpp: Check my camera ----
+      {"Check my camera###check", "Vérifier ma caméra###check"},
+      {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
+       "whenever "
+       "they change (README, \"Check your own camera\").",
+       "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
+       "vérifié "
+       "à chaque changement (README, \"Check your own camera\")."},
+      {"program###check_command", "programme###check_command"},
+      {"an answer file, not a program###check_is_file",
+       "un fichier de réponse, pas un programme###check_is_file"},
+      {"check when the camera changes###check_auto", "vérifier quand la caméra change###check_auto"},
+      {"Check now###check_now", "Vérifier###check_now"},
+      {"running… (%.1f s)", "en cours… (%.1f s)"},
+      {"pass: every pixel agrees", "réussi : chaque pixel est juste"},
+      {"fail: %lld of %lld pixels wrong (in red on the image)",
+       "échec : %lld pixels faux sur %lld (en rouge sur l'image)"},
+      {"%s: %s", "%s : %s"},
+      {"(for the camera before your last change)", "(pour la caméra d'avant votre dernier changement)"},
+      {"no sandbox: bubblewrap is not available here",
+       "pas de bac à sable : bubblewrap n'est pas disponible ici"},
+      {"no classic mistake reproduces this image", "aucune erreur classique ne reproduit cette image"},
+      {"pass", "réussi"},
+      {"fail", "échec"},
+      {"crash", "plantage"},
+      {"timeout", "trop long"},
+      {"bad-output", "sortie invalide"},
   };
   return table;
 }

@@ -288,3 +288,24 @@ TEST_CASE("the 2D screen segment marks pixel k = 0, and the eye's left at the ot
     CHECK_FALSE(colour_near(shot.image, m.to_screen(last), ui::kFirstPixelColour, 1, 20));
   }
 }
+
+TEST_CASE("the observer view shows the camera's screen at least a tenth of its height, at 1280x800",
+          "[render][views]") {
+  const Shot shot = shoot({}, 1280, 800);
+  const ui::ObserverCamera& observer = shot.layout.observer_camera;
+  const ui::Rect& view = shot.layout.observer;
+  double top = 1e9, bottom = -1e9;
+  for (const glm::dvec3& corner : shot.state.camera3d.screen_corners()) {
+    const glm::vec4 clip = observer.projection * observer.view * glm::vec4(glm::vec3(corner), 1.0f);
+    const double y = view.y + (1.0 - clip.y / clip.w) * 0.5 * view.h;  // NDC y up, screen y down
+    top = std::min(top, y), bottom = std::max(bottom, y);
+  }
+  CHECK(top >= view.y);
+  CHECK(bottom <= view.y + view.h);
+  CHECK(bottom - top >= 0.1 * view.h);
+  // And it is drawn there: the screen's cyan outline crosses the projected box's middle row.
+  bool cyan = false;
+  for (int x = int(view.x); x < int(view.x + view.w) && !cyan; ++x)
+    cyan = colour_near(shot.image, {float(x), float(0.5 * (top + bottom))}, ui::kScreenColour, 0, 60);
+  CHECK(cyan);
+}

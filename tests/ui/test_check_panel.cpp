@@ -1,0 +1,72 @@
+// "Check my camera" (src/ui/check_panel.h) without a window: the verdict on the current camera comes from a
+// thread of its own after the quiet time, a mistaken program is diagnosed, and a hanging one never blocks.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <thread>
+
+#include "app_options.h"
+#include "check_panel.h"
+
+using namespace raycam;
+using namespace raycam::ui;
+
+namespace {
+AppState classic_2d() {
+  AppOptions options;
+  options.view.scene_path = std::string(SCENES_DIR) + "/classic2d.json";
+  return make_app_state(options);
+}
+
+// Drives update() as frames would, `seconds` apart, until the check is idle (or 60 s pass).
+void settle(CameraCheck& check, const AppState& state, double& now) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  do {
+    now += 0.1;
+    check.update(state, now);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  } while (!check.up_to_date() && std::chrono::steady_clock::now() < deadline);
+}
+}  // namespace
+
+TEST_CASE("Check my camera grades the current camera in the background and names the mistake",
+          "[ui][check]") {
+  AppState state = classic_2d();
+  double now = 0;
+  CameraCheck check;
+  check.update(state, now);  // no command: nothing runs
+  CHECK_FALSE(check.busy());
+
+  check.set_command(EXAMPLE_STUDENT_CPP, false);
+  check.update(state, now);
+  CHECK_FALSE(check.busy());  // waits for the quiet time first
+  settle(check, state, now);
+  CHECK(check.status() == "pass");
+
+  check.set_command(std::string(MISTAKEN_STUDENT) + " --mistake mirrored", false);
+  settle(check, state, now);
+  CHECK(check.status() == "fail");
+  CHECK(check.wrong_pixels() > 0);
+  CHECK(check.top_diagnosis() == "mirrored");
+
+  // A new camera is checked again: the right program passes there too.
+  check.set_command(EXAMPLE_STUDENT_CPP, false);
+  state.orbit2d.theta += 0.5;
+  place_cameras(state);
+  settle(check, state, now);
+  CHECK(check.status() == "pass");
+}
+
+TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
+  AppState state = classic_2d();
+  CameraCheck check;
+  check.set_command(std::string("python3 ") + MISBEHAVING_PY + " hang", false);
+  const auto start = std::chrono::steady_clock::now();
+  for (double now = 0; now < 1.0; now += 0.05) check.update(state, now);  // 20 frames past the quiet time
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  for (double now = 1.0; now < 2.0; now += 0.05) check.update(state, now);
+  const double frames_took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(check.busy());       // still running (its timeout is 10 s)
+  CHECK(frames_took < 2.0);  // 40 frames, none waited for it
+  CHECK(check.status().empty());
+  CHECK_FALSE(check.up_to_date());
+}  // the destructor does not wait either: the worker finishes on its own
