@@ -15,8 +15,11 @@ Hit hit_as_cast(const AppState& state, PixelIndex pixel, const Ray& ray, const O
   hit.id = state.map.id_at(pixel.row, pixel.column);
   if (hit.id < 0 || std::size_t(hit.id) >= objects.size()) return Hit{};
   const auto& object = objects[std::size_t(hit.id)];
-  hit.t =
-      nearest_hit_t(ray.origin, ray.direction, object.centre, object.radius, state.accuracy.options.formula);
+  const IntersectFormula formula = state.accuracy.options.formula;
+  // Under the no_t_min mistake the caster keeps the smaller root whatever its sign: a hit behind the origin.
+  hit.t = state.mistakes.no_t_min
+              ? smaller_root_t(ray.origin, ray.direction, object.centre, object.radius, formula)
+              : nearest_hit_t(ray.origin, ray.direction, object.centre, object.radius, formula);
   return hit;
 }
 }  // namespace

@@ -140,3 +140,30 @@ TEST_CASE("the views draw the caster's hits, mistakes included", "[ui][mistakes]
       if (std::string(intersect) == "naive") CHECK(hits > 0);
     }
 }
+
+TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the caster found",
+          "[ui][mistakes]") {
+  // Hits behind the origin (no_t_min) and rays from the eye included: the end point is where the caster hit.
+  for (const char* id : {"", "no_t_min", "eye_origin"})
+    for (const char* view : {"2d", "3d"}) {
+      ui::AppState state = state_for({"--view", view, "--size", std::string(view) == "2d" ? "64" : "64x64"});
+      if (*id) ui::show_mistake(state, *ui::find_lesson(id));
+      ids_now(state);
+      int hits = 0;
+      for (const ui::InspectedRay& ray : ui::primary_ray_fan(state, 1000)) {
+        if (ray.hit.id < 0) continue;
+        ++hits;
+        const glm::dvec3 centre =
+            std::string(view) == "2d"
+                ? glm::dvec3(state.file.scene2d.circles[std::size_t(ray.hit.id)].centre, 0.0)
+                : state.file.scene3d.spheres[std::size_t(ray.hit.id)].centre;
+        const double radius = std::string(view) == "2d"
+                                  ? state.file.scene2d.circles[std::size_t(ray.hit.id)].radius
+                                  : state.file.scene3d.spheres[std::size_t(ray.hit.id)].radius;
+        INFO(view << " " << id << " column " << ray.pixel.column);
+        REQUIRE(std::isfinite(ray.hit.t));
+        CHECK(glm::length(ray.end(0.0) - centre) == Approx(radius).epsilon(1e-9));
+      }
+      CHECK(hits > 0);
+    }
+}
