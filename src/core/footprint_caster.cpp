@@ -86,7 +86,8 @@ void bin_by_band(const std::vector<Candidate>& visible, int bands, Bands& binned
 template <class Ray>
 struct alignas(64) DepthBuffer {
   std::vector<double> depth;
-  std::vector<int> id;
+  std::vector<int> id;       // the object seen (its index in the scene), -1 for none
+  std::vector<Rgb8> colour;  // its colour
   std::vector<unsigned char> touched;
   std::vector<Ray> rays;
   long long tests = 0, touched_pixels = 0;
@@ -94,23 +95,25 @@ struct alignas(64) DepthBuffer {
     rays.resize(std::size_t(line));
     depth.assign(pixels, kNoHit<double>);
     id.assign(pixels, -1);
+    colour.resize(pixels);  // read only where id ≥ 0
     touched.assign(pixels, 0);
   }
   // The plain loop's depth test: strict '<' in object order keeps the lower index on a tie.
   template <class Vector>
-  void test(std::size_t p, const Ray& ray, const Vector& centre, double radius, int candidate,
-            IntersectFormula formula) {
+  void test(std::size_t p, const Ray& ray, const Vector& centre, double radius, int object,
+            Rgb8 object_colour, IntersectFormula formula) {
     touched_pixels += touched[p] == 0;
     touched[p] = 1;
     const double t = nearest_hit_t(ray.origin, ray.direction, centre, radius, formula);
     ++tests;
     if (t < depth[p]) {
       depth[p] = t;
-      id[p] = candidate;
+      id[p] = object;
+      colour[p] = object_colour;  // kept now, while the object is in cache: no lookup per pixel afterwards
     }
   }
 };
-using BandScratch = DepthBuffer<Ray3D>;  // ids are indices into the candidates, in object order
+using BandScratch = DepthBuffer<Ray3D>;
 
 // Memory a cast reuses from the last cast on the same calling thread. Fresh megabytes each frame would cost
 // page faults that no second thread can share (measured: projecting 10⁵ spheres took as long on two
@@ -138,18 +141,17 @@ void splat(const Camera3D& camera, const std::vector<Candidate>& visible, int j,
     const std::size_t line = std::size_t(row - row_begin) * camera.columns();
     for (int column = box.columns.first; column <= box.columns.last; ++column)
       scratch.test(line + std::size_t(column), scratch.rays[std::size_t(column - box.columns.first)],
-                   candidate.centre, candidate.radius, j, formula);
+                   candidate.centre, candidate.radius, candidate.object, candidate.colour, formula);
   }
 }
 
-void write_band(Rgb8 background, const std::vector<Candidate>& visible, int row_begin, int row_end,
-                const BandScratch& scratch, ColourMap& out) {
+void write_band(Rgb8 background, int row_begin, int row_end, const BandScratch& scratch, ColourMap& out) {
   const std::size_t offset = out.index(row_begin, 0);
   const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
   for (std::size_t p = 0; p < pixels; ++p) {
-    const int j = scratch.id[p];
-    out.ids[offset + p] = j < 0 ? -1 : visible[std::size_t(j)].object;
-    out.colours[offset + p] = j < 0 ? background : visible[std::size_t(j)].colour;
+    const int object = scratch.id[p];
+    out.ids[offset + p] = object;
+    out.colours[offset + p] = object < 0 ? background : scratch.colour[p];
   }
 }
 }  // namespace
@@ -189,8 +191,9 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
         for (int column = 0; column < columns; ++column) {
           const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
           for (int j = 0; j < int(visible.size()); ++j)
-            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)].centre, visible[std::size_t(j)].radius, j,
-                   options.formula);
+            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)].centre,
+                   visible[std::size_t(j)].radius, visible[std::size_t(j)].object,
+                   visible[std::size_t(j)].colour, options.formula);
         }
       }
     } else if (method == CastMethod::binned) {
@@ -203,7 +206,7 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
           splat(camera, visible, j, row_begin, row_end, options.formula, s);
       }
     }
-    write_band(scene.background, visible, row_begin, row_end, s, out);
+    write_band(scene.background, row_begin, row_end, s, out);
   });
 
   stats.rays = pixels;
@@ -243,14 +246,14 @@ void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& o
     const Circle& circle = scene.circles[std::size_t(visible[j])];
     camera.primary_rays(range[j].first, range[j].last, bar.rays.data());
     for (int k = range[j].first; k <= range[j].last; ++k)
-      bar.test(std::size_t(k), bar.rays[std::size_t(k - range[j].first)], circle.centre, circle.radius, visible[j],
-               options.formula);
+      bar.test(std::size_t(k), bar.rays[std::size_t(k - range[j].first)], circle.centre, circle.radius,
+               visible[j], circle.colour, options.formula);
   }
   for (int k = 0; k < n; ++k) {
     const std::size_t column = std::size_t(camera.column_of_pixel(k));
     const int object = bar.id[std::size_t(k)];
     out.ids[column] = object;
-    out.colours[column] = object < 0 ? scene.background : scene.circles[std::size_t(object)].colour;
+    out.colours[column] = object < 0 ? scene.background : bar.colour[std::size_t(k)];
   }
   stats = CastStats{n, bar.tests, static_cast<long long>(scene.circles.size() - visible.size()),
                     n - bar.touched_pixels, 1};
