@@ -80,27 +80,76 @@ void same_line_if_fits(float width) {
 }
 
 void explain(const char* text) {
+  // French typography: a no-break space before ; : ? ! so that a wrapped line never starts with one (the
+  // core's texts, e.g. the mistakes', are written with plain spaces).
+  std::string shown = text;
+  for (const char* mark : {" ;", " :", " ?", " !"})
+    for (std::size_t at = shown.find(mark); at != std::string::npos; at = shown.find(mark, at + 2))
+      shown.replace(at, 1, "\u00a0");
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  ImGui::TextWrapped("%s", text);
+  ImGui::TextWrapped("%s", shown.c_str());
   ImGui::PopStyleColor();
 }
 
+// As many decimals as fit the panel (3 at 1×, fewer at lecture sizes): a number is never cut. Right-aligned.
 template <int N, class Matrix>
 void matrix_table(const char* id, const Matrix& m) {
+  double widest = 0;
+  for (int row = 0; row < N; ++row)
+    for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
+  int decimals = 3;
+  for (; decimals > 0; --decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, -widest);  // the sign takes room too
+    const float cell = ImGui::CalcTextSize(text).x + 2 * ImGui::GetStyle().CellPadding.x + 2;
+    if (N * cell <= ImGui::GetContentRegionAvail().x) break;
+  }
   if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame)) return;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) {
       ImGui::TableNextColumn();
-      ImGui::Text("%8.3f", m[column][row]);  // GLM is column-major
+      char text[64];
+      std::snprintf(text, sizeof text, "%.*f", decimals, m[column][row]);  // GLM is column-major
+      const float pad = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(text).x;
+      if (pad > 0) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + pad);
+      ImGui::TextUnformatted(text);
     }
   ImGui::EndTable();
+}
+
+// A checkbox whose label wraps under itself when the line is too short for it (lecture sizes): the label
+// is never cut. Clicking the label toggles too, as with ImGui's own checkbox.
+bool checkbox(const char* label, bool* value) {
+  const float box = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
+  if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)
+    return ImGui::Checkbox(label, value);
+  ImGui::PushID(label);
+  bool changed = ImGui::Checkbox("##box", value);
+  ImGui::PopID();
+  ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+  const std::string text = label;
+  ImGui::TextWrapped("%s", text.substr(0, text.find("##")).c_str());
+  if (ImGui::IsItemClicked()) {
+    *value = !*value;
+    changed = true;
+  }
+  return changed;
+}
+
+// A section header: the full title if it fits the panel's width, else the brief one (a header never wraps).
+bool section(const char* full, const char* brief, ImGuiTreeNodeFlags flags = 0) {
+  const std::string text = full;
+  const std::string shown = text.substr(0, text.find("##"));
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing() -
+                     ImGui::GetStyle().FramePadding.x;
+  return ImGui::CollapsingHeader(ImGui::CalcTextSize(shown.c_str()).x <= room ? full : brief, flags);
 }
 
 }  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!section(tr("Camera###camera"), tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int dimension = state.dimension;
   bool mode_changed = ImGui::RadioButton(tr("2D camera"), &dimension, 2);
   same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr("3D camera")).x);
@@ -157,7 +206,7 @@ void camera_section(AppState& state) {
 
 // ---- construction of M_d -------------------------------------------------------------------------------
 void construction_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Construction of M_d###construction"), ImGuiTreeNodeFlags_DefaultOpen))
+  if (!section(tr("Construction of M_d###construction"), "M_d###construction", ImGuiTreeNodeFlags_DefaultOpen))
     return;
   const int steps = construction_steps(state);
   int step = state.construction_step < 0 ? steps : state.construction_step;
@@ -188,7 +237,7 @@ void construction_section(AppState& state) {
   }
   if (state.dimension == 2) {
     const Placement2D& p = state.camera2d.placement();
-    ImGui::Text(tr("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"), glm::degrees(p.alpha));
+    ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
     if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("R(α)")) {
       matrix_table<3>("R", p.rotation);
@@ -200,7 +249,7 @@ void construction_section(AppState& state) {
     matrix_table<3>("M", construction_step(p, step));
   } else {
     const Placement3D& p = state.camera3d.placement();
-    ImGui::TextUnformatted("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
+    ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
     if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
       matrix_table<4>("Roll", p.roll);
@@ -223,7 +272,7 @@ void construction_section(AppState& state) {
 
 // ---- ray inspector -------------------------------------------------------------------------------------
 void inspector_section(const AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Ray inspector###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!section(tr("Ray inspector###inspector"), tr("Ray###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const auto pixel = active_pixel(state);
   if (!pixel) {
     explain(tr("Hover a pixel of the colour bar or image to see its ray; click to pin it."));
@@ -277,15 +326,15 @@ void arccos_error_line(const AppState& state) {
 
 void mistakes_section(AppState& state) {
   const bool any = !mistakes_on(state).empty();
-  if (!ImGui::CollapsingHeader(tr("Classic mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+  if (!section(tr("Classic mistakes###mistakes"), tr("Mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
   for (const MistakeLesson& lesson : mistake_lessons()) {
     if (!mistake_applies(state, lesson)) continue;
     ImGui::PushID(lesson.id);
-    changed |= ImGui::Checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    changed |= checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
     if (lesson.show_me) {
-      ImGui::SameLine();
+      same_line_if_fits(ImGui::CalcTextSize(tr("show me")).x + 2 * ImGui::GetStyle().FramePadding.x);
       if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
     }
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
@@ -324,7 +373,7 @@ bool choice(const char* label, T& value, const Options& options) {
 }  // namespace
 
 void caster_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Caster and accuracy###caster"),
+  if (!section(tr("Caster and accuracy###caster"), tr("Caster###caster"),
                                uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   static constexpr std::pair<Scalar, const char*> kScalars[] = {{Scalar::float32, tr_later("float")},
@@ -348,9 +397,9 @@ void caster_section(AppState& state) {
   changed |= choice(tr("precision###precision"), knobs.scalar, kScalars);
   changed |= choice(tr("intersection###intersection"), knobs.formula, kFormulas);
   changed |= choice(tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
-  changed |= ImGui::Checkbox(tr("camera-relative rays"), &knobs.camera_relative);
+  changed |= checkbox(tr("camera-relative rays"), &knobs.camera_relative);
   if (state.dimension == 2)
-    changed |= ImGui::Checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
+    changed |= checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
               ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
                    "settings to use for what: README, Accuracy.")
@@ -363,7 +412,7 @@ void caster_section(AppState& state) {
 void files_section(AppState& state) {
   const bool has_message = !state.message.empty() && state.message_source == MessageSource::files;
   if (has_message || !state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
-  if (!ImGui::CollapsingHeader(tr("Scene file###files"))) return;
+  if (!section(tr("Scene file###files"), tr("Files###files"))) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
   const auto path_box = [](const char* label, char* buffer, std::size_t size) {
     return labelled(label, [&](const char* l) {
@@ -402,7 +451,7 @@ void files_section(AppState& state) {
 
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
-  if (!ImGui::CollapsingHeader(tr("Lecture mode###lecture"))) return;
+  if (!section(tr("Lecture mode###lecture"), tr("Lecture###lecture"))) return;
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
   static float editing = -1.0f;
   float scale = editing > 0 ? editing : state.font_scale;
@@ -415,7 +464,7 @@ void lecture_section(AppState& state) {
     state.font_scale = scale;
     editing = -1.0f;
   }
-  ImGui::Checkbox(tr("high contrast"), &state.high_contrast);
+  checkbox(tr("high contrast"), &state.high_contrast);
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(tr("Language / Langue###language"), state.language, kLanguages);

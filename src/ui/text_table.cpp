@@ -16,25 +16,30 @@ const std::vector<Translation>& translation_table() {
 
       // ---- frame.cpp: window titles ----
       {"Colour bar: n = %d pixels, column 0 = the eye's left###image",
-       "Barre de couleurs : n = %d pixels, colonne 0 = gauche de l'œil###image"},
-      {"Image: %d × %d###image", "Image : %d × %d###image"},
-      {"Colour bar: n = %d###image", "Barre de couleurs : n = %d###image"},
+       "Barre de couleurs : n = %d pixels, colonne 0 = gauche de l'œil###image"},
+      {"Image: %d × %d###image", "Image : %d × %d###image"},
+      {"Colour bar: n = %d###image", "Barre de couleurs : n = %d###image"},
       {"%d × %d###image", "%d × %d###image"},
       {"Overhead view###overhead", "Vue de dessus###overhead"},
       {"Observer: the camera among the spheres###observer",
-       "Observateur : la caméra parmi les sphères###observer"},
+       "Observateur : la caméra parmi les sphères###observer"},
       {"Observer###observer", "Observateur###observer"},
       {"Overhead view: the plane, the camera and its rays###overhead",
-       "Vue de dessus : le plan, la caméra et ses rayons###overhead"},
+       "Vue de dessus : le plan, la caméra et ses rayons###overhead"},
       {"Overhead view: looking down the z axis###overhead",
-       "Vue de dessus : selon l'axe z vers le bas###overhead"},
+       "Vue de dessus : selon l'axe z vers le bas###overhead"},
       {"Observer: the camera among the spheres (left drag: orbit the camera, right drag: turn the observer, "
        "ctrl+wheel: zoom)###observer",
-       "Observateur : la caméra parmi les sphères (glisser : tourner la caméra, clic droit : tourner "
-       "l'observateur, ctrl+molette : zoom)###observer"},
+       "Observateur : la caméra parmi les sphères (glisser : tourner la caméra, clic droit : tourner "
+       "l'observateur, ctrl+molette : zoom)###observer"},
 
       // ---- panels.cpp: camera ----
       {"Camera###camera", "Caméra###camera"},
+      {"Ray###inspector", "Rayon###inspector"},
+      {"Mistakes###mistakes", "Erreurs###mistakes"},
+      {"Caster###caster", "Lanceur###caster"},
+      {"Files###files", "Fichiers###files"},
+      {"Lecture###lecture", "Cours###lecture"},
       {"2D camera", "Caméra 2D"},
       {"3D camera", "Caméra 3D"},
       {"d_f focal distance###df", "d_f distance focale###df"},
@@ -48,45 +53,45 @@ const std::vector<Translation>& translation_table() {
       {"n = %d × %d, field of view %.1f°", "n = %d × %d, angle d'ouverture %.1f°"},
       {"Reset camera", "Réinitialiser la caméra"},
       {"drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target",
-       "glisser dans une vue : tourner ; molette : d ; maj+molette : d_f ; double-clic sur un objet : cible"},
+       "glisser dans une vue : tourner ; molette : d ; maj+molette : d_f ; double-clic sur un objet : cible"},
       {"switched to the built-in %dD demo scene", "passage à la scène de démonstration %dD intégrée"},
 
       // ---- panels.cpp: construction of M_d ----
       {"Construction of M_d###construction", "Construction de M_d###construction"},
       {"step###step", "étape###step"},
-      {"a: the canonical camera (identity)", "a : la caméra canonique (identité)"},
-      {"b: H(1, d_f) sets the focal distance", "b : l'homothétie H(1, d_f) règle la distance focale"},
-      {"c: R(θ − 90°) turns u0 onto v", "c : R(θ − 90°) aligne u0 sur v"},
-      {"d: T(OP) moves the screen to P", "d : T(OP) place l'écran en P"},
+      {"a: the canonical camera (identity)", "a : la caméra canonique (identité)"},
+      {"b: H(1, d_f) sets the focal distance", "b : l'homothétie H(1, d_f) règle la distance focale"},
+      {"c: R(θ − 90°) turns u0 onto v", "c : R(θ − 90°) aligne u0 sur v"},
+      {"d: T(OP) moves the screen to P", "d : T(OP) place l'écran en P"},
       {"the canonical camera (identity)", "la caméra canonique (identité)"},
-      {"1: H(1, 1, d_f) sets the focal distance", "1 : l'homothétie H(1, 1, d_f) règle la distance focale"},
-      {"2: Rz(+90°) rolls the image upright", "2 : Rz(+90°) redresse l'image"},
-      {"3: Ry(φ) tilts u0 into the plane y = 0", "3 : Ry(φ) place u0 dans le plan y = 0"},
-      {"4: Rz(θ) turns u0 onto v", "4 : Rz(θ) rend u0 colinéaire à v"},
-      {"5: T(OP) moves the screen to P", "5 : T(OP) place l'écran en P"},
+      {"1: H(1, 1, d_f) sets the focal distance", "1 : l'homothétie H(1, 1, d_f) règle la distance focale"},
+      {"2: Rz(+90°) rolls the image upright", "2 : Rz(+90°) redresse l'image"},
+      {"3: Ry(φ) tilts u0 into the plane y = 0", "3 : Ry(φ) place u0 dans le plan y = 0"},
+      {"4: Rz(θ) turns u0 onto v", "4 : Rz(θ) rend u0 colinéaire à v"},
+      {"5: T(OP) moves the screen to P", "5 : T(OP) place l'écran en P"},
       {"M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"},
       {"product of the first %d factors", "produit des %d premiers facteurs"},
 
       // ---- panels.cpp: ray inspector ----
       {"Ray inspector###inspector", "Inspecteur de rayon###inspector"},
       {"Hover a pixel of the colour bar or image to see its ray; click to pin it.",
-       "Survolez un pixel de la barre de couleurs ou de l'image pour voir son rayon ; cliquez pour le "
+       "Survolez un pixel de la barre de couleurs ou de l'image pour voir son rayon ; cliquez pour le "
        "fixer."},
       {"column %d = pixel k = %d (k = n−1−column)", "colonne %d = pixel k = %d (k = n−1−colonne)"},
       {"row %d, column %d", "ligne %d, colonne %d"},
-      {"hit: nothing (background)", "touché : rien (fond)"},
-      {"hit: object %d %s at t = %.4f", "touché : objet %d %s en t = %.4f"},
+      {"hit: nothing (background)", "touché : rien (fond)"},
+      {"hit: object %d %s at t = %.4f", "touché : objet %d %s en t = %.4f"},
 
       // ---- panels.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
       {"arccos route near a pole", "route arccos près d'un pôle"},
       {"show me", "montre-moi"},
-      {"Look: %s", "Regarder : %s"},
+      {"Look: %s", "Regarder : %s"},
 
       // ---- frame.cpp / panels.cpp: views that hold still and follow (i11views) ----
       {"Fit view (F)", "Cadrer (F)"},
       {"holds still while the camera moves; drag: the camera around C",
-       "reste fixe quand la caméra bouge ; glisser : la caméra autour de C"},
+       "reste fixe quand la caméra bouge ; glisser : la caméra autour de C"},
       {"F", "F"},
       {"fit the overhead view to the scene and the camera",
        "cadrer la vue de dessus sur la scène et la caméra"},
@@ -117,23 +122,23 @@ const std::vector<Translation>& translation_table() {
       {"show the handout's ψ0 = −π/2", "montrer le ψ0 = −π/2 du TD"},
 
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
-      {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
+      {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
       {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "
        "symmetric "
        "image.",
-       "Chaque rayon part à un demi-pixel (1/n = %.3g) de son centre : une scène symétrique ne donne plus "
+       "Chaque rayon part à un demi-pixel (1/n = %.3g) de son centre : une scène symétrique ne donne plus "
        "une "
        "image symétrique."},
       {"At n = %d half a pixel is too small to see: show me.",
-       "Avec n = %d un demi-pixel est trop petit pour se voir : montre-moi."},
+       "Avec n = %d un demi-pixel est trop petit pour se voir : montre-moi."},
       {"Here |u| = %.2f on the axis to %.2f at the edges.", "Ici |u| = %.2f sur l'axe à %.2f aux bords."},
       {"The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only if "
        "|u| = "
        "1, and otherwise grows with how far the object is: rays miss everything not touching the screen, so "
        "the "
        "image is background (the ground too). With the naive formula objects swell instead.",
-       "Le test stable prend |f − (f·u)u| pour la distance du rayon au centre ; ce n'est une distance que si "
-       "|u| = 1, sinon elle grandit avec l'éloignement de l'objet : les rayons manquent tout ce qui ne "
+       "Le test stable prend |f − (f·u)u| pour la distance du rayon au centre ; ce n'est une distance que si "
+       "|u| = 1, sinon elle grandit avec l'éloignement de l'objet : les rayons manquent tout ce qui ne "
        "touche pas "
        "l'écran, l'image n'est que fond (le sol aussi). Avec la formule naïve, les objets gonflent au "
        "contraire."},
@@ -142,47 +147,47 @@ const std::vector<Translation>& translation_table() {
        "1)·b²) of the centre, so every object swells, the far ones most, and covers its neighbours; t is "
        "wrong "
        "too. With the stable formula objects vanish instead.",
-       "Le test naïf Δ = b² − c utilise b = f·u, trop grand d'un facteur |u| : un rayon touche s'il passe à "
+       "Le test naïf Δ = b² − c utilise b = f·u, trop grand d'un facteur |u| : un rayon touche s'il passe à "
        "moins "
        "de √(r² + (|u|² − 1)·b²) du centre, donc chaque objet gonfle, les lointains le plus, et recouvre ses "
-       "voisins ; t est faux aussi. Avec la formule stable, les objets disparaissent au contraire."},
+       "voisins ; t est faux aussi. Avec la formule stable, les objets disparaissent au contraire."},
       {"Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
        "error "
        "√(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). Show me "
        "goes "
        "to 3D, where the pole makes it visible.",
-       "Placer la caméra à partir de P et C avec l'arccos du TD : un arrondi ε de l'entrée devient une "
+       "Placer la caméra à partir de P et C avec l'arccos du TD : un arrondi ε de l'entrée devient une "
        "erreur "
-       "d'angle √(2ε), au plus ~1e-8 rad en 2D : aucun pixel ne bouge, quels que soient les réglages (les "
+       "d'angle √(2ε), au plus ~1e-8 rad en 2D : aucun pixel ne bouge, quels que soient les réglages (les "
        "nombres ci-dessous le montrent). « Montre-moi » passe en 3D, où le pôle la rend visible."},
       {"Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes "
        "an "
        "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.",
-       "Placer la caméra à partir de P et C avec l'arccos du TD : près d'un pôle, un arrondi ε de l'entrée "
+       "Placer la caméra à partir de P et C avec l'arccos du TD : près d'un pôle, un arrondi ε de l'entrée "
        "devient "
-       "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
+       "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
       {"res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the image "
        "jump "
        "half a pixel",
-       "res 0,05 : chaque rayon part du bord gauche d'un pixel (graduations sur l'écran) ; cocher et "
+       "res 0,05 : chaque rayon part du bord gauche d'un pixel (graduations sur l'écran) ; cocher et "
        "décocher pour "
        "voir l'image sauter d'un demi-pixel"},
       {"d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image",
-       "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
+       "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
       {"res·N = 12.75: floor gives 12 pixels, round 13; count them",
-       "res·N = 12,75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
+       "res·N = 12,75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
       {"d_f = 3: without H the field of view stays 90°, as at d_f = 1",
-       "d_f = 3 : sans H l'angle d'ouverture reste 90°, comme avec d_f = 1"},
+       "d_f = 3 : sans H l'angle d'ouverture reste 90°, comme avec d_f = 1"},
       {"the object nearest the target is now between the eye and the screen: the correct camera does not see "
        "it, "
        "the mistaken one shows it",
-       "l'objet le plus proche de la cible est maintenant entre l'œil et l'écran : la caméra correcte ne le "
+       "l'objet le plus proche de la cible est maintenant entre l'œil et l'écran : la caméra correcte ne le "
        "voit "
        "pas, la caméra erronée le montre"},
       {"φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare",
-       "φ = 1e-7° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
-      {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
-      {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
+       "φ = 1e-7° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
+      {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
+      {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
 
       // ---- panels.cpp: caster and accuracy ----
       {"Caster and accuracy###caster", "Lancer de rayons et précision###caster"},
@@ -198,7 +203,7 @@ const std::vector<Translation>& translation_table() {
        "and test each object only on the pixels its projection can cover. The status line's tooltip shows "
        "the "
        "work done and skipped.",
-       "Toutes les méthodes donnent l'image de la boucle simple ; les plus rapides écartent les objets "
+       "Toutes les méthodes donnent l'image de la boucle simple ; les plus rapides écartent les objets "
        "derrière "
        "l'écran ou hors champ et ne testent chaque objet que sur les pixels que sa projection peut couvrir. "
        "L'infobulle de la ligne d'état montre le travail fait et évité."},
@@ -215,11 +220,11 @@ const std::vector<Translation>& translation_table() {
       {"These knobs use the reference caster: slower, and the method above is not used. Which settings to "
        "use "
        "for what: README, Accuracy.",
-       "Ces réglages utilisent le lanceur de référence : plus lent, et la méthode ci-dessus n'est pas "
+       "Ces réglages utilisent le lanceur de référence : plus lent, et la méthode ci-dessus n'est pas "
        "utilisée. "
-       "Quels réglages pour quoi : README, Accuracy."},
+       "Quels réglages pour quoi : README, Accuracy."},
       {"double, 1 sample, world coordinates: the fast caster.",
-       "double, 1 échantillon, coordonnées du monde : le lanceur rapide."},
+       "double, 1 échantillon, coordonnées du monde : le lanceur rapide."},
 
       // ---- panels.cpp: files ----
       {"Scene file###files", "Fichier de scène###files"},
@@ -227,21 +232,21 @@ const std::vector<Translation>& translation_table() {
       {"Open", "Ouvrir"},
       {"save as###save_path", "enregistrer sous###save_path"},
       {"Save camera preset as…", "Enregistrer la caméra sous…"},
-      {"%s already exists. Replace it?", "%s existe déjà. Le remplacer ?"},
+      {"%s already exists. Replace it?", "%s existe déjà. Le remplacer ?"},
       {"Replace", "Remplacer"},
       {"Cancel", "Annuler"},
       {"Save as: type the path of the file to write",
-       "Enregistrer sous : tapez le chemin du fichier à écrire"},
-      {"cannot open %s: %s", "impossible d'ouvrir %s : %s"},
-      {"cannot open: %s", "impossible d'ouvrir : %s"},
-      {"cannot save: %s", "impossible d'enregistrer : %s"},
+       "Enregistrer sous : tapez le chemin du fichier à écrire"},
+      {"cannot open %s: %s", "impossible d'ouvrir %s : %s"},
+      {"cannot open: %s", "impossible d'ouvrir : %s"},
+      {"cannot save: %s", "impossible d'enregistrer : %s"},
       {"demo scene", "scène de démonstration"},
       {"or drop a scene file on the window", "ou déposez un fichier de scène sur la fenêtre"},
       {"export###export", "export###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
       {"Screenshot (F12)", "Capture d'écran (F12)"},
-      {"wrote %s", "écrit : %s"},
-      {"opened %s", "ouvert : %s"},
+      {"wrote %s", "écrit : %s"},
+      {"opened %s", "ouvert : %s"},
       {"saved the camera preset to %s", "caméra enregistrée dans %s"},
 
       // ---- panels.cpp: lecture mode ----
@@ -254,7 +259,7 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: status line ----
       {"frame %.1f ms · cast %.2f ms (%s)", "affichage %.1f ms · lancer %.2f ms (%s)"},
       {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer %.2f ms"},
-      {"caster: %s", "lanceur : %s"},
+      {"caster: %s", "lanceur : %s"},
       {"%lld casts in %lld frames", "%lld lancers en %lld images"},
       {"rays %lld, %lld pixels skipped", "rayons %lld, %lld pixels évités"},
       {"intersection tests %lld (%.1f%% of the plain loop)",
@@ -287,13 +292,13 @@ const std::vector<Translation>& translation_table() {
       {"2D / 3D", "2D / 3D"},
       {"Esc", "Échap"},
       {"leave a text field; else unpin the inspected pixel",
-       "quitter un champ de texte ; sinon libérer le pixel inspecté"},
+       "quitter un champ de texte ; sinon libérer le pixel inspecté"},
       {"mouse drag", "glisser"},
       {"orbit the camera (overhead: around the target)",
-       "tourner la caméra (vue de dessus : autour de la cible)"},
+       "tourner la caméra (vue de dessus : autour de la cible)"},
       {"wheel", "molette"},
       {"d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom",
-       "d ;  maj+molette : d_f ;  ctrl+molette (observateur) : zoom"},
+       "d ;  maj+molette : d_f ;  ctrl+molette (observateur) : zoom"},
       {"right drag", "glisser (clic droit)"},
       {"turn the observer (3D)", "tourner l'observateur (3D)"},
       {"double-click", "double-clic"},

@@ -132,7 +132,7 @@ TEST_CASE("every string the window shows is in the table", "[ui][text]") {
 TEST_CASE("tr shows French when the language is French, and trf formats after translating", "[ui][text]") {
   ui::set_language(ui::Language::fr);
   CHECK(std::string(ui::tr("Camera###camera")) == "Caméra###camera");
-  CHECK(ui::trf("opened %s", "a.json") == "ouvert : a.json");
+  CHECK(ui::trf("opened %s", "a.json") == "ouvert\u00a0: a.json");  // a no-break space before the colon
   ui::set_language(ui::Language::en);
   CHECK(std::string(ui::tr("Camera###camera")) == "Camera###camera");
   CHECK(ui::trf("opened %s", "a.json") == "opened a.json");
