@@ -104,7 +104,9 @@ class Camera2D {
 
   void set_orbit(const Orbit2D& orbit);
   // Free placement from the screen centre P and target C (P ≠ C): d = |CP|, θ = angle of CP.
-  void set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route = AngleRoute::stable);
+  void set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route = AngleRoute::stable) {
+    set_orbit(free_orbit(position, target, df, route));
+  }
   const Orbit2D& orbit() const { return orbit_; }
 
   void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d (once)

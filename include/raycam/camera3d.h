@@ -108,7 +108,9 @@ class Camera3D {
 
   void set_orbit(const Orbit3D& orbit);
   // Free placement (the handout's second route): screen centre P, target C (P ≠ C).
-  void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable);
+  void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable) {
+    set_orbit(free_orbit(position, target, df, route));
+  }
   const Orbit3D& orbit() const { return orbit_; }
 
   void set_mistakes(const ClassicMistakes& mistakes);  // rebuilds M_d (once)

@@ -68,20 +68,17 @@ int run_stress_table(bool long_sweep, const std::string& csv_path) {
       std::fprintf(stderr, "NON-FINITE: %s %s %s\n", key.c_str(), name.c_str(), config_name(c).c_str());
     }
   };
-  for (const StressCase2D& stress_case : stress_cases_2d(long_sweep)) {
-    const CoverageImage reference = stress_reference(stress_case);
-    for (std::size_t i = 0; i < configs.size(); ++i)
-      record(stress_case.group, stress_case.name, 2, i,
-             measure(stress_case, reference,
-                     ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
-  }
-  for (const StressCase3D& stress_case : stress_cases_3d(long_sweep)) {
-    const CoverageImage reference = stress_reference(stress_case);
-    for (std::size_t i = 0; i < configs.size(); ++i)
-      record(stress_case.group, stress_case.name, 3, i,
-             measure(stress_case, reference,
-                     ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
-  }
+  auto sweep = [&](const auto& cases, int dimension) {  // the 2D and the 3D cases alike
+    for (const auto& stress_case : cases) {
+      const CoverageImage reference = stress_reference(stress_case);
+      for (std::size_t i = 0; i < configs.size(); ++i)
+        record(stress_case.group, stress_case.name, dimension, i,
+               measure(stress_case, reference,
+                       ReferenceOptions{configs[i].scalar, configs[i].formula, 1, configs[i].relative}));
+    }
+  };
+  sweep(stress_cases_2d(long_sweep), 2);
+  sweep(stress_cases_3d(long_sweep), 3);
   std::printf("Worst fraction of pixel ids differing from the exact reference (%s sweep):\n\n| setting |",
               long_sweep ? "long" : "short");
   for (const Config& c : configs) std::printf(" %s |", config_name(c).c_str());

@@ -110,14 +110,10 @@ void Camera2D::set_orbit(const Orbit2D& orbit) {
   orbit_ = orbit;
 }
 
-void Camera2D::set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route) {
-  set_orbit(free_orbit(position, target, df, route));
-}
-
 void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
-  pixel_count_ = detail::useful_size(res_, max_pixels_, mistakes_.res_truncated);
+  set_res(res_);  // res_truncated changes n
 }
 
 glm::dvec2 Camera2D::screen_centre() const {

@@ -142,15 +142,10 @@ void Camera3D::set_orbit(const Orbit3D& orbit) {
   orbit_ = orbit;
 }
 
-void Camera3D::set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route) {
-  set_orbit(free_orbit(position, target, df, route));
-}
-
 void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;
-  columns_ = detail::useful_size(res_columns_, max_columns_, mistakes_.res_truncated);
-  rows_ = detail::useful_size(res_rows_, max_rows_, mistakes_.res_truncated);
+  set_res(res_columns_, res_rows_);  // res_truncated changes the sizes
 }
 
 glm::dvec3 Camera3D::screen_centre() const {

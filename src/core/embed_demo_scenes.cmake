@@ -37,25 +37,28 @@ function(scene_initialiser path kind out_background out_objects)
   set(${out_objects} "${objects}" PARENT_SCOPE)
 endfunction()
 
-scene_initialiser(${SCENE_2D} circle background_2d circles)
-scene_initialiser(${SCENE_3D} sphere background_3d spheres)
-file(WRITE ${OUTPUT} "// Generated from scenes/classic2d.json and scenes/classic3d.json by src/core/embed_demo_scenes.cmake.
+set(body "// Generated from scenes/classic2d.json and scenes/classic3d.json by src/core/embed_demo_scenes.cmake.
 // Do not edit: edit the scene files.
 #pragma once
 namespace raycam::generated {
-inline Scene2D demo_scene_2d() {
-  Scene2D scene;
-  scene.background = Rgb8${background_2d};
-  scene.circles = {
-${circles}  };
-  return scene;
-}
-inline Scene3D demo_scene_3d() {
-  Scene3D scene;
-  scene.background = Rgb8${background_3d};
-  scene.spheres = {
-${spheres}  };
-  return scene;
-}
-}  // namespace raycam::generated
 ")
+foreach(dimension 2 3)
+  if(dimension EQUAL 2)
+    set(kind circle)
+    set(list circles)
+  else()
+    set(kind sphere)
+    set(list spheres)
+  endif()
+  scene_initialiser(${SCENE_${dimension}D} ${kind} background objects)
+  string(APPEND body "inline Scene${dimension}D demo_scene_${dimension}d() {
+  Scene${dimension}D scene;
+  scene.background = Rgb8${background};
+  scene.${list} = {
+${objects}  };
+  return scene;
+}
+")
+endforeach()
+string(APPEND body "}  // namespace raycam::generated\n")
+file(WRITE ${OUTPUT} "${body}")

@@ -19,28 +19,23 @@ void require_object_count(std::size_t count) {
 std::string object_field(std::size_t index, const char* field) {
   return "objects[" + std::to_string(index) + "]." + field;
 }
+
+// Circles and spheres alike: every coordinate of the centre finite and in range, the radius > 0.
+template <class Objects>
+void validate_objects(const Objects& objects) {
+  require_object_count(objects.size());
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const auto& centre = objects[i].centre;
+    for (int axis = 0; axis < centre.length(); ++axis)
+      detail::require_coordinate(centre[axis],
+                                 object_field(i, ("center[" + std::to_string(axis) + "]").c_str()));
+    detail::require_positive(objects[i].radius, object_field(i, "radius"));
+  }
+}
 }  // namespace
 
-void validate(const Scene2D& scene) {
-  require_object_count(scene.circles.size());
-  for (std::size_t i = 0; i < scene.circles.size(); ++i) {
-    const Circle& circle = scene.circles[i];
-    detail::require_coordinate(circle.centre.x, object_field(i, "center[0]"));
-    detail::require_coordinate(circle.centre.y, object_field(i, "center[1]"));
-    detail::require_positive(circle.radius, object_field(i, "radius"));
-  }
-}
-
-void validate(const Scene3D& scene) {
-  require_object_count(scene.spheres.size());
-  for (std::size_t i = 0; i < scene.spheres.size(); ++i) {
-    const Sphere& sphere = scene.spheres[i];
-    detail::require_coordinate(sphere.centre.x, object_field(i, "center[0]"));
-    detail::require_coordinate(sphere.centre.y, object_field(i, "center[1]"));
-    detail::require_coordinate(sphere.centre.z, object_field(i, "center[2]"));
-    detail::require_positive(sphere.radius, object_field(i, "radius"));
-  }
-}
+void validate(const Scene2D& scene) { validate_objects(scene.circles); }
+void validate(const Scene3D& scene) { validate_objects(scene.spheres); }
 
 // The demo scenes are scenes/classic2d.json and classic3d.json, compiled in at build time
 // (embed_demo_scenes.cmake): one definition, and the file a student opens is the built-in scene. In 3D, a

@@ -32,16 +32,22 @@ Scene3D cluster_3d(glm::dvec3 target, double rotation_z = 0.0) {
 double zoomed_df(double d, double minimum) { return std::max(minimum, d / 4.0); }
 
 // ---- 2D ------------------------------------------------------------------------------------------------
-struct Builder2D {
-  int pixels;
-  std::vector<StressCase2D> cases;
-  void add(std::string group, std::string name, const Orbit2D& orbit, Scene2D scene, double res = 1.0) {
-    Camera2D camera(pixels);
+Camera2D camera_of(int side, const Orbit2D& orbit) { return Camera2D(side, orbit); }
+Camera3D camera_of(int side, const Orbit3D& orbit) { return Camera3D(side, side, orbit); }
+
+// Collects the cases of one dimension, each camera `side` pixels wide (and high, in 3D).
+template <class Case, class Orbit, class Scene>
+struct Builder {
+  int side;
+  std::vector<Case> cases;
+  void add(std::string group, std::string name, const Orbit& orbit, Scene scene, double res = 1.0) {
+    auto camera = camera_of(side, orbit);
     camera.set_res(res);
-    camera.set_orbit(orbit);
-    cases.push_back(StressCase2D{std::move(group), std::move(name), camera, std::move(scene)});
+    cases.push_back(Case{std::move(group), std::move(name), camera, std::move(scene)});
   }
 };
+using Builder2D = Builder<StressCase2D, Orbit2D, Scene2D>;
+using Builder3D = Builder<StressCase3D, Orbit3D, Scene3D>;
 }  // namespace
 
 std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
@@ -69,7 +75,7 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
   for (double theta : thetas)
     b.add("theta", label("theta", theta), Orbit2D{origin, 6.0, theta, 1.5}, cluster_2d(origin));
 
-  const double n = b.pixels;
+  const double n = b.side;
   for (double res : {1.0 / n, 2.0 / n, 0.1}) b.add("res", label("res", res), base, cluster_2d(origin), res);
 
   const std::vector<double> shifts =
@@ -88,10 +94,10 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
   }
 
   {  // Grazing: circles exactly tangent (to rounding) to two pixel-centre rays.
-    Camera2D camera(b.pixels);
+    Camera2D camera(b.side);
     camera.set_orbit(base);
     Scene2D scene;
-    for (int k : {b.pixels / 3, (2 * b.pixels) / 3 + 1}) {
+    for (int k : {b.side / 3, (2 * b.side) / 3 + 1}) {
       const Ray2D ray = camera.primary_ray(k);
       const glm::dvec2 side(-ray.direction.y, ray.direction.x);
       const double r = 0.5 + 0.1 * k / n;
@@ -100,7 +106,7 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
     b.cases.push_back(StressCase2D{"grazing", "tangent to 2 pixel rays", camera, scene});
   }
   {  // The screen cuts through a circle centred on the screen centre, in front of the cluster.
-    Camera2D camera(b.pixels);
+    Camera2D camera(b.side);
     camera.set_orbit(base);
     Scene2D scene = cluster_2d(origin);
     scene.circles.insert(scene.circles.begin(), Circle{camera.screen_centre(), 0.6, Rgb8{250, 250, 250}, ""});
@@ -113,7 +119,7 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
     scene.circles.push_back(Circle{{0, 0}, 1.0, Rgb8{0, 255, 0}, ""});
     scene.circles.push_back(Circle{{-0.5, -2.0}, 1.5, Rgb8{0, 0, 255}, ""});
     scene.circles.push_back(Circle{{0.5, -2.0}, 1.5, Rgb8{0, 255, 255}, ""});
-    Builder2D odd{b.pixels + 1, {}};
+    Builder2D odd{b.side + 1, {}};
     odd.add("equal depth", "identical + crossing on axis", Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5},
             scene);
     odd.add("equal depth", "crossing pair only", Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5},
@@ -124,19 +130,6 @@ std::vector<StressCase2D> stress_cases_2d(bool long_sweep) {
 }
 
 // ---- 3D ------------------------------------------------------------------------------------------------
-namespace {
-struct Builder3D {
-  int side;
-  std::vector<StressCase3D> cases;
-  void add(std::string group, std::string name, const Orbit3D& orbit, Scene3D scene, double res = 1.0) {
-    Camera3D camera(side, side);
-    camera.set_res(res);
-    camera.set_orbit(orbit);
-    cases.push_back(StressCase3D{std::move(group), std::move(name), camera, std::move(scene)});
-  }
-};
-}  // namespace
-
 std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
   Builder3D b{long_sweep ? 128 : 32, {}};
   const glm::dvec3 origin(0.0);

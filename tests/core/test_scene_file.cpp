@@ -6,8 +6,10 @@
 
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
+#include "test_support.h"
 
 using namespace raycam;
+using raycam::test::error_of;
 
 namespace {
 const char* kValid3D = R"({ "dimension": 3, "background": [20, 20, 30],
@@ -15,14 +17,6 @@ const char* kValid3D = R"({ "dimension": 3, "background": [20, 20, 30],
                {"type": "sphere", "center": [1.5, -2, 0.25], "radius": 0.5} ],
   "camera": {"target": [0, 0, 0], "d": 8, "theta": 30, "phi": 60, "df": 2, "res": 1, "size": [256, 128]} })";
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene_json(text, "scene.json");
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
 }  // namespace
 
 TEST_CASE("a valid 3D scene file is read field by field", "[scene_file]") {

@@ -5,15 +5,28 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/scene.h"
+#include "raycam/scene_file.h"
 
 namespace raycam::test {
 
 inline constexpr double kPi = glm::pi<double>();  // the tests' short name for GLM's
+
+// The message a scene file's text is refused with, or "(no error)".
+inline std::string error_of(const std::string& text) {
+  try {
+    parse_scene_json(text, "scene.json");
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
 
 struct Random {
   std::mt19937_64 engine;

@@ -10,6 +10,7 @@
 #include "test_support.h"
 
 using namespace raycam;
+using raycam::test::error_of;
 using test::kPi;
 
 namespace {
@@ -103,14 +104,6 @@ TEST_CASE("the setters refuse the open bounds and accept the closed ones", "[inp
 }
 
 namespace {
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene_json(text, "scene.json");
-  } catch (const std::invalid_argument& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
 std::string sphere_with(const std::string& camera) {
   return R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}], "camera": {)" +
          camera + "}}";
