@@ -95,8 +95,11 @@ CaseImage render_case(const SceneFile& file, const ClassicMistakes& mistakes, In
     throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
   Camera3D camera((*preset.size)[0], (*preset.size)[1]);
   camera.set_res(*preset.res);
-  camera.set_orbit({{target[0], target[1], target[2]}, *preset.d, glm::radians(*preset.theta_deg),
-                    glm::radians(*preset.phi_deg), *preset.df});
+  camera.set_orbit({{target[0], target[1], target[2]},
+                    *preset.d,
+                    glm::radians(*preset.theta_deg),
+                    glm::radians(*preset.phi_deg),
+                    *preset.df});
   camera.set_mistakes(mistakes);
   image.rows = camera.rows();
   image.columns = camera.columns();

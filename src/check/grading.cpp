@@ -110,7 +110,8 @@ std::vector<Explanation> diagnose(const std::vector<CheckCase>& cases, std::vect
       for (const MistakeInfo* m : candidates[c]) on.*m->flag = true;
       bool match = reproduces(render_case(file, on), *result.answer);
       // Without renormalising, the textbook (naive) formula and the stable one give different images.
-      if (!match && on.skip_renormalise) match = reproduces(render_case(file, on, IntersectFormula::naive), *result.answer);
+      if (!match && on.skip_renormalise)
+        match = reproduces(render_case(file, on, IntersectFormula::naive), *result.answer);
       if (match) reproduced[c].push_back(result.number);
     }
   }
