@@ -3,6 +3,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <optional>
 #include <stdexcept>
 
 #include "raycam/camera2d.h"
@@ -71,47 +72,100 @@ int object_count(const SceneFile& file) {
   return int(file.dimension == 2 ? file.scene2d.circles.size() : file.scene3d.spheres.size());
 }
 
+namespace {
+// The case's camera with the mistakes on, and what one pixel (protocol index) sees.
+class CaseCamera {
+ public:
+  CaseCamera(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula)
+      : file_(file), any_sign_(mistakes.no_t_min), formula_(formula) {
+    const CameraPreset& preset = complete_camera(file);
+    const std::vector<double>& target = *preset.target;
+    if (file.dimension == 2) {
+      if (target.size() != 2) throw std::invalid_argument("camera.target: expected 2 components in 2D");
+      camera2d_.emplace((*preset.size).at(0));
+      camera2d_->set_res(*preset.res);
+      camera2d_->set_orbit({{target[0], target[1]}, *preset.d, glm::radians(*preset.theta_deg), *preset.df});
+      camera2d_->set_mistakes(mistakes);
+      columns_ = camera2d_->pixel_count();
+      md_ = row_major<3>(camera2d_->world_from_camera());
+      return;
+    }
+    if (target.size() != 3 || preset.size->size() != 2)
+      throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
+    camera3d_.emplace((*preset.size)[0], (*preset.size)[1]);
+    camera3d_->set_res(*preset.res);
+    camera3d_->set_orbit({{target[0], target[1], target[2]},
+                          *preset.d,
+                          glm::radians(*preset.theta_deg),
+                          glm::radians(*preset.phi_deg),
+                          *preset.df});
+    camera3d_->set_mistakes(mistakes);
+    rows_ = camera3d_->rows();
+    columns_ = camera3d_->columns();
+    md_ = row_major<4>(camera3d_->world_from_camera());
+  }
+  int rows() const { return rows_; }
+  int columns() const { return columns_; }
+  const std::vector<double>& md() const { return md_; }
+  Verdict at(std::size_t index) const {
+    if (camera2d_)
+      return classify(file_.scene2d.circles, camera2d_->primary_ray(int(index)), any_sign_, formula_);
+    return classify(
+        file_.scene3d.spheres,
+        camera3d_->primary_ray(int(index / std::size_t(columns_)), int(index % std::size_t(columns_))),
+        any_sign_, formula_);
+  }
+
+ private:
+  const SceneFile& file_;
+  bool any_sign_;
+  IntersectFormula formula_;
+  std::optional<Camera2D> camera2d_;
+  std::optional<Camera3D> camera3d_;
+  int rows_ = 1, columns_ = 0;
+  std::vector<double> md_;
+};
+}  // namespace
+
 CaseImage render_case(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula) {
-  const CameraPreset& preset = complete_camera(file);
-  const std::vector<double>& target = *preset.target;
+  const CaseCamera camera(file, mistakes, formula);
   CaseImage image;
   image.dimension = file.dimension;
-  if (file.dimension == 2) {
-    if (target.size() != 2) throw std::invalid_argument("camera.target: expected 2 components in 2D");
-    Camera2D camera((*preset.size).at(0));
-    camera.set_res(*preset.res);
-    camera.set_orbit({{target[0], target[1]}, *preset.d, glm::radians(*preset.theta_deg), *preset.df});
-    camera.set_mistakes(mistakes);
-    image.columns = camera.pixel_count();
-    for (int k = 0; k < image.columns; ++k) {
-      const Verdict v = classify(file.scene2d.circles, camera.primary_ray(k), mistakes.no_t_min, formula);
-      image.ids.push_back(v.id);
-      image.ambiguous.push_back(v.ambiguous);
-    }
-    image.md = row_major<3>(camera.world_from_camera());
-    return image;
-  }
-  if (target.size() != 3 || preset.size->size() != 2)
-    throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
-  Camera3D camera((*preset.size)[0], (*preset.size)[1]);
-  camera.set_res(*preset.res);
-  camera.set_orbit({{target[0], target[1], target[2]},
-                    *preset.d,
-                    glm::radians(*preset.theta_deg),
-                    glm::radians(*preset.phi_deg),
-                    *preset.df});
-  camera.set_mistakes(mistakes);
   image.rows = camera.rows();
   image.columns = camera.columns();
-  for (int row = 0; row < image.rows; ++row)
-    for (int column = 0; column < image.columns; ++column) {
-      const Verdict v =
-          classify(file.scene3d.spheres, camera.primary_ray(row, column), mistakes.no_t_min, formula);
-      image.ids.push_back(v.id);
-      image.ambiguous.push_back(v.ambiguous);
-    }
-  image.md = row_major<4>(camera.world_from_camera());
+  image.md = camera.md();
+  const std::size_t pixels = std::size_t(image.rows) * std::size_t(image.columns);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const Verdict v = camera.at(i);
+    image.ids.push_back(v.id);
+    image.ambiguous.push_back(v.ambiguous);
+  }
   return image;
+}
+
+bool case_reproduces(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula,
+                     int rows, int columns, const std::vector<int>& ids, const std::vector<double>* md) {
+  const CaseCamera camera(file, mistakes, formula);
+  if (camera.rows() != rows || camera.columns() != columns) return false;
+  if (md && !md_matches(*md, camera.md())) return false;
+  // Pixels in a scattered order (a stride prime to their count): a wrong candidate usually fails within a
+  // few pixels, instead of after a whole background row.
+  const std::size_t pixels = std::size_t(rows) * std::size_t(columns);
+  const std::size_t stride = pixels % 7919 != 0 ? 7919 : 1;
+  for (std::size_t n = 0, i = 0; n < pixels; ++n, i = (i + stride) % pixels) {
+    const Verdict v = camera.at(i);
+    if (!v.ambiguous && v.id != ids[i]) return false;
+  }
+  return true;
+}
+
+bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected) {
+  if (answer.size() != expected.size()) return false;
+  double scale = 1.0;
+  for (double value : expected) scale = std::max(scale, std::abs(value));
+  for (std::size_t i = 0; i < answer.size(); ++i)
+    if (!(std::abs(answer[i] - expected[i]) <= 1e-6 * scale)) return false;
+  return true;
 }
 
 }  // namespace raycam::check

@@ -39,6 +39,15 @@ struct CaseImage {
 CaseImage render_case(const SceneFile& file, const ClassicMistakes& mistakes = {},
                       IntersectFormula formula = IntersectFormula::stable);
 
+// Whether the case rendered with `mistakes` equals an answer of `rows` × `columns` `ids` at every pixel it
+// does not mark ambiguous (and its M_d equals `md` when given). Stops at the first pixel that differs: the
+// diagnosis tries 91 candidates per case, most of them wrong within a few pixels.
+bool case_reproduces(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula,
+                     int rows, int columns, const std::vector<int>& ids, const std::vector<double>* md);
+
+// M_d equal up to rounding: |a - b| ≤ 1e-6·max(1, max |b|) entry by entry.
+bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected);
+
 // Number of objects in the case (ids run from -1 to objects - 1).
 int object_count(const SceneFile& file);
 

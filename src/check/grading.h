@@ -47,9 +47,6 @@ struct CaseResult {
 // The verdict on an answer (the program exited 0 and printed `parsed`).
 CaseResult grade_answer(const CaseImage& reference, const ParsedAnswer& parsed);
 
-// M_d equal up to rounding: |a - b| ≤ 1e-6·max(1, max |b|) entry by entry.
-bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected);
-
 struct Explanation {
   std::vector<const MistakeInfo*> mistakes;  // one or two
   std::vector<int> cases;                    // the case numbers it reproduces

@@ -6,12 +6,13 @@
 #include <glm/matrix.hpp>
 #include <limits>
 
+#include "raycam/parallel.h"
+
 namespace raycam::gl {
 
 namespace {
-struct PixelRect {
-  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
-};
+constexpr int kBandRows = 16;                   // rows a worker casts at a time
+constexpr std::size_t kSpheresPerChunk = 8192;  // spheres a worker projects at a time
 
 // Pixels whose centre can see the sphere: the projection of the square that holds the circle where the
 // tangent cone from the eye meets the plane through the centre across the view (sphere.vert's quad).
@@ -63,8 +64,10 @@ void cast_sphere_layer(const std::vector<Sphere>& spheres, const SphereLayerView
   layer.width = width;
   layer.height = height;
   layer.ids.assign(pixels, -1);
-  std::vector<double> nearest(pixels, std::numeric_limits<double>::infinity());  // t along the unit ray
+  std::vector<double>& nearest = layer.nearest;
+  nearest.assign(pixels, std::numeric_limits<double>::infinity());
   layer.depth.resize(pixels);
+  layer.rgba.resize(pixels * 4);
 
   // The ray through NDC (x, y) points at inverse(view_projection)·(x, y, 1, 1) = (H, h): direction
   // H − eye·h, linear in (x, y) (the sign of h is the same over the screen).
@@ -81,47 +84,66 @@ void cast_sphere_layer(const std::vector<Sphere>& spheres, const SphereLayerView
     return glm::normalize(base + x * per_x + y * per_y);
   };
 
-  for (std::size_t s = 0; s < spheres.size(); ++s) {
-    const Sphere& sphere = spheres[s];
-    const PixelRect rect = pixels_of(sphere, view);
-    const glm::dvec3 f = view.eye - sphere.centre;
-    const double r2 = sphere.radius * sphere.radius;
-    const bool inside = glm::dot(f, f) < r2;
-    for (int j = rect.y0; j <= rect.y1; ++j)
-      for (int i = rect.x0; i <= rect.x1; ++i) {
-        const glm::dvec3 d = ray_direction(i, j);
-        const double b = glm::dot(f, d);
-        const glm::dvec3 closest = f - b * d;  // as sphere.frag: no cancellation at a distance
-        const double discriminant = r2 - glm::dot(closest, closest);
-        if (discriminant < 0.0) continue;
-        const double t = inside ? -b + std::sqrt(discriminant) : -b - std::sqrt(discriminant);
-        const std::size_t p = std::size_t(j) * width + std::size_t(i);
-        if (t < 0.0 || !(t < nearest[p])) continue;  // strict: the first sphere drawn keeps a tie, as GL_LESS
-        const glm::dvec4 clip = view.view_projection * glm::dvec4(view.eye + t * d, 1.0);
-        const double z = clip.z / clip.w;
-        if (!(z >= -1.0 && z <= 1.0)) continue;  // GL clips it at the near or far plane
-        nearest[p] = t;
-        layer.ids[p] = int(s);
-        layer.depth[p] = float(0.5 * z + 0.5);
-      }
-  }
-
-  layer.rgba.assign(pixels * 4, 0);
-  for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i) {
-      const std::size_t p = std::size_t(j) * width + std::size_t(i);
-      if (layer.ids[p] < 0) continue;
-      const Sphere& sphere = spheres[std::size_t(layer.ids[p])];
-      const glm::dvec3 hit = view.eye + nearest[p] * ray_direction(i, j);
-      const glm::dvec3 normal = (hit - sphere.centre) / sphere.radius;
-      const double shade = 0.45 + 0.55 * std::max(glm::dot(normal, view.light_direction), 0.0);
-      const Rgb8 c = sphere.colour;
-      std::uint8_t* texel = &layer.rgba[p * 4];
-      texel[0] = std::uint8_t(std::lround(std::min(255.0, c.r * shade)));
-      texel[1] = std::uint8_t(std::lround(std::min(255.0, c.g * shade)));
-      texel[2] = std::uint8_t(std::lround(std::min(255.0, c.b * shade)));
-      texel[3] = 255;
+  // Each sphere's pixels first (in parallel chunks), then bands of rows on the caster's worker pool: a band
+  // tests, in sphere order, the spheres whose pixels reach it, and writes only its own pixels.
+  const int workers = detail::resolve_threads(0);
+  std::vector<PixelRect>& rects = layer.rects;
+  rects.resize(spheres.size());
+  const int chunks = int((spheres.size() + kSpheresPerChunk - 1) / kSpheresPerChunk);
+  detail::parallel_items(chunks, workers, [&](int, int chunk) {
+    const std::size_t end = std::min(spheres.size(), std::size_t(chunk + 1) * kSpheresPerChunk);
+    for (std::size_t s = std::size_t(chunk) * kSpheresPerChunk; s < end; ++s)
+      rects[s] = pixels_of(spheres[s], view);
+  });
+  const int bands = (height + kBandRows - 1) / kBandRows;
+  detail::parallel_items(bands, workers, [&](int, int band) {
+    const int band_first = band * kBandRows, band_last = std::min(height, band_first + kBandRows) - 1;
+    for (std::size_t s = 0; s < spheres.size(); ++s) {
+      const PixelRect& rect = rects[s];
+      const int y0 = std::max(rect.y0, band_first), y1 = std::min(rect.y1, band_last);
+      if (y0 > y1 || rect.x0 > rect.x1) continue;
+      const Sphere& sphere = spheres[s];
+      const glm::dvec3 f = view.eye - sphere.centre;
+      const double r2 = sphere.radius * sphere.radius;
+      const bool inside = glm::dot(f, f) < r2;
+      for (int j = y0; j <= y1; ++j)
+        for (int i = rect.x0; i <= rect.x1; ++i) {
+          const glm::dvec3 d = ray_direction(i, j);
+          const double b = glm::dot(f, d);
+          const glm::dvec3 closest = f - b * d;  // as sphere.frag: no cancellation at a distance
+          const double discriminant = r2 - glm::dot(closest, closest);
+          if (discriminant < 0.0) continue;
+          const double t = inside ? -b + std::sqrt(discriminant) : -b - std::sqrt(discriminant);
+          const std::size_t p = std::size_t(j) * width + std::size_t(i);
+          if (t < 0.0 || !(t < nearest[p]))
+            continue;  // strict: the first sphere drawn keeps a tie, as GL_LESS
+          const glm::dvec4 clip = view.view_projection * glm::dvec4(view.eye + t * d, 1.0);
+          const double z = clip.z / clip.w;
+          if (!(z >= -1.0 && z <= 1.0)) continue;  // GL clips it at the near or far plane
+          nearest[p] = t;
+          layer.ids[p] = int(s);
+          layer.depth[p] = float(0.5 * z + 0.5);
+        }
     }
+    for (int j = band_first; j <= band_last; ++j)  // shading, where a sphere is seen
+      for (int i = 0; i < width; ++i) {
+        const std::size_t p = std::size_t(j) * width + std::size_t(i);
+        std::uint8_t* texel = &layer.rgba[p * 4];
+        if (layer.ids[p] < 0) {
+          texel[3] = 0;
+          continue;
+        }
+        const Sphere& sphere = spheres[std::size_t(layer.ids[p])];
+        const glm::dvec3 hit = view.eye + nearest[p] * ray_direction(i, j);
+        const glm::dvec3 normal = (hit - sphere.centre) / sphere.radius;
+        const double shade = 0.45 + 0.55 * std::max(glm::dot(normal, view.light_direction), 0.0);
+        const Rgb8 c = sphere.colour;
+        texel[0] = std::uint8_t(std::lround(std::min(255.0, c.r * shade)));
+        texel[1] = std::uint8_t(std::lround(std::min(255.0, c.g * shade)));
+        texel[2] = std::uint8_t(std::lround(std::min(255.0, c.b * shade)));
+        texel[3] = 255;
+      }
+  });
 }
 
 }  // namespace raycam::gl

@@ -24,14 +24,20 @@ struct SphereLayerView {
   int width = 0, height = 0;
 };
 
+struct PixelRect {  // a closed range of pixels, empty when x0 > x1 or y0 > y1
+  int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+};
+
 struct SphereLayer {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // alpha 0 where no sphere is seen
   std::vector<float> depth;        // window depth in [0, 1], as gl_FragDepth
   std::vector<int> ids;            // the sphere seen, -1 for none
+  std::vector<PixelRect> rects;    // scratch: each sphere's pixels
+  std::vector<double> nearest;     // scratch: t of the hit seen, along the unit ray
 };
 
-// Keeps the memory of `layer` between calls.
+// Keeps the memory of `layer` between calls. Runs on the casters' worker pool (raycam/parallel.h).
 void cast_sphere_layer(const std::vector<Sphere>& spheres, const SphereLayerView& view, SphereLayer& layer);
 
 }  // namespace raycam::gl

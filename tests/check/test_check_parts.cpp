@@ -163,3 +163,28 @@ TEST_CASE("grading: wrong pixels, the deepest one, ambiguous pixels forgiven, md
   parsed.answer->ids[1] = 3;  // only the ambiguous pixel differs
   CHECK(grade_answer(reference, parsed).status == CaseStatus::pass);
 }
+
+TEST_CASE("the worst pixel of an image is the wrong one farthest from any edge (Chebyshev)",
+          "[check][grading]") {
+  CaseImage reference;  // 7 × 7: columns 0-2 see object 0, columns 3-6 object 1; pixel (0, 6) is ambiguous
+  reference.dimension = 3;
+  reference.rows = reference.columns = 7;
+  for (int r = 0; r < 7; ++r)
+    for (int c = 0; c < 7; ++c) {
+      reference.ids.push_back(c < 3 ? 0 : 1);
+      reference.ambiguous.push_back(r == 0 && c == 6);
+    }
+  ParsedAnswer parsed;
+  parsed.answer = Answer{7, 7, reference.ids, std::nullopt};
+  auto wrong = [&](int r, int c) { parsed.answer->ids[std::size_t(r * 7 + c)] = 5; };
+  wrong(3, 0);  // 3 columns from object 1 (column 3)
+  wrong(6, 4);  // 2 columns from object 0 (column 2)
+  wrong(3, 5);  // 3 columns from column 2, 3 rows from the ambiguous pixel
+  wrong(4, 6);  // 4 columns from column 2, 4 rows from the ambiguous pixel: the deepest
+  const CaseResult result = grade_answer(reference, parsed);
+  CHECK(result.wrong_pixels == 4);
+  REQUIRE(result.worst);
+  CHECK(result.worst->row == 4);
+  CHECK(result.worst->column == 6);
+  CHECK(result.worst->depth == 4);
+}
