@@ -1,8 +1,8 @@
 // Running one untrusted student program on one case: no shell, a fresh temporary directory, the case on
 // stdin, a timeout, capped output, stderr kept, and (where it works) a bubblewrap sandbox.
 //
-// The sandbox (bwrap): the whole system read-only, /tmp, /run and /dev read-only and empty, the program's
-// own temporary directory the only writable place, no network (a new network namespace: not even the host's
+// The sandbox (bwrap): the whole system read-only, /tmp and /run empty and read-only, /dev only the basic
+// devices (read-only), the program's own temporary directory the only writable place, no network (a new network namespace: not even the host's
 // loopback), new user/PID/IPC/UTS namespaces (the program runs as "nobody" and all its processes die with
 // it), and an address-space cap. Without the sandbox the same limits apply except the isolation.
 #pragma once

@@ -1,7 +1,8 @@
 // `raycam-cli check` end to end, with "student" programs written for these tests independently of raycam's
 // core (tests/check/students/): the examples pass, each classic mistake and some pairs are named, programs
-// that crash, hang, print garbage or too much are reported per case, the sandbox stops a program that
-// writes outside its folder or opens a socket, --answers, --batch (CSV), --diff-dir and bad usage.
+// that crash, hang, print garbage or too much are reported per case, the memory cap holds, the sandbox
+// stops a program that writes outside its folder or opens a socket, --answers, --batch (CSV), --diff-dir
+// and bad usage.
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
@@ -169,6 +170,15 @@ TEST_CASE("crashing, hanging, garbage-printing and huge-output students are repo
   const Checked crashed = check(student + "crash\" --cases 1", "bad_crash_stderr");
   CHECK_THAT(crashed.report["results"][0]["stderr"].get<std::string>(), Catch::Contains("fell over"));
   CHECK_THAT(crashed.output, Catch::Contains("fell over"));
+}
+
+TEST_CASE("the memory cap stops a student that allocates too much", "[check][cli][sandbox]") {
+  const std::string student = std::string("--student \"python3 ") + MISBEHAVING_PY + " memory\" --cases 1";
+  const Checked capped = check(student + " --memory 128", "memory_capped");
+  CHECK(capped.report["results"][0]["status"] == "crash");
+  CHECK_THAT(capped.report["results"][0]["stderr"].get<std::string>(), Catch::Contains("MemoryError"));
+  const Checked roomy = check(student + " --memory 1024", "memory_roomy");  // it allocates, then answers nonsense
+  CHECK(roomy.report["results"][0]["status"] == "bad-output");
 }
 
 TEST_CASE("the sandbox stops a student writing outside its folder or opening a socket",

@@ -7,6 +7,7 @@
   huge       prints far more than the output cap
   no-read    answers without reading its input, after closing stdin
   bad-ids    valid JSON, an id out of range
+  memory     allocates 300 MiB, then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
 """
 import json
@@ -38,6 +39,10 @@ if mode == "no-read":
 if mode == "bad-ids":
     case = json.load(sys.stdin)
     print(json.dumps({"ids": [99] * 3}))
+    sys.exit(0)
+if mode == "memory":
+    block = bytearray(300 << 20)
+    print('{"ids": "allocated"}')
     sys.exit(0)
 if mode == "escape":
     port, path = int(sys.argv[2]), sys.argv[3]
