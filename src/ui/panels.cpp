@@ -532,10 +532,13 @@ void status_counters(const AppState& state) {
 // ---- help ----------------------------------------------------------------------------------------------
 void help_overlay(AppState& state) {
   if (!state.show_help) return;
-  ImGui::SetNextWindowPos({ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
+  // Never wider or taller than the window at any font scale: the descriptions wrap, the list scrolls.
+  ImGui::SetNextWindowSize({std::min(display.x * 0.95f, 42.0f * ImGui::GetFontSize()), 0.0f}, ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {display.x * 0.95f, display.y * 0.95f});
   if (ImGui::Begin(tr("Keyboard and mouse (F1 closes)###help"), &state.show_help,
-                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                       ImGuiWindowFlags_NoCollapse)) {
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
     static const std::pair<const char*, const char*> kLines[] = {
         {tr_later("F1"), tr_later("this help")},
@@ -554,12 +557,14 @@ void help_overlay(AppState& state) {
         {tr_later("right drag"), tr_later("turn the observer (3D)")},
         {tr_later("double-click"), tr_later("make an object the target")},
         {tr_later("click a pixel"), tr_later("pin the ray inspector")}};
-    if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+    if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_SizingStretchProp)) {
+      ImGui::TableSetupColumn("##key", ImGuiTableColumnFlags_WidthFixed);
+      ImGui::TableSetupColumn("##what", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& [key, what] : kLines) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(tr(key));
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(tr(what));
+        ImGui::TextWrapped("%s", tr(what));
       }
       ImGui::EndTable();
     }
