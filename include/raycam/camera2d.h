@@ -67,7 +67,9 @@ glm::dmat3 construction_step(const Placement2D& placement, int step);
 // or non-finite input. The mistakes that change M_d (printed_rotation_sign, degrees_as_radians,
 // no_focal_scale) are applied here.
 Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistakes);
-Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign = false);
+inline Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign = false) {
+  return placement_matrix(orbit, rotation_mistake_only(printed_rotation_sign));
+}
 
 // How many M_d (2D or 3D) this thread has composed: lets tests check that placing a camera builds it once.
 long long placements_built_on_this_thread();

@@ -68,7 +68,9 @@ glm::dmat4 construction_step(const Placement3D& placement, int step);
 // d_f ≤ 0, non-finite input. The mistakes that change M_d (printed_rotation_sign, upside_down,
 // degrees_as_radians, no_focal_scale, theta_phi_swapped) are applied here.
 Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistakes);
-Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign = false);
+inline Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign = false) {
+  return placement_matrix(orbit, rotation_mistake_only(printed_rotation_sign));
+}
 
 struct SphericalAngles {
   double theta = 0.0;  // azimuth, radians, in (-π, π]; 0 at the poles, where it is undefined

@@ -29,6 +29,13 @@ struct ClassicMistakes {
   bool res_truncated = false;          // n = floor(res·N) instead of round(res·N)
 };
 
+// Only the printed rotation sign, as `on` says (the placement's older boolean form).
+inline ClassicMistakes rotation_mistake_only(bool on) {
+  ClassicMistakes mistakes;
+  mistakes.printed_rotation_sign = on;
+  return mistakes;
+}
+
 struct MistakeInfo {
   const char* id;  // stable: "printed_rotation_sign", …
   bool ClassicMistakes::*flag;

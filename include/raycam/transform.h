@@ -6,6 +6,7 @@
 // translated; a vector carries w = 0 and is not (handout, exercise 2: "u_k = M_d × u_k^0").
 #pragma once
 
+#include <cstddef>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -19,6 +20,15 @@ glm::dmat3 rotation_2d(double angle);  // angle in radians, counter-clockwise
 glm::dmat3 translation_2d(glm::dvec2 offset);
 glm::dvec2 transform_point(const glm::dmat3& m, glm::dvec2 p);
 glm::dvec2 transform_vector(const glm::dmat3& m, glm::dvec2 v);
+
+// The product of the first `count` factors in the order they apply: factors[count-1]·…·factors[0] (each new
+// factor multiplies on the left). The cameras' construction steps (handout: frames a → d, steps 1–4).
+template <class Matrix, std::size_t N>
+Matrix compose_first(const Matrix (&factors)[N], int count) {
+  Matrix product(1.0);
+  for (int i = 0; i < count && i < int(N); ++i) product = factors[i] * product;
+  return product;
+}
 
 // ---- 3D -------------------------------------------------------------------------------------------
 glm::dmat4 scaling_3d(double sx, double sy, double sz);

@@ -60,18 +60,10 @@ Placement2D placement_matrix(const Orbit2D& orbit, const ClassicMistakes& mistak
   return placement;
 }
 
-Placement2D placement_matrix(const Orbit2D& orbit, bool printed_rotation_sign) {
-  ClassicMistakes mistakes;
-  mistakes.printed_rotation_sign = printed_rotation_sign;
-  return placement_matrix(orbit, mistakes);
-}
-
 glm::dmat3 construction_step(const Placement2D& placement, int step) {
   detail::require_int_range(step, 0, kConstructionSteps2D, "construction step");
   const glm::dmat3 factors[] = {placement.scale, placement.rotation, placement.translation};
-  glm::dmat3 product(1.0);
-  for (int i = 0; i < step; ++i) product = factors[i] * product;  // each new factor applies after the others
-  return product;
+  return compose_first(factors, step);
 }
 
 double polar_angle(glm::dvec2 v, AngleRoute route) {

@@ -71,19 +71,11 @@ Placement3D placement_matrix(const Orbit3D& orbit, const ClassicMistakes& mistak
   return placement;
 }
 
-Placement3D placement_matrix(const Orbit3D& orbit, bool printed_rotation_sign) {
-  ClassicMistakes mistakes;
-  mistakes.printed_rotation_sign = printed_rotation_sign;
-  return placement_matrix(orbit, mistakes);
-}
-
 glm::dmat4 construction_step(const Placement3D& placement, int step) {
   detail::require_int_range(step, 0, kConstructionSteps3D, "construction step");
   const glm::dmat4 factors[] = {placement.scale, placement.roll, placement.polar, placement.azimuth,
                                 placement.translation};
-  glm::dmat4 product(1.0);
-  for (int i = 0; i < step; ++i) product = factors[i] * product;  // each new factor applies after the others
-  return product;
+  return compose_first(factors, step);
 }
 
 SphericalAngles spherical_angles(glm::dvec3 v, AngleRoute route) {

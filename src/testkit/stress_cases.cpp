@@ -245,35 +245,48 @@ bool image_valid(const CoverageImage& image, std::size_t objects) {
 }
 }  // namespace
 
-StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference,
-                     const ReferenceOptions& options) {
-  const Camera2D& camera = stress_case.camera;
+namespace {
+bool rays_finite(const Camera2D& camera) {
+  for (int k = 0; k < camera.pixel_count(); ++k) {
+    const Ray2D ray = camera.primary_ray(k);
+    if (!finite<2>(ray.origin) || !finite<2>(ray.direction)) return false;
+  }
+  return true;
+}
+
+bool rays_finite(const Camera3D& camera) {
+  for (int row = 0; row < camera.rows(); ++row)
+    for (int column = 0; column < camera.columns(); ++column) {
+      const Ray3D ray = camera.primary_ray(row, column);
+      if (!finite<3>(ray.origin) || !finite<3>(ray.direction)) return false;
+    }
+  return true;
+}
+
+std::size_t object_count(const Scene2D& scene) { return scene.circles.size(); }
+std::size_t object_count(const Scene3D& scene) { return scene.spheres.size(); }
+
+template <class Case>
+StressResult measure_case(const Case& stress_case, const CoverageImage& reference,
+                          const ReferenceOptions& options) {
+  const auto& camera = stress_case.camera;
   const CoverageImage image = reference_cast(camera, stress_case.scene, options);
   StressResult result;
   result.id_error = id_disagreement(image, reference);
-  result.all_finite = finite_matrix(camera.world_from_camera()) && finite<2>(camera.eye()) &&
-                      image_valid(image, stress_case.scene.circles.size());
-  for (int k = 0; k < camera.pixel_count() && result.all_finite; ++k) {
-    const Ray2D ray = camera.primary_ray(k);
-    result.all_finite = finite<2>(ray.origin) && finite<2>(ray.direction);
-  }
+  result.all_finite = finite_matrix(camera.world_from_camera()) && finite(camera.eye()) &&
+                      image_valid(image, object_count(stress_case.scene)) && rays_finite(camera);
   return result;
+}
+}  // namespace
+
+StressResult measure(const StressCase2D& stress_case, const CoverageImage& reference,
+                     const ReferenceOptions& options) {
+  return measure_case(stress_case, reference, options);
 }
 
 StressResult measure(const StressCase3D& stress_case, const CoverageImage& reference,
                      const ReferenceOptions& options) {
-  const Camera3D& camera = stress_case.camera;
-  const CoverageImage image = reference_cast(camera, stress_case.scene, options);
-  StressResult result;
-  result.id_error = id_disagreement(image, reference);
-  result.all_finite = finite_matrix(camera.world_from_camera()) && finite<3>(camera.eye()) &&
-                      image_valid(image, stress_case.scene.spheres.size());
-  for (int row = 0; row < camera.rows() && result.all_finite; ++row)
-    for (int column = 0; column < camera.columns() && result.all_finite; ++column) {
-      const Ray3D ray = camera.primary_ray(row, column);
-      result.all_finite = finite<3>(ray.origin) && finite<3>(ray.direction);
-    }
-  return result;
+  return measure_case(stress_case, reference, options);
 }
 
 }  // namespace raycam

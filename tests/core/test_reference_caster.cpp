@@ -32,6 +32,11 @@ Scene3D random_scene_3d(Random& random, int count, double spread) {
         ""});
   return scene;
 }
+// A camera above a scene of half-size ~3 around the origin, at a random distance in [d_lo, d_hi].
+Camera2D random_camera_2d(Random& random, int pixels, double d_lo, double d_hi) {
+  return Camera2D(
+      pixels, Orbit2D{{0, 0}, random.uniform(d_lo, d_hi), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
+}
 }  // namespace
 
 TEST_CASE("spp 1, double, stable, world coordinates equals cast_primary_rays id for id", "[reference]") {
@@ -63,9 +68,7 @@ TEST_CASE("every scalar and frame agrees with the plain caster on ordinary scene
   Random random(22);
   for (int trial = 0; trial < 20; ++trial) {
     const Scene2D scene = random_scene_2d(random, random.integer(1, 6), 3.0);
-    Camera2D camera(97);
-    camera.set_orbit(
-        Orbit2D{{0, 0}, random.uniform(3, 10), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
+    const Camera2D camera = random_camera_2d(random, 97, 3, 10);
     const ColourMap plain = cast_primary_rays(camera, scene);
     for (Scalar scalar : {Scalar::float32, Scalar::float64, Scalar::extended})
       for (bool relative : {false, true}) {
@@ -85,9 +88,7 @@ TEST_CASE("stratified samples converge to the exact bar's coverage colours", "[r
   Random random(23);
   for (int trial = 0; trial < 10; ++trial) {
     const Scene2D scene = random_scene_2d(random, random.integer(2, 6), 3.0);
-    Camera2D camera(40);
-    camera.set_orbit(
-        Orbit2D{{0, 0}, random.uniform(3, 8), random.uniform(-kPi, kPi), random.uniform(0.5, 2)});
+    const Camera2D camera = random_camera_2d(random, 40, 3, 8);
     const ExactBar bar = exact_bar(camera, scene);
     const CoverageImage exact = exact_bar_image(bar, scene);
     const double breakpoints = double(bar.footprint.size() - 1);
