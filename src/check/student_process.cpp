@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <stdexcept>
 
@@ -148,6 +149,39 @@ std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& wo
   return words;
 }
 
+// Runs still going when the process exits (a detached worker of the app's panel, a test that ends while a
+// program hangs): their programs are killed and their folders removed at exit, not left behind.
+struct LiveRuns {
+  std::mutex mutex;
+  std::map<std::string, pid_t> folders;  // folder -> process group (0 before the fork)
+};
+LiveRuns& live_runs() {
+  static LiveRuns* runs = [] {
+    auto* created = new LiveRuns;  // never destroyed: the exit handler below still needs it
+    std::atexit([] {
+      LiveRuns& r = live_runs();
+      std::lock_guard<std::mutex> lock(r.mutex);
+      for (const auto& [folder, group] : r.folders) {
+        if (group > 0) kill(-group, SIGKILL);
+        std::error_code ignored;
+        fs::remove_all(folder, ignored);
+      }
+    });
+    return created;
+  }();
+  return *runs;
+}
+void track(const std::string& folder, pid_t group) {
+  LiveRuns& r = live_runs();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  r.folders[folder] = group;
+}
+void untrack(const std::string& folder) {
+  LiveRuns& r = live_runs();
+  std::lock_guard<std::mutex> lock(r.mutex);
+  r.folders.erase(folder);
+}
+
 void stop(pid_t pid) {
   kill(-pid, SIGKILL);  // the process group: whatever it started (bwrap's namespace dies with its first child)
   kill(pid, SIGKILL);
@@ -200,6 +234,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     return result;
   }
   const std::string work = pattern;
+  track(work, 0);
   std::vector<std::string> command = sandbox ? sandboxed(*sandbox, work, argv) : argv;
   std::vector<std::string> environment = child_environment(work);
   std::vector<char*> c_argv = c_strings(command), c_envp = c_strings(environment);
@@ -213,6 +248,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     if (pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), work.c_str(), in.read, out.write, err.write,
                              report.write, limits);
     setpgid(pid, pid);  // also here: whichever runs first, the group exists before we may signal it
+    track(work, pid);
     in.close_read();
     out.close_write();
     err.close_write();
@@ -223,6 +259,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       result.error = "cannot run '" + argv[0] + "': " + std::strerror(exec_errno);
       std::error_code ignored;
       fs::remove_all(work, ignored);
+      untrack(work);
       return result;
     }
     fcntl(in.write, F_SETFL, O_NONBLOCK);
@@ -292,6 +329,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::error_code ignored;
   fs::remove_all(work, ignored);
+  untrack(work);
   return result;
 }
 
