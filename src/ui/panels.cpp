@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <glm/trigonometric.hpp>
 #include <iterator>
 #include <map>
@@ -65,6 +66,13 @@ bool slider_double(const char* label, double& value, double lo, double hi, const
 }
 
 // radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
+// `count` doubles dragged in one widget, clamped to ±1000 (the target C).
+bool drag_doubles(const char* label, double* values, int count) {
+  static const double lo = -1000.0, hi = 1000.0;
+  return ImGui::DragScalarN(label, ImGuiDataType_Double, values, count, 0.05f, &lo, &hi, "%.2f",
+                            ImGuiSliderFlags_AlwaysClamp);
+}
+
 bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
   double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
@@ -167,26 +175,19 @@ void camera_section(AppState& state) {
   const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
   changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
-    float target[2] = {float(state.orbit2d.target.x), float(state.orbit2d.target.y)};
-    if (labelled(tr("target C###target"), [&](const char* l) {
-          return ImGui::DragFloat2(l, target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-        })) {
-      state.orbit2d.target = {target[0], target[1]};
+    // The target's coordinates are doubles in the widget too, as the sliders'.
+    if (labelled(tr("target C###target"),
+                 [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit2d.target), 2); }))
       changed = true;
-    }
     int n = state.max_pixels_2d;
     if (labelled(tr("N max pixels###N"), [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
       state.max_pixels_2d = std::clamp(n, 1, 4096);
       changed = true;
     }
   } else {
-    float target[3] = {float(state.orbit3d.target.x), float(state.orbit3d.target.y), float(state.orbit3d.target.z)};
-    if (labelled(tr("target C###target"), [&](const char* l) {
-          return ImGui::DragFloat3(l, target, 0.05f, -1000.0f, 1000.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
-        })) {
-      state.orbit3d.target = {target[0], target[1], target[2]};
+    if (labelled(tr("target C###target"),
+                 [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit3d.target), 3); }))
       changed = true;
-    }
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
     if (labelled(tr("max size W, H###size"), [&](const char* l) { return ImGui::InputInt2(l, size); })) {
       state.max_columns_3d = std::clamp(size[0], 1, 2048);

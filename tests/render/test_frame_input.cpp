@@ -193,13 +193,29 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK_THAT(state.message, Catch::Contains("no/such/scene_file_for_the_test.json"));
   // Shown in the Scene file section (opened for it): the panel, not the status line.
   CHECK(layout.message.w == 0);
-  const auto dismiss = ui::widget_rect("###dismiss_message");
-  (void)dismiss;
-  // Fits at 3× font: nothing wider than the window, the status line inside its area.
+  // A message whose section is closed (here: none) gets its own line above the status line, tall enough
+  // for its wrapped text at 3× font, inside the window.
   state.font_scale = 3.0f;
+  ui::set_message(state, ui::MessageSource::general, true,
+                  "a long message that cannot fit on one line of the right-hand side at three times the font size, "
+                  "so it wraps: /a/long/path/to/a/scene/file/lesson3.json");
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
-  CHECK(renderer.layout().panel.w <= 0.4f * 1280 + 0.5f);
-  CHECK(renderer.layout().status.x + renderer.layout().status.w <= 1280.5f);
+  const ui::FrameLayout big = renderer.layout();  // a copy: the next frames replace the renderer's
+  REQUIRE(big.message.w > 0);
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  CHECK(big.message.h >= 3 * line);  // wrapped over at least two lines, plus the Dismiss button
+  CHECK(big.message.y >= 0);
+  CHECK(big.message.y + big.message.h <= big.status.y + 0.5f);  // above the status line, not over it
+  CHECK(big.message.x + big.message.w <= 1280.5f);
+  CHECK(big.panel.w <= 0.4f * 1280 + 0.5f);
+  CHECK(big.status.x + big.status.w <= 1280.5f);
+  // Replaced by the next message; cleared by Dismiss (what the button does).
+  ui::set_message(state, ui::MessageSource::general, false, "done");
+  renderer.run_frame(state);
+  CHECK(renderer.layout().message.h < big.message.h);
+  state.message.clear();
+  renderer.run_frame(state);
+  CHECK(renderer.layout().message.w == 0);
 }
 
 TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the window and the panel 40% at most",
