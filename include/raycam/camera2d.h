@@ -104,7 +104,10 @@ class Camera2D {
   void set_res(double res);                         // res ∈ ]0, 1]
   int pixel_count() const { return pixel_count_; }  // n = clamp(round(res·N), 1, N) (floor: res_truncated)
 
-  void set_orbit(const Orbit2D& orbit);
+  void set_orbit(const Orbit2D& orbit) {
+    placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
+    orbit_ = orbit;
+  }
   // Free placement from the screen centre P and target C (P ≠ C): d = |CP|, θ = angle of CP.
   void set_free(glm::dvec2 position, glm::dvec2 target, double df, AngleRoute route = AngleRoute::stable) {
     set_orbit(free_orbit(position, target, df, route));

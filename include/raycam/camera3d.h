@@ -108,7 +108,10 @@ class Camera3D {
   int columns() const { return columns_; }  // nbc
   int rows() const { return rows_; }        // nbl
 
-  void set_orbit(const Orbit3D& orbit);
+  void set_orbit(const Orbit3D& orbit) {
+    placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
+    orbit_ = orbit;
+  }
   // Free placement (the handout's second route): screen centre P, target C (P ≠ C).
   void set_free(glm::dvec3 position, glm::dvec3 target, double df, AngleRoute route = AngleRoute::stable) {
     set_orbit(free_orbit(position, target, df, route));

@@ -97,11 +97,6 @@ void Camera2D::set_res(double res) {
   pixel_count_ = detail::useful_size(res, max_pixels_, mistakes_.res_truncated);  // exercise 1, step 3
 }
 
-void Camera2D::set_orbit(const Orbit2D& orbit) {
-  placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
-  orbit_ = orbit;
-}
-
 void Camera2D::set_mistakes(const ClassicMistakes& mistakes) {
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;

@@ -129,11 +129,6 @@ void Camera3D::set_res(double res_columns, double res_rows) {
   rows_ = detail::useful_size(res_rows, max_rows_, mistakes_.res_truncated);
 }
 
-void Camera3D::set_orbit(const Orbit3D& orbit) {
-  placement_ = placement_matrix(orbit, mistakes_);  // throws before anything changes
-  orbit_ = orbit;
-}
-
 void Camera3D::set_mistakes(const ClassicMistakes& mistakes) {
   placement_ = placement_matrix(orbit_, mistakes);
   mistakes_ = mistakes;

@@ -11,6 +11,19 @@ namespace raycam::gl {
 
 namespace {
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(0.4f, 0.3f, 0.85f));
+
+// A vertex array of interleaved vertices: a 3D position (attribute 0), then `second` floats (attribute 1).
+void interleaved_vertices(GLuint& vao, GLuint& vbo, int second) {
+  const GLsizei stride = GLsizei((3 + second) * sizeof(float));
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(1, &vbo);
+  glBindBuffer(GL_ARRAY_BUFFER, vbo);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, second, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(3 * sizeof(float)));
+}
 }  // namespace
 
 ObserverRenderer::ObserverRenderer()
@@ -37,23 +50,8 @@ ObserverRenderer::ObserverRenderer()
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), reinterpret_cast<void*>(4 * sizeof(float)));
   glVertexAttribDivisor(2, 1);
 
-  glGenVertexArrays(1, &line_vao_);
-  glBindVertexArray(line_vao_);
-  glGenBuffers(1, &line_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, line_vbo_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
-
-  glGenVertexArrays(1, &quad_vao_);
-  glBindVertexArray(quad_vao_);
-  glGenBuffers(1, &quad_vbo_);
-  glBindBuffer(GL_ARRAY_BUFFER, quad_vbo_);
-  glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 5 * sizeof(float), nullptr);
-  glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, 5 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  interleaved_vertices(line_vao_, line_vbo_, 4);  // position + RGBA
+  interleaved_vertices(quad_vao_, quad_vbo_, 2);  // position + texture coordinates
   glBindVertexArray(0);
 }
 

@@ -57,6 +57,18 @@ Scene3D random_spheres(test::Random& random, int count, double spread, double ma
 }
 }  // namespace
 
+namespace {
+// An object of random radius touching `ray`, on a random side along `normal` (unit, normal to the ray), at a
+// random distance along it: the ray grazes it, the hardest case for the footprint bounds.
+template <class Object, class Ray, class Vector>
+Object touching(test::Random& random, const Ray& ray, const Vector& normal, Rgb8 colour) {
+  const double sign = random.integer(0, 1) == 0 ? 1.0 : -1.0;
+  const double radius = random.log_uniform(0.01, 2);
+  const Vector touch = ray.origin + random.log_uniform(0.3, 30) * ray.direction;
+  return Object{touch + radius * sign * normal, radius, colour, ""};
+}
+}  // namespace
+
 TEST_CASE("every method gives the plain loop's ids on random 3D scenes", "[caster][accelerated]") {
   test::Random random(2024);
   for (int trial = 0; trial < 60; ++trial) {
@@ -134,11 +146,8 @@ TEST_CASE("spheres tangent to pixel-centre rays at the footprint's box edges giv
       const Ray3D ray = camera.primary_ray(random.integer(0, 39), random.integer(0, 47));
       // ray × up is normal to the plane (eye, ray, up): a column bound; ray × right: a row bound.
       const glm::dvec3 axis = i % 2 == 0 ? up : right;
-      const double sign = random.integer(0, 1) == 0 ? 1.0 : -1.0;
-      const glm::dvec3 side = sign * glm::normalize(glm::cross(ray.direction, axis));
-      const double radius = random.log_uniform(0.01, 2);
-      const glm::dvec3 touch = ray.origin + random.log_uniform(0.3, 30) * ray.direction;
-      scene.spheres.push_back({touch + radius * side, radius, {std::uint8_t(i + 1), 0, 0}, ""});
+      scene.spheres.push_back(touching<Sphere>(random, ray, glm::normalize(glm::cross(ray.direction, axis)),
+                                               {std::uint8_t(i + 1), 0, 0}));
     }
     INFO("trial " << trial);
     check_grazing(camera, scene, casts);
@@ -162,11 +171,8 @@ TEST_CASE("circles tangent to pixel-centre rays give the plain loop's ids",
     for (int i = 0; i < 6; ++i) {
       const Ray2D ray = camera.primary_ray(random.integer(0, n - 1));
       // In 2D the bound is the tangent line itself: the side vector is the ray's normal, either way.
-      const double sign = random.integer(0, 1) == 0 ? 1.0 : -1.0;
-      const glm::dvec2 side = sign * glm::dvec2(-ray.direction.y, ray.direction.x);
-      const double radius = random.log_uniform(0.01, 2);
-      const glm::dvec2 touch = ray.origin + random.log_uniform(0.3, 30) * ray.direction;
-      scene.circles.push_back({touch + radius * side, radius, {std::uint8_t(i + 1), 9, 9}, ""});
+      scene.circles.push_back(touching<Circle>(random, ray, glm::dvec2(-ray.direction.y, ray.direction.x),
+                                               {std::uint8_t(i + 1), 9, 9}));
     }
     INFO("trial " << trial);
     check_grazing(camera, scene, casts);

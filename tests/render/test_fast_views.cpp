@@ -54,17 +54,6 @@ gl::ObserverFrame observer_looking_at_origin(glm::vec3 eye, int width, int heigh
                          glm::vec4(1, 0, 0, 1)});  // hidden where spheres are in front
   return frame;
 }
-// The same frame drawn both ways (GL impostors, then the CPU layer), compared pixel by pixel.
-Agreement impostors_against_layer(const std::vector<Sphere>& spheres, glm::vec3 eye, int width, int height) {
-  gl::ObserverRenderer renderer;
-  renderer.set_spheres(spheres);
-  const gl::ObserverFrame frame = observer_looking_at_origin(eye, width, height);
-  const std::vector<std::uint8_t> impostors =
-      render_observer(renderer, gl::SphereDrawing::impostors, frame, width, height);
-  const std::vector<std::uint8_t> layer =
-      render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width, height);
-  return compare(impostors, layer, frame.background);
-}
 }  // namespace
 
 TEST_CASE("the observer's spheres cast on the CPU look like the GL impostors", "[render][observer][speed]") {
@@ -81,16 +70,27 @@ TEST_CASE("the observer's spheres cast on the CPU look like the GL impostors", "
          Rgb8{std::uint8_t(channel(random)), std::uint8_t(channel(random)), std::uint8_t(channel(random))},
          ""});
 
+  // The same spheres drawn both ways from `eye`, looking at the origin, compared pixel by pixel.
+  auto impostors_against_layer = [&](const std::vector<Sphere>& drawn, glm::vec3 eye) {
+    gl::ObserverRenderer renderer;
+    renderer.set_spheres(drawn);
+    const gl::ObserverFrame frame = observer_looking_at_origin(eye, width, height);
+    const std::vector<std::uint8_t> impostors =
+        render_observer(renderer, gl::SphereDrawing::impostors, frame, width, height);
+    const std::vector<std::uint8_t> layer =
+        render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width, height);
+    return compare(impostors, layer, frame.background);
+  };
   SECTION("from outside, with a sphere reaching behind the observer") {
     spheres.push_back({{22.0, 0.0, 8.0}, 3.0, Rgb8{250, 250, 250}, ""});
-    const Agreement d = impostors_against_layer(spheres, {24.0f, 6.0f, 9.0f}, width, height);
+    const Agreement d = impostors_against_layer(spheres, {24.0f, 6.0f, 9.0f});
     INFO(d.differing << " of " << d.pixels << " pixels differ; " << d.covered << " covered");
     CHECK(d.covered > d.pixels / 20);      // the picture is not empty
     CHECK(d.differing <= d.pixels / 200);  // silhouettes may round differently: ≤ 0.5 %
   }
   SECTION("from inside a sphere that holds everything") {
     spheres.insert(spheres.begin(), Sphere{{0.0, 0.0, 0.0}, 60.0, Rgb8{90, 140, 90}, ""});
-    const Agreement d = impostors_against_layer(spheres, {20.0f, 10.0f, 8.0f}, width, height);
+    const Agreement d = impostors_against_layer(spheres, {20.0f, 10.0f, 8.0f});
     INFO(d.differing << " of " << d.pixels << " pixels differ; " << d.covered << " covered");
     CHECK(d.covered == d.pixels);  // the inside of the big sphere is everywhere behind the others
     CHECK(d.differing <= d.pixels / 200);
