@@ -170,8 +170,7 @@ Camera2D make_camera(const StandardScene& s, Placement placement) {
     camera.set_orbit(s.orbit2d);
   } else {
     const Orbit2D& o = s.orbit2d;
-    const glm::dvec2 position = o.target + o.d * glm::dvec2(std::cos(o.theta), std::sin(o.theta));
-    camera.set_free(position, o.target, o.df,
+    camera.set_free(orbit_screen_centre(o), o.target, o.df,
                     placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
   }
   return camera;
@@ -182,10 +181,7 @@ Camera3D make_camera_3d(const StandardScene& s, Placement placement) {
     camera.set_orbit(s.orbit3d);
   } else {
     const Orbit3D& o = s.orbit3d;
-    const glm::dvec3 position =
-        o.target + o.d * glm::dvec3(std::cos(o.theta) * std::sin(o.phi), std::sin(o.theta) * std::sin(o.phi),
-                                    std::cos(o.phi));
-    camera.set_free(position, o.target, o.df,
+    camera.set_free(orbit_screen_centre(o), o.target, o.df,
                     placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
   }
   return camera;
