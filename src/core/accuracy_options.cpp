@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "raycam/exact_bar.h"
+#include "raycam/ray_caster.h"
 
 namespace raycam {
 
@@ -13,8 +14,12 @@ AngleRoute route_of(PlacementRoute placement) {
 }
 }  // namespace
 
+// The one rule (needs_reference_caster) picks the caster, as in the app: knobs the fast caster takes (the
+// formula) keep it, and it gives the reference's image for them.
 ColourMap render_with_accuracy(const Camera2D& camera, const Scene2D& scene, const AccuracyFlags& flags) {
   validate(scene);
+  if (!needs_reference_caster(flags.options, flags.exact))
+    return cast_primary_rays(camera, scene, CastOptions{flags.options.formula});
   if (flags.exact) return to_colour_map(exact_bar_image(exact_bar(camera, scene), scene));
   return to_colour_map(reference_cast(camera, scene, flags.options));
 }
@@ -23,6 +28,8 @@ ColourMap render_with_accuracy(const Camera3D& camera, const Scene3D& scene, con
   if (flags.exact)
     throw std::invalid_argument("exact: the exact bar is 2D only (3D: use more samples per pixel)");
   validate(scene);
+  if (!needs_reference_caster(flags.options, false))
+    return cast_primary_rays(camera, scene, CastOptions{flags.options.formula});
   return to_colour_map(reference_cast(camera, scene, flags.options));
 }
 
