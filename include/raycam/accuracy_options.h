@@ -11,7 +11,8 @@
 
 #include "raycam/colour_map.h"
 #include "raycam/reference_caster.h"
-#include "raycam/view_setup.h"
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
 
 namespace raycam {
 
@@ -23,11 +24,10 @@ struct AccuracyFlags {
   bool exact = false;                                // 2D only: exact coverage instead of samples
 };
 
-// The colour map with the knobs applied: the camera re-placed by the chosen route (same P, C, d_f), cast by
-// reference_cast (colours are the samples' mean, rounded; ids from the pixel-centre ray) or, with --exact in
-// 2D, the exact bar. Throws std::invalid_argument for --exact in 3D or a non-square --spp in 3D.
-ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags);
-// The same for a camera already placed (the app's): the knobs but the placement route.
+// The colour map with the knobs applied to a placed camera (the placement route is applied by raycam_io's
+// render_with_accuracy(ViewSetup)): cast by reference_cast (colours are the samples' mean, rounded; ids from
+// the pixel-centre ray) or, with exact in 2D, the exact bar. Throws std::invalid_argument for exact in 3D or a
+// non-square spp in 3D.
 ColourMap render_with_accuracy(const Camera2D& camera, const Scene2D& scene, const AccuracyFlags& flags);
 ColourMap render_with_accuracy(const Camera3D& camera, const Scene3D& scene, const AccuracyFlags& flags);
 

@@ -2,7 +2,6 @@
 // column 0 at the eye's left. Id -1 is the background.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "raycam/scene.h"
@@ -30,11 +29,5 @@ struct ColourMap {
   Rgb8 colour_at(int row, int column) const { return colours[index(row, column)]; }
   int id_at(int row, int column) const { return ids[index(row, column)]; }
 };
-
-// PNG of the map; each map pixel becomes a block of scale_x × scale_y image pixels (a 2D bar is written
-// n × 32 with scale_y = 32). Throws std::runtime_error naming the path if it cannot be written.
-void write_png(const ColourMap& map, const std::string& path, int scale_x = 1, int scale_y = 1);
-// Ids as text: one image row per line, space-separated integers, -1 for background.
-void write_ids(const ColourMap& map, const std::string& path);
 
 }  // namespace raycam

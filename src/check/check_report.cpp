@@ -1,4 +1,5 @@
 // Section index: terminal text · JSON report · CSV · difference images.
+#include "raycam/image_files.h"
 #include "check_report.h"
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "raycam/image_files.h"
 #include "commands.h"
 #include "flag_values.h"
 #include "raycam/accuracy_options.h"

@@ -1,5 +1,6 @@
 // Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
 // status line · help · shortcuts. Every visible string goes through tr()/trf() (text.h).
+#include "raycam/image_files.h"
 #include "panels.h"
 
 #include <imgui.h>

@@ -5,6 +5,7 @@
 #include "raycam/accuracy_options.h"
 #include "raycam/exact_bar.h"
 #include "raycam/ray_caster.h"
+#include "raycam/view_setup.h"
 
 using namespace raycam;
 

@@ -1,4 +1,4 @@
-#include "raycam/colour_map.h"
+#include "raycam/image_files.h"
 
 #include <stb_image_write.h>  // implementation provided by Debian's libstb
 
@@ -23,8 +23,13 @@ void write_png(const ColourMap& map, const std::string& path, int scale_x, int s
       out[2] = c.b;
     }
   }
-  stbi_flip_vertically_on_write(0);  // our rows are already top-down; the GL code may have set it
-  if (!stbi_write_png(path.c_str(), width, height, 3, pixels.data(), width * 3))
+  write_png_pixels(pixels.data(), width, height, 3, false, path);
+}
+
+void write_png_pixels(const unsigned char* pixels, int width, int height, int channels, bool bottom_up,
+                      const std::string& path) {
+  stbi_flip_vertically_on_write(bottom_up ? 1 : 0);  // global in stb: set on every write, and only here
+  if (!stbi_write_png(path.c_str(), width, height, channels, pixels, width * channels))
     throw std::runtime_error(path + ": cannot write PNG (does the directory exist and is it writable?)");
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "raycam/accuracy_options.h"
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/scene_file.h"
@@ -34,6 +35,10 @@ inline constexpr int kDefaultSize3D = 256;
 
 // Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
 ViewSetup make_view_setup(const ViewFlags& flags);
+
+// The colour map with the accuracy knobs applied: the camera re-placed by the chosen route (same P, C, d_f)
+// first, then render_with_accuracy(camera, scene, knobs) of the core.
+ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags);
 
 // The camera preset equivalent to a camera's current state (for saving presets).
 CameraPreset preset_of(const Camera2D& camera);

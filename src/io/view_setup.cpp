@@ -107,4 +107,27 @@ CameraPreset preset_of(const Camera3D& camera) {
   return preset;
 }
 
+namespace {
+AngleRoute route_of(PlacementRoute placement) {
+  return placement == PlacementRoute::arccos ? AngleRoute::handout_arccos : AngleRoute::stable;
+}
+}  // namespace
+
+ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags) {
+  if (setup.dimension == 2) {
+    Camera2D camera = setup.camera2d;
+    if (flags.placement != PlacementRoute::orbit) {
+      const Orbit2D orbit = camera.orbit();
+      camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
+    }
+    return render_with_accuracy(camera, setup.file.scene2d, flags);
+  }
+  Camera3D camera = setup.camera3d;
+  if (flags.placement != PlacementRoute::orbit) {
+    const Orbit3D orbit = camera.orbit();
+    camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
+  }
+  return render_with_accuracy(camera, setup.file.scene3d, flags);
+}
+
 }  // namespace raycam
