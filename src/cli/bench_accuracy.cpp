@@ -164,27 +164,21 @@ struct StandardScene {
 Scene2D cluster_2d(glm::dvec2 t) { return testkit::demo_cluster_2d(t); }
 Scene3D cluster_3d(glm::dvec3 t) { return testkit::demo_cluster_3d(t); }
 
-Camera2D make_camera(const StandardScene& s, Placement placement) {
-  Camera2D camera(s.size);
-  if (placement == Placement::orbit) {
-    camera.set_orbit(s.orbit2d);
-  } else {
-    const Orbit2D& o = s.orbit2d;
+// The scene's camera placed by its orbit, or freely from P and C by the chosen route.
+template <class Camera, class Orbit>
+Camera placed(Camera camera, const Orbit& o, Placement placement) {
+  if (placement == Placement::orbit)
+    camera.set_orbit(o);
+  else
     camera.set_free(orbit_screen_centre(o), o.target, o.df,
                     placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
-  }
   return camera;
 }
+Camera2D make_camera(const StandardScene& s, Placement placement) {
+  return placed(Camera2D(s.size), s.orbit2d, placement);
+}
 Camera3D make_camera_3d(const StandardScene& s, Placement placement) {
-  Camera3D camera(s.size, s.size);
-  if (placement == Placement::orbit) {
-    camera.set_orbit(s.orbit3d);
-  } else {
-    const Orbit3D& o = s.orbit3d;
-    camera.set_free(orbit_screen_centre(o), o.target, o.df,
-                    placement == Placement::arccos ? AngleRoute::handout_arccos : AngleRoute::stable);
-  }
-  return camera;
+  return placed(Camera3D(s.size, s.size), s.orbit3d, placement);
 }
 
 std::vector<StandardScene> standard_scenes(bool quick) {
