@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
   libfontconfig-dev fonts-dejavu-core        # the TrueType font with accents, rasterised at the lecture size
   xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
+  libcli11-dev                               # command lines
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev bubblewrap python3            # command lines; `check`: sandbox and the Python example student
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers

@@ -6,7 +6,9 @@
 // loop's own ray and intersection code, only on the pixels an object can cover.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "raycam/camera2d.h"
@@ -31,9 +33,10 @@ enum class CastMethod {
 };
 inline constexpr CastMethod kCastMethods[] = {CastMethod::automatic, CastMethod::plain, CastMethod::culled,
                                              CastMethod::footprint, CastMethod::binned};
+// "automatic", "plain", ...: the names the command line and the app show.
 const char* cast_method_name(CastMethod method);
-// "automatic", "plain", ...; throws std::invalid_argument naming `flag` and the accepted names.
-CastMethod parse_cast_method(const std::string& name, const std::string& flag);
+// The method of that name, or nothing (a pure lookup: what to say about a bad name is the caller's business).
+std::optional<CastMethod> cast_method_named(std::string_view name);
 
 struct CastOptions {
   IntersectFormula formula = IntersectFormula::stable;

@@ -57,11 +57,10 @@ bool needs_reference_caster(const ReferenceOptions& options, bool exact_bar);
 CoverageImage reference_cast(const Camera2D& camera, const Scene2D& scene, const ReferenceOptions& options);
 CoverageImage reference_cast(const Camera3D& camera, const Scene3D& scene, const ReferenceOptions& options);
 
+inline constexpr Scalar kScalars[] = {Scalar::float32, Scalar::float64, Scalar::extended};
+inline constexpr IntersectFormula kIntersectFormulas[] = {IntersectFormula::naive, IntersectFormula::stable};
 // Names used by the CLI and the CSV: "float" / "double" / "long-double", "naive" / "stable".
 const char* scalar_name(Scalar scalar);
 const char* formula_name(IntersectFormula formula);
-// Throw std::invalid_argument naming `field` and the accepted values.
-Scalar parse_scalar(const std::string& text, const std::string& field);
-IntersectFormula parse_formula(const std::string& text, const std::string& field);
 
 }  // namespace raycam

@@ -14,6 +14,7 @@
 
 namespace raycam {
 
+// What the command line sets (parsed and range-checked by src/flags' camera option group).
 struct ViewFlags {
   std::optional<std::string> scene_path;
   std::optional<int> dimension;  // --mode 2d|3d
@@ -31,21 +32,11 @@ struct ViewSetup {
 inline constexpr int kDefaultSize2D = 256;
 inline constexpr int kDefaultSize3D = 256;
 
-// If args[i] is one of the view flags, reads it and its value, advances i past them and returns true.
-// Throws std::invalid_argument naming the flag and the accepted range for a bad or missing value.
-bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags);
-
-// An integer flag value in [lo, hi]; throws std::invalid_argument naming the flag and the range.
-int parse_integer_flag(const std::string& text, const std::string& flag, int lo, int hi);
-
 // Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
 ViewSetup make_view_setup(const ViewFlags& flags);
 
 // The camera preset equivalent to a camera's current state (for saving presets).
 CameraPreset preset_of(const Camera2D& camera);
 CameraPreset preset_of(const Camera3D& camera);
-
-// Help text for the view flags, one per line, for --help screens.
-const char* view_flags_help();
 
 }  // namespace raycam

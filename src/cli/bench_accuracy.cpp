@@ -7,12 +7,13 @@
 #include <cstdlib>
 #include <fstream>
 #include <glm/gtc/constants.hpp>
-#include <sstream>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
 #include "accuracy_sweep.h"
 #include "commands.h"
+#include "flag_values.h"
 #include "raycam/exact_bar.h"
 #include "raycam/ray_caster.h"
 #include "raycam/reference_caster.h"
@@ -38,115 +39,73 @@ struct BenchOptions {
   bool stress = false, long_sweep = false, angles = false;
 };
 
-void print_help() {
-  std::printf(
-      "usage: raycam-cli bench accuracy [--precision LIST] [--intersect LIST] [--spp LIST] [--frame LIST]\n"
-      "                                 [--placement LIST] [--repeats R] [--quick] [--csv FILE] [--png "
-      "FILE]\n"
-      "       raycam-cli bench accuracy --stress [--long] [--csv FILE]\n"
-      "       raycam-cli bench accuracy --angles [--csv FILE]\n\n"
-      "Sweeps the caster's knobs on standard scenes and measures median run time against error:\n"
-      "  id error     fraction of pixel-centre ids differing from the exact reference\n"
-      "  colour error mean |colour - exact coverage colour| per channel, 8-bit units\n"
-      "References: 2D, the exact bar (analytic footprints); 3D, long double, stable, camera-relative,\n"
-      "1024 stratified samples per pixel (256 with --quick). LISTs are comma-separated:\n"
-      "  --precision float,double,long-double   scalar of the per-ray arithmetic\n"
-      "  --intersect naive,stable               ray/circle formula (textbook b^2-c, or Ray Tracing Gems)\n"
-      "  --spp 1,4,16,64                        stratified samples per pixel (3D: perfect squares)\n"
-      "  --frame world,relative                 world coordinates or relative to the eye\n"
-      "  --placement orbit,arccos,stable        camera from (d, theta, phi), or from P and C by the\n"
-      "                                         handout's arccos route or atan2 (default: orbit)\n"
-      "  --repeats R      timing repeats, the median is kept (default 5)\n"
-      "  --quick          smaller images and reference (for CI)\n"
-      "  --csv FILE       default accuracy.csv (stress: stress.csv, angles: angles.csv)\n"
-      "  --png FILE       gnuplot PNG of time against error with the Pareto front (default accuracy.png;\n"
-      "                   needs gnuplot on PATH; skipped with a message otherwise)\n"
-      "  --stress         the numerical stress table (worst id error per setting, float/double,\n"
-      "                   naive/stable, world/relative); exit 1 if anything is non-finite\n"
-      "  --long           the long stress list (more values, larger images)\n"
-      "  --angles         the arccos-vs-atan2 angle error table\n");
-}
-
-std::vector<std::string> split(const std::string& list) {
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  for (std::string item; std::getline(stream, item, ',');)
-    if (!item.empty()) items.push_back(item);
-  if (items.empty()) throw std::invalid_argument("empty list '" + list + "'");
-  return items;
-}
-
-Placement parse_placement(const std::string& text) {
-  if (text == "orbit") return Placement::orbit;
-  if (text == "arccos") return Placement::arccos;
-  if (text == "stable") return Placement::stable;
-  throw std::invalid_argument("--placement must be orbit, arccos or stable, got '" + text + "'");
-}
 const char* placement_name(Placement p) {
   return p == Placement::orbit ? "orbit" : p == Placement::arccos ? "arccos" : "stable";
 }
 
-BenchOptions parse_options(const Args& args, bool& help) {
-  BenchOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& flag = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(flag + ": missing value");
-      return args[++i];
-    };
-    if (flag == "--help" || flag == "-h") {
-      help = true;
-    } else if (flag == "--precision") {
-      o.scalars.clear();
-      for (const auto& s : split(value())) o.scalars.push_back(parse_scalar(s, "--precision"));
-    } else if (flag == "--intersect") {
-      o.formulas.clear();
-      for (const auto& s : split(value())) o.formulas.push_back(parse_formula(s, "--intersect"));
-    } else if (flag == "--spp") {
-      o.spps.clear();
-      for (const auto& s : split(value())) {
-        int spp = 0;
-        try {
-          spp = std::stoi(s);
-        } catch (const std::exception&) {
-          throw std::invalid_argument("--spp must be integers in [1, " + std::to_string(kMaxSamplesPerPixel) +
-                                      "], got '" + s + "'");
-        }
-        if (spp < 1 || spp > kMaxSamplesPerPixel)
-          throw std::invalid_argument("--spp must be in [1, " + std::to_string(kMaxSamplesPerPixel) +
-                                      "], got " + s);
-        o.spps.push_back(spp);
-      }
-    } else if (flag == "--frame") {
-      o.frames.clear();
-      for (const auto& s : split(value())) {
-        if (s != "world" && s != "relative")
-          throw std::invalid_argument("--frame must be world or relative, got '" + s + "'");
-        o.frames.push_back(s == "relative");
-      }
-    } else if (flag == "--placement") {
-      o.placements.clear();
-      for (const auto& s : split(value())) o.placements.push_back(parse_placement(s));
-    } else if (flag == "--repeats") {
-      o.repeats = std::stoi(value());
-      if (o.repeats < 1 || o.repeats > 1000) throw std::invalid_argument("--repeats must be in [1, 1000]");
-    } else if (flag == "--quick") {
-      o.quick = true;
-    } else if (flag == "--csv") {
-      o.csv_path = value();
-    } else if (flag == "--png") {
-      o.png_path = value();
-    } else if (flag == "--stress") {
-      o.stress = true;
-    } else if (flag == "--long") {
-      o.long_sweep = true;
-    } else if (flag == "--angles") {
-      o.angles = true;
-    } else {
-      throw std::invalid_argument("unknown option '" + flag + "' (see raycam-cli bench accuracy --help)");
-    }
-  }
-  return o;
+std::vector<std::string> names_of_scalars() {
+  std::vector<std::string> names;
+  for (Scalar scalar : kScalars) names.push_back(scalar_name(scalar));
+  return names;
+}
+std::vector<std::string> names_of_formulas() {
+  std::vector<std::string> names;
+  for (IntersectFormula formula : kIntersectFormulas) names.push_back(formula_name(formula));
+  return names;
+}
+
+void add_options(CLI::App& bench, BenchOptions& o) {
+  bench.footer(
+      "Sweeps the caster's knobs on standard scenes and measures median run time against error:\n"
+      "  id error     fraction of pixel-centre ids differing from the exact reference\n"
+      "  colour error mean |colour - exact coverage colour| per channel, 8-bit units\n"
+      "References: 2D, the exact bar (analytic footprints); 3D, long double, stable, camera-relative,\n"
+      "1024 stratified samples per pixel (256 with --quick). LISTs are comma-separated.\n"
+      "--stress: the numerical stress table; --angles: the arccos-vs-atan2 angle error table.\n");
+  CLI::Option_group* sweep = bench.add_option_group("Sweep", "The knobs swept (comma-separated lists)");
+  using flags::add_checked_list;
+  add_checked_list<int>(*sweep, "--precision", "LIST", "scalar of the per-ray arithmetic (default: all)",
+                        flags::one_of(names_of_scalars()), [&o](std::vector<int> items) {
+                          o.scalars.clear();
+                          for (int i : items) o.scalars.push_back(kScalars[i]);
+                        });
+  add_checked_list<int>(*sweep, "--intersect", "LIST",
+                        "ray/object formula, textbook b^2-c or Ray Tracing Gems (default: both)",
+                        flags::one_of(names_of_formulas()), [&o](std::vector<int> items) {
+                          o.formulas.clear();
+                          for (int i : items) o.formulas.push_back(kIntersectFormulas[i]);
+                        });
+  add_checked_list<int>(*sweep, "--spp", "LIST",
+                        "stratified samples per pixel; 3D takes the perfect squares (default 1,4,16,64)",
+                        flags::integer_in(1, kMaxSamplesPerPixel),
+                        [&o](std::vector<int> items) { o.spps = items; });
+  add_checked_list<int>(*sweep, "--frame", "LIST", "world coordinates or relative to the eye (default: both)",
+                        flags::one_of({"world", "relative"}), [&o](std::vector<int> items) {
+                          o.frames.clear();
+                          for (int i : items) o.frames.push_back(i == 1);
+                        });
+  add_checked_list<int>(*sweep, "--placement", "LIST",
+                        "camera from (d, theta, phi), or from P and C by the handout's arccos route or atan2 "
+                        "(default: orbit)",
+                        flags::one_of({"orbit", "arccos", "stable"}), [&o](std::vector<int> items) {
+                          o.placements.clear();
+                          for (int i : items) o.placements.push_back(Placement(i));
+                        });
+  flags::add_checked_option<int>(bench, "--repeats", "R", "timing repeats, the median is kept (default 5)",
+                                 flags::integer_in(1, 1000), [&o](int r) { o.repeats = r; });
+  bench.add_flag("--quick", o.quick, "smaller images and reference (for CI)");
+  flags::add_checked_option<std::string>(bench, "--csv", "FILE",
+                                         "default accuracy.csv (stress: stress.csv, angles: angles.csv)",
+                                         flags::file_name(), [&o](std::string p) { o.csv_path = p; });
+  flags::add_checked_option<std::string>(
+      bench, "--png", "FILE",
+      "gnuplot PNG of time against error with the Pareto front (default "
+      "accuracy.png; needs gnuplot on PATH; skipped with a message otherwise)",
+      flags::file_name(), [&o](std::string p) { o.png_path = p; });
+  bench.add_flag("--stress", o.stress,
+                 "the numerical stress table (worst id error per setting); exit 1 if anything is non-finite");
+  bench.add_flag("--long", o.long_sweep, "the long stress list (more values, larger images)");
+  bench.add_flag("--angles", o.angles, "the arccos-vs-atan2 angle error table");
 }
 
 // ---- Standard scenes ------------------------------------------------------------------------------------
@@ -432,15 +391,8 @@ void write_plot(const std::vector<Point>& points, const std::vector<std::string>
   if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + script_path);
   std::printf("plots: %s (colour error), %s (id error)\n", png_path.c_str(), id_png.c_str());
 }
-}  // namespace
 
-int run_bench_accuracy(const Args& args) {
-  bool help = false;
-  BenchOptions o = parse_options(args, help);
-  if (help) {
-    print_help();
-    return 0;
-  }
+int run_bench_accuracy(BenchOptions o) {
   if (o.stress) {
     if (o.csv_path == "accuracy.csv") o.csv_path = "stress.csv";
     return run_stress_table(o.long_sweep, o.csv_path) == 0 ? 0 : 1;
@@ -464,6 +416,15 @@ int run_bench_accuracy(const Args& args) {
   for (const StandardScene& s : scenes) names.push_back(s.name);
   if (!o.png_path.empty()) write_plot(points, names, o.png_path);
   return 0;
+}
+}  // namespace
+
+void add_bench_accuracy_command(CLI::App& bench, int& exit_code) {
+  CLI::App* accuracy =
+      bench.add_subcommand("accuracy", "time against error, --stress, --angles (README \"Accuracy\")");
+  auto options = std::make_shared<BenchOptions>();
+  add_options(*accuracy, *options);
+  accuracy->callback([options, &exit_code] { exit_code = run_bench_accuracy(*options); });
 }
 
 }  // namespace raycam::cli

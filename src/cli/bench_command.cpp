@@ -1,24 +1,28 @@
 // `raycam-cli bench accuracy|speed`: the two benchmarks behind one command.
-#include <cstdio>
-#include <stdexcept>
-
 #include "commands.h"
 
 namespace raycam::cli {
 
-int run_bench(const Args& args) {
-  const char* usage =
-      "usage: raycam-cli bench speed [options]      raycam's casters against Embree 3 (README, \"Speed\")\n"
-      "       raycam-cli bench accuracy [options]   time against error, --stress, --angles (README, \"Accuracy\")\n"
-      "(raycam-cli bench NAME --help for the options)\n";
-  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-    std::fputs(usage, args.empty() ? stderr : stdout);
-    return args.empty() ? 2 : 0;
-  }
-  const Args rest(args.begin() + 1, args.end());
-  if (args[0] == "speed") return run_bench_speed(rest);
-  if (args[0] == "accuracy") return run_bench_accuracy(rest);
-  throw std::invalid_argument("bench: unknown benchmark '" + args[0] + "' (expected speed or accuracy)");
+void add_bench_command(CLI::App& cli, int& exit_code) {
+  CLI::App* bench = cli.add_subcommand(
+      "bench", "benchmarks: casters against Embree (speed), time against error (accuracy)");
+  bench->require_subcommand(1);
+  add_bench_accuracy_command(*bench, exit_code);
+  // `bench speed` keeps its own parser (README "Speed"): it gets every argument after its name, --help too.
+  CLI::App* speed = bench->add_subcommand(
+      "speed", "raycam's casters against Embree 3 (README \"Speed\"; bench speed --help)");
+  speed->prefix_command();
+  speed->set_help_flag();
+  speed->callback([speed, &exit_code] { exit_code = run_bench_speed(speed->remaining()); });
+}
+
+void add_check_command(CLI::App& cli, int& exit_code) {
+  // `check` keeps its own CLI11 parser (check_command.cpp): it gets every argument after its name.
+  CLI::App* check = cli.add_subcommand(
+      "check", "grade a student's camera program (stdin case -> stdout ids) and name its classic mistakes");
+  check->prefix_command();
+  check->set_help_flag();
+  check->callback([check, &exit_code] { exit_code = run_check(check->remaining()); });
 }
 
 }  // namespace raycam::cli

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "flag_values.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
@@ -79,12 +80,16 @@ void print_help() {
       "  --scene FILE    time a scene file's camera preset instead, at --size WxH (3D) or N (2D)\n");
 }
 
+int integer_flag(const std::string& text, const std::string& flag, int lo, int hi) {
+  return flags::checked_value(flags::integer_in(lo, hi), text, flag);
+}
+
 std::vector<int> integer_list(const std::string& text, const std::string& flag, int lo, int hi) {
   std::vector<int> values;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
-    values.push_back(parse_integer_flag(text.substr(start, comma - start), flag, lo, hi));
+    values.push_back(integer_flag(text.substr(start, comma - start), flag, lo, hi));
     start = comma + 1;
   }
   return values;
@@ -117,13 +122,14 @@ SpeedOptions parse_options(const Args& args, bool& help) {
     if (flag == "--counts") o.counts = integer_list(value, flag, 0, 2000000);
     else if (flag == "--sizes") o.sides = integer_list(value, flag, 1, 8192);
     else if (flag == "--threads") o.threads = integer_list(value, flag, 1, 256);
-    else if (flag == "--repeats") o.repeats = parse_integer_flag(value, flag, 1, 1000);
+    else if (flag == "--repeats")
+      o.repeats = integer_flag(value, flag, 1, 1000);
     else if (flag == "--csv") o.csv_path = value;
     else if (flag == "--scene") o.scene_path = value;
     else if (flag == "--size") {
       const std::size_t x = value.find('x');
-      o.scene_columns = parse_integer_flag(value.substr(0, x), flag, 1, 16384);
-      o.scene_rows = x == std::string::npos ? 1 : parse_integer_flag(value.substr(x + 1), flag, 1, 16384);
+      o.scene_columns = integer_flag(value.substr(0, x), flag, 1, 16384);
+      o.scene_rows = x == std::string::npos ? 1 : integer_flag(value.substr(x + 1), flag, 1, 16384);
     } else throw std::invalid_argument("unknown option '" + flag + "' (see raycam-cli bench speed --help)");
     i += 2;
   }
@@ -320,7 +326,7 @@ void run_case(benchmark::State& state, Run& run, Case& c) {
   }
 #endif
   else {
-    options.method = parse_cast_method(name, "variant");
+    options.method = cast_method_named(name).value();
     cast = [&] { cast_primary_rays(camera, scene, map, options, &stats); };
   }
   cast();  // warm-up: first touch of the map and of the caster's reused memory
@@ -378,7 +384,7 @@ void register_extras(Run& run) {
                                                const Camera2D camera(n);
                                                ColourMap map;
                                                CastOptions options;
-                                               options.method = parse_cast_method(method, "variant");
+                                               options.method = cast_method_named(method).value();
                                                CastStats stats;
                                                for (auto _ : state)
                                                  cast_primary_rays(camera, scene, map, options, &stats);
@@ -546,7 +552,7 @@ int run_scene(const SpeedOptions& o) {
                   [&, method](benchmark::State& state) {
                     ColourMap map;
                     CastOptions options;
-                    options.method = parse_cast_method(method, "variant");
+                    options.method = cast_method_named(method).value();
                     options.threads = threads;
                     for (auto _ : state) {
                       if (setup.dimension == 2)

@@ -1,8 +1,11 @@
-// raycam-cli subcommands. Each takes the arguments after its name and returns the process exit code.
-// Bad arguments throw std::invalid_argument (exit 2, message on stderr); other failures std::runtime_error
-// (exit 1). A new subcommand is one function here and one row in main.cpp's table.
+// raycam-cli subcommands on CLI11. Each add_*_command adds its subcommand (options, generated help) to the
+// dispatcher `cli`; the subcommand's callback does the work and stores the process exit code in `exit_code`.
+// Bad usage throws (CLI11 errors, std::invalid_argument: exit 2 with one message line), other failures
+// std::runtime_error (exit 1): flags::parse_command_line reports both. A new subcommand is one function here
+// and one call in main.cpp.
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <string>
 #include <vector>
 
@@ -10,12 +13,15 @@ namespace raycam::cli {
 
 using Args = std::vector<std::string>;
 
-int run_render(const Args& args);
-int run_check(const Args& args);  // check_command.cpp, on the raycam_check library (src/check)
-int run_shot(const Args& args);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
-// `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp), dispatched by run_bench.
-int run_bench(const Args& args);
-int run_bench_accuracy(const Args& args);
+void add_render_command(CLI::App& cli, int& exit_code);
+void add_shot_command(CLI::App& cli, int& exit_code);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
+// `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp) under `bench`.
+void add_bench_command(CLI::App& cli, int& exit_code);
+void add_bench_accuracy_command(CLI::App& bench, int& exit_code);
+// `bench speed` parses its own arguments: everything after `bench speed` (its --help included).
+// `check` (check_command.cpp, on the raycam_check library) parses its own arguments with CLI11.
+void add_check_command(CLI::App& cli, int& exit_code);  // passes its arguments to run_check
+int run_check(const Args& args);
 int run_bench_speed(const Args& args);
 
 }  // namespace raycam::cli

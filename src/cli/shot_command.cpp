@@ -7,32 +7,21 @@
 #include <ctime>
 #include <fstream>
 #include <glm/gtc/constants.hpp>
+#include <memory>
 #include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "app_flags.h"
 #include "app_options.h"
 #include "commands.h"
+#include "flag_values.h"
 #include "headless_renderer.h"
 
 namespace raycam::cli {
 
 namespace {
-void print_help() {
-  std::printf(
-      "usage: raycam-cli shot [--out ui.png] [--scene FILE] [camera flags] [--view 2d|3d] [--width W --height H]\n"
-      "                       [--inspect COL,ROW] [--step K] [--mistake NAME] [--font-scale S] [--frames N]\n"
-      "       raycam-cli shot --soak N [same flags]\n\n"
-      "Renders the app's whole window (panels, colour bar or image, overhead and observer views) with no display,\n"
-      "through OSMesa, with the same frame code as the `raycam` app, and writes a PNG.\n\n%s%s"
-      "  --out FILE          output PNG (default raycam-shot.png)\n"
-      "  --frames N          frames to run before the capture, N in [2, 1000] (default 3)\n"
-      "  --soak N            render N frames with random camera changes; report frame times, peak memory, and\n"
-      "                      check every frame's colour map (N in [1, 1000000])\n",
-      view_flags_help(), ui::app_options_help());
-}
-
 // CPU time of the whole process (every thread: the caster's and llvmpipe's), in ms. On a shared machine the
 // wall-clock frame time includes waiting for a core; the CPU time is what the frame costs.
 double process_cpu_ms() {
@@ -105,35 +94,46 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
   std::printf("soak: %d frames with an inconsistent colour map\n", bad_frames);
   return bad_frames == 0 ? 0 : 1;
 }
-}  // namespace
-
-int run_shot(const Args& args) {
-  ui::AppOptions options;
+struct ShotOptions {
+  ui::AppOptions app;
   std::string out_path = "raycam-shot.png";
   int frames = 3, soak_frames = 0;
-  for (std::size_t i = 0; i < args.size();) {
-    if (args[i] == "--help" || args[i] == "-h") {
-      print_help();
-      return 0;
-    }
-    if (ui::parse_app_option(args, i, options)) continue;
-    if (i + 1 >= args.size()) throw std::invalid_argument("unknown option or missing value: '" + args[i] + "' (see raycam-cli shot --help)");
-    if (args[i] == "--out") out_path = args[i + 1];
-    else if (args[i] == "--frames") frames = parse_integer_flag(args[i + 1], "--frames", 2, 1000);
-    else if (args[i] == "--soak") soak_frames = parse_integer_flag(args[i + 1], "--soak", 1, 1000000);
-    else throw std::invalid_argument("unknown option '" + args[i] + "' (see raycam-cli shot --help)");
-    i += 2;
-  }
-  ui::AppState state = ui::make_app_state(options);
-  headless::HeadlessRenderer renderer(options.width, options.height);
-  if (soak_frames > 0) return soak(state, renderer, soak_frames);
+};
+
+int run_shot(const ShotOptions& options) {
+  ui::AppState state = ui::make_app_state(options.app);
+  headless::HeadlessRenderer renderer(options.app.width, options.app.height);
+  if (options.soak_frames > 0) return soak(state, renderer, options.soak_frames);
   const auto start = std::chrono::steady_clock::now();
-  const gl::RgbaImage image = renderer.render_settled(state, frames);
+  const gl::RgbaImage image = renderer.render_settled(state, options.frames);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  gl::write_png(image, out_path);
-  std::printf("wrote %s (%dx%d, %dD, %d frames in %.0f ms, last frame %.1f ms)\n", out_path.c_str(), image.width,
-              image.height, state.dimension, frames, ms, state.frame_ms);
+  gl::write_png(image, options.out_path);
+  std::printf("wrote %s (%dx%d, %dD, %d frames in %.0f ms, last frame %.1f ms)\n", options.out_path.c_str(),
+              image.width, image.height, state.dimension, options.frames, ms, state.frame_ms);
   return 0;
+}
+}  // namespace
+
+void add_shot_command(CLI::App& cli, int& exit_code) {
+  CLI::App* shot = cli.add_subcommand(
+      "shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run");
+  shot->footer(
+      "Renders the app's whole window (panels, colour bar or image, overhead and observer views) with no "
+      "display,\n"
+      "through OSMesa, with the same frame code as the `raycam` app, and writes a PNG.\n");
+  auto options = std::make_shared<ShotOptions>();
+  flags::add_app_options(*shot, options->app);
+  flags::add_checked_option<std::string>(*shot, "--out", "FILE", "output PNG (default raycam-shot.png)",
+                                         flags::file_name(),
+                                         [options](std::string p) { options->out_path = p; });
+  flags::add_checked_option<int>(*shot, "--frames", "N", "frames to run before the capture (default 3)",
+                                 flags::integer_in(2, 1000), [options](int n) { options->frames = n; });
+  flags::add_checked_option<int>(
+      *shot, "--soak", "N",
+      "render N frames with random camera changes; report frame times, peak memory, and "
+      "check every frame's colour map",
+      flags::integer_in(1, 1000000), [options](int n) { options->soak_frames = n; });
+  shot->callback([options, &exit_code] { exit_code = run_shot(*options); });
 }
 
 }  // namespace raycam::cli

@@ -8,65 +8,6 @@
 
 namespace raycam {
 
-bool parse_accuracy_flag(const std::vector<std::string>& args, std::size_t& i, AccuracyFlags& flags) {
-  const std::string& flag = args[i];
-  if (flag == "--exact") {
-    flags.exact = flags.given = true;
-    ++i;
-    return true;
-  }
-  if (flag != "--precision" && flag != "--intersect" && flag != "--spp" && flag != "--frame" &&
-      flag != "--placement")
-    return false;
-  if (i + 1 >= args.size()) throw std::invalid_argument(flag + ": missing value (see --help)");
-  const std::string& value = args[i + 1];
-  if (flag == "--precision") {
-    flags.options.scalar = parse_scalar(value, flag);
-  } else if (flag == "--intersect") {
-    flags.options.formula = parse_formula(value, flag);
-  } else if (flag == "--spp") {
-    std::size_t used = 0;
-    int spp = 0;
-    try {
-      spp = std::stoi(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != value.size() || spp < 1 || spp > kMaxSamplesPerPixel)
-      throw std::invalid_argument("--spp must be an integer in [1, " + std::to_string(kMaxSamplesPerPixel) +
-                                  "], got '" + value + "'");
-    flags.options.samples_per_pixel = spp;
-  } else if (flag == "--frame") {
-    if (value != "world" && value != "relative")
-      throw std::invalid_argument("--frame must be world or relative, got '" + value + "'");
-    flags.options.camera_relative = value == "relative";
-  } else {
-    if (value == "orbit")
-      flags.placement = PlacementRoute::orbit;
-    else if (value == "arccos")
-      flags.placement = PlacementRoute::arccos;
-    else if (value == "stable")
-      flags.placement = PlacementRoute::stable;
-    else
-      throw std::invalid_argument("--placement must be orbit, arccos or stable, got '" + value + "'");
-  }
-  flags.given = true;
-  i += 2;
-  return true;
-}
-
-const char* accuracy_flags_help() {
-  return "accuracy knobs (README, \"Accuracy\"):\n"
-         "  --precision P       float | double | long-double arithmetic per ray (default double)\n"
-         "  --intersect F       naive (textbook b^2 - c) | stable (Ray Tracing Gems 2019; default)\n"
-         "  --spp N             stratified samples per pixel, colours averaged (3D: a square, 1, 4, 9, "
-         "16...)\n"
-         "  --frame F           world (default) | relative: coordinates relative to the eye\n"
-         "  --placement R       orbit (default) | arccos (handout) | stable (atan2): free placement from P, "
-         "C\n"
-         "  --exact             2D: the exact bar, each pixel's colour weighted by exact coverage\n";
-}
-
 namespace {
 AngleRoute route_of(PlacementRoute placement) {
   return placement == PlacementRoute::arccos ? AngleRoute::handout_arccos : AngleRoute::stable;
@@ -84,7 +25,8 @@ ColourMap render_with_accuracy(const Camera2D& camera, const Scene2D& scene, con
 }
 
 ColourMap render_with_accuracy(const Camera3D& camera, const Scene3D& scene, const AccuracyFlags& flags) {
-  if (flags.exact) throw std::invalid_argument("--exact is for the 2D bar only (3D: use --spp)");
+  if (flags.exact)
+    throw std::invalid_argument("exact: the exact bar is 2D only (3D: use more samples per pixel)");
   validate(scene);
   if (!needs_reference_caster(flags.options, false))
     return cast_primary_rays(camera, scene, CastOptions{flags.options.formula});

@@ -124,10 +124,10 @@ const char* cast_method_name(CastMethod method) {
   return "?";
 }
 
-CastMethod parse_cast_method(const std::string& name, const std::string& flag) {
+std::optional<CastMethod> cast_method_named(std::string_view name) {
   for (const auto& [value, known] : kMethodNames)
     if (name == known) return value;
-  throw std::invalid_argument(flag + ": expected automatic, plain, culled, footprint or binned, got '" + name + "'");
+  return std::nullopt;
 }
 
 int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {

@@ -227,17 +227,4 @@ const char* formula_name(IntersectFormula formula) {
   return formula == IntersectFormula::naive ? "naive" : "stable";
 }
 
-Scalar parse_scalar(const std::string& text, const std::string& field) {
-  if (text == "float") return Scalar::float32;
-  if (text == "double") return Scalar::float64;
-  if (text == "long-double" || text == "long double") return Scalar::extended;
-  throw std::invalid_argument(field + " must be float, double or long-double, got '" + text + "'");
-}
-
-IntersectFormula parse_formula(const std::string& text, const std::string& field) {
-  if (text == "naive") return IntersectFormula::naive;
-  if (text == "stable") return IntersectFormula::stable;
-  throw std::invalid_argument(field + " must be naive or stable, got '" + text + "'");
-}
-
 }  // namespace raycam

@@ -1,117 +1,11 @@
 #include "raycam/view_setup.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
 #include "raycam/limits.h"
 
 namespace raycam {
-
-namespace {
-
-[[noreturn]] void bad_flag(const std::string& flag, const std::string& expected, const std::string& got) {
-  throw std::invalid_argument(flag + ": expected " + expected + ", got '" + got + "'");
-}
-
-double parse_number(const std::string& text, const std::string& flag, const std::string& expected) {
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value))
-    bad_flag(flag, expected, text);
-  return value;
-}
-
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t at = text.find(separator, start);
-    parts.push_back(text.substr(start, at - start));
-    if (at == std::string::npos) return parts;
-    start = at + 1;
-  }
-}
-
-int parse_size_component(const std::string& text, const std::string& flag, int max) {
-  const std::string expected = "an integer in [1, " + std::to_string(max) + "]";
-  const double value = parse_number(text, flag, expected);
-  if (value < 1 || value > max || std::floor(value) != value) bad_flag(flag, expected, text);
-  return int(value);
-}
-}  // namespace
-
-int parse_integer_flag(const std::string& text, const std::string& flag, int lo, int hi) {
-  errno = 0;
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || value < lo || value > hi)
-    bad_flag(flag, "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", text);
-  return int(value);
-}
-
-bool parse_view_flag(const std::vector<std::string>& args, std::size_t& i, ViewFlags& flags) {
-  static const char* const kFlags[] = {"--scene", "--mode", "--target", "--d",   "--theta",
-                                       "--phi",   "--df",   "--res",    "--size"};
-  const std::string& flag = args[i];
-  bool known = false;
-  for (const char* f : kFlags) known = known || flag == f;
-  if (!known) return false;
-  if (i + 1 >= args.size()) throw std::invalid_argument(flag + ": missing value (see --help)");
-  const std::string& value = args[++i];
-  ++i;
-  CameraPreset& camera = flags.camera;
-  if (flag == "--scene") {
-    flags.scene_path = value;
-  } else if (flag == "--mode") {
-    if (value != "2d" && value != "3d") bad_flag(flag, "2d or 3d", value);
-    flags.dimension = value == "2d" ? 2 : 3;
-  } else if (flag == "--target") {
-    const std::vector<std::string> parts = split(value, ',');
-    if (parts.size() != 2 && parts.size() != 3) bad_flag(flag, "x,y (2D) or x,y,z (3D)", value);
-    std::vector<double> target;
-    for (const std::string& part : parts) {
-      const double x = parse_number(part, flag, "finite numbers with |x| <= 1e12");
-      if (std::abs(x) > kMaxCoordinate) bad_flag(flag, "finite numbers with |x| <= 1e12", value);
-      target.push_back(x);
-    }
-    camera.target = target;
-  } else if (flag == "--d") {
-    const double x = parse_number(value, flag, "a number in ]0, 1e12]");
-    if (x <= 0.0 || x > kMaxCoordinate) bad_flag(flag, "a number in ]0, 1e12]", value);
-    camera.d = x;
-  } else if (flag == "--df") {
-    const double x = parse_number(value, flag, "a number in [1e-9, 1e9]");
-    if (!(x >= kMinFocalDistance && x <= kMaxFocalDistance)) bad_flag(flag, "a number in [1e-9, 1e9]", value);
-    camera.df = x;
-  } else if (flag == "--theta" || flag == "--phi") {
-    const double x = parse_number(value, flag, "an angle in degrees in [-1e6, 1e6]");
-    if (std::abs(x) > 1e6) bad_flag(flag, "an angle in degrees in [-1e6, 1e6]", value);
-    (flag == "--theta" ? camera.theta_deg : camera.phi_deg) = x;
-  } else if (flag == "--res") {
-    const double x = parse_number(value, flag, "a number in ]0, 1]");
-    if (!(x > 0.0 && x <= 1.0)) bad_flag(flag, "a number in ]0, 1]", value);
-    camera.res = x;
-  } else {  // --size N | WxH
-    const std::vector<std::string> parts = split(value, 'x');
-    if (parts.size() == 1) {
-      camera.size = std::vector<int>{
-          parse_size_component(parts[0], flag, kMaxSide3D > kMaxPixels2D ? kMaxSide3D : kMaxPixels2D)};
-    } else if (parts.size() == 2) {
-      const int w = parse_size_component(parts[0], flag, kMaxSide3D),
-                h = parse_size_component(parts[1], flag, kMaxSide3D);
-      if (static_cast<long long>(w) * h > kMaxPixels3D)
-        bad_flag(flag, "W x H <= " + std::to_string(kMaxPixels3D) + " pixels", value);
-      camera.size = std::vector<int>{w, h};
-    } else {
-      bad_flag(flag, "N or WxH", value);
-    }
-  }
-  return true;
-}
 
 namespace {
 // Fields set in `over` replace those in `base`.
@@ -211,19 +105,6 @@ CameraPreset preset_of(const Camera3D& camera) {
   preset.res = camera.res_columns();
   preset.size = std::vector<int>{camera.max_columns(), camera.max_rows()};
   return preset;
-}
-
-const char* view_flags_help() {
-  return "  --scene FILE        scene file (JSON, see README); default: a built-in demo scene\n"
-         "  --mode 2d|3d        camera kind when no scene file is given (default 3d)\n"
-         "  --target x,y[,z]    the point the camera looks at, C (default: the origin)\n"
-         "  --d D               distance from C to the screen centre, D in ]0, 1e12] (2D default 6, 3D 8)\n"
-         "  --theta DEG         azimuth of the camera around C, degrees (2D default 90, 3D 30)\n"
-         "  --phi DEG           3D polar angle from +z, degrees (default 60; 0 = above, 180 = below)\n"
-         "  --df F              focal distance, F in [1e-9, 1e9]; field of view 2*atan(1/F) (2D 1.5, 3D 2)\n"
-         "  --res R             resolution factor in ]0, 1]; n = round(R*N), at least 1 (default 1)\n"
-         "  --size N | WxH      maximum pixels: N for 2D (<= 1048576), WxH for 3D (sides <= 16384, W*H <= "
-         "2^26)\n";
 }
 
 }  // namespace raycam

@@ -1,5 +1,6 @@
-// Command-line options shared by the GLFW app (`raycam`) and the headless twin (`raycam-cli shot`): the
-// same flags give the same frame.
+// The app's start-up options, shared by the GLFW app (`raycam`) and the headless twin (`raycam-cli shot`):
+// the same options give the same frame. The command line fills them (src/flags/app_flags.h); the UI never
+// sees argv.
 #pragma once
 
 #include <optional>
@@ -29,14 +30,7 @@ struct AppOptions {
       false;  // the app: a scene that cannot be opened gives the demo and an error message
 };
 
-// If args[i] is a shared option, consumes it (and its value) and returns true. Throws std::invalid_argument
-// naming the flag and the accepted range.
-bool parse_app_option(const std::vector<std::string>& args, std::size_t& i, AppOptions& options);
-
 // The initial state for these options (scene loaded, cameras placed). Throws std::invalid_argument.
 AppState make_app_state(const AppOptions& options);
-
-// Help text for the shared options.
-const char* app_options_help();
 
 }  // namespace raycam::ui

@@ -111,32 +111,3 @@ TEST_CASE("loading names a missing file; saving replaces atomically", "[scene_fi
   CHECK(load_scene_file(path).scene3d.spheres.size() == 1);  // a failed save elsewhere changes nothing here
   std::remove(path.c_str());
 }
-
-TEST_CASE("view flags: precedence, degrees, and errors naming the flag", "[view_setup][input]") {
-  auto parse = [](std::vector<std::string> args) {
-    ViewFlags flags;
-    for (std::size_t i = 0; i < args.size();)
-      if (!parse_view_flag(args, i, flags)) throw std::logic_error("unknown flag " + args[i]);
-    return make_view_setup(flags);
-  };
-  const ViewSetup setup =
-      parse({"--mode", "3d", "--theta", "90", "--phi", "90", "--d", "4", "--size", "20x10"});
-  CHECK(setup.camera3d.orbit().theta == Approx(glm::half_pi<double>()));
-  CHECK(setup.camera3d.columns() == 20);
-  CHECK(setup.camera3d.rows() == 10);
-  CHECK(glm::length(setup.camera3d.screen_centre() - glm::dvec3(0, 4, 0)) < 1e-12);
-
-  const ViewSetup two = parse({"--mode", "2d", "--size", "50", "--res", "0.5"});
-  CHECK(two.camera2d.pixel_count() == 25);
-
-  CHECK_THROWS_WITH(parse({"--res", "0"}), Catch::Contains("--res") && Catch::Contains("]0, 1]"));
-  CHECK_THROWS_WITH(parse({"--df", "-2"}), Catch::Contains("--df"));
-  CHECK_THROWS_WITH(parse({"--d", "nan"}), Catch::Contains("--d"));
-  CHECK_THROWS_WITH(parse({"--theta", "12abc"}), Catch::Contains("--theta"));
-  CHECK_THROWS_WITH(parse({"--size", "0x5"}), Catch::Contains("--size"));
-  CHECK_THROWS_WITH(parse({"--size", "100000x100000"}), Catch::Contains("--size"));
-  CHECK_THROWS_WITH(parse({"--mode", "4d"}), Catch::Contains("--mode"));
-  CHECK_THROWS_WITH(parse({"--mode", "2d", "--phi", "3"}), Catch::Contains("--phi"));
-  CHECK_THROWS_WITH(parse({"--mode", "2d", "--target", "1,2,3"}), Catch::Contains("--target"));
-  CHECK_THROWS_WITH(parse({"--d"}), Catch::Contains("--d") && Catch::Contains("missing"));
-}

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app_flags.h"
 #include "app_options.h"
 #include "headless_renderer.h"
 #include "panels.h"
@@ -21,8 +22,7 @@ namespace {
 ui::AppState state_for(const std::vector<std::string>& args) {
   ui::AppOptions options;
   options.language = ui::Language::en;
-  for (std::size_t i = 0; i < args.size();) REQUIRE(ui::parse_app_option(args, i, options));
-  return ui::make_app_state(options);
+  return ui::make_app_state(flags::parse_app_options(args, options));
 }
 
 // The image region of the frame holds exactly `expected`, sampled at pixel centres.

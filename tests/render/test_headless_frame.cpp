@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app_flags.h"
 #include "app_options.h"
 #include "headless_renderer.h"
 #include "image_compare.h"
@@ -26,8 +27,7 @@ struct Shot {
 };
 
 Shot shoot(const std::vector<std::string>& args, int width = 1280, int height = 720) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();) REQUIRE(ui::parse_app_option(args, i, options));
+  ui::AppOptions options = flags::parse_app_options(args);
   options.width = width;
   options.height = height;
   Shot shot{ui::make_app_state(options), {}, {}};

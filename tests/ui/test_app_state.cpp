@@ -12,7 +12,6 @@
 using namespace raycam;
 using raycam::test::state_for;
 
-
 TEST_CASE("a bad scene file shows an error naming it and keeps the current scene", "[ui][input]") {
   ui::AppState state = state_for({});
   ui::recast_if_needed(state);

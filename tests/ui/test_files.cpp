@@ -9,6 +9,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "app_flags.h"
 #include "app_options.h"
 
 using namespace raycam;
@@ -19,9 +20,7 @@ ui::AppState state_for(const std::vector<std::string>& args, bool demo_on_bad_sc
   ui::AppOptions options;
   options.language = ui::Language::en;
   options.demo_on_bad_scene = demo_on_bad_scene;
-  for (std::size_t i = 0; i < args.size();)
-    if (!ui::parse_app_option(args, i, options)) options.view.scene_path = args[i++];
-  return ui::make_app_state(options);
+  return ui::make_app_state(flags::parse_app_options(args, options));
 }
 
 std::string read(const fs::path& path) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app_flags.h"
 #include "app_options.h"
 #include "panels.h"
 
@@ -51,9 +52,7 @@ class TextCapture {
 };
 
 ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
-  for (std::size_t i = 0; i < args.size();) REQUIRE(ui::parse_app_option(args, i, options));
-  ui::AppState state = ui::make_app_state(options);
+  ui::AppState state = ui::make_app_state(flags::parse_app_options(args));
   ui::recast_if_needed(state);
   return state;
 }
