@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "check_run.h"
+#include "panels.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
 #include "text.h"
@@ -221,15 +222,15 @@ bool CameraCheck::busy() const {
 
 // ---- the panel section -----------------------------------------------------------------------------------
 void CameraCheck::section(AppState& state, double now) {
-  if (!ImGui::CollapsingHeader(tr("Check my camera###check"))) return;
+  if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   ImGui::TextWrapped("%s",
                      tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                         "it is checked whenever they change (README, \"Check your own camera\")."));
   ImGui::PopStyleColor();
   ImGui::InputText(tr("program###check_command"), command_, sizeof command_);
-  ImGui::Checkbox(tr("an answer file, not a program###check_is_file"), &is_file_);
-  ImGui::Checkbox(tr("check when the camera changes###check_auto"), &automatic_);
+  checkbox(tr("an answer file, not a program###check_is_file"), &is_file_);
+  checkbox(tr("check when the camera changes###check_auto"), &automatic_);
   ImGui::SameLine();
   if (ImGui::Button(tr("Check now###check_now"))) check_now_ = true;
 

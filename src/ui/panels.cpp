@@ -126,6 +126,8 @@ void matrix_table(const char* id, const Matrix& m) {
   ImGui::EndTable();
 }
 
+}  // namespace
+
 // A checkbox whose label wraps under itself when the line is too short for it (lecture sizes): the label
 // is never cut. Clicking the label toggles too, as with ImGui's own checkbox.
 bool checkbox(const char* label, bool* value) {
@@ -146,15 +148,13 @@ bool checkbox(const char* label, bool* value) {
 }
 
 // A section header: the full title if it fits the panel's width, else the brief one (a header never wraps).
-bool section(const char* full, const char* brief, ImGuiTreeNodeFlags flags = 0) {
+bool section(const char* full, const char* brief, int flags) {
   const std::string text = full;
   const std::string shown = text.substr(0, text.find("##"));
   const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing() -
                      ImGui::GetStyle().FramePadding.x;
   return ImGui::CollapsingHeader(ImGui::CalcTextSize(shown.c_str()).x <= room ? full : brief, flags);
 }
-
-}  // namespace
 
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {

@@ -13,6 +13,11 @@
 
 namespace raycam::ui {
 
+// Lecture-size widgets every section uses (also check_panel.cpp): a checkbox whose label wraps instead of
+// being cut, and a section header that shows `brief` when `full` does not fit (flags: ImGuiTreeNodeFlags).
+bool checkbox(const char* label, bool* value);
+bool section(const char* full, const char* brief, int flags = 0);
+
 void camera_section(AppState& state);
 void construction_section(AppState& state);
 void inspector_section(const AppState& state);

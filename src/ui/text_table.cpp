@@ -308,6 +308,7 @@ const std::vector<Translation>& translation_table() {
 
       // ---- check_panel.cpp: Check my camera ----
       {"Check my camera###check", "Vérifier ma caméra###check"},
+      {"Check###check", "Vérifier###check"},
       {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
        "whenever "
        "they change (README, \"Check your own camera\").",
