@@ -13,6 +13,7 @@
 #include "check_report.h"
 #include "check_texts.h"
 #include "commands.h"
+#include "flag_values.h"
 #include "raycam/scene_file.h"
 
 namespace raycam::cli {
@@ -173,17 +174,24 @@ int run_check(const Args& args) {
   app.add_option("--student-cmd", flags.student_cmd,
                  "--batch: the command for one student; {dir} is its folder, {name} its name");
   app.add_option("--csv", flags.csv, "--batch: one row per student (score, top diagnosis, faults)");
-  app.add_option("--mode", flags.mode, "2d, 3d or both")->check(CLI::IsMember({"2d", "3d", "both"}));
-  app.add_option("--cases", flags.cases, "number of cases (default: the designed ones, 6 per dimension)")
-      ->check(CLI::Range(1, 1000));
+  using flags::add_checked_option;
+  const std::vector<std::string> modes = {"2d", "3d", "both"}, languages = {"fr", "en"};
+  add_checked_option<int>(app, "--mode", "2d|3d|both", "which cameras the cases use (default both)",
+                          flags::one_of(modes), [&](int i) { flags.mode = modes[std::size_t(i)]; });
+  add_checked_option<int>(app, "--cases", "N",
+                          "number of cases (default: the designed ones, 6 per dimension)",
+                          flags::integer_in(1, 1000), [&](int n) { flags.cases = n; });
   app.add_option("--seed", flags.seed, "the battery's seed (default 2026, shared by a class)");
-  app.add_option("--timeout", flags.timeout, "seconds per case, in [0.1, 3600]")->check(CLI::Range(0.1, 3600.0));
-  app.add_option("--memory", flags.memory_mb, "address-space cap per run, MiB, in [64, 65536]")
-      ->check(CLI::Range(64, 65536));
-  app.add_option("--threads", flags.threads, "runs at once, in [1, 256] (default: every core)")->check(CLI::Range(1, 256));
+  add_checked_option<double>(app, "--timeout", "SEC", "seconds per case (default 10)",
+                             flags::number_in({0.1, 3600}), [&](double t) { flags.timeout = t; });
+  add_checked_option<int>(app, "--memory", "MB", "address-space cap per run, MiB (default 2048)",
+                          flags::integer_in(64, 65536), [&](int mb) { flags.memory_mb = mb; });
+  add_checked_option<int>(app, "--threads", "T", "runs at once (default: every core)",
+                          flags::integer_in(1, 256), [&](int t) { flags.threads = t; });
   app.add_option("--report", flags.report, "JSON report (--batch: a folder of them)");
   app.add_option("--diff-dir", flags.diff_dir, "PNG per failing case: reference | student | difference");
-  app.add_option("--lang", flags.lang, "fr or en (default: from LANG)")->check(CLI::IsMember({"fr", "en"}));
+  add_checked_option<int>(app, "--lang", "fr|en", "language of the report (default: from LANG)",
+                          flags::one_of(languages), [&](int i) { flags.lang = languages[std::size_t(i)]; });
   app.add_flag("--require-sandbox", flags.require_sandbox, "refuse to run programs when bubblewrap cannot start");
   app.add_flag("--no-sandbox", flags.no_sandbox, "run programs without bubblewrap (a warning is printed)");
   try {
@@ -193,7 +201,7 @@ int run_check(const Args& args) {
     std::fputs(app.help().c_str(), stdout);
     return 0;
   } catch (const CLI::ParseError& error) {
-    throw std::invalid_argument(error.what());
+    throw std::invalid_argument(flags::usage_error_message(app, error));  // the one message format
   }
   if (flags.require_sandbox && flags.no_sandbox)
     throw std::invalid_argument("--require-sandbox and --no-sandbox contradict each other");
