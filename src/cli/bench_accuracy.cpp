@@ -1,11 +1,13 @@
 // `raycam-cli bench accuracy`: run time against error (MISSION.md, "Fast and accurate").
 // Sections: options; standard scenes and their references; the sweep; Pareto fronts; CSV and gnuplot.
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <glm/gtc/constants.hpp>
 #include <memory>
 #include <stdexcept>
@@ -193,17 +195,33 @@ struct Point {
   bool pareto_colour = false, pareto_id = false;
 };
 
-template <class Cast>
-double median_ms(int repeats, Cast&& cast) {
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    cast();
-    times.push_back(
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+// Google Benchmark keeps only the median of the repetitions (one cast per repetition, as the sweep has
+// hundreds of settings); the reporter hands it back instead of printing.
+class MedianReporter : public benchmark::BenchmarkReporter {
+ public:
+  double median_ms = 0.0;
+  bool ReportContext(const Context&) override { return true; }
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs)  // one repetition has no aggregates: its own time is the median
+      if (run.run_type == Run::RT_Iteration || run.aggregate_name == "median")
+        median_ms = run.GetAdjustedRealTime();
   }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
+};
+
+double median_ms(int repeats, const std::function<void()>& cast) {
+  benchmark::ClearRegisteredBenchmarks();
+  benchmark::RegisterBenchmark("cast",
+                               [&cast](benchmark::State& state) {
+                                 for (auto _ : state) cast();
+                               })
+      ->Repetitions(repeats)
+      ->Iterations(1)
+      ->ReportAggregatesOnly(repeats > 1)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+  MedianReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  return reporter.median_ms;
 }
 
 CoverageImage from_colour_map(const ColourMap& map) {
