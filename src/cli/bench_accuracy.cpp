@@ -1,5 +1,6 @@
 // `raycam-cli bench accuracy`: run time against error (MISSION.md, "Fast and accurate").
-// Sections: options; standard scenes and their references; the sweep; Pareto fronts; CSV and gnuplot.
+// Sections: options; standard scenes and their references; the sweep; Pareto fronts; CSV (plotted by
+// scripts/accuracy_plot.sh, not from here).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -37,7 +38,6 @@ struct BenchOptions {
   int repeats = 5;
   bool quick = false;
   std::string csv_path = "accuracy.csv";
-  std::string png_path = "accuracy.png";
   bool stress = false, long_sweep = false, angles = false;
 };
 
@@ -99,11 +99,6 @@ void add_options(CLI::App& bench, BenchOptions& o) {
   flags::add_checked_option<std::string>(bench, "--csv", "FILE",
                                          "default accuracy.csv (stress: stress.csv, angles: angles.csv)",
                                          flags::file_name(), [&o](std::string p) { o.csv_path = p; });
-  flags::add_checked_option<std::string>(
-      bench, "--png", "FILE",
-      "gnuplot PNG of time against error with the Pareto front (default "
-      "accuracy.png; needs gnuplot on PATH; skipped with a message otherwise)",
-      flags::file_name(), [&o](std::string p) { o.png_path = p; });
   bench.add_flag("--stress", o.stress,
                  "the numerical stress table (worst id error per setting); exit 1 if anything is non-finite");
   bench.add_flag("--long", o.long_sweep, "the long stress list (more values, larger images)");
@@ -339,76 +334,6 @@ void write_csv(const std::vector<Point>& points, const std::string& path) {
         << ',' << p.pareto_colour << ',' << p.pareto_id << '\n';
 }
 
-// Errors of exactly 0 cannot go on a log axis: they are drawn at these floors (stated on the plot).
-constexpr double kColourFloor = 1e-3, kIdFloor = 1e-5;
-
-// accuracy.png -> accuracy_ids.png
-std::string id_plot_path(const std::string& png_path) {
-  const std::size_t dot = png_path.rfind('.');
-  return dot == std::string::npos ? png_path + "_ids"
-                                  : png_path.substr(0, dot) + "_ids" + png_path.substr(dot);
-}
-
-// gnuplot data: for each scene and metric, one block of all points then one block of the Pareto front
-// (sorted by time), separated by two blank lines so that `index` picks them.
-void write_plot(const std::vector<Point>& points, const std::vector<std::string>& scene_names,
-                const std::string& png_path) {
-  const std::string data_path = png_path + ".dat", script_path = png_path + ".gp";
-  std::ofstream data(data_path);
-  if (!data) throw std::runtime_error("cannot write " + data_path);
-  for (const std::string& scene : scene_names)
-    for (int metric = 0; metric < 2; ++metric)
-      for (int front = 0; front < 2; ++front) {
-        data << "# " << scene << (metric == 0 ? " colour" : " id") << (front ? " pareto" : " all") << '\n';
-        for (const Point& p : points) {
-          if (p.scene != scene || (metric == 1 && p.spp != 1)) continue;  // ids do not depend on spp
-          if (front && !(metric == 0 ? p.pareto_colour : p.pareto_id)) continue;
-          const double error =
-              metric == 0 ? std::max(p.colour_error, kColourFloor) : std::max(p.id_error, kIdFloor);
-          data << p.median_ms << ' ' << error << ' ' << p.label << '\n';
-        }
-        data << "\n\n";
-      }
-  data.close();
-  std::ofstream gp(script_path);
-  // One PNG per metric, one panel per scene (3 per row): the colour error at png_path, the id error beside
-  // it.
-  const int count = int(scene_names.size()), per_row = std::min(3, count),
-            rows = (count + per_row - 1) / per_row;
-  const std::string id_png = id_plot_path(png_path);
-  for (int metric = 0; metric < 2; ++metric) {
-    gp << "set terminal pngcairo size " << 700 * per_row << "," << 520 * rows + 40
-       << " font 'DejaVu Sans,11'\n"
-       << "set output '" << (metric == 0 ? png_path : id_png) << "'\n"
-       << "set multiplot layout " << rows << "," << per_row
-       << " title 'raycam: median time per frame against "
-       << (metric == 0 ? "mean colour error vs exact coverage"
-                       : "fraction of pixel ids differing from the exact reference (1 spp)")
-       << " (labels: precision f/d/l, intersect n/s, frame w/r, spp; line: Pareto front; 0 drawn at "
-       << (metric == 0 ? kColourFloor : kIdFloor) << ")'\n"
-       << "set logscale xy\nset grid\nset key top right\nset xlabel 'median time per frame (ms)'\n"
-       << (metric == 0 ? "set autoscale y\n" : "set yrange [5e-6:2]\n") << "set ylabel '"
-       << (metric == 0 ? "mean colour error (8-bit units)" : "fraction of ids wrong") << "'\n";
-    for (int s = 0; s < count; ++s) {
-      const int block = (s * 2 + metric) * 2;
-      gp << "set title '" << scene_names[std::size_t(s)] << "'\n"
-         << "plot '" << data_path << "' index " << block
-         << " using 1:2 with points pt 7 ps 0.7 title 'setting', "
-         << "'' index " << block << " using 1:2:3 with labels font ',7' offset 0.2,0.5 left notitle, "
-         << "'' index " << block + 1 << " using 1:2 with linespoints lw 2 pt 6 ps 1.5 title 'Pareto front'\n";
-    }
-    gp << "unset multiplot\n";
-  }
-  gp.close();
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
-    std::fprintf(stderr, "bench accuracy: gnuplot not found, PNG skipped (script: %s)\n",
-                 script_path.c_str());
-    return;
-  }
-  const std::string command = "gnuplot '" + script_path + "'";
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("gnuplot failed on " + script_path);
-  std::printf("plots: %s (colour error), %s (id error)\n", png_path.c_str(), id_png.c_str());
-}
 
 int run_bench_accuracy(BenchOptions o) {
   if (o.stress) {
@@ -429,10 +354,7 @@ int run_bench_accuracy(BenchOptions o) {
   for (const Point& p : points)
     std::printf("| %s | %s | %.3f | %.3g | %.3g | %s / %s |\n", p.scene.c_str(), p.label.c_str(), p.median_ms,
                 p.id_error, p.colour_error, p.pareto_colour ? "yes" : "", p.pareto_id ? "yes" : "");
-  std::printf("csv: %s\n", o.csv_path.c_str());
-  std::vector<std::string> names;
-  for (const StandardScene& s : scenes) names.push_back(s.name);
-  if (!o.png_path.empty()) write_plot(points, names, o.png_path);
+  std::printf("csv: %s (plots: scripts/accuracy_plot.sh)\n", o.csv_path.c_str());
   return 0;
 }
 }  // namespace
