@@ -248,15 +248,20 @@ TEST_CASE("write-cases then answers: answer files made by hand are graded", "[ch
 TEST_CASE("batch grades every folder in parallel into one CSV row each (a hanging one included)",
           "[check][cli][batch]") {
   const std::string root = scratch("batch");
-  auto student = [&](const std::string& name, const std::string& command) {
-    fs::create_directories(root + "/" + name);
-    const std::string run = root + "/" + name + "/run.sh";
-    std::ofstream(run) << "#!/bin/sh\nexec " << command << "\n";
+  // Each submission holds its own program, as a student's folder would: the sandbox shows a program only
+  // its own folder (a build tree under /tmp would be hidden behind the sandbox's empty /tmp).
+  auto student = [&](const std::string& name, const std::string& program, const std::string& command) {
+    const std::string folder = root + "/" + name;
+    fs::create_directories(folder);
+    fs::copy_file(program, folder + "/" + fs::path(program).filename().string());
+    const std::string run = folder + "/run.sh";
+    std::ofstream(run) << "#!/bin/sh\ncd \"$(dirname \"$0\")\"\nexec " << command << "\n";
     fs::permissions(run, fs::perms::owner_exec, fs::perm_options::add);
   };
-  student("alice", EXAMPLE_STUDENT_CPP);
-  student("bob", std::string(MISTAKEN_STUDENT) + " --mistake mirrored");
-  student("carol", std::string("python3 ") + MISBEHAVING_PY + " hang");
+  const auto file_name = [](const char* path) { return fs::path(path).filename().string(); };
+  student("alice", EXAMPLE_STUDENT_CPP, "./" + file_name(EXAMPLE_STUDENT_CPP));
+  student("bob", MISTAKEN_STUDENT, "./" + file_name(MISTAKEN_STUDENT) + " --mistake mirrored");
+  student("carol", MISBEHAVING_PY, "python3 " + file_name(MISBEHAVING_PY) + " hang");
   const std::string csv = root + "/grades.csv";
   const Checked c =
       check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + csv + " --cases 2 --timeout 1",
