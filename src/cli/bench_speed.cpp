@@ -19,6 +19,8 @@
 #include <glm/trigonometric.hpp>
 #include <map>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -58,82 +60,66 @@ struct SpeedOptions {
   std::vector<std::string> benchmark_flags;  // --benchmark_* passed through to Google Benchmark
 };
 
-void print_help() {
-  std::printf(
-      "usage: raycam-cli bench speed [--quick] [--counts LIST] [--sizes LIST] [--threads LIST] [--repeats "
-      "R]\n"
-      "                              [--csv FILE] [--benchmark_* flags of Google Benchmark]\n"
-      "       raycam-cli bench speed --scene FILE [--size WxH] [--threads T] [--repeats R]\n\n"
-      "Median time (Google Benchmark, R repetitions) and Mrays/s of one primary ray per pixel, for raycam's\n"
+// The command line on CLI11 with the shared flag rules (one message format); the `--benchmark_*` flags are
+// left over as extras and passed through to Google Benchmark. Returns the exit code when the command must
+// stop now (--help: 0, bad usage: 2).
+std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
+  CLI::App app(
+      "Median time (Google Benchmark, R repetitions) and Mrays/s of one primary ray per pixel, for raycam's "
       "casters (plain, culled, footprint, binned, automatic), the floor (fill only, rays only, projection) "
-      "and\n"
-      "Embree 3 (rtcIntersect1 and rtcIntersect16, when built with libembree-dev), on K random spheres in\n"
-      "[-10,10]^3 with radius 2*K^(-1/3), at side x side pixels. Then: cost against the pixel count and 2D "
-      "bars.\n"
-      "Fails (exit 1) if any raycam caster's ids differ from the plain loop's.\n\n"
-      "  --counts LIST   sphere counts K (default 1,10,100,1000,10000,100000)\n"
-      "  --sizes LIST    image sides (default 256,1024)\n"
-      "  --threads LIST  thread counts (default 1,2)\n"
-      "  --repeats R     repetitions per variant, the median is reported (default 7, in [1, 1000])\n"
-      "  --quick         K = 1,100,10000 at 256 px, 3 short repetitions, no extras (a smoke test: seconds)\n"
-      "  --csv FILE      also write every median as CSV\n"
-      "  --scene FILE    time a scene file's camera preset instead, at --size WxH (3D) or N (2D)\n");
-}
-
-int integer_flag(const std::string& text, const std::string& flag, int lo, int hi) {
-  return flags::checked_value(flags::integer_in(lo, hi), text, flag);
-}
-
-std::vector<int> integer_list(const std::string& text, const std::string& flag, int lo, int hi) {
-  std::vector<int> values;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    values.push_back(integer_flag(text.substr(start, comma - start), flag, lo, hi));
-    start = comma + 1;
-  }
-  return values;
-}
-
-SpeedOptions parse_options(const Args& args, bool& help) {
-  SpeedOptions o;
-  for (std::size_t i = 0; i < args.size();) {
-    const std::string& flag = args[i];
-    if (flag == "--help" || flag == "-h") {
-      help = true;
-      return o;
-    }
-    if (flag.rfind("--benchmark_", 0) == 0) {
-      o.benchmark_flags.push_back(flag);
-      ++i;
+      "and Embree 3 (rtcIntersect1 and rtcIntersect16, when built with libembree-dev), on K random spheres "
+      "in [-10,10]^3 with radius 2*K^(-1/3), at side x side pixels. Then: cost against the pixel count and "
+      "2D bars. Fails (exit 1) if any raycam caster's ids differ from the plain loop's. Any --benchmark_* "
+      "flag goes to Google Benchmark.",
+      "raycam-cli bench speed");
+  app.allow_extras();
+  // --quick first: CLI11 runs the callbacks in this order, so `--quick --repeats 1` keeps the 1.
+  app.add_flag_callback("--quick", [&o] {
+    o.counts = {1, 100, 10000};
+    o.sides = {256};
+    o.repeats = 3;
+    o.min_seconds = 0.01;
+    o.extras = false;
+  }, "K = 1,100,10000 at 256 px, 3 short repetitions, no extras (a smoke test: seconds)");
+  const auto list = [&app](const char* name, const char* help, int lo, int hi, std::vector<int>& store) {
+    flags::add_checked_list<int>(app, name, "LIST", help, flags::integer_in(lo, hi),
+                                 [&store](std::vector<int> values) { store = std::move(values); });
+  };
+  list("--counts", "sphere counts K (default 1,10,100,1000,10000,100000)", 0, 2000000, o.counts);
+  list("--sizes", "image sides (default 256,1024)", 1, 8192, o.sides);
+  list("--threads", "thread counts (default 1,2)", 1, 256, o.threads);
+  flags::add_checked_option<int>(app, "--repeats", "R", "repetitions per variant, the median is reported (default 7)",
+                                 flags::integer_in(1, 1000), [&o](int r) { o.repeats = r; });
+  flags::add_checked_option<std::string>(app, "--csv", "FILE", "also write every median as CSV", flags::file_name(),
+                                         [&o](std::string path) { o.csv_path = std::move(path); });
+  flags::add_checked_option<std::string>(app, "--scene", "FILE",
+                                         "time a scene file's camera preset instead, at --size",
+                                         flags::file_name(), [&o](std::string path) { o.scene_path = std::move(path); });
+  const flags::ValueRule<std::pair<int, int>> size_rule{
+      "WxH (3D) or N (2D) with sides in [1, 16384]", [](const std::string& text) -> std::optional<std::pair<int, int>> {
+        const std::size_t x = text.find('x');
+        const auto side = flags::integer_in(1, 16384).parse;
+        const std::optional<int> columns = side(text.substr(0, x));
+        const std::optional<int> rows = x == std::string::npos ? std::optional<int>(1) : side(text.substr(x + 1));
+        if (!columns || !rows) return std::nullopt;
+        return std::make_pair(*columns, *rows);
+      }};
+  flags::add_checked_option<std::pair<int, int>>(app, "--size", "WxH", "with --scene: the image size (default 512x512)",
+                                                 size_rule, [&o](std::pair<int, int> size) {
+                                                   o.scene_columns = size.first;
+                                                   o.scene_rows = size.second;
+                                                 });
+  if (const std::optional<int> exit_now = flags::parse_command_line(app, args)) return exit_now;
+  for (const std::string& extra : app.remaining()) {
+    if (extra.rfind("--benchmark_", 0) == 0) {
+      o.benchmark_flags.push_back(extra);
       continue;
     }
-    if (flag == "--quick") {
-      o.counts = {1, 100, 10000};
-      o.sides = {256};
-      o.repeats = 3;
-      o.min_seconds = 0.01;
-      o.extras = false;
-      ++i;
-      continue;
-    }
-    if (i + 1 >= args.size()) throw std::invalid_argument(flag + ": missing value (see bench speed --help)");
-    const std::string& value = args[i + 1];
-    if (flag == "--counts") o.counts = integer_list(value, flag, 0, 2000000);
-    else if (flag == "--sizes") o.sides = integer_list(value, flag, 1, 8192);
-    else if (flag == "--threads") o.threads = integer_list(value, flag, 1, 256);
-    else if (flag == "--repeats")
-      o.repeats = integer_flag(value, flag, 1, 1000);
-    else if (flag == "--csv") o.csv_path = value;
-    else if (flag == "--scene") o.scene_path = value;
-    else if (flag == "--size") {
-      const std::size_t x = value.find('x');
-      o.scene_columns = integer_flag(value.substr(0, x), flag, 1, 16384);
-      o.scene_rows = x == std::string::npos ? 1 : integer_flag(value.substr(x + 1), flag, 1, 16384);
-    } else throw std::invalid_argument("unknown option '" + flag + "' (see raycam-cli bench speed --help)");
-    i += 2;
+    std::fprintf(stderr, "raycam-cli bench speed: error: unknown option '%s' (see raycam-cli bench speed --help)\n",
+                 extra.c_str());
+    return 2;
   }
-  return o;
+  return std::nullopt;
 }
 
 // ---- fixtures
@@ -403,10 +389,12 @@ class KeepingReporter : public benchmark::ConsoleReporter {
       : ConsoleReporter(OO_Tabular), results_(results) {}  // counters as columns, no colour codes
   void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
     for (const auto& r : runs) {
-      if (r.run_type != benchmark::BenchmarkReporter::Run::RT_Aggregate) continue;
+      // One repetition gives no aggregates: its run is the median (--repeats 1 used to report 0 ms).
+      const bool single = r.run_type == benchmark::BenchmarkReporter::Run::RT_Iteration && r.repetitions <= 1;
+      if (r.run_type != benchmark::BenchmarkReporter::Run::RT_Aggregate && !single) continue;
       Result& result = results_[r.run_name.function_name];
       const double ms = r.GetAdjustedRealTime() * (r.time_unit == benchmark::kMicrosecond ? 1e-3 : 1.0);
-      if (r.aggregate_name == "median") {
+      if (single || r.aggregate_name == "median") {
         result.median_ms = ms;
         const auto counter = [&](const char* name) {
           const auto found = r.counters.find(name);
@@ -583,13 +571,8 @@ int run_scene(const SpeedOptions& o) {
 // ---- entry point
 // -------------------------------------------------------------------------------------------
 int run_bench_speed(const Args& args) {
-  bool help = false;
   Run run;
-  run.options = parse_options(args, help);
-  if (help) {
-    print_help();
-    return 0;
-  }
+  if (const std::optional<int> exit_now = parse_options(args, run.options)) return *exit_now;
   if (!run.options.scene_path.empty()) return run_scene(run.options);
   const int hardware = int(std::thread::hardware_concurrency());
   std::printf("raycam bench speed: %d hardware threads, Google Benchmark, %d repetitions a variant", hardware,
