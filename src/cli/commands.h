@@ -13,6 +13,15 @@ namespace raycam::cli {
 
 using Args = std::vector<std::string>;
 
+// A subcommand with its one-line summary (listed by `raycam-cli --help`) and a longer description shown
+// under its own --help.
+inline CLI::App* add_described_subcommand(CLI::App& parent, const std::string& name, const std::string& summary,
+                                          const std::string& description) {
+  CLI::App* command = parent.add_subcommand(name, summary);
+  command->footer(description);
+  return command;
+}
+
 void add_render_command(CLI::App& cli, int& exit_code);
 void add_shot_command(CLI::App& cli, int& exit_code);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
 // `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp) under `bench`.

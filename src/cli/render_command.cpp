@@ -55,9 +55,8 @@ int run_render(RenderOptions options) {
 }  // namespace
 
 void add_render_command(CLI::App& cli, int& exit_code) {
-  CLI::App* render = cli.add_subcommand(
-      "render", "cast the primary rays and write the colour map (PNG) and object ids (text)");
-  render->footer(
+  CLI::App* render = add_described_subcommand(
+      cli, "render", "cast the primary rays and write the colour map (PNG) and object ids (text)",
       "Casts one primary ray per pixel (nearest object wins, ties to the lower index) and writes the colour "
       "map.\n");
   auto options = std::make_shared<RenderOptions>();

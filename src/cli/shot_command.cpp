@@ -115,9 +115,8 @@ int run_shot(const ShotOptions& options) {
 }  // namespace
 
 void add_shot_command(CLI::App& cli, int& exit_code) {
-  CLI::App* shot = cli.add_subcommand(
-      "shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run");
-  shot->footer(
+  CLI::App* shot = add_described_subcommand(
+      cli, "shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run",
       "Renders the app's whole window (panels, colour bar or image, overhead and observer views) with no "
       "display,\n"
       "through OSMesa, with the same frame code as the `raycam` app, and writes a PNG.\n");
