@@ -112,14 +112,15 @@ int run_shot(const ShotOptions& options) {
               image.width, image.height, state.dimension, options.frames, ms, state.frame_ms);
   return 0;
 }
+
+constexpr const char* kShotSummary = "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run";
+constexpr const char* kShotDescription =
+    "Renders the app's whole window (panels, colour bar or image, overhead and observer views) with no display,\n"
+    "through OSMesa, with the same frame code as the `raycam` app, and writes a PNG.\n";
 }  // namespace
 
 void add_shot_command(CLI::App& cli, int& exit_code) {
-  CLI::App* shot = add_described_subcommand(
-      cli, "shot", "render the app's whole window headless (OSMesa) to PNG; --soak N for a long run",
-      "Renders the app's whole window (panels, colour bar or image, overhead and observer views) with no "
-      "display,\n"
-      "through OSMesa, with the same frame code as the `raycam` app, and writes a PNG.\n");
+  CLI::App* shot = add_described_subcommand(cli, "shot", kShotSummary, kShotDescription);
   auto options = std::make_shared<ShotOptions>();
   flags::add_app_options(*shot, options->app);
   flags::add_checked_option<std::string>(*shot, "--out", "FILE", "output PNG (default raycam-shot.png)",
