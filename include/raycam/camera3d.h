@@ -146,10 +146,16 @@ class Camera3D {
   Ray3D primary_ray(int row, int column) const;
   // The rays of pixels first_column…last_column of one row into rays[0…], each exactly primary_ray's.
   void primary_rays(int row, int first_column, int last_column, Ray3D* rays) const;
+  // A row's rays as a line (what primary_rays computes once per row): column c's ray starts at
+  // origin_base + x·axis with direction direction_base + x·axis (renormalised), x = canonical_x(c).
+  struct RayLine {
+    glm::dvec3 origin_base, direction_base, axis;
+  };
+  RayLine ray_line(int row) const;
+  double canonical_x(int column) const;  // the pixel centre's canonical x (y), with the pixel mistakes
+  double canonical_y(int row) const;
 
  private:
-  double canonical_x(int column) const;
-  double canonical_y(int row) const;
 
   int max_columns_, max_rows_;
   double res_columns_ = 1.0, res_rows_ = 1.0;

@@ -67,9 +67,13 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
                        const CastOptions& options = {}, CastStats* stats = nullptr);
 void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out,
                        const CastOptions& options = {}, CastStats* stats = nullptr);
+// The same from a scene packed once and kept between frames (PackedScene3D, raycam/scene.h): what the app
+// and `bench speed` cast, as Embree casts from a BVH built once.
+void cast_primary_rays(const Camera3D& camera, const PackedScene3D& scene, ColourMap& out,
+                       const CastOptions& options = {}, CastStats* stats = nullptr);
 
 // For `bench speed`: the accelerated casters' first stage alone (every sphere culled or projected to its
 // pixel box, on options.threads threads), writing no map; returns how many spheres survive culling.
-int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options = {});
+int project_spheres_only(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options = {});
 
 }  // namespace raycam

@@ -42,6 +42,23 @@ struct Scene3D {
   std::vector<Sphere> spheres;
 };
 
+// A 3D scene packed for casting: the spheres' centres and radii as columns (32 bytes a sphere, where the
+// scene's Sphere is 72 with its name) and their colours. The fast caster reads every sphere once a frame to
+// project it; from columns that loop vectorises, and 10⁵ spheres fit in less cache. A copy: build it when
+// the scene changes and keep it between frames (the app keys it on its scene_version); cast_primary_rays on
+// a Scene3D packs a fresh one every call. Sphere i here is object i of the scene (its id).
+struct PackedScene3D {
+  std::vector<double> x, y, z, radius;
+  std::vector<Rgb8> colour;
+  Rgb8 background = kDefaultBackground;
+
+  PackedScene3D() = default;
+  explicit PackedScene3D(const Scene3D& scene) { pack(scene); }
+  void pack(const Scene3D& scene);  // reuses the columns' memory
+  int size() const { return int(radius.size()); }
+  glm::dvec3 centre(int i) const { return {x[std::size_t(i)], y[std::size_t(i)], z[std::size_t(i)]}; }
+};
+
 // Throws std::invalid_argument naming the object index and field if a centre or radius is not finite,
 // a radius is not > 0, or there are more than kMaxObjects objects.
 void validate(const Scene2D& scene);

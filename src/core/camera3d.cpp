@@ -167,8 +167,7 @@ Ray3D Camera3D::primary_ray(int row, int column) const {
   return ray;
 }
 
-void Camera3D::primary_rays(int row, int first_column, int last_column, Ray3D* rays) const {
-  assert(row >= 0 && row < rows_ && first_column >= 0 && last_column < columns_ && "pixel index out of range");
+Camera3D::RayLine Camera3D::ray_line(int row) const {
   // P^0 = (x, y, 0, 1) and P^0 - E0 = (x, y, -1, 0): the row's part is M3 + y·M1 and y·M1 - M2.
   const glm::dmat4& m = world_from_camera();
   const glm::dvec3 right(m[0]), up(m[1]), back(m[2]), position(m[3]);
@@ -176,13 +175,20 @@ void Camera3D::primary_rays(int row, int first_column, int last_column, Ray3D* r
   // Classic mistake direction_translated: u_k moved as a point, so T(OP) = M3 is added to it.
   const glm::dvec3 direction_base =
       mistakes_.direction_translated ? glm::dvec3(position + (y * up - back)) : glm::dvec3(y * up - back);
+  return RayLine{glm::dvec3(position + y * up), direction_base, right};
+}
+
+void Camera3D::primary_rays(int row, int first_column, int last_column, Ray3D* rays) const {
+  assert(row >= 0 && row < rows_ && first_column >= 0 && last_column < columns_ && "pixel index out of range");
+  const RayLine line = ray_line(row);
   detail::rays_along_line(
-      glm::dvec3(position + y * up), direction_base, right,
-      [this](int column) { return canonical_x(column); }, first_column, last_column,
-      !mistakes_.skip_renormalise, rays);
-  if (mistakes_.eye_origin)  // classic mistake: every ray starts at the eye M_d·E0 = M3 + M2
+      line.origin_base, line.direction_base, line.axis, [this](int column) { return canonical_x(column); },
+      first_column, last_column, !mistakes_.skip_renormalise, rays);
+  if (mistakes_.eye_origin) {  // classic mistake: every ray starts at the eye M_d·E0 = M3 + M2
+    const glm::dmat4& m = world_from_camera();
     for (int column = first_column; column <= last_column; ++column)
-      rays[column - first_column].origin = position + back;
+      rays[column - first_column].origin = glm::dvec3(m[3]) + glm::dvec3(m[2]);
+  }
 }
 
 }  // namespace raycam

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "band_kernels.h"
 #include "parallel.h"
 #include "screen_footprint.h"
 
@@ -11,6 +12,7 @@ namespace raycam::detail {
 namespace {
 constexpr int kBandRows = 8;              // a band's depth buffer stays in cache at any width
 constexpr int kObjectsPerChunk = 4096;    // projection work handed out per item
+constexpr int kBatch = 256;               // spheres projected at once (their boxes: 4 KB, in L1)
 // Starting a thread costs tens of microseconds: below this much work (intersection tests, plus a quarter of
 // a test per pixel written and four per candidate) one thread finishes first. Measured with `bench speed`
 // at 256² and K = 1…10⁵.
@@ -24,7 +26,6 @@ struct Candidate {
   double radius;
   PixelBox box;
   int object;
-  Rgb8 colour;
 };
 
 // Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
@@ -40,22 +41,36 @@ struct Projection {
   std::vector<Candidate> visible;
 };
 
-void project_spheres(const Camera3D& camera, const Scene3D& scene, IntersectFormula formula, int workers,
+void project_spheres(const Camera3D& camera, const PackedScene3D& scene, IntersectFormula formula, int workers,
                      Projection& w) {
   const Footprint footprint(camera, formula);
-  const int count = int(scene.spheres.size());
+  const int count = scene.size();
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
   w.projected.resize(std::size_t(count));
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
+    PixelBox boxes[kBatch];
     int kept = 0;
-    for (int i = begin; i < end; ++i) {
-      // Only survivors are written: with many objects the cast is bound by memory traffic (writing every
-      // object's slot, branch-free, was slower on two threads, measured).
-      const Sphere& sphere = scene.spheres[std::size_t(i)];
-      const PixelBox box = footprint.sphere_pixels(sphere, camera.rows(), camera.columns());
-      if (!box.empty()) w.projected[std::size_t(begin + kept++)] = Candidate{sphere.centre, sphere.radius, box, i, sphere.colour};
+    for (int batch = begin; batch < end; batch += kBatch) {
+      const int size = std::min(kBatch, end - batch);
+      const std::size_t at = std::size_t(batch);
+      footprint.sphere_boxes(SphereColumns{&scene.x[at], &scene.y[at], &scene.z[at], &scene.radius[at]}, size,
+                             camera.rows(), camera.columns(), boxes);
+      // Compacted without a branch: every sphere is written at the next free slot, which only a survivor
+      // then keeps. Whether a sphere survives is a coin toss when many fall between pixel centres, and a
+      // branch on it was mispredicted about half the time (measured: a third of the projection's time).
+      // Field by field: a whole Candidate built first went through the stack (a stalled store forward).
+      Candidate* slot = &w.projected[std::size_t(begin)];
+      for (int k = 0; k < size; ++k) {
+        const std::size_t i = std::size_t(batch + k);
+        Candidate& c = slot[kept];
+        c.centre = glm::dvec3(scene.x[i], scene.y[i], scene.z[i]);
+        c.radius = scene.radius[i];
+        c.box = boxes[k];
+        c.object = int(i);
+        kept += !boxes[k].empty();
+      }
     }
     w.kept_in_chunk[std::size_t(chunk)] = kept;
   });
@@ -80,11 +95,9 @@ void bin_by_band(const std::vector<Candidate>& visible, int bands, Bands& binned
   }
 }
 
-// One worker's depth buffer over the pixels it is casting (a band of rows, or a whole 2D bar), with a
-// line of rays made by the camera's primary_rays. On a cache line of its own: its counters change at every
-// test, and two workers' counters sharing a line would slow both.
+// The 2D bar's depth buffer, with a line of rays made by the camera's primary_rays.
 template <class Ray>
-struct alignas(64) DepthBuffer {
+struct DepthBuffer {
   std::vector<double> depth;
   std::vector<int> id;       // the object seen (its index in the scene), -1 for none
   std::vector<Rgb8> colour;  // its colour
@@ -113,7 +126,13 @@ struct alignas(64) DepthBuffer {
     }
   }
 };
-using BandScratch = DepthBuffer<Ray3D>;
+
+// One worker's band of pixels, and what it did. On a cache line of its own: its counters change at every
+// row, and two workers' counters sharing a line would slow both.
+struct alignas(64) BandScratch {
+  BandPixels pixels;
+  long long tests = 0, covered_pixels = 0;
+};
 
 // Memory a cast reuses from the last cast on the same calling thread. Fresh megabytes each frame would cost
 // page faults that no second thread can share (measured: projecting 10⁵ spheres took as long on two
@@ -122,6 +141,7 @@ struct Workspace {
   Projection projection;
   Bands bands;
   std::vector<BandScratch> scratch;  // one per worker
+  std::vector<double> column_x;
 };
 
 // The calling thread's: its helpers write into it, each their own part.
@@ -130,34 +150,34 @@ Workspace& calling_thread_workspace() {
   return workspace;
 }
 
-// Splats a candidate's box (clipped to the band's rows) into the band's depth buffer.
-void splat(const Camera3D& camera, const std::vector<Candidate>& visible, int j, int row_begin, int row_end,
-           IntersectFormula formula, BandScratch& scratch) {
-  const Candidate& candidate = visible[std::size_t(j)];
+// Tests a candidate on its box (clipped to the band's rows), whose rays the band holds.
+void splat(const Candidate& candidate, int columns, int row_begin, int row_end, IntersectFormula formula,
+           BandScratch& scratch) {
   const PixelBox& box = candidate.box;
   const int first = std::max(box.rows.first, row_begin), last = std::min(box.rows.last, row_end - 1);
-  for (int row = first; row <= last; ++row) {
-    camera.primary_rays(row, box.columns.first, box.columns.last, scratch.rays.data());
-    const std::size_t line = std::size_t(row - row_begin) * camera.columns();
-    for (int column = box.columns.first; column <= box.columns.last; ++column)
-      scratch.test(line + std::size_t(column), scratch.rays[std::size_t(column - box.columns.first)],
-                   candidate.centre, candidate.radius, candidate.object, candidate.colour, formula);
-  }
+  const PixelRun run{std::size_t(first - row_begin) * std::size_t(columns) + std::size_t(box.columns.first),
+                     box.columns.last - box.columns.first + 1, last - first + 1, columns};
+  if (run.rows <= 0) return;
+  test_sphere(candidate.centre, candidate.radius, candidate.object, formula, run, scratch.pixels);
+  scratch.tests += static_cast<long long>(run.rows) * run.count;
 }
 
-void write_band(Rgb8 background, int row_begin, int row_end, const BandScratch& scratch, ColourMap& out) {
+void write_band(const PackedScene3D& scene, int row_begin, int row_end, BandScratch& scratch, ColourMap& out) {
   const std::size_t offset = out.index(row_begin, 0);
   const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
+  long long covered = 0;
   for (std::size_t p = 0; p < pixels; ++p) {
-    const int object = scratch.id[p];
+    const int object = scratch.pixels.id[p];
     out.ids[offset + p] = object;
-    out.colours[offset + p] = object < 0 ? background : scratch.colour[p];
+    out.colours[offset + p] = object < 0 ? scene.background : scene.colour[std::size_t(object)];
+    covered += scratch.pixels.covered[p];
   }
+  scratch.covered_pixels += covered;
 }
 }  // namespace
 
-void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
-                      CastStats& stats) {
+void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, ColourMap& out,
+                      const CastOptions& options, CastStats& stats) {
   const int rows = camera.rows(), columns = camera.columns();
   const long long pixels = static_cast<long long>(rows) * columns;
   const int threads = resolve_threads(options.threads);
@@ -178,50 +198,56 @@ void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& o
     work += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
   if (method == CastMethod::culled) work += pixels * static_cast<long long>(visible.size());
   const int workers = work >= kThreadedWork ? threads : 1;
+  std::vector<double>& column_x = workspace.column_x;  // every row's rays use the same canonical x
+  column_x.resize(std::size_t(columns));
+  for (int column = 0; column < columns; ++column) column_x[std::size_t(column)] = camera.canonical_x(column);
   std::vector<BandScratch>& scratch = workspace.scratch;
   scratch.resize(std::size_t(std::min(workers, bands)));
-  for (BandScratch& s : scratch) s.tests = s.touched_pixels = 0;
+  for (BandScratch& s : scratch) s.tests = s.covered_pixels = 0;
   parallel_items(bands, workers, [&](int worker, int band) {
     BandScratch& s = scratch[std::size_t(worker)];
     const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
-    s.reset(std::size_t(row_end - row_begin) * columns, columns);
+    s.pixels.reset(std::size_t(row_end - row_begin) * columns);
+    const auto make_rays = [&] {  // every pixel's of the band at once: a vectorised loop, no call per object
+      for (int row = row_begin; row < row_end; ++row)
+        make_row_rays(camera, row, column_x, s.pixels, std::size_t(row - row_begin) * columns);
+    };
     if (method == CastMethod::culled) {  // every pixel, every object that survived culling
-      for (int row = row_begin; row < row_end; ++row) {
-        camera.primary_rays(row, 0, columns - 1, s.rays.data());
-        for (int column = 0; column < columns; ++column) {
-          const std::size_t p = std::size_t(row - row_begin) * columns + std::size_t(column);
-          for (int j = 0; j < int(visible.size()); ++j)
-            s.test(p, s.rays[std::size_t(column)], visible[std::size_t(j)].centre,
-                   visible[std::size_t(j)].radius, visible[std::size_t(j)].object,
-                   visible[std::size_t(j)].colour, options.formula);
-        }
-      }
+      make_rays();
+      for (const Candidate& c : visible)  // object order at every pixel
+        test_sphere(c.centre, c.radius, c.object, options.formula, PixelRun{0, columns, row_end - row_begin, columns},
+                    s.pixels);
+      s.tests += static_cast<long long>(row_end - row_begin) * columns * static_cast<long long>(visible.size());
     } else if (method == CastMethod::binned) {
-      for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
-        splat(camera, visible, binned.entries[std::size_t(e)], row_begin, row_end, options.formula, s);
+      const int begin = binned.start[std::size_t(band)], end = binned.start[std::size_t(band) + 1];
+      if (begin < end) make_rays();
+      for (int e = begin; e < end; ++e)
+        splat(visible[std::size_t(binned.entries[std::size_t(e)])], columns, row_begin, row_end, options.formula, s);
     } else {  // footprint: every visible object's box checked against the band
-      for (int j = 0; j < int(visible.size()); ++j) {
-        const PixelRange& rows_of_box = visible[std::size_t(j)].box.rows;
-        if (rows_of_box.last >= row_begin && rows_of_box.first < row_end)
-          splat(camera, visible, j, row_begin, row_end, options.formula, s);
+      bool rays_made = false;
+      for (const Candidate& c : visible) {
+        if (c.box.rows.last < row_begin || c.box.rows.first >= row_end) continue;
+        if (!rays_made) make_rays();
+        rays_made = true;
+        splat(c, columns, row_begin, row_end, options.formula, s);
       }
     }
-    write_band(scene.background, row_begin, row_end, s, out);
+    write_band(scene, row_begin, row_end, s, out);
   });
 
   stats.rays = pixels;
-  stats.objects_culled = static_cast<long long>(scene.spheres.size() - visible.size());
+  stats.objects_culled = static_cast<long long>(scene.size()) - static_cast<long long>(visible.size());
   stats.intersection_tests = 0;
-  long long touched = 0;
+  long long covered = 0;
   for (const BandScratch& s : scratch) {
     stats.intersection_tests += s.tests;
-    touched += s.touched_pixels;
+    covered += s.covered_pixels;
   }
-  stats.pixels_skipped = pixels - touched;
+  stats.pixels_skipped = pixels - covered;
   stats.threads = int(scratch.size());
 }
 
-int project_visible(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {
+int project_visible(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options) {
   Workspace& workspace = calling_thread_workspace();
   project_spheres(camera, scene, options.formula, resolve_threads(options.threads), workspace.projection);
   return int(workspace.projection.visible.size());

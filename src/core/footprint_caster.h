@@ -13,9 +13,9 @@ inline constexpr int kBinnedCrossover = 64;
 
 void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out,
                       const CastOptions& options, CastStats& stats);
-void cast_accelerated(const Camera3D& camera, const Scene3D& scene, ColourMap& out,
+void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, ColourMap& out,
                       const CastOptions& options, CastStats& stats);
 // The first stage alone (culling and projection, into the same reused memory); returns the survivors.
-int project_visible(const Camera3D& camera, const Scene3D& scene, const CastOptions& options);
+int project_visible(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options);
 
 }  // namespace raycam::detail

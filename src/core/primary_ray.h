@@ -12,15 +12,21 @@ namespace raycam::detail {
 //   linear part (+ y·M1), renormalised because H scales (unless the "forgot to renormalise" mistake is on).
 // M_d's columns are used directly: the zero terms of the full product are dropped and the line's terms
 // computed once. Every caster calls this through the cameras, so all of them see the same rays, bit for bit.
+// One ray of the line, at x: the one formula every caster's rays come from.
+template <class Vector>
+inline void ray_on_line(const Vector& origin_base, const Vector& direction_base, const Vector& screen_axis, double x,
+                        bool renormalise, Vector& origin, Vector& direction) {
+  origin = origin_base + x * screen_axis;
+  direction = direction_base + x * screen_axis;
+  if (renormalise) direction *= 1.0 / std::sqrt(glm::dot(direction, direction));  // as glm::normalize
+}
+
 template <class Ray, class Vector, class XOf>
 void rays_along_line(const Vector& origin_base, const Vector& direction_base, const Vector& screen_axis, XOf x_of,
                      int first, int last, bool renormalise, Ray* rays) {
   for (int i = first; i <= last; ++i) {
-    const double x = x_of(i);
     Ray& ray = rays[i - first];
-    ray.origin = origin_base + x * screen_axis;
-    ray.direction = direction_base + x * screen_axis;
-    if (renormalise) ray.direction *= 1.0 / std::sqrt(glm::dot(ray.direction, ray.direction));  // as glm::normalize
+    ray_on_line(origin_base, direction_base, screen_axis, x_of(i), renormalise, ray.origin, ray.direction);
   }
 }
 

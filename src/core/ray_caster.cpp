@@ -9,50 +9,36 @@
 namespace raycam {
 
 namespace {
-// Exercise 2: test every object, keep the nearest. Strict '<' keeps the lower index on a tie.
+// Exercise 2: test every object, keep the nearest. Strict '<' keeps the lower index on a tie. object(i)
+// gives object i's centre and radius. The classic mistake no_t_min (any_sign): the smaller root wins
+// whatever its sign.
 template <class Object, class Ray>
-Hit nearest_of(const std::vector<Object>& objects, const Ray& ray, IntersectFormula formula) {
+Hit nearest_of(int count, Object object, const Ray& ray, IntersectFormula formula, bool any_sign = false) {
   Hit hit;
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const double t = nearest_hit_t(ray.origin, ray.direction, objects[i].centre, objects[i].radius, formula);
-    if (t < hit.t) hit = Hit{int(i), t};
+  for (int i = 0; i < count; ++i) {
+    const auto [centre, radius] = object(i);
+    const double t = any_sign ? smaller_root_t(ray.origin, ray.direction, centre, radius, formula)
+                              : nearest_hit_t(ray.origin, ray.direction, centre, radius, formula);
+    if (t < hit.t) hit = Hit{i, t};
   }
   return hit;
 }
 
-// The classic mistake no_t_min: the smaller root wins whatever its sign.
-template <class Object, class Ray>
-Hit nearest_of_any_sign(const std::vector<Object>& objects, const Ray& ray, IntersectFormula formula) {
-  Hit hit{-1, kNoHit<double>};
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const double t = smaller_root_t(ray.origin, ray.direction, objects[i].centre, objects[i].radius, formula);
-    if (t < hit.t) hit = Hit{int(i), t};
-  }
-  return hit;
+template <class Object>
+auto object_in(const std::vector<Object>& objects) {
+  return [&objects](int i) { return std::make_pair(objects[std::size_t(i)].centre, objects[std::size_t(i)].radius); };
 }
-
-template <class Object, class Ray>
-Hit nearest_for(const ClassicMistakes& mistakes, const std::vector<Object>& objects, const Ray& ray,
-                IntersectFormula formula) {
-  return mistakes.no_t_min ? nearest_of_any_sign(objects, ray, formula) : nearest_of(objects, ray, formula);
-}
-
-template <class Scene>
-void store(ColourMap& map, std::size_t index, const Hit& hit, const Scene& scene) {
-  map.ids[index] = hit.id;
-  if constexpr (std::is_same_v<Scene, Scene2D>)
-    map.colours[index] = hit.id < 0 ? scene.background : scene.circles[std::size_t(hit.id)].colour;
-  else
-    map.colours[index] = hit.id < 0 ? scene.background : scene.spheres[std::size_t(hit.id)].colour;
+auto object_in(const PackedScene3D& scene) {
+  return [&scene](int i) { return std::make_pair(scene.centre(i), scene.radius[std::size_t(i)]); };
 }
 }  // namespace
 
 Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectFormula formula) {
-  return nearest_of(circles, ray, formula);
+  return nearest_of(int(circles.size()), object_in(circles), ray, formula);
 }
 
 Hit nearest_hit(const std::vector<Sphere>& spheres, const Ray3D& ray, IntersectFormula formula) {
-  return nearest_of(spheres, ray, formula);
+  return nearest_of(int(spheres.size()), object_in(spheres), ray, formula);
 }
 
 namespace {
@@ -71,30 +57,43 @@ void cast_primary_rays(const Camera2D& camera, const Scene2D& scene, ColourMap& 
     detail::cast_accelerated(camera, scene, out, options, work);
   } else {
     for (int k = 0; k < n; ++k) {
-      const Hit hit = nearest_for(camera.mistakes(), scene.circles, camera.primary_ray(k), options.formula);
-      store(out, out.index(0, camera.column_of_pixel(k)), hit, scene);
+      const Hit hit = nearest_of(int(scene.circles.size()), object_in(scene.circles), camera.primary_ray(k),
+                                 options.formula, camera.mistakes().no_t_min);
+      const std::size_t index = out.index(0, camera.column_of_pixel(k));
+      out.ids[index] = hit.id;
+      out.colours[index] = hit.id < 0 ? scene.background : scene.circles[std::size_t(hit.id)].colour;
     }
     work = CastStats{n, static_cast<long long>(n) * static_cast<long long>(scene.circles.size()), 0, 0, 1};
   }
   if (stats) *stats = work;
 }
 
-void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
-                       CastStats* stats) {
+void cast_primary_rays(const Camera3D& camera, const PackedScene3D& scene, ColourMap& out,
+                       const CastOptions& options, CastStats* stats) {
   out.resize(camera.columns(), camera.rows());
   CastStats work;
   if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
     detail::cast_accelerated(camera, scene, out, options, work);
   } else {
     for (int row = 0; row < camera.rows(); ++row)
-      for (int column = 0; column < camera.columns(); ++column)
-        store(out, out.index(row, column),
-              nearest_for(camera.mistakes(), scene.spheres, camera.primary_ray(row, column), options.formula),
-              scene);
+      for (int column = 0; column < camera.columns(); ++column) {
+        const Hit hit = nearest_of(scene.size(), object_in(scene), camera.primary_ray(row, column),
+                                   options.formula, camera.mistakes().no_t_min);
+        const std::size_t index = out.index(row, column);
+        out.ids[index] = hit.id;
+        out.colours[index] = hit.id < 0 ? scene.background : scene.colour[std::size_t(hit.id)];
+      }
     const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
-    work = CastStats{rays, rays * static_cast<long long>(scene.spheres.size()), 0, 0, 1};
+    work = CastStats{rays, rays * static_cast<long long>(scene.size()), 0, 0, 1};
   }
   if (stats) *stats = work;
+}
+
+void cast_primary_rays(const Camera3D& camera, const Scene3D& scene, ColourMap& out, const CastOptions& options,
+                       CastStats* stats) {
+  thread_local PackedScene3D packed;  // the calling thread's, reused: no allocation when the size is unchanged
+  packed.pack(scene);
+  cast_primary_rays(camera, packed, out, options, stats);
 }
 
 ColourMap cast_primary_rays(const Camera2D& camera, const Scene2D& scene, const CastOptions& options,
@@ -130,7 +129,7 @@ std::optional<CastMethod> cast_method_named(std::string_view name) {
   return std::nullopt;
 }
 
-int project_spheres_only(const Camera3D& camera, const Scene3D& scene, const CastOptions& options) {
+int project_spheres_only(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options) {
   return detail::project_visible(camera, scene, options);
 }
 

@@ -34,6 +34,24 @@ void validate_objects(const Objects& objects) {
 }
 }  // namespace
 
+void PackedScene3D::pack(const Scene3D& scene) {
+  const std::size_t count = scene.spheres.size();
+  x.resize(count);
+  y.resize(count);
+  z.resize(count);
+  radius.resize(count);
+  colour.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Sphere& sphere = scene.spheres[i];
+    x[i] = sphere.centre.x;
+    y[i] = sphere.centre.y;
+    z[i] = sphere.centre.z;
+    radius[i] = sphere.radius;
+    colour[i] = sphere.colour;
+  }
+  background = scene.background;
+}
+
 void validate(const Scene2D& scene) { validate_objects(scene.circles); }
 void validate(const Scene3D& scene) { validate_objects(scene.spheres); }
 

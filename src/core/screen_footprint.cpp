@@ -1,5 +1,7 @@
 #include "screen_footprint.h"
 
+#include "vector_loops.h"
+
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -10,62 +12,94 @@ namespace {
 constexpr double kEpsilon = 1.1102230246251565e-16;  // double's unit roundoff
 // Relative slack on the slopes (the frame's and the rays' directions are good to ~1e-15).
 constexpr double kRelativeSlack = 1e-9;
+constexpr double kIndexSlack = 1e-6;  // of a pixel: far above the rounding of a pixel index
+
+// Everything below is branch-free (selects on values, no early return), so that sphere_boxes' loop over
+// many spheres vectorises; one object alone runs the same code.
+inline double lower(double a, double b) { return b < a ? b : a; }
+inline double higher(double a, double b) { return a < b ? b : a; }
+inline double clamped(double x, double lo, double hi) { return lower(higher(x, lo), hi); }
 
 // What both axes of one object share: the depth c0 of its centre along the view, its radius, and the
 // slack for the rounding that a computed ray and the intersection's arithmetic may suffer near it. The ray's
 // origin and f = origin - centre round at the scale of the coordinates; the naive formula's b² - c cancels,
 // which moves its silhouette by ~ε·|f|²/r (README, "Accuracy").
 struct Depth {
-  double c0, r, slack;
-  bool bounded;              // false when the object reaches the eye's plane (c0 ≤ r): every slope is possible
-  double inverse_room = 0;   // 1 / (c0² - r²)
-  double slope_slack = 0;    // the slack as a slope at the object's nearest depth, c0 - r
-
-  Depth(const Footprint& f, const glm::dvec3& q, double radius) : c0(glm::dot(q, f.forward)), r(radius) {
-    const double distance = std::abs(q.x) + std::abs(q.y) + std::abs(q.z);  // ≥ |q|, without a square root
-    slack = 64 * kEpsilon * (f.coordinate_scale + distance + r);
-    if (f.formula == IntersectFormula::naive) slack += 16 * kEpsilon * (distance + r) * (distance + r) / r;
-    bounded = c0 - r > slack + kRelativeSlack * c0;
-    if (bounded) {
-      inverse_room = 1.0 / ((c0 - r) * (c0 + r));
-      slope_slack = slack * (c0 + r) * inverse_room;  // slack / (c0 - r), with the one division
-    }
-  }
-
-  // Wholly on the eye's side of the screen plane (every point at depth c < d_f): rays start on the screen
-  // and move away from the eye, so they never reach it with t ≥ 0.
-  bool behind_screen(double df) const { return c0 + r < df - slack - kRelativeSlack * (std::abs(c0) + r + df); }
+  double c0, r;
+  bool bounded;         // false when the object reaches the eye's plane (c0 ≤ r): every slope is possible
+  bool behind_screen;   // wholly on the eye's side of the screen: no ray (t ≥ 0) reaches it
+  double inverse_room;  // 1 / (c0² - r²) when bounded
+  double slope_slack;   // the slack as a slope at the object's nearest depth, c0 - r
 };
 
-int floor_of(double x) {  // x in a few pixels of [0, count]: no library call, no overflow
-  const int i = int(x);
-  return i - (x < i);
-}
-int ceil_of(double x) {
-  const int i = int(x);
-  return i + (x > i);
+// kNaive is the footprint's formula, fixed for a whole loop: its extra division then costs nothing when
+// the formula is the stable one.
+template <bool kNaive>
+inline Depth depth_of(const Footprint& f, double qx, double qy, double qz, double r) {
+  Depth d;
+  d.c0 = qx * f.forward.x + qy * f.forward.y + qz * f.forward.z;
+  d.r = r;
+  const double distance = std::abs(qx) + std::abs(qy) + std::abs(qz);  // ≥ |q|, without a square root
+  double slack = 64 * kEpsilon * (f.coordinate_scale + distance + r);
+  if (kNaive) slack += 16 * kEpsilon * (distance + r) * (distance + r) / r;
+  d.bounded = d.c0 - r > slack + kRelativeSlack * d.c0;
+  // Every point at depth c < d_f: rays start on the screen and move away from the eye, so never reach it.
+  d.behind_screen = d.c0 + r < f.df - slack - kRelativeSlack * (std::abs(d.c0) + r + f.df);
+  const double room = d.bounded ? (d.c0 - r) * (d.c0 + r) : 1.0;
+  d.inverse_room = 1.0 / room;
+  d.slope_slack = slack * (d.c0 + r) * d.inverse_room;  // slack / (c0 - r), with the one division
+  return d;
 }
 
 // Pixels (along one axis) whose centre's ray can touch the object: the tangent slopes m = a/c of the lines
 // from the eye touching the circle of centre (a0, c0) and radius r (the object's trace in the plane through
 // the forward axis and this axis), widened by the slack, mapped to pixel centres -1 + (2i+1)/count on the
 // screen at distance d_f through the core's pixel <-> screen pair. increasing = false for rows, whose screen
-// y decreases with i.
-PixelRange axis_pixels(const Depth& d, double a0, double df, int count, bool increasing) {
-  if (!d.bounded) return PixelRange{0, count - 1};
-  const double spread = d.r * std::sqrt(a0 * a0 + (d.c0 - d.r) * (d.c0 + d.r));
+// y decreases with i. The whole axis when the object reaches the eye's plane.
+// The first and last pixel, as whole numbers in doubles: comparing a double with an int would keep GCC from
+// vectorising the loop, so the conversion to int comes last.
+struct AxisRange {
+  double first, last;
+};
+
+inline AxisRange axis_pixels(const Depth& d, double a0, double df, int count, bool increasing) {
+  const double under_root = a0 * a0 + (d.c0 - d.r) * (d.c0 + d.r);
+  const double spread = d.r * std::sqrt(higher(under_root, 0.0));
   double m_lo = (a0 * d.c0 - spread) * d.inverse_room, m_hi = (a0 * d.c0 + spread) * d.inverse_room;
   const double widen = kRelativeSlack * (std::abs(m_lo) + std::abs(m_hi) + 1.0) + d.slope_slack;
   m_lo -= widen;
   m_hi += widen;
-  auto index_of = [&](double slope) {  // pixel i has its centre at index i, raster coordinate i + 1/2
-    const double screen = increasing ? df * slope : -df * slope;  // rows: raster y grows as screen y falls
-    return std::clamp(raster_from_screen(screen, count) - 0.5, -2.0, double(count) + 1.0);
-  };
-  double a = index_of(m_lo), b = index_of(m_hi);
-  if (a > b) std::swap(a, b);
-  constexpr double kIndexSlack = 1e-6;  // of a pixel: far above the rounding of index_of
-  return PixelRange{std::max(0, ceil_of(a - kIndexSlack)), std::min(count - 1, floor_of(b + kIndexSlack))};
+  const double screen_lo = increasing ? df * m_lo : -df * m_lo;  // rows: raster y grows as screen y falls
+  const double screen_hi = increasing ? df * m_hi : -df * m_hi;
+  // Pixel i has its centre at index i, raster coordinate i + 1/2.
+  const double a0_index = clamped(raster_from_screen(screen_lo, count) - 0.5, -2.0, double(count) + 1.0);
+  const double b0_index = clamped(raster_from_screen(screen_hi, count) - 0.5, -2.0, double(count) + 1.0);
+  const double a = lower(a0_index, b0_index) - kIndexSlack, b = higher(a0_index, b0_index) + kIndexSlack;
+  const double a_whole = double(int(a)), b_whole = double(int(b));  // in [-3, count + 2]: no overflow
+  const double ceil_a = a > a_whole ? a_whole + 1.0 : a_whole, floor_b = b < b_whole ? b_whole - 1.0 : b_whole;
+  return AxisRange{d.bounded ? higher(0.0, ceil_a) : 0.0, d.bounded ? lower(double(count - 1), floor_b) : double(count - 1)};
+}
+
+template <bool kNaive>
+inline PixelBox sphere_box(const Footprint& f, double x, double y, double z, double r, int rows, int columns) {
+  const double qx = x - f.eye.x, qy = y - f.eye.y, qz = z - f.eye.z;
+  const Depth d = depth_of<kNaive>(f, qx, qy, qz, r);
+  // The planes through the eye containing the up axis that touch the sphere are the tangent lines of its
+  // projection on the (right, forward) plane, a circle of the same radius: so each axis is a 2D problem.
+  const AxisRange across = axis_pixels(d, qx * f.right.x + qy * f.right.y + qz * f.right.z, f.df, columns, true);
+  const AxisRange down = axis_pixels(d, qx * f.up.x + qy * f.up.y + qz * f.up.z, f.df, rows, false);
+  PixelBox box;
+  box.columns = PixelRange{int(across.first), int(across.last)};
+  box.rows = PixelRange{int(down.first), int(d.behind_screen ? -1.0 : down.last)};
+  return box;
+}
+
+RAYCAM_VECTOR_LOOP void sphere_boxes_of(const Footprint frame, const double* x, const double* y, const double* z,
+                     const double* radius, int count, int rows, int columns, PixelBox* boxes) {
+  if (frame.formula == IntersectFormula::naive)
+    for (int i = 0; i < count; ++i) boxes[i] = sphere_box<true>(frame, x[i], y[i], z[i], radius[i], rows, columns);
+  else
+    for (int i = 0; i < count; ++i) boxes[i] = sphere_box<false>(frame, x[i], y[i], z[i], radius[i], rows, columns);
 }
 }  // namespace
 
@@ -91,22 +125,24 @@ Footprint::Footprint(const Camera3D& camera, IntersectFormula intersect) : formu
 }
 
 PixelRange Footprint::circle_pixels(const Circle& circle, int pixel_count) const {
-  const glm::dvec3 q = glm::dvec3(circle.centre, 0.0) - eye;
-  const Depth depth(*this, q, circle.radius);
-  if (depth.behind_screen(df)) return PixelRange{};
-  return axis_pixels(depth, glm::dot(q, right), df, pixel_count, true);
+  const double qx = circle.centre.x - eye.x, qy = circle.centre.y - eye.y;
+  const Depth d = formula == IntersectFormula::naive ? depth_of<true>(*this, qx, qy, 0.0, circle.radius)
+                                                     : depth_of<false>(*this, qx, qy, 0.0, circle.radius);
+  if (d.behind_screen) return PixelRange{};
+  const AxisRange range = axis_pixels(d, qx * right.x + qy * right.y, df, pixel_count, true);
+  return PixelRange{int(range.first), int(range.last)};
 }
 
 PixelBox Footprint::sphere_pixels(const Sphere& sphere, int rows, int columns) const {
-  const glm::dvec3 q = sphere.centre - eye;
-  const Depth depth(*this, q, sphere.radius);
-  if (depth.behind_screen(df)) return PixelBox{};
-  // The planes through the eye containing the up axis that touch the sphere are the tangent lines of its
-  // projection on the (right, forward) plane, a circle of the same radius: so each axis is a 2D problem.
   PixelBox box;
-  box.columns = axis_pixels(depth, glm::dot(q, right), df, columns, true);
-  box.rows = axis_pixels(depth, glm::dot(q, up), df, rows, false);
+  sphere_boxes_of(*this, &sphere.centre.x, &sphere.centre.y, &sphere.centre.z, &sphere.radius, 1, rows, columns, &box);
   return box;
+}
+
+void Footprint::sphere_boxes(const SphereColumns& spheres, int count, int rows, int columns, PixelBox* boxes) const {
+  // By value: the boxes' int stores could alias this footprint's fields (its formula), which would keep
+  // the loop from vectorising.
+  sphere_boxes_of(*this, spheres.x, spheres.y, spheres.z, spheres.radius, count, rows, columns, boxes);
 }
 
 }  // namespace raycam::detail

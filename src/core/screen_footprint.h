@@ -26,6 +26,11 @@ struct PixelBox {
   bool empty() const { return rows.empty() || columns.empty(); }
 };
 
+// Spheres as columns (structure of arrays): what sphere_boxes' loop reads, so that it vectorises.
+struct SphereColumns {
+  const double *x, *y, *z, *radius;
+};
+
 // The camera's frame, read off M_d = T·R·H: the eye, the unit right/up/forward axes and d_f, the eye's
 // distance to the screen. A world direction (a, b, c) in this frame crosses the canonical screen at
 // (d_f·a/c, d_f·b/c). A 2D camera is the plane z = 0 of this (no up axis).
@@ -43,6 +48,8 @@ struct Footprint {
   PixelRange circle_pixels(const Circle& circle, int pixel_count) const;
   // Rows and columns (image order) a sphere can cover; empty if culled.
   PixelBox sphere_pixels(const Sphere& sphere, int rows, int columns) const;
+  // The same for spheres 0…count-1 of the columns, into boxes[0…count-1] (the same code, vectorised).
+  void sphere_boxes(const SphereColumns& spheres, int count, int rows, int columns, PixelBox* boxes) const;
 };
 
 }  // namespace raycam::detail

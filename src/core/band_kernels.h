@@ -1,0 +1,42 @@
+// The accelerated 3D caster's inner loops over a band of rows, written to vectorise (vector_loops.h): the
+// band's rays made as columns, and one sphere tested against a run of them.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "raycam/camera3d.h"
+#include "raycam/intersect.h"
+
+namespace raycam::detail {
+
+// A band of pixels, row after row: its rays as columns (pixel p's ray starts at (ox, oy, oz)[p] with unit
+// direction (dx, dy, dz)[p]) and its depth buffer: the nearest t so far, that object's index (-1: none),
+// and whether any object's box covers the pixel.
+struct BandPixels {
+  std::vector<double> ox, oy, oz, dx, dy, dz;
+  std::vector<double> depth;
+  std::vector<int> id;
+  std::vector<unsigned char> covered;
+  void reset(std::size_t pixels);  // nothing seen, nothing covered (the rays are left to make_row_rays)
+};
+
+// The rays of a row into the band's pixels at, at + 1, …: column c's from column_x[c], its canonical x
+// (Camera3D::canonical_x, computed once a cast), so exactly the rays of Camera3D::primary_rays (the same
+// ray_on_line on the same numbers), for a camera whose classic mistakes, if any, only move it (the only
+// cameras the accelerated casters see).
+void make_row_rays(const Camera3D& camera, int row, const std::vector<double>& column_x, BandPixels& band,
+                   std::size_t at);
+
+// A run of pixels in a band: `count` pixels from `at` on each of `rows` rows, `stride` apart.
+struct PixelRun {
+  std::size_t at;
+  int count, rows, stride;
+};
+
+// One sphere against a run of the band's pixels: the plain loop's nearest_hit_t and depth test (strict '<':
+// objects come in index order, so a tie keeps the lower index).
+void test_sphere(const glm::dvec3& centre, double radius, int object, IntersectFormula formula, const PixelRun& run,
+                 BandPixels& band);
+
+}  // namespace raycam::detail
