@@ -21,12 +21,12 @@ struct BandPixels {
   void reset(std::size_t pixels);  // nothing seen, nothing covered (the rays are left to make_row_rays)
 };
 
-// The rays of a row into the band's pixels at, at + 1, …: column c's from column_x[c], its canonical x
-// (Camera3D::canonical_x, computed once a cast), so exactly the rays of Camera3D::primary_rays (the same
-// ray_on_line on the same numbers), for a camera whose classic mistakes, if any, only move it (the only
-// cameras the accelerated casters see).
-void make_row_rays(const Camera3D& camera, int row, const std::vector<double>& column_x, BandPixels& band,
-                   std::size_t at);
+// The rays of columns first…last of a row into the band's pixels row_at + first … row_at + last: column c's
+// from column_x[c], its canonical x (Camera3D::canonical_x, computed once a cast), so exactly the rays of
+// Camera3D::primary_rays (the same ray_on_line on the same numbers), for a camera whose classic mistakes,
+// if any, only move it (the only cameras the accelerated casters see).
+void make_row_rays(const Camera3D& camera, int row, int first, int last, const std::vector<double>& column_x,
+                   BandPixels& band, std::size_t row_at);
 
 // A run of pixels in a band: `count` pixels from `at` on each of `rows` rows, `stride` apart.
 struct PixelRun {
@@ -35,8 +35,23 @@ struct PixelRun {
 };
 
 // One sphere against a run of the band's pixels: the plain loop's nearest_hit_t and depth test (strict '<':
-// objects come in index order, so a tie keeps the lower index).
-void test_sphere(const glm::dvec3& centre, double radius, int object, IntersectFormula formula, const PixelRun& run,
-                 BandPixels& band);
+// objects come in index order, so a tie keeps the lower index). kFormula is fixed for the whole loop, so
+// that only its own arithmetic is in it. Scalar and inline: at 10⁵ spheres a box is one to a few pixels
+// wide, too short for vectors (measured: a vectorised row was slower), and a call per box cost more than
+// its test; with nearest_hit_t written without branches, a ray that misses costs no mispredicted branch.
+template <IntersectFormula kFormula>
+inline void test_sphere(const glm::dvec3& centre, double radius, int object, const PixelRun& run, BandPixels& band) {
+  for (int row = 0; row < run.rows; ++row) {
+    const std::size_t begin = run.at + std::size_t(row) * std::size_t(run.stride), end = begin + std::size_t(run.count);
+    for (std::size_t p = begin; p < end; ++p) {
+      const double t = nearest_hit_t(glm::dvec3(band.ox[p], band.oy[p], band.oz[p]),
+                                     glm::dvec3(band.dx[p], band.dy[p], band.dz[p]), centre, radius, kFormula);
+      const bool nearer = t < band.depth[p];
+      band.depth[p] = nearer ? t : band.depth[p];
+      band.id[p] = nearer ? object : band.id[p];
+      band.covered[p] = 1;
+    }
+  }
+}
 
 }  // namespace raycam::detail

@@ -1,6 +1,7 @@
 #include "footprint_caster.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 #include "band_kernels.h"
@@ -12,6 +13,7 @@ namespace raycam::detail {
 namespace {
 constexpr int kBandRows = 8;              // a band's depth buffer stays in cache at any width
 constexpr int kObjectsPerChunk = 4096;    // projection work handed out per item
+constexpr int kRayBlock = 8;              // columns whose rays are made together: two AVX2 vectors
 constexpr int kBatch = 256;               // spheres projected at once (their boxes: 4 KB, in L1)
 // Starting a thread costs tens of microseconds: below this much work (intersection tests, plus a quarter of
 // a test per pixel written and four per candidate) one thread finishes first. Measured with `bench speed`
@@ -29,16 +31,32 @@ struct Candidate {
 };
 
 // Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
-// object order because candidates are appended in order.
+// object order because candidates are appended in order. Copies, not indices: a band then reads its
+// candidates in a row, where indices into 10⁵ candidates cost a cache miss each (measured: 15 % of a cast).
 struct Bands {
-  std::vector<int> start, entries, fill;
+  std::vector<int> start, fill;
+  std::vector<Candidate> entries;
 };
 
-// The survivors of culling, in object order, into `visible` (`projected` and `kept_in_chunk` are scratch).
+// The survivors of culling, in object order: packed at the front of each chunk of `projected`. Binning
+// reads them there; the other methods join them into `visible` first (one copy less of up to 10⁵).
 struct Projection {
-  std::vector<Candidate> projected;  // one slot per object, survivors packed at the front of each chunk
+  std::vector<Candidate> projected;  // one slot per object
   std::vector<int> kept_in_chunk;
-  std::vector<Candidate> visible;
+  int visible_count = 0;
+  std::vector<Candidate> visible;  // filled by join()
+
+  template <class Use>
+  void for_each_visible(Use&& use) const {
+    for (std::size_t chunk = 0; chunk < kept_in_chunk.size(); ++chunk) {
+      const Candidate* first = &projected[chunk * kObjectsPerChunk];
+      for (const Candidate* c = first; c != first + kept_in_chunk[chunk]; ++c) use(*c);
+    }
+  }
+  void join() {
+    visible.clear();
+    for_each_visible([this](const Candidate& c) { visible.push_back(c); });
+  }
 };
 
 void project_spheres(const Camera3D& camera, const PackedScene3D& scene, IntersectFormula formula, int workers,
@@ -74,25 +92,26 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, Interse
     }
     w.kept_in_chunk[std::size_t(chunk)] = kept;
   });
-  w.visible.clear();  // chunks joined in order: object order holds
-  for (int chunk = 0; chunk < chunks; ++chunk) {
-    const auto first = w.projected.begin() + std::ptrdiff_t(chunk) * kObjectsPerChunk;
-    w.visible.insert(w.visible.end(), first, first + w.kept_in_chunk[std::size_t(chunk)]);
-  }
+  w.visible_count = 0;
+  for (int kept : w.kept_in_chunk) w.visible_count += kept;
 }
 
-void bin_by_band(const std::vector<Candidate>& visible, int bands, Bands& binned) {
+// Returns the candidates' total box area (the tests they will cost).
+long long bin_by_band(const Projection& projection, int bands, Bands& binned) {
   binned.start.assign(std::size_t(bands) + 1, 0);
-  for (const Candidate& c : visible)
+  long long area = 0;
+  projection.for_each_visible([&](const Candidate& c) {
     for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
+    area += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
+  });
   for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
   binned.entries.resize(std::size_t(binned.start.back()));
   binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
-  for (int j = 0; j < int(visible.size()); ++j) {
-    const PixelRange& rows = visible[std::size_t(j)].box.rows;
-    for (int b = rows.first / kBandRows; b <= rows.last / kBandRows; ++b)
-      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = j;
-  }
+  projection.for_each_visible([&](const Candidate& c) {
+    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b)
+      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = c;
+  });
+  return area;
 }
 
 // The 2D bar's depth buffer, with a line of rays made by the camera's primary_rays.
@@ -131,6 +150,7 @@ struct DepthBuffer {
 // row, and two workers' counters sharing a line would slow both.
 struct alignas(64) BandScratch {
   BandPixels pixels;
+  std::vector<unsigned char> ray_blocks;  // per row, which blocks of kRayBlock columns need rays
   long long tests = 0, covered_pixels = 0;
 };
 
@@ -158,20 +178,25 @@ void splat(const Candidate& candidate, int columns, int row_begin, int row_end, 
   const PixelRun run{std::size_t(first - row_begin) * std::size_t(columns) + std::size_t(box.columns.first),
                      box.columns.last - box.columns.first + 1, last - first + 1, columns};
   if (run.rows <= 0) return;
-  test_sphere(candidate.centre, candidate.radius, candidate.object, formula, run, scratch.pixels);
+  if (formula == IntersectFormula::naive)
+    test_sphere<IntersectFormula::naive>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
+  else
+    test_sphere<IntersectFormula::stable>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
   scratch.tests += static_cast<long long>(run.rows) * run.count;
 }
 
-void write_band(const PackedScene3D& scene, int row_begin, int row_end, BandScratch& scratch, ColourMap& out) {
+// Background and colours by value and pointer: read through the scene, they could alias the colours'
+// byte stores, and were read again at every pixel.
+void write_band(Rgb8 background, const Rgb8* colour, int row_begin, int row_end, BandScratch& scratch, ColourMap& out) {
   const std::size_t offset = out.index(row_begin, 0);
   const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
-  long long covered = 0;
   for (std::size_t p = 0; p < pixels; ++p) {
     const int object = scratch.pixels.id[p];
     out.ids[offset + p] = object;
-    out.colours[offset + p] = object < 0 ? scene.background : scene.colour[std::size_t(object)];
-    covered += scratch.pixels.covered[p];
+    out.colours[offset + p] = object < 0 ? background : colour[object];
   }
+  std::uint32_t covered = 0;  // a byte a pixel, summed in 32 bits: a loop that vectorises well
+  for (std::size_t p = 0; p < pixels; ++p) covered += scratch.pixels.covered[p];
   scratch.covered_pixels += covered;
 }
 }  // namespace
@@ -183,20 +208,25 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const int threads = resolve_threads(options.threads);
   Workspace& workspace = calling_thread_workspace();
   project_spheres(camera, scene, options.formula, threads, workspace.projection);
-  const std::vector<Candidate>& visible = workspace.projection.visible;
+  Projection& projection = workspace.projection;
+  const std::vector<Candidate>& visible = projection.visible;
+  const long long visible_count = projection.visible_count;
 
   CastMethod method = options.method;
   if (method == CastMethod::automatic)
-    method = int(visible.size()) <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
+    method = visible_count <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
   const int bands = (rows + kBandRows - 1) / kBandRows;
   const Bands& binned = workspace.bands;
-  if (method == CastMethod::binned) bin_by_band(visible, bands, workspace.bands);
-
   // Each candidate costs a few tests' worth besides its tests (its rows of rays, its bands).
-  long long work = pixels / 4 + 4 * static_cast<long long>(visible.size());
-  for (const Candidate& c : visible)
-    work += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
-  if (method == CastMethod::culled) work += pixels * static_cast<long long>(visible.size());
+  long long work = pixels / 4 + 4 * visible_count;
+  if (method == CastMethod::binned) {
+    work += bin_by_band(projection, bands, workspace.bands);
+  } else {
+    projection.join();
+    for (const Candidate& c : visible)
+      work += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
+    if (method == CastMethod::culled) work += pixels * visible_count;
+  }
   const int workers = work >= kThreadedWork ? threads : 1;
   std::vector<double>& column_x = workspace.column_x;  // every row's rays use the same canonical x
   column_x.resize(std::size_t(columns));
@@ -207,36 +237,58 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   parallel_items(bands, workers, [&](int worker, int band) {
     BandScratch& s = scratch[std::size_t(worker)];
     const int row_begin = band * kBandRows, row_end = std::min(rows, row_begin + kBandRows);
-    s.pixels.reset(std::size_t(row_end - row_begin) * columns);
-    const auto make_rays = [&] {  // every pixel's of the band at once: a vectorised loop, no call per object
-      for (int row = row_begin; row < row_end; ++row)
-        make_row_rays(camera, row, column_x, s.pixels, std::size_t(row - row_begin) * columns);
-    };
+    const int band_rows = row_end - row_begin;
+    s.pixels.reset(std::size_t(band_rows) * columns);
+    const auto row_at = [&](int row) { return std::size_t(row - row_begin) * std::size_t(columns); };
     if (method == CastMethod::culled) {  // every pixel, every object that survived culling
-      make_rays();
-      for (const Candidate& c : visible)  // object order at every pixel
-        test_sphere(c.centre, c.radius, c.object, options.formula, PixelRun{0, columns, row_end - row_begin, columns},
-                    s.pixels);
-      s.tests += static_cast<long long>(row_end - row_begin) * columns * static_cast<long long>(visible.size());
-    } else if (method == CastMethod::binned) {
-      const int begin = binned.start[std::size_t(band)], end = binned.start[std::size_t(band) + 1];
-      if (begin < end) make_rays();
-      for (int e = begin; e < end; ++e)
-        splat(visible[std::size_t(binned.entries[std::size_t(e)])], columns, row_begin, row_end, options.formula, s);
-    } else {  // footprint: every visible object's box checked against the band
-      bool rays_made = false;
-      for (const Candidate& c : visible) {
-        if (c.box.rows.last < row_begin || c.box.rows.first >= row_end) continue;
-        if (!rays_made) make_rays();
-        rays_made = true;
-        splat(c, columns, row_begin, row_end, options.formula, s);
+      for (int row = row_begin; row < row_end; ++row) make_row_rays(camera, row, 0, columns - 1, column_x, s.pixels, row_at(row));
+      for (const Candidate& c : visible) {  // object order at every pixel
+        const PixelRun band_pixels{0, columns, band_rows, columns};
+        if (options.formula == IntersectFormula::naive)
+          test_sphere<IntersectFormula::naive>(c.centre, c.radius, c.object, band_pixels, s.pixels);
+        else
+          test_sphere<IntersectFormula::stable>(c.centre, c.radius, c.object, band_pixels, s.pixels);
       }
+      s.tests += static_cast<long long>(band_rows) * columns * visible_count;
+    } else {
+      // The band's candidates in object order: its bin, or every visible object whose rows meet the band.
+      const auto for_each_candidate = [&](auto&& use) {
+        if (method == CastMethod::binned) {
+          for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
+            use(binned.entries[std::size_t(e)]);
+        } else {
+          for (const Candidate& c : visible)
+            if (c.box.rows.last >= row_begin && c.box.rows.first < row_end) use(c);
+        }
+      };
+      // Rays only where a box needs them: blocks of kRayBlock columns are marked, then each run of marked
+      // blocks gets its rays in one vectorised call (a few calls a row, not one per object and row).
+      const int blocks = (columns + kRayBlock - 1) / kRayBlock;
+      s.ray_blocks.assign(std::size_t(band_rows) * std::size_t(blocks), 0);
+      for_each_candidate([&](const Candidate& c) {
+        const int first = std::max(c.box.rows.first, row_begin), last = std::min(c.box.rows.last, row_end - 1);
+        for (int row = first; row <= last; ++row)
+          std::fill(&s.ray_blocks[std::size_t(row - row_begin) * blocks + std::size_t(c.box.columns.first / kRayBlock)],
+                    &s.ray_blocks[std::size_t(row - row_begin) * blocks + std::size_t(c.box.columns.last / kRayBlock)] + 1, 1);
+      });
+      for (int row = row_begin; row < row_end; ++row) {
+        const unsigned char* marked = &s.ray_blocks[std::size_t(row - row_begin) * blocks];
+        const unsigned char* end = marked + blocks;
+        for (const unsigned char* b = marked; (b = static_cast<const unsigned char*>(std::memchr(b, 1, std::size_t(end - b))));) {
+          const unsigned char* e = static_cast<const unsigned char*>(std::memchr(b, 0, std::size_t(end - b)));
+          if (!e) e = end;
+          make_row_rays(camera, row, int(b - marked) * kRayBlock, std::min(columns, int(e - marked) * kRayBlock) - 1,
+                        column_x, s.pixels, row_at(row));
+          b = e;
+        }
+      }
+      for_each_candidate([&](const Candidate& c) { splat(c, columns, row_begin, row_end, options.formula, s); });
     }
-    write_band(scene, row_begin, row_end, s, out);
+    write_band(scene.background, scene.colour.data(), row_begin, row_end, s, out);
   });
 
   stats.rays = pixels;
-  stats.objects_culled = static_cast<long long>(scene.size()) - static_cast<long long>(visible.size());
+  stats.objects_culled = static_cast<long long>(scene.size()) - visible_count;
   stats.intersection_tests = 0;
   long long covered = 0;
   for (const BandScratch& s : scratch) {
@@ -250,7 +302,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
 int project_visible(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options) {
   Workspace& workspace = calling_thread_workspace();
   project_spheres(camera, scene, options.formula, resolve_threads(options.threads), workspace.projection);
-  return int(workspace.projection.visible.size());
+  return workspace.projection.visible_count;
 }
 
 void cast_accelerated(const Camera2D& camera, const Scene2D& scene, ColourMap& out, const CastOptions& options,
