@@ -16,6 +16,7 @@ namespace raycam::ui {
 
 void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.file = setup.file;
+  ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
   state.scene_path = setup.scene_path;
   state.dimension = setup.dimension;
   state.orbit2d = setup.camera2d.orbit();
@@ -105,8 +106,15 @@ bool recast_if_needed(AppState& state, bool interacting) {
   if (!cast) {
     CastOptions options = state.cast_options;
     options.formula = state.accuracy.options.formula;
-    if (is_2d) cast_primary_rays(state.camera2d, state.file.scene2d, state.map, options, &state.stats);
-    else cast_primary_rays(state.camera3d, state.file.scene3d, state.map, options, &state.stats);
+    if (is_2d) {
+      cast_primary_rays(state.camera2d, state.file.scene2d, state.map, options, &state.stats);
+    } else {
+      if (state.packed_version != state.scene_version) {  // a new scene: pack it once, not at every cast
+        state.packed3d.pack(state.file.scene3d);
+        state.packed_version = state.scene_version;
+      }
+      cast_primary_rays(state.camera3d, state.packed3d, state.map, options, &state.stats);
+    }
   }
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);
@@ -126,7 +134,6 @@ bool open_scene(AppState& state, const std::string& path) {
     adopt_view_setup(state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
-    ++state.scene_version;
     state.cameras_dirty = true;
     std::snprintf(state.path_input, sizeof state.path_input, "%s", path.c_str());
     state.save_path[0] = '\0';  // Save as starts empty: never the file just opened unless the user types it

@@ -76,6 +76,9 @@ struct AppState {
   bool cameras_dirty = true;
   std::uint64_t scene_version = 1;  // bumped when the objects change
   std::uint64_t map_version = 0;    // bumped at every cast
+  // The 3D scene packed for the caster (raycam/scene.h), repacked when scene_version moves past packed_version.
+  PackedScene3D packed3d;
+  std::uint64_t packed_version = 0;
   ColourMap map;
   CastOptions cast_options;  // the caster's method (the app's "Caster" combo); same ids whatever it is
   AccuracyFlags accuracy;    // the accuracy knobs; at their defaults the fast caster runs

@@ -123,3 +123,31 @@ TEST_CASE("placing the app's camera composes M_d once per change, with or withou
         CHECK(placements_built_on_this_thread() - before == 1);
       }
 }
+
+TEST_CASE("the 3D scene is packed for the caster once per scene: a newly opened file is cast, not the old one",
+          "[ui][cache]") {
+  ui::AppState state = state_for({"--size", "64x48"});
+  REQUIRE(ui::recast_if_needed(state));
+  const std::uint64_t packed = state.packed_version;
+  CastOptions plain;
+  plain.method = CastMethod::plain;
+  // A camera change re-casts from the same packed copy.
+  state.orbit3d.theta += 0.3;
+  state.cameras_dirty = true;
+  REQUIRE(ui::recast_if_needed(state));
+  CHECK(state.packed_version == packed);
+  CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
+  // A new file: one big sphere on the target, so nearly every pixel changes from the demo's.
+  {
+    std::ofstream file("one_sphere.json");
+    file << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 3,
+               "color": [1, 2, 3]}], "camera": {"d": 8, "size": [64, 48]}})";
+  }
+  REQUIRE(ui::open_scene(state, "one_sphere.json"));
+  REQUIRE(ui::recast_if_needed(state));
+  CHECK(state.packed_version != packed);
+  CHECK(state.packed3d.size() == 1);
+  CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
+  CHECK(state.map.colour_at(24, 32) == Rgb8{1, 2, 3});
+  std::remove("one_sphere.json");
+}
