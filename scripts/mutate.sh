@@ -25,11 +25,11 @@ CORE_TESTS="^core:"
 # --- the bugs the suite caught before issue 15 ---
 mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = \([^;]*\);/kRollPsi0 = -(\1);/' "$CORE" "$CORE_TESTS"
 mutant pixel-edges src/core/camera3d.cpp 's/mistakes_.pixel_edges ? column : column + 0.5/column/' "$CORE" "$CORE_TESTS"
-mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) ray.direction/if (false) ray.direction/' "$CORE" "$CORE_TESTS"
+mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) direction \*=/if (false) direction *=/' "$CORE" "$CORE_TESTS"
 mutant printed-rotation-2d src/core/camera2d.cpp 's/placement.alpha = view_angle - \(.*\);/placement.alpha = view_angle + \1;/' "$CORE" "$CORE_TESTS"
-mutant negative-t-hits include/raycam/intersect.h 's/if (c > T(0) && b > T(0)) return kNoHit<T>;//; s/if (t_near >= T(0)) return t_near;/return t_near;/' "$CORE" "$CORE_TESTS"
+mutant negative-t-hits include/raycam/intersect.h 's/const bool moving_away = c > T(0) \&\& b > T(0);/const bool moving_away = false;/; s/T t = t_near >= T(0) ? t_near :/T t = true ? t_near :/' "$CORE" "$CORE_TESTS"
 mutant mirrored-bar include/raycam/camera2d.h 's/int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }/int column_of_pixel(int k) const { return k; }/' "$CORE" "$CORE_TESTS"
-mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/std::max(0, ceil_of(a - kIndexSlack))/std::max(0, ceil_of(a - kIndexSlack) + 1)/' "$CORE" "$CORE_TESTS"
+mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/d.bounded ? higher(0.0, ceil_a) : 0.0/d.bounded ? higher(0.0, ceil_a + 1.0) : 0.0/' "$CORE" "$CORE_TESTS"
 # The exact 2D bar's three kinds of breakpoint, one dropped at a time: silhouettes, the screen line
 # entering or leaving a circle, two circles crossing.
 mutant exact-bar-no-silhouettes src/core/exact_bar.cpp '/add_direction(Vec(cos_beta \* u.x [+-] sin_beta/d' "$CORE" "$CORE_TESTS"
@@ -38,7 +38,8 @@ mutant exact-bar-no-circle-crossings src/core/exact_bar.cpp '/add_direction(base
 # --- the holes issue 15 found ---
 mutant footprint-no-rounding-slack src/core/screen_footprint.cpp 's/slack = 64 \* kEpsilon/slack = 0 * kEpsilon/; s/slack += 16 \* kEpsilon/slack += 0 * kEpsilon/; s/kRelativeSlack = 1e-9;/kRelativeSlack = 0;/; s/kIndexSlack = 1e-6;/kIndexSlack = 0;/' "$CORE" "$CORE_TESTS"
 mutant plain-ties-to-higher-index src/core/ray_caster.cpp 's/if (t < hit.t) hit/if (t <= hit.t) hit/' "$CORE" "$CORE_TESTS"
-mutant fast-ties-to-higher-index src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
+mutant fast-ties-to-higher-index-2d src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
+mutant fast-ties-to-higher-index-3d src/core/band_kernels.h 's/const bool nearer = t < band.depth\[p\];/const bool nearer = t <= band.depth[p];/' "$CORE" "$CORE_TESTS"
 mutant radius-0-accepted src/core/validation.cpp 's/value <= 0.0 || value > kMaxCoordinate/value < 0.0 || value > kMaxCoordinate/' "$CORE" "$CORE_TESTS"
 mutant res-0-accepted src/core/validation.cpp 's/if (!(value > 0.0 \&\& value <= 1.0))/if (!(value >= 0.0 \&\& value <= 1.0))/' "$CORE" "$CORE_TESTS"
 mutant roll-left-out-of-the-product src/core/camera3d.cpp 's/const glm::dmat4 factors\[\] = {placement.scale, placement.roll,/const glm::dmat4 factors[] = {placement.scale, glm::dmat4(1.0),/' "$CORE" "$CORE_TESTS"
@@ -46,8 +47,14 @@ mutant placement-knob-ignored src/core/accuracy_options.cpp 's/if (flags.placeme
 mutant embree-build-time-not-measured src/bench/embree_caster.cpp 's/build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();/build_ms_ = 0.0;/' "raycam_bench_tests" "^bench:"
 mutant scene-preset-df-ignored src/core/view_setup.cpp '/if (preset.df) orbit.df = \*preset.df;/d' "raycam-cli raycam_cli_tests" "^cli:"
 mutant cli-error-exits-0 src/cli/main.cpp '/catch (const std::invalid_argument/,/return 2;/s/return 2;/return 0;/' "raycam-cli" "^cli rejects:"
+# --- issue 14's rewrites for speed ---
+mutant tangent-at-origin-dropped include/raycam/intersect.h 's/  t = tangent_at_origin ? T(0) : t;//' "$CORE" "$CORE_TESTS"
+mutant band-rays-not-renormalised src/core/band_kernels.cpp 's/column_x\[i\], true, origin, direction/column_x[i], false, origin, direction/' "$CORE" "$CORE_TESTS"
+mutant band-rays-missing-past-a-box-first-block src/core/footprint_caster.cpp 's/std::size_t(c.box.columns.last \/ kRayBlock)\] + 1, 1);/std::size_t(c.box.columns.first \/ kRayBlock)] + 1, 1);/' "$CORE" "$CORE_TESTS"
+mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/kept += !boxes\[k\].empty();/kept += 1;/' "$CORE" "$CORE_TESTS"
 UI="raycam_ui_tests raycam_render_tests"
 mutant inspector-prints-1.5t src/ui/panels.cpp 's/ray.hit.id, name.c_str(), ray.hit.t);/ray.hit.id, name.c_str(), 1.5 * ray.hit.t);/' "$UI" "^(ui|render):"
+mutant packed-scene-not-repacked src/ui/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "$UI" "^(ui|render):"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
