@@ -9,8 +9,11 @@
 namespace raycam::detail {
 
 namespace {
-RAYCAM_VECTOR_LOOP void rays_of_line(const Camera3D::RayLine line, const double* column_x, int columns, double* ox,
-                                     double* oy, double* oz, double* dx, double* dy, double* dz) {
+// __restrict: the arrays are distinct; without it GCC would need more run-time overlap checks than it
+// allows itself, and would not vectorise.
+RAYCAM_VECTOR_LOOP void rays_of_line(const Camera3D::RayLine line, const double* __restrict column_x, int columns,
+                                     double* __restrict ox, double* __restrict oy, double* __restrict oz,
+                                     double* __restrict dx, double* __restrict dy, double* __restrict dz) {
   // Locals: the stores below could alias the line's fields, which would keep the loop from vectorising.
   const glm::dvec3 origin_base = line.origin_base, direction_base = line.direction_base, axis = line.axis;
   for (int i = 0; i < columns; ++i) {
@@ -25,6 +28,16 @@ RAYCAM_VECTOR_LOOP void rays_of_line(const Camera3D::RayLine line, const double*
   }
 }
 
+
+template <IntersectFormula kFormula>
+RAYCAM_VECTOR_LOOP void test_row(glm::dvec3 centre, double radius, int object, int count,
+                                 const double* __restrict ox, const double* __restrict oy,
+                                 const double* __restrict oz, const double* __restrict dx,
+                                 const double* __restrict dy, const double* __restrict dz,
+                                 double* __restrict depth, int* __restrict id, unsigned char* __restrict covered) {
+  for (int i = 0; i < count; ++i)
+    test_pixel<kFormula>(centre, radius, object, std::size_t(i), ox, oy, oz, dx, dy, dz, depth, id, covered);
+}
 }  // namespace
 
 void BandPixels::reset(std::size_t pixels) {
@@ -41,6 +54,17 @@ void make_row_rays(const Camera3D& camera, int row, int first, int last, const s
   const std::size_t at = row_at + std::size_t(first);
   rays_of_line(camera.ray_line(row), &column_x[std::size_t(first)], last - first + 1, &band.ox[at], &band.oy[at],
                &band.oz[at], &band.dx[at], &band.dy[at], &band.dz[at]);
+}
+
+void test_sphere_vectorised(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
+                            const PixelRun& run, BandPixels& band) {
+  const auto row_test = formula == IntersectFormula::naive ? test_row<IntersectFormula::naive>
+                                                           : test_row<IntersectFormula::stable>;
+  for (int row = 0; row < run.rows; ++row) {
+    const std::size_t at = run.at + std::size_t(row) * std::size_t(run.stride);
+    row_test(centre, radius, object, run.count, &band.ox[at], &band.oy[at], &band.oz[at], &band.dx[at],
+             &band.dy[at], &band.dz[at], &band.depth[at], &band.id[at], &band.covered[at]);
+  }
 }
 
 }  // namespace raycam::detail

@@ -178,7 +178,9 @@ void splat(const Candidate& candidate, int columns, int row_begin, int row_end, 
   const PixelRun run{std::size_t(first - row_begin) * std::size_t(columns) + std::size_t(box.columns.first),
                      box.columns.last - box.columns.first + 1, last - first + 1, columns};
   if (run.rows <= 0) return;
-  if (formula == IntersectFormula::naive)
+  if (run.count >= kVectorRun)
+    test_sphere_vectorised(candidate.centre, candidate.radius, candidate.object, formula, run, scratch.pixels);
+  else if (formula == IntersectFormula::naive)
     test_sphere<IntersectFormula::naive>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
   else
     test_sphere<IntersectFormula::stable>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
@@ -242,13 +244,9 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
     const auto row_at = [&](int row) { return std::size_t(row - row_begin) * std::size_t(columns); };
     if (method == CastMethod::culled) {  // every pixel, every object that survived culling
       for (int row = row_begin; row < row_end; ++row) make_row_rays(camera, row, 0, columns - 1, column_x, s.pixels, row_at(row));
-      for (const Candidate& c : visible) {  // object order at every pixel
-        const PixelRun band_pixels{0, columns, band_rows, columns};
-        if (options.formula == IntersectFormula::naive)
-          test_sphere<IntersectFormula::naive>(c.centre, c.radius, c.object, band_pixels, s.pixels);
-        else
-          test_sphere<IntersectFormula::stable>(c.centre, c.radius, c.object, band_pixels, s.pixels);
-      }
+      for (const Candidate& c : visible)  // object order at every pixel
+        test_sphere_vectorised(c.centre, c.radius, c.object, options.formula, PixelRun{0, columns, band_rows, columns},
+                               s.pixels);
       s.tests += static_cast<long long>(band_rows) * columns * visible_count;
     } else {
       // The band's candidates in object order: its bin, or every visible object whose rows meet the band.
