@@ -11,6 +11,7 @@ packages=(
   libcli11-dev                               # command lines
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev bubblewrap python3            # command lines; `check`: sandbox and the Python example student
+  qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
 )
 missing=()
