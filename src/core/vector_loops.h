@@ -4,8 +4,8 @@
 // projecting 10⁵ spheres took 1.11 ms with AVX2, 0.72 ms with AVX-512, one thread). flatten inlines what the
 // loop calls, so that it vectorises at -O2. The copies run the same operations in the same order, with no
 // FMA (-ffp-contract=off, though x86-64-v4 has it): they give the same bits. The tests run the copy this
-// CPU picks, and the others under qemu (tests/core/CMakeLists.txt). The files holding such loops are compiled with the flags that let GCC vectorise them
-// (src/core/CMakeLists.txt).
+// CPU picks, and the others under qemu (tests/core/CMakeLists.txt). The files holding such loops are
+// compiled with the flags that let GCC vectorise them (src/core/CMakeLists.txt).
 #pragma once
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
