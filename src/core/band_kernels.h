@@ -53,7 +53,8 @@ inline void test_pixel(const glm::dvec3& centre, double radius, int object, std:
 }
 
 template <IntersectFormula kFormula>
-inline void test_sphere(const glm::dvec3& centre, double radius, int object, const PixelRun& run, BandPixels& band) {
+inline void test_sphere_scalar(const glm::dvec3& centre, double radius, int object, const PixelRun& run,
+                               BandPixels& band) {
   for (int row = 0; row < run.rows; ++row) {
     const std::size_t begin = run.at + std::size_t(row) * std::size_t(run.stride), end = begin + std::size_t(run.count);
     for (std::size_t p = begin; p < end; ++p)
@@ -68,5 +69,13 @@ inline void test_sphere(const glm::dvec3& centre, double radius, int object, con
 inline constexpr int kVectorRun = 4;
 void test_sphere_vectorised(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
                             const PixelRun& run, BandPixels& band);
+
+// What the casters call: the vectorised rows for runs of kVectorRun pixels or more, else the scalar loop.
+inline void test_sphere(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
+                        const PixelRun& run, BandPixels& band) {
+  if (run.count >= kVectorRun) test_sphere_vectorised(centre, radius, object, formula, run, band);
+  else if (formula == IntersectFormula::naive) test_sphere_scalar<IntersectFormula::naive>(centre, radius, object, run, band);
+  else test_sphere_scalar<IntersectFormula::stable>(centre, radius, object, run, band);
+}
 
 }  // namespace raycam::detail

@@ -102,7 +102,7 @@ long long bin_by_band(const Projection& projection, int bands, Bands& binned) {
   long long area = 0;
   projection.for_each_visible([&](const Candidate& c) {
     for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
-    area += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
+    area += c.box.pixel_count();
   });
   for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
   binned.entries.resize(std::size_t(binned.start.back()));
@@ -178,12 +178,7 @@ void splat(const Candidate& candidate, int columns, int row_begin, int row_end, 
   const PixelRun run{std::size_t(first - row_begin) * std::size_t(columns) + std::size_t(box.columns.first),
                      box.columns.last - box.columns.first + 1, last - first + 1, columns};
   if (run.rows <= 0) return;
-  if (run.count >= kVectorRun)
-    test_sphere_vectorised(candidate.centre, candidate.radius, candidate.object, formula, run, scratch.pixels);
-  else if (formula == IntersectFormula::naive)
-    test_sphere<IntersectFormula::naive>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
-  else
-    test_sphere<IntersectFormula::stable>(candidate.centre, candidate.radius, candidate.object, run, scratch.pixels);
+  test_sphere(candidate.centre, candidate.radius, candidate.object, formula, run, scratch.pixels);
   scratch.tests += static_cast<long long>(run.rows) * run.count;
 }
 
@@ -226,7 +221,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   } else {
     projection.join();
     for (const Candidate& c : visible)
-      work += static_cast<long long>(c.box.rows.last - c.box.rows.first + 1) * (c.box.columns.last - c.box.columns.first + 1);
+      work += c.box.pixel_count();
     if (method == CastMethod::culled) work += pixels * visible_count;
   }
   const int workers = work >= kThreadedWork ? threads : 1;
@@ -245,8 +240,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
     if (method == CastMethod::culled) {  // every pixel, every object that survived culling
       for (int row = row_begin; row < row_end; ++row) make_row_rays(camera, row, 0, columns - 1, column_x, s.pixels, row_at(row));
       for (const Candidate& c : visible)  // object order at every pixel
-        test_sphere_vectorised(c.centre, c.radius, c.object, options.formula, PixelRun{0, columns, band_rows, columns},
-                               s.pixels);
+        test_sphere(c.centre, c.radius, c.object, options.formula, PixelRun{0, columns, band_rows, columns}, s.pixels);
       s.tests += static_cast<long long>(band_rows) * columns * visible_count;
     } else {
       // The band's candidates in object order: its bin, or every visible object whose rows meet the band.

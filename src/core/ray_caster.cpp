@@ -1,7 +1,5 @@
 #include "raycam/ray_caster.h"
 
-#include <stdexcept>
-#include <type_traits>
 #include <utility>
 
 #include "footprint_caster.h"

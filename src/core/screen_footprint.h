@@ -19,11 +19,13 @@ namespace raycam::detail {
 struct PixelRange {
   int first = 0, last = -1;
   bool empty() const { return first > last; }
+  int size() const { return empty() ? 0 : last - first + 1; }
 };
 
 struct PixelBox {
   PixelRange rows, columns;
   bool empty() const { return rows.empty() || columns.empty(); }
+  long long pixel_count() const { return static_cast<long long>(rows.size()) * columns.size(); }
 };
 
 // Spheres as columns (structure of arrays): what sphere_boxes' loop reads, so that it vectorises.
