@@ -79,7 +79,26 @@ void ObserverRenderer::draw_sphere_layer(const ObserverFrame& frame, int width, 
   view.light_direction = glm::dvec3(kLightDirection);
   view.width = width;
   view.height = height;
+  if (layer_stale_ || !(view == layer_drawn_) || !layer_colour_) upload_sphere_layer(view);
+  layer_program_.use();
+  layer_program_.set("layer_colour", 0);
+  layer_program_.set("layer_depth", 1);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, layer_colour_);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, layer_depth_);
+  glBindVertexArray(quad_vao_);  // any vertex array: the triangle comes from gl_VertexID
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+// Casts the layer (~20 ms of CPU at 10⁵ spheres) and uploads it: only when what it shows changed.
+void ObserverRenderer::upload_sphere_layer(const SphereLayerView& view) {
   cast_sphere_layer(spheres_, view, layer_);
+  ++layer_casts_;
+  layer_drawn_ = view;
+  layer_stale_ = false;
+  const int width = view.width, height = view.height;
   if (!layer_colour_) {
     GLuint textures[2];
     glGenTextures(2, textures);
@@ -98,17 +117,12 @@ void ObserverRenderer::draw_sphere_layer(const ObserverFrame& frame, int width, 
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, layer_depth_);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, width, height, 0, GL_RED, GL_FLOAT, layer_.depth.data());
-  layer_program_.use();
-  layer_program_.set("layer_colour", 0);
-  layer_program_.set("layer_depth", 1);
-  glBindVertexArray(quad_vao_);  // any vertex array: the triangle comes from gl_VertexID
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glActiveTexture(GL_TEXTURE0);
 }
 
 void ObserverRenderer::set_spheres(const std::vector<Sphere>& spheres) {
   const std::size_t count = spheres.size();
   spheres_ = spheres;
+  layer_stale_ = true;
   std::vector<float> instances;
   instances.reserve(count * 7);
   for (std::size_t i = 0; i < count; ++i) {

@@ -57,17 +57,24 @@ class ObserverRenderer {
   void set_sphere_drawing(SphereDrawing drawing) { drawing_ = drawing; }
   // Draws into a width × height offscreen target and returns its colour texture (rows bottom-up, as GL).
   GLuint render(const ObserverFrame& frame, int width, int height);
+  // How many times the CPU layer was cast: only when the observer's view, the size or the spheres changed
+  // (moving the camera, hovering a pixel or typing leaves it as it was).
+  long long sphere_layer_casts() const { return layer_casts_; }
 
  private:
   void resize_target(int width, int height);
 
   bool uses_layer() const;
   void draw_sphere_layer(const ObserverFrame& frame, int width, int height);
+  void upload_sphere_layer(const SphereLayerView& view);
 
   ShaderProgram sphere_program_, line_program_, quad_program_, layer_program_;
   SphereDrawing drawing_ = SphereDrawing::automatic;
   std::vector<Sphere> spheres_;  // for the CPU layer
   SphereLayer layer_;
+  SphereLayerView layer_drawn_;  // the view the layer's textures hold
+  bool layer_stale_ = true;      // the spheres changed since
+  long long layer_casts_ = 0;
   GLuint layer_colour_ = 0, layer_depth_ = 0;
   GLuint sphere_vao_ = 0, sphere_corner_vbo_ = 0, sphere_instance_vbo_ = 0;
   GLsizei sphere_count_ = 0;

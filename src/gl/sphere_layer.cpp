@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <limits>
 
+#include "raycam/intersect.h"
 #include "raycam/parallel.h"
 
 namespace raycam::gl {
@@ -103,20 +104,14 @@ void cast_sphere_layer(const std::vector<Sphere>& spheres, const SphereLayerView
       const int y0 = std::max(rect.y0, band_first), y1 = std::min(rect.y1, band_last);
       if (y0 > y1 || rect.x0 > rect.x1) continue;
       const Sphere& sphere = spheres[s];
-      const glm::dvec3 f = view.eye - sphere.centre;
-      const double r2 = sphere.radius * sphere.radius;
-      const bool inside = glm::dot(f, f) < r2;
       for (int j = y0; j <= y1; ++j)
         for (int i = rect.x0; i <= rect.x1; ++i) {
           const glm::dvec3 d = ray_direction(i, j);
-          const double b = glm::dot(f, d);
-          const glm::dvec3 closest = f - b * d;  // as sphere.frag: no cancellation at a distance
-          const double discriminant = r2 - glm::dot(closest, closest);
-          if (discriminant < 0.0) continue;
-          const double t = inside ? -b + std::sqrt(discriminant) : -b - std::sqrt(discriminant);
+          // The caster's own test (the stable form, as sphere.frag: no cancellation at a distance): the
+          // nearest t ≥ 0, the far side from inside a sphere, kNoHit for a miss.
+          const double t = nearest_hit_t(view.eye, d, sphere.centre, sphere.radius, IntersectFormula::stable);
           const std::size_t p = std::size_t(j) * width + std::size_t(i);
-          if (t < 0.0 || !(t < nearest[p]))
-            continue;  // strict: the first sphere drawn keeps a tie, as GL_LESS
+          if (!(t < nearest[p])) continue;  // strict: the first sphere drawn keeps a tie, as GL_LESS
           const glm::dvec4 clip = view.view_projection * glm::dvec4(view.eye + t * d, 1.0);
           const double z = clip.z / clip.w;
           if (!(z >= -1.0 && z <= 1.0)) continue;  // GL clips it at the near or far plane

@@ -22,6 +22,10 @@ struct SphereLayerView {
   glm::dvec3 eye{0.0};                        // where view_projection looks from
   glm::dvec3 light_direction{0.0, 0.0, 1.0};  // unit
   int width = 0, height = 0;
+  friend bool operator==(const SphereLayerView& a, const SphereLayerView& b) {
+    return a.view_projection == b.view_projection && a.eye == b.eye && a.light_direction == b.light_direction &&
+           a.width == b.width && a.height == b.height;
+  }
 };
 
 struct PixelRect {  // a closed range of pixels, empty when x0 > x1 or y0 > y1

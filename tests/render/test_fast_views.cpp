@@ -1,6 +1,7 @@
 // The fast paths of the views (README, "Speed") draw what the plain ones draw: the observer's spheres cast on
 // the CPU against the GL impostors, and the overhead view's disc layer against the geometry of its discs.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstdint>
 #include <glm/gtc/matrix_transform.hpp>
 #include <random>
@@ -95,6 +96,38 @@ TEST_CASE("the observer's spheres cast on the CPU look like the GL impostors", "
     CHECK(d.covered == d.pixels);  // the inside of the big sphere is everywhere behind the others
     CHECK(d.differing <= d.pixels / 200);
   }
+}
+
+TEST_CASE("the observer's CPU layer is cast again only when its view, its size or the spheres change",
+          "[render][observer][speed]") {
+  const int width = 160, height = 120;
+  headless::HeadlessRenderer context(width, height);
+  std::vector<Sphere> spheres;
+  for (int i = 0; i < 30; ++i) spheres.push_back({{i * 0.4 - 6.0, std::sin(i), std::cos(i)}, 0.5, Rgb8{200, 90, 40}, ""});
+  gl::ObserverRenderer renderer;
+  renderer.set_spheres(spheres);
+  gl::ObserverFrame frame = observer_looking_at_origin({14.0f, 5.0f, 6.0f}, width, height);
+  const std::vector<std::uint8_t> first = render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width, height);
+  CHECK(renderer.sphere_layer_casts() == 1);
+  // A frame that changes only the lines (a camera drag, a hovered pixel): the layer is drawn as it was.
+  frame.lines.push_back({glm::vec3(0, -30, 0), glm::vec3(0, 30, 0), glm::vec4(0, 1, 0, 1)});
+  const std::vector<std::uint8_t> again = render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width, height);
+  CHECK(renderer.sphere_layer_casts() == 1);
+  // The kept layer is the one a fresh renderer casts for the same frame.
+  gl::ObserverRenderer fresh;
+  fresh.set_spheres(spheres);
+  CHECK(render_observer(fresh, gl::SphereDrawing::cpu_layer, frame, width, height) == again);
+  CHECK(again != first);  // the new line shows
+  // The observer turns, the size changes, the spheres change: cast again, each time.
+  frame = observer_looking_at_origin({10.0f, -8.0f, 6.0f}, width, height);
+  render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width, height);
+  CHECK(renderer.sphere_layer_casts() == 2);
+  render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width / 2, height / 2);
+  CHECK(renderer.sphere_layer_casts() == 3);
+  spheres.pop_back();
+  renderer.set_spheres(spheres);
+  render_observer(renderer, gl::SphereDrawing::cpu_layer, frame, width / 2, height / 2);
+  CHECK(renderer.sphere_layer_casts() == 4);
 }
 
 TEST_CASE("the overhead disc layer puts each disc where the mapping says, later ones on top",
