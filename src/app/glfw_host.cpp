@@ -35,7 +35,7 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
   ui::AppState& state = *callbacks_of(window).state;
   if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
   if (key == GLFW_KEY_F11) state.request_fullscreen = true;
-  if (key == GLFW_KEY_F12) state.request_screenshot = true;
+  if (key == GLFW_KEY_F12) ui::request_screenshot(state);  // numbered, as the Screenshot button
   if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
     state.request_quit = true;
 }

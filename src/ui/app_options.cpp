@@ -27,12 +27,7 @@ AppState make_app_state(const AppOptions& options) {
     ViewFlags without_file = options.view;
     without_file.scene_path.reset();
     setup = checked_view_setup(without_file);
-    const std::string& path = *options.view.scene_path;
-    const std::string reason = error.what();
-    set_message(state, MessageSource::files, true,
-                reason.find(path) == std::string::npos
-                    ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
-                    : trf("cannot open: %s", reason.c_str()));
+    set_message(state, MessageSource::files, true, cannot_open_message(*options.view.scene_path, error.what()));
   }
   adopt_view_setup(state, *setup);
   state.mistakes = options.mistakes;

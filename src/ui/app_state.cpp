@@ -124,6 +124,11 @@ bool recast_if_needed(AppState& state, bool interacting) {
   return true;
 }
 
+std::string cannot_open_message(const std::string& path, const std::string& reason) {
+  return reason.find(path) == std::string::npos ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
+                                                : trf("cannot open: %s", reason.c_str());
+}
+
 bool open_scene(AppState& state, const std::string& path) {
   try {
     ViewFlags flags;
@@ -143,11 +148,7 @@ bool open_scene(AppState& state, const std::string& path) {
   } catch (const std::exception& error) {
     // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
     std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
-    const std::string reason = error.what();
-    set_message(state, MessageSource::files, true,
-                reason.find(path) == std::string::npos
-                    ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
-                    : trf("cannot open: %s", reason.c_str()));
+    set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
     return false;
   }
 }
