@@ -8,9 +8,9 @@ packages=(
   libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
   libfontconfig-dev fonts-dejavu-core        # the TrueType font with accents, rasterised at the lecture size
   xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
-  libcli11-dev                               # command lines
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
-  libcli11-dev bubblewrap python3            # command lines; `check`: sandbox and the Python example student
+  libcli11-dev                               # command lines
+  bubblewrap python3                         # `check`: sandbox and the Python example student
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
 )

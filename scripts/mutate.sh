@@ -13,7 +13,12 @@ SCRATCH=${MUTATE_DIR:-/tmp/raycam-mutate}
 JOBS=${JOBS:-2}
 TREE=$SCRATCH/tree
 BUILD=$TREE/build   # inside the tree, as in a checkout: ccache then hits on every untouched file
-export CCACHE_BASEDIR=$SCRATCH CCACHE_DIR=${CCACHE_DIR:-/work/.ccache}
+# ccache when installed (rebuilds then take seconds), with ccache's own cache unless CCACHE_DIR says otherwise.
+launcher=()
+if command -v ccache > /dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR=$SCRATCH
+fi
 
 names=() files=() edits=() targets=() tests=()
 # mutant NAME FILE SED-SCRIPT TARGETS CTEST-REGEX
@@ -75,9 +80,9 @@ find "$TREE" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
 (cd "$ROOT" && git ls-files -co --exclude-standard -z | grep -zv '^build/' |
    tar --null --ignore-failed-read -T - -cf - 2>/dev/null) | tar -xf - -C "$TREE" ||
   { echo "mutate.sh: copying the tree failed" >&2; exit 2; }
-cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache > "$SCRATCH/configure.log" 2>&1 ||
+cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > "$SCRATCH/configure.log" 2>&1 ||
   { echo "mutate.sh: configure failed, see $SCRATCH/configure.log" >&2; exit 2; }
-echo "mutate.sh: building the unmutated tree in $BUILD (ccache)"
+echo "mutate.sh: building the unmutated tree in $BUILD${launcher:+ (ccache)}"
 cmake --build "$BUILD" -j"$JOBS" > "$SCRATCH/build.log" 2>&1 || { echo "mutate.sh: the unmutated tree does not build, see $SCRATCH/build.log" >&2; exit 2; }
 
 caught=0 missed=0 broken=0 skipped=0
