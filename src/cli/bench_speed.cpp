@@ -35,6 +35,7 @@
 #include "raycam/scene_file.h"
 #include "raycam/standard_scenes.h"
 #include "raycam/view_setup.h"
+#include "view_options.h"
 #ifdef RAYCAM_HAVE_EMBREE
 #include "embree_caster.h"
 #endif
@@ -57,7 +58,7 @@ struct SpeedOptions {
   double min_seconds = 0.1;  // per repetition: Google Benchmark runs as many iterations as fit
   bool extras = true;        // scaling with the pixel count, 2D bars
   std::string csv_path, scene_path;
-  int scene_columns = 512, scene_rows = 512;
+  std::optional<std::vector<int>> scene_size;  // --size, else the scene file's
   std::vector<std::string> benchmark_flags;  // --benchmark_* passed through to Google Benchmark
 };
 
@@ -96,20 +97,9 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
   flags::add_checked_option<std::string>(app, "--scene", "FILE",
                                          "time a scene file's camera preset instead, at --size",
                                          flags::file_name(), [&o](std::string path) { o.scene_path = std::move(path); });
-  const flags::ValueRule<std::pair<int, int>> size_rule{
-      "WxH (3D) or N (2D) with sides in [1, 16384]", [](const std::string& text) -> std::optional<std::pair<int, int>> {
-        const std::size_t x = text.find('x');
-        const auto side = flags::integer_in(1, 16384).parse;
-        const std::optional<int> columns = side(text.substr(0, x));
-        const std::optional<int> rows = x == std::string::npos ? std::optional<int>(1) : side(text.substr(x + 1));
-        if (!columns || !rows) return std::nullopt;
-        return std::make_pair(*columns, *rows);
-      }};
-  flags::add_checked_option<std::pair<int, int>>(app, "--size", "WxH", "with --scene: the image size (default 512x512)",
-                                                 size_rule, [&o](std::pair<int, int> size) {
-                                                   o.scene_columns = size.first;
-                                                   o.scene_rows = size.second;
-                                                 });
+  flags::add_checked_option<std::vector<int>>(
+      app, "--size", "N|WxH", "with --scene: the image size, as render takes it (default: the file's, else 256)",
+      flags::size_rule(), [&o](std::vector<int> size) { o.scene_size = std::move(size); });
   if (const std::optional<int> exit_now = flags::parse_command_line(app, args)) return exit_now;
   for (const std::string& extra : app.remaining()) {
     if (extra.rfind("--benchmark_", 0) == 0) {
@@ -522,20 +512,15 @@ void initialise_benchmark(const SpeedOptions& o) {
 int run_scene(const SpeedOptions& o) {
   ViewFlags flags;
   flags.scene_path = o.scene_path;
-  ViewSetup setup = make_view_setup(flags);
+  flags.camera.size = o.scene_size;
+  const ViewSetup setup = make_view_setup(flags);  // the file's camera preset, at --size
   const int threads = o.threads.back();
-  Camera2D camera2d(setup.dimension == 2 ? o.scene_columns : 1);
-  Camera3D camera3d(setup.dimension == 3 ? o.scene_columns : 1, setup.dimension == 3 ? o.scene_rows : 1);
-  double pixels = 0.0;
-  if (setup.dimension == 2) {
-    camera2d.set_orbit(setup.camera2d.orbit());
-    validate(setup.file.scene2d);
-    pixels = camera2d.pixel_count();
-  } else {
-    camera3d.set_orbit(setup.camera3d.orbit());
-    validate(setup.file.scene3d);
-    pixels = double(camera3d.columns()) * camera3d.rows();
-  }
+  const Camera2D& camera2d = setup.camera2d;
+  const Camera3D& camera3d = setup.camera3d;
+  if (setup.dimension == 2) validate(setup.file.scene2d);
+  else validate(setup.file.scene3d);
+  const double pixels =
+      setup.dimension == 2 ? double(camera2d.pixel_count()) : double(camera3d.columns()) * camera3d.rows();
   const std::size_t objects =
       setup.dimension == 2 ? setup.file.scene2d.circles.size() : setup.file.scene3d.spheres.size();
   const bool plain_affordable = pixels * double(objects) <= kMaxPlainTests;

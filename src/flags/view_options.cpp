@@ -38,6 +38,13 @@ ValueRule<std::vector<double>> target_rule() {
 }
 
 // --size N (2D, or a square 3D image) or WxH (3D).
+std::vector<std::string> method_names() {
+  std::vector<std::string> names;
+  for (CastMethod method : kCastMethods) names.push_back(cast_method_name(method));
+  return names;
+}
+}  // namespace
+
 ValueRule<std::vector<int>> size_rule() {
   const ValueRule<int> n = integer_in(1, kMaxPixels2D), side = integer_in(1, kMaxSide3D);
   return {"N in [1, " + std::to_string(kMaxPixels2D) + "] or WxH with W, H in [1, " +
@@ -54,13 +61,6 @@ ValueRule<std::vector<int>> size_rule() {
             return std::vector<int>{*w, *h};
           }};
 }
-
-std::vector<std::string> method_names() {
-  std::vector<std::string> names;
-  for (CastMethod method : kCastMethods) names.push_back(cast_method_name(method));
-  return names;
-}
-}  // namespace
 
 CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view) {
   CLI::Option_group* group = command.add_option_group(

@@ -9,11 +9,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "flag_values.h"
 #include "raycam/accuracy_options.h"
 #include "raycam/ray_caster.h"
 #include "raycam/view_setup.h"
 
 namespace raycam::flags {
+
+// --size's rule: N (2D) or WxH (3D), within the size limits; make_view_setup checks the shape against the
+// scene's dimension, and N in 3D means N×N.
+ValueRule<std::vector<int>> size_rule();
 
 // Angles are taken in degrees (make_view_setup converts them once).
 CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view);
