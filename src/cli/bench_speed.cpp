@@ -30,6 +30,7 @@
 
 #include "commands.h"
 #include "flag_values.h"
+#include "process_memory.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
@@ -486,14 +487,6 @@ void write_csv(const Run& run) {
   }
 }
 
-long peak_rss_kb() {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
-  return -1;
-}
-
 void initialise_benchmark(const SpeedOptions& o) {
   static std::vector<std::string> storage;
   storage = {"raycam-cli bench speed"};
@@ -583,7 +576,7 @@ int run_bench_speed(const Args& args) {
   benchmark::ClearRegisteredBenchmarks();
   print_summary(run);
   if (run.options.extras) print_extras(run);
-  std::printf("\nPeak resident memory of this run: %.1f MB\n", double(peak_rss_kb()) / 1024.0);
+  std::printf("\nPeak resident memory of this run: %.1f MB\n", double(resident_kb("VmHWM:")) / 1024.0);
   write_csv(run);
   long long differing = 0, checked = 0;
   for (const auto& c : run.cases) {

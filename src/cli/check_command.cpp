@@ -14,6 +14,7 @@
 #include "check_texts.h"
 #include "commands.h"
 #include "flag_values.h"
+#include "raycam/parallel.h"
 #include "raycam/scene_file.h"
 
 namespace raycam::cli {
@@ -61,10 +62,6 @@ std::optional<Sandbox> choose_sandbox(const CheckFlags& flags, ReportHeader& hea
                      header.sandbox_note.c_str())
                    .c_str());
   return std::nullopt;
-}
-
-int threads_of(const CheckFlags& flags) {
-  return flags.threads > 0 ? flags.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 }
 
 RunLimits limits_of(const CheckFlags& flags) {
@@ -118,7 +115,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   std::ofstream csv(flags.csv, std::ios::trunc);
   if (!csv) throw std::runtime_error(flags.csv + ": cannot write");
   csv << csv_header() << std::flush;
-  const int threads = threads_of(flags);
+  const int threads = detail::resolve_threads(flags.threads);
   std::fprintf(stderr, "%s", textf(header.lang, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
                                    cases.size(), threads).c_str());
   const bool terminal = isatty(2);
@@ -237,7 +234,7 @@ int run_check(const Args& args) {
     throw std::invalid_argument("--student: cannot find an executable program '" + submission.argv[0] + "'");
   submission.sandbox = choose_sandbox(flags, header);
   const std::vector<StudentReport> reports =
-      check_submissions({submission}, cases, references, limits_of(flags), threads_of(flags));
+      check_submissions({submission}, cases, references, limits_of(flags), detail::resolve_threads(flags.threads));
   return finish(flags, header, cases, references, reports[0]);
 }
 

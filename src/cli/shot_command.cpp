@@ -18,6 +18,7 @@
 #include "commands.h"
 #include "flag_values.h"
 #include "headless_renderer.h"
+#include "process_memory.h"
 
 namespace raycam::cli {
 
@@ -28,14 +29,6 @@ double process_cpu_ms() {
   timespec now{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
   return double(now.tv_sec) * 1e3 + double(now.tv_nsec) * 1e-6;
-}
-
-long resident_kb(const char* field) {  // VmRSS or VmHWM from /proc/self/status
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind(field, 0) == 0) return std::stol(line.substr(std::string(field).size() + 1));
-  return -1;
 }
 
 // Every id is -1 or a real object, every colour is the background or that object's: a NaN anywhere in the
