@@ -178,7 +178,8 @@ int run_check(const Args& args) {
   add_checked_option<int>(app, "--cases", "N",
                           "number of cases (default: the designed ones, 6 per dimension)",
                           flags::integer_in(1, 1000), [&](int n) { flags.cases = n; });
-  app.add_option("--seed", flags.seed, "the battery's seed (default 2026, shared by a class)");
+  add_checked_option<int>(app, "--seed", "S", "the battery's seed (default 2026, shared by a class)",
+                          flags::integer_in(0, 2147483647), [&](int seed) { flags.seed = static_cast<unsigned long long>(seed); });
   add_checked_option<double>(app, "--timeout", "SEC", "seconds per case (default 10)",
                              flags::number_in({0.1, 3600}), [&](double t) { flags.timeout = t; });
   add_checked_option<int>(app, "--memory", "MB", "address-space cap per run, MiB (default 2048)",

@@ -301,7 +301,8 @@ TEST_CASE("bad usage exits 2 with the flag named", "[check][cli]") {
                                     {"--batch . --student-cmd x", "--csv"},
                                     {"--student \"'unclosed\"", "--student: unclosed"},
                                     {"--student no-such-program-raycam", "no-such-program-raycam"},
-                                    {"--student true --timeout 0", "--timeout"}}) {
+                                    {"--student true --timeout 0", "--timeout"},
+                                    {"--student true --seed abc", "--seed: expected an integer in [0, 2147483647], got 'abc'"}}) {
     INFO(args);
     const Checked c = check(args, "usage");
     CHECK(c.exit_code == 2);
