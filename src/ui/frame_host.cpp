@@ -8,6 +8,7 @@
 
 #include "gl.h"
 #include "text.h"
+#include "theme.h"
 
 namespace raycam::ui {
 
@@ -21,7 +22,8 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   result.layout = frame.build(state, size.width, size.height);
   ImGui::Render();
   glViewport(0, 0, size.width, size.height);
-  glClearColor(0.08f, 0.08f, 0.1f, 1.0f);
+  const ImVec4 clear = current_theme().clear;  // the colour the theme's contrast was computed against
+  glClearColor(clear.x, clear.y, clear.z, clear.w);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (state.request_screenshot) {
