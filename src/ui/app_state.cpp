@@ -16,6 +16,7 @@ namespace raycam::ui {
 
 void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.file = setup.file;
+  state.other_scene_path.clear();  // the new file's scene is of one kind: the other kind's is the demo
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
   state.scene_path = setup.scene_path;
   state.dimension = setup.dimension;
@@ -215,11 +216,9 @@ std::string window_title(const AppState& state) {
 
 void switch_dimension(AppState& state, int dimension) {
   if (dimension == state.dimension) return;
-  if (!state.scene_path.empty()) {  // a file holds one kind of scene: use the demo of the other kind
-    state.scene_path.clear();
-    set_message(state, MessageSource::camera, false,
-                trf("switched to the built-in %dD demo scene", dimension));
-  }
+  std::swap(state.scene_path, state.other_scene_path);
+  if (state.scene_path.empty() && !state.other_scene_path.empty())  // leaving a file for the other kind's demo
+    set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));
   state.file.dimension = dimension;
   if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
   if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();

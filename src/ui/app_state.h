@@ -39,6 +39,9 @@ struct AppState {
   // ---- scene and camera parameters (the sliders' model) ----
   int dimension = 3;
   std::string scene_path;  // empty: built-in demo
+  // The file the other dimension's scene came from (empty: the demo). A file holds one kind of scene, so
+  // switching 2D/3D shows the other kind's and swaps the two: coming back names the file again.
+  std::string other_scene_path;
   SceneFile file;
   Orbit2D orbit2d;
   Orbit3D orbit3d;

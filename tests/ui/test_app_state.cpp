@@ -151,3 +151,22 @@ TEST_CASE("the 3D scene is packed for the caster once per scene: a newly opened 
   CHECK(state.map.colour_at(24, 32) == Rgb8{1, 2, 3});
   std::remove("one_sphere.json");
 }
+
+TEST_CASE("switching 2D/3D away from a file and back shows and names that file again", "[ui][files]") {
+  ui::AppState state = state_for({"--scene", RAYCAM_SOURCE_DIR "/scenes/many3d.json"});
+  const std::size_t spheres = state.file.scene3d.spheres.size();
+  REQUIRE(spheres == 2000);
+  CHECK_THAT(ui::window_title(state), Catch::Contains("3D") && Catch::Contains("many3d.json"));
+  ui::switch_dimension(state, 2);
+  CHECK_THAT(ui::window_title(state), Catch::Contains("2D") && Catch::Contains("demo scene"));
+  CHECK(state.file.scene2d.circles.size() == demo_scene_2d().circles.size());
+  ui::switch_dimension(state, 3);
+  CHECK_THAT(ui::window_title(state), Catch::Contains("3D") && Catch::Contains("many3d.json"));
+  CHECK(state.file.scene3d.spheres.size() == spheres);
+  // A 2D file opened now: the 3D side is the demo again, and is named so.
+  REQUIRE(ui::open_scene(state, RAYCAM_SOURCE_DIR "/scenes/classic2d.json"));
+  ui::switch_dimension(state, 3);
+  CHECK_THAT(ui::window_title(state), Catch::Contains("demo scene"));
+  ui::switch_dimension(state, 2);
+  CHECK_THAT(ui::window_title(state), Catch::Contains("classic2d.json"));
+}
