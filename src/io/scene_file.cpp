@@ -282,8 +282,10 @@ std::string one_line(const json& value) {
 
 std::string readable_json(const json& value, int indent) {
   if (value.is_primitive() || value.empty()) return value.dump();
-  const std::string flat = one_line(value);
-  if (is_flat(value) && flat.size() + std::size_t(indent) <= kReadableLine) return flat;
+  if (is_flat(value)) {  // only a flat value may go on one line: the whole scene's text is not built for it
+    const std::string flat = one_line(value);
+    if (flat.size() + std::size_t(indent) <= kReadableLine) return flat;
+  }
   const std::string inner(std::size_t(indent + 2), ' ');
   std::string text = value.is_array() ? "[\n" : "{\n";
   bool first = true;
