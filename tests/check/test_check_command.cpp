@@ -20,6 +20,7 @@
 
 #include "raycam/classic_mistakes.h"
 #include "raycam/scene_file.h"
+#include "../scratch_dir.h"
 #include "student_process.h"
 
 namespace fs = std::filesystem;
@@ -28,9 +29,10 @@ using json = nlohmann::json;
 namespace {
 constexpr int kDefaultCases = 12;  // the designed battery, 6 per dimension
 
-// A folder of its own for each test case (CTest runs them as parallel processes in one folder).
+// A folder of its own for each use, inside this process's temporary folder (removed at exit).
 std::string scratch(const std::string& name) {
-  const std::string dir = "check_scratch_" + name;
+  static const raycam::test::ScratchDir root("check");
+  const std::string dir = root.path("check_scratch_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "../scratch_dir.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 
@@ -60,13 +61,12 @@ Rgb8 colour_of(const SceneFile& file, int id) {
 }  // namespace
 
 TEST_CASE("every shipped scene renders the core's ids and their colours", "[cli][scenes]") {
+  const test::ScratchDir scratch("shipped");
   for (const char* name : {"classic2d", "classic3d", "symmetric2d", "symmetric3d", "many3d"}) {
     INFO(name);
     const std::string path = std::string(RAYCAM_SCENES) + "/" + name + ".json";
-    const std::string ids_path = std::string("shipped_") + name + ".txt",
-                      png_path = std::string("shipped_") + name + ".png";
-    std::remove(ids_path.c_str());
-    std::remove(png_path.c_str());
+    const std::string ids_path = scratch.path(std::string(name) + ".txt"),
+                      png_path = scratch.path(std::string(name) + ".png");
     const std::string command = std::string(RAYCAM_CLI) + " render --scene " + path + " --ids " + ids_path +
                                 " --out " + png_path + " > /dev/null 2>&1";
     REQUIRE(std::system(command.c_str()) == 0);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "../scratch_dir.h"
 #include "image_compare.h"
 #include "raycam/scene.h"
 
@@ -15,6 +16,12 @@ using namespace raycam;
 
 namespace {
 int run(const std::string& command) { return std::system((command + " > /dev/null 2>&1").c_str()); }
+
+// Where this process's files go: the system's temporary folder.
+std::string scratch(const std::string& file) {
+  static const test::ScratchDir dir("app-window");
+  return dir.path(file);
+}
 
 long count_colour(const gl::RgbaImage& image, Rgb8 colour) {
   long count = 0;
@@ -30,9 +37,10 @@ long count_colour(const gl::RgbaImage& image, Rgb8 colour) {
 TEST_CASE("the GLFW window's screenshot equals the headless shot", "[app][xvfb]") {
   for (const std::string view : {"2d", "3d"}) {
     const std::string args = " --view " + view + " --width 1024 --height 640 --inspect " + (view == "2d" ? "40,0 " : "40,30 ");
-    REQUIRE(run(std::string(XVFB_RUN) + " -a -s '-screen 0 1024x640x24' " + RAYCAM_APP + args + "--frames 4 --screenshot app_" + view + ".png") == 0);
-    REQUIRE(run(std::string(RAYCAM_CLI) + " shot" + args + "--frames 4 --out shot_" + view + ".png") == 0);
-    const gl::RgbaImage app = test::load_png("app_" + view + ".png"), shot = test::load_png("shot_" + view + ".png");
+    REQUIRE(run(std::string(XVFB_RUN) + " -a -s '-screen 0 1024x640x24' " + RAYCAM_APP + args + "--frames 4 --screenshot " + scratch("app_" + view + ".png")) == 0);
+    REQUIRE(run(std::string(RAYCAM_CLI) + " shot" + args + "--frames 4 --out " + scratch("shot_" + view + ".png")) == 0);
+    const gl::RgbaImage app = test::load_png(scratch("app_" + view + ".png")),
+                      shot = test::load_png(scratch("shot_" + view + ".png"));
     REQUIRE(app.width == 1024);
     REQUIRE(app.height == 640);
     // The scene's colours are on screen (the demo scenes' red and blue objects), so it is not blank.
@@ -58,7 +66,7 @@ struct WindowRun {
 // Runs the interactive app (no --frames) under Xvfb for `seconds`, with `input` (xdotool commands, or
 // nothing) sent after it settled, then asks it to quit with SIGTERM and reads its exit line.
 WindowRun run_window(const std::string& name, double seconds, const std::string& input) {
-  const std::string out = "window_" + name + ".txt";
+  const std::string out = scratch("window_" + name + ".txt");
   const std::string script = std::string(RAYCAM_APP) + " --width 1024 --height 640 > " + out +
                              " 2>&1 & pid=$!; sleep 2; " + input + "; sleep " + std::to_string(seconds) +
                              "; kill -TERM $pid; wait $pid";

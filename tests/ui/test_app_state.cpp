@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "../scratch_dir.h"
 #include "app_options.h"
 #include "app_state_for.h"
 #include "raycam/exact_bar.h"
@@ -16,30 +17,31 @@ TEST_CASE("a bad scene file shows an error naming it and keeps the current scene
   ui::AppState state = state_for({});
   ui::recast_if_needed(state);
   const std::size_t spheres = state.file.scene3d.spheres.size();
+  const test::ScratchDir scratch("app-state");
+  const std::string bad_scene = scratch.path("bad_scene.json");
   {
-    std::ofstream bad("bad_scene.json");
+    std::ofstream bad(bad_scene);
     bad << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": -2}]})";
   }
-  CHECK_FALSE(ui::open_scene(state, "bad_scene.json"));
+  CHECK_FALSE(ui::open_scene(state, bad_scene));
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("bad_scene.json") && Catch::Contains("objects[0].radius"));
   CHECK(state.file.scene3d.spheres.size() == spheres);
-  CHECK_FALSE(ui::open_scene(state, "no_such_file.json"));
+  CHECK_FALSE(ui::open_scene(state, scratch.path("no_such_file.json")));
   CHECK(state.file.scene3d.spheres.size() == spheres);
-  std::remove("bad_scene.json");
 }
 
 TEST_CASE("a saved preset opens with the same camera", "[ui][files]") {
   ui::AppState state = state_for({"--view", "3d", "--theta", "-70", "--phi", "100", "--d", "5.5", "--df", "0.8"});
-  REQUIRE(ui::save_preset(state, "preset.json"));
+  const test::ScratchDir scratch("app-state");
+  REQUIRE(ui::save_preset(state, scratch.path("preset.json")));
   ui::AppState reopened = state_for({});
-  REQUIRE(ui::open_scene(reopened, "preset.json"));
+  REQUIRE(ui::open_scene(reopened, scratch.path("preset.json")));
   CHECK(reopened.orbit3d.theta == Approx(state.orbit3d.theta));
   CHECK(reopened.orbit3d.phi == Approx(state.orbit3d.phi));
   CHECK(reopened.orbit3d.d == Approx(5.5));
   CHECK(reopened.orbit3d.df == Approx(0.8));
   CHECK(reopened.file.scene3d.spheres.size() == state.file.scene3d.spheres.size());
-  std::remove("preset.json");
 }
 
 TEST_CASE("options outside their range are refused before any window opens", "[ui][input]") {
@@ -138,18 +140,18 @@ TEST_CASE("the 3D scene is packed for the caster once per scene: a newly opened 
   CHECK(state.packed_version == packed);
   CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
   // A new file: one big sphere on the target, so nearly every pixel changes from the demo's.
+  const test::ScratchDir scratch("app-state");
   {
-    std::ofstream file("one_sphere.json");
+    std::ofstream file(scratch.path("one_sphere.json"));
     file << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 3,
                "color": [1, 2, 3]}], "camera": {"d": 8, "size": [64, 48]}})";
   }
-  REQUIRE(ui::open_scene(state, "one_sphere.json"));
+  REQUIRE(ui::open_scene(state, scratch.path("one_sphere.json")));
   REQUIRE(ui::recast_if_needed(state));
   CHECK(state.packed_version != packed);
   CHECK(state.packed3d.size() == 1);
   CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
   CHECK(state.map.colour_at(24, 32) == Rgb8{1, 2, 3});
-  std::remove("one_sphere.json");
 }
 
 TEST_CASE("switching 2D/3D away from a file and back shows and names that file again", "[ui][files]") {

@@ -1,14 +1,13 @@
 // Files are safe: Open and Save as have their own paths, replacing a file needs a yes, a failed open
 // changes nothing but the message, saved scenes stay readable, screenshots never overwrite each other, and
 // a scene that cannot be opened at startup gives the demo scene and an error naming it.
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 
+#include "../scratch_dir.h"
 #include "app_flags.h"
 #include "app_options.h"
 
@@ -28,11 +27,8 @@ std::string read(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A scratch directory of its own, removed at the end.
-struct Scratch {
-  fs::path dir = fs::temp_directory_path() / ("raycam-files-" + std::to_string(::getpid()));
-  Scratch() { fs::create_directories(dir); }
-  ~Scratch() { fs::remove_all(dir); }
+struct Scratch : test::ScratchDir {
+  Scratch() : ScratchDir("files") {}
 };
 }  // namespace
 

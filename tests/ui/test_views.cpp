@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "../scratch_dir.h"
 #include "app_state_for.h"
 #include "observer_view.h"
 
@@ -48,12 +49,14 @@ TEST_CASE("the demo scene's ground never swallows the camera on the default orbi
 
 TEST_CASE("Reset camera returns to the scene file's preset, with the command line's overrides",
           "[ui][views]") {
+  const test::ScratchDir scratch("views");
+  const std::string preset_scene = scratch.path("preset_scene.json");
   {
-    std::ofstream file("preset_scene.json");
+    std::ofstream file(preset_scene);
     file << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}],
                 "camera": {"target": [1, 2, 3], "d": 5, "theta": 40, "phi": 70, "df": 1.25, "res": 0.5}})";
   }
-  ui::AppState state = state_for({"--scene", "preset_scene.json"});
+  ui::AppState state = state_for({"--scene", preset_scene});
   state.orbit3d.theta = 2.0, state.orbit3d.phi = 0.3, state.orbit3d.d = 30, state.orbit3d.df = 7,
   state.res = 1;
   state.orbit3d.target = glm::dvec3(0.0);
@@ -65,17 +68,16 @@ TEST_CASE("Reset camera returns to the scene file's preset, with the command lin
   CHECK(state.orbit3d.target == glm::dvec3(1, 2, 3));
   CHECK(state.res == 0.5);
   CHECK(state.overhead_fit_pending);
-  ui::AppState overridden = state_for({"--scene", "preset_scene.json", "--d", "9"});
+  ui::AppState overridden = state_for({"--scene", preset_scene, "--d", "9"});
   overridden.orbit3d.d = 2;
   ui::reset_camera(overridden);
   CHECK(overridden.orbit3d.d == 9);
   // A scene opened later brings its own preset.
   ui::AppState opened = state_for({});
-  REQUIRE(ui::open_scene(opened, "preset_scene.json"));
+  REQUIRE(ui::open_scene(opened, preset_scene));
   opened.orbit3d.phi = 0.1;
   ui::reset_camera(opened);
   CHECK(opened.orbit3d.phi == Approx(glm::radians(70.0)));
-  std::remove("preset_scene.json");
 }
 
 TEST_CASE("the observer frames the camera and follows it round the orbit", "[ui][views]") {
