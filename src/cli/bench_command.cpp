@@ -1,4 +1,6 @@
 // `raycam-cli bench accuracy|speed`: the two benchmarks behind one command.
+#include <cstdio>
+
 #include "commands.h"
 
 namespace raycam::cli {
@@ -6,6 +8,17 @@ namespace raycam::cli {
 void add_bench_command(CLI::App& cli, int& exit_code) {
   CLI::App* bench = cli.add_subcommand(
       "bench", "benchmarks: casters against Embree (speed), time against error (accuracy)");
+#ifndef RAYCAM_HAVE_BENCH
+  // Built with RAYCAM_BUILD_BENCH=OFF (no Google Benchmark): the command says so instead of being unknown.
+  bench->prefix_command();
+  bench->set_help_flag();
+  bench->callback([&exit_code] {
+    std::fprintf(stderr,
+                 "raycam-cli bench: error: this raycam-cli was built without the benchmarks: configure with "
+                 "-DRAYCAM_BUILD_BENCH=ON (needs Google Benchmark, libbenchmark-dev)\n");
+    exit_code = 2;
+  });
+#else
   bench->require_subcommand(1);
   add_bench_accuracy_command(*bench, exit_code);
   // `bench speed` keeps its own parser (README "Speed"): it gets every argument after its name, --help too.
@@ -14,6 +27,7 @@ void add_bench_command(CLI::App& cli, int& exit_code) {
   speed->prefix_command();
   speed->set_help_flag();
   speed->callback([speed, &exit_code] { exit_code = run_bench_speed(speed->remaining()); });
+#endif
 }
 
 void add_check_command(CLI::App& cli, int& exit_code) {
