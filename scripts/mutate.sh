@@ -113,7 +113,7 @@ for i in "${!names[@]}"; do
   elif ! cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > "$SCRATCH/$name.build.log" 2>&1; then
     result="DOES NOT BUILD (see $SCRATCH/$name.build.log)"
     broken=$((broken + 1))
-  elif ctest --test-dir "$BUILD" -j"$JOBS" -R "${tests[$i]}" --timeout 120 > "$SCRATCH/$name.test.log" 2>&1; then
+  elif ctest --test-dir "$BUILD" -j"$JOBS" -R "${tests[$i]}" -LE slow --timeout 120 > "$SCRATCH/$name.test.log" 2>&1; then
     result="MISSED"
     missed=$((missed + 1))
   else
