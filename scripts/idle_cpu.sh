@@ -1,5 +1,5 @@
 #!/bin/sh
-# CPU used by the raycam window while nobody touches it (issue 14, item 1): starts a private Xvfb, runs
+# CPU used by the raycam window while nobody touches it (docs/speed.md): starts a private Xvfb, runs
 # the app with no input, waits for it to settle, then reads its utime + stime from /proc/PID/stat at the
 # start and end of each second and prints a table (per second and overall, as % of one core).
 # usage: scripts/idle_cpu.sh [APP] [SECONDS]   (default build/raycam, 10 s)

@@ -27,7 +27,7 @@ mutant() { names+=("$1"); files+=("$2"); edits+=("$3"); targets+=("$4"); tests+=
 CORE="raycam_core_tests"
 CORE_TESTS="^core:"
 
-# --- the bugs the suite caught before issue 15 ---
+# --- bugs the suite caught from the start ---
 mutant roll-flipped include/raycam/camera3d.h 's/kRollPsi0 = \([^;]*\);/kRollPsi0 = -(\1);/' "$CORE" "$CORE_TESTS"
 mutant pixel-edges src/core/camera3d.cpp 's/mistakes_.pixel_edges ? column : column + 0.5/column/' "$CORE" "$CORE_TESTS"
 mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) direction \*=/if (false) direction *=/' "$CORE" "$CORE_TESTS"
@@ -40,7 +40,7 @@ mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/d.bounded ? 
 mutant exact-bar-no-silhouettes src/core/exact_bar.cpp '/add_direction(Vec(cos_beta \* u.x [+-] sin_beta/d' "$CORE" "$CORE_TESTS"
 mutant exact-bar-no-screen-crossings src/core/exact_bar.cpp 's/^\( *\)if (s > -1 \&\& s < 1) points.push_back(s);$/\1(void)s;/' "$CORE" "$CORE_TESTS"
 mutant exact-bar-no-circle-crossings src/core/exact_bar.cpp '/add_direction(base [+-] h \* normal - frame.eye);/d' "$CORE" "$CORE_TESTS"
-# --- the holes issue 15 found ---
+# --- holes an outside mutation run found ---
 mutant footprint-no-rounding-slack src/core/screen_footprint.cpp 's/slack = 64 \* kEpsilon/slack = 0 * kEpsilon/; s/slack += 16 \* kEpsilon/slack += 0 * kEpsilon/; s/kRelativeSlack = 1e-9;/kRelativeSlack = 0;/; s/kIndexSlack = 1e-6;/kIndexSlack = 0;/' "$CORE" "$CORE_TESTS"
 mutant plain-ties-to-higher-index src/core/ray_caster.cpp 's/if (t < hit.t) hit/if (t <= hit.t) hit/' "$CORE" "$CORE_TESTS"
 mutant fast-ties-to-higher-index-2d src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
@@ -52,7 +52,7 @@ mutant placement-knob-ignored src/io/view_setup.cpp 's/if (flags.placement != Pl
 mutant embree-build-time-not-measured src/bench/embree_caster.cpp 's/build_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();/build_ms_ = 0.0;/' "raycam_bench_tests" "^bench:"
 mutant scene-preset-df-ignored src/io/view_setup.cpp '/if (preset.df) orbit.df = \*preset.df;/d' "raycam-cli raycam_cli_tests" "^cli:"
 mutant cli-error-exits-0 src/flags/flag_values.cpp 's/return fail(usage_error_message(app, error), 2);/return fail(usage_error_message(app, error), 0);/' "raycam-cli" "^cli rejects:"
-# --- issue 14's rewrites for speed ---
+# --- the loops rewritten for speed ---
 mutant tangent-at-origin-dropped include/raycam/intersect.h 's/  t = tangent_at_origin ? T(0) : t;//' "$CORE" "$CORE_TESTS"
 mutant band-rays-not-renormalised src/core/band_kernels.cpp 's/column_x\[i\], true, origin, direction/column_x[i], false, origin, direction/' "$CORE" "$CORE_TESTS"
 mutant band-rays-missing-past-a-box-first-block src/core/footprint_caster.cpp 's/std::size_t(c.box.columns.last \/ kRayBlock)\] + 1, 1);/std::size_t(c.box.columns.first \/ kRayBlock)] + 1, 1);/' "$CORE" "$CORE_TESTS"

@@ -1,4 +1,4 @@
-// `raycam-cli bench accuracy`: run time against error (MISSION.md, "Fast and accurate").
+// `raycam-cli bench accuracy`: run time against error (docs/accuracy.md, "Time against error").
 // Sections: options; standard scenes and their references; the sweep; Pareto fronts; CSV (plotted by
 // scripts/accuracy_plot.sh, not from here).
 #include <benchmark/benchmark.h>

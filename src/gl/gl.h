@@ -1,6 +1,7 @@
 // The one place raycam includes OpenGL. Core-profile 3.3 prototypes, called directly: libGL (GLFW app) and
 // libOSMesa (headless) both export every entry point, so no loader is needed. Neither library is linked
-// here: each executable links the one that matches its context (see TOOLCHAIN.md on link order).
+// here: each executable links the one that matches its context (both define the same GL symbols, so no
+// binary links both).
 #pragma once
 
 #ifndef GL_GLEXT_PROTOTYPES

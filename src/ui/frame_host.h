@@ -2,8 +2,8 @@
 // (src/app/glfw_host.cpp) or an OSMesa buffer (src/headless/headless_renderer.cpp). The frame itself, and
 // the loop body that drives it, are the same code for both: run_frame below.
 //
-// Each host is its own executable's: TOOLCHAIN.md forbids libGL and OSMesa in one binary, so this header
-// names neither.
+// Each host is its own executable's: libGL and OSMesa define the same GL symbols and must never meet in one
+// binary, so this header names neither.
 #pragma once
 
 #include <string>

@@ -1,6 +1,6 @@
 // Every shipped scene (scenes/*.json) through `raycam-cli render`: the ids equal the plain loop on the camera
 // built here from the file's preset (degrees converted in the test), the PNG holds each id's colour, and the
-// symmetric scenes give mirror-symmetric images (MISSION.md, invariant 5). Exit code 0 alone proves nothing.
+// symmetric scenes give mirror-symmetric images (invariant 5, docs/testing.md). Exit code 0 alone proves nothing.
 #include <stb_image.h>  // implementation provided by Debian's libstb
 
 #include <catch2/catch.hpp>

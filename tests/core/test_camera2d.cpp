@@ -1,4 +1,4 @@
-// Camera2D: MISSION.md invariants 1–7 in 2D and the handout's analytic expectations.
+// Camera2D: the camera invariants 1–7 (docs/testing.md) in 2D and the handout's analytic expectations.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-// Camera3D: MISSION.md invariants 1–7 in 3D, the poles, and analytic expectations.
+// Camera3D: the camera invariants 1–7 (docs/testing.md) in 3D, the poles, and analytic expectations.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <glm/gtc/matrix_access.hpp>

@@ -1,4 +1,4 @@
-// The loops rewritten for speed (issue 14) against independent forms: nearest_hit_t without branches
+// The loops rewritten for speed against independent forms: nearest_hit_t without branches
 // against the textbook early-return form, bit for bit; the vectorised projection against the pixels whose
 // rays actually hit; a band's ray columns against the camera's own primary rays, bit for bit.
 #include <catch2/catch.hpp>

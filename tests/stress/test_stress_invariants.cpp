@@ -1,4 +1,4 @@
-// MISSION.md invariants under stress: far, tiny and huge cameras, the poles and ±π, huge translations.
+// The camera invariants (docs/testing.md) under stress: far, tiny and huge cameras, the poles and ±π, huge translations.
 // Also the handout's arccos route against atan2 near ±1 and near the poles.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,4 +1,4 @@
-// The numerical stress cases (MISSION.md, "Stress-test numerical stability"), shared by the CI tests
+// The numerical stress cases (docs/accuracy.md, "Stress sweep"), shared by the CI tests
 // (tests/stress/, short list) and `raycam-cli bench accuracy --stress` (long list), so both measure the
 // same settings.
 //
