@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "band_kernels.h"
-#include "parallel.h"
+#include "raycam/parallel.h"
 #include "screen_footprint.h"
 
 namespace raycam::detail {
