@@ -62,8 +62,8 @@ mutant inspector-prints-1.5t src/ui/panels.cpp 's/ray.hit.id, name.c_str(), ray.
 mutant packed-scene-not-repacked src/ui/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "$UI" "^(ui|render):"
 # --- structure and hygiene ---
 # Each caught by the direct test named in its regex (not only through the stress suite's error bounds).
-mutant scene-reader-radius-bound-1e300 src/io/scene_file.cpp 's/^\( *\)kMaxCoordinate, true, "\]0, 1e12\]");/\11e300, true, "]0, 1e12]");/' "$CORE" "^core: scene files refuse the open bounds"
-mutant reference-ties-to-later-object src/core/reference_caster.cpp 's/if (t < best) {  \/\/ strict: ties keep the lower index/if (t <= best) {  \/\/ strict: ties keep the lower index/' "$CORE" "^core: ties go to the lower index through the accuracy knobs"
+mutant scene-reader-radius-bound-1e300 src/io/scene_file.cpp 's/^\( *\)kMaxCoordinate, true, "\]0, 1e12\]");/\11e300, true, "]0, 1e12]");/' "$CORE" "^core: ?scene files refuse the open bounds"
+mutant reference-ties-to-later-object src/core/reference_caster.cpp 's/if (t < best) {  \/\/ strict: ties keep the lower index/if (t <= best) {  \/\/ strict: ties keep the lower index/' "$CORE" "^core: ?ties go to the lower index through the accuracy knobs"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
