@@ -1,0 +1,72 @@
+#!/usr/bin/env python3
+"""The CMake graph has no upward link (docs/architecture.md, "The CMake graph").
+
+Reads the link graph CMake wrote (one line per target under src/: "target<TAB>lib;lib;...") and fails when a
+raycam target links a raycam target at its own rank or above in LAYERS, or when a raycam target is missing from
+LAYERS (a new target must be given its place). Libraries that are not raycam's (GLM, ImGui, OSMesa...) are
+ignored.
+"""
+import sys
+
+# Lowest first. A target may link only targets of a lower rank.
+LAYERS = [
+    ["raycam_core"],
+    ["raycam_io", "raycam_testkit", "raycam_embree"],
+    ["raycam_check"],
+    ["raycam_session"],
+    ["raycam_flags"],
+    ["raycam_app_flags"],
+    ["raycam_gl"],
+    ["raycam_ui"],
+    ["raycam_headless"],
+    ["raycam", "raycam-cli"],
+]
+RANK = {target: rank for rank, layer in enumerate(LAYERS) for target in layer}
+
+
+def is_raycams(name):
+    return name == "raycam" or name.startswith("raycam_") or name.startswith("raycam-")
+
+
+def linked_names(field):
+    """The target names in a LINK_LIBRARIES list, generator expressions such as $<LINK_ONLY:x> unwrapped."""
+    names = []
+    for item in field.split(";"):
+        item = item.strip()
+        while item.startswith("$<") and ":" in item and item.endswith(">"):
+            item = item[item.index(":") + 1:-1]
+        if item:
+            names.append(item)
+    return names
+
+
+def main(path):
+    problems = []
+    checked = 0
+    with open(path, encoding="utf-8") as graph:
+        for line in graph:
+            if not line.strip():
+                continue
+            target, _, field = line.rstrip("\n").partition("\t")
+            if not is_raycams(target) or target.endswith("_tests"):
+                continue
+            if target not in RANK:
+                problems.append(f"{target}: not in the layer table of {__file__}: give it its place")
+                continue
+            checked += 1
+            for name in linked_names(field):
+                if not is_raycams(name) or name not in RANK:
+                    continue  # an outside library, or an inside helper such as raycam_imgui_opengl3
+                if RANK[name] >= RANK[target]:
+                    problems.append(f"{target} links {name}: upward (or sideways) in the graph "
+                                    f"{' -> '.join('/'.join(layer) for layer in LAYERS)}")
+    if checked == 0:
+        problems.append(f"{path}: no raycam target found (the graph was not written?)")
+    for problem in problems:
+        print(f"check_layers: {problem}")
+    print(f"check_layers: {checked} targets checked, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
