@@ -2,7 +2,7 @@
 """Writes a scene of K spheres at seeded random positions in [-10, 10]^3, coloured by position.
 
 With no argument: scenes/many3d.json (K = 2000). `make_many3d.py K OUT` writes K spheres to OUT, radii scaled
-by (2000 / K)^(1/3) so that the cube is as full as with 2000 (the 10^5-sphere soak in README "Speed").
+by (2000 / K)^(1/3) so that the cube is as full as with 2000 (the 10^5-sphere soak in docs/speed.md).
 """
 import json
 import random

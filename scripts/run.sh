@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The run command (README, "Run"): builds, then opens the app where there is a display, or renders the same
+# The run command (README): builds, then opens the app where there is a display, or renders the same
 # frame headless to raycam-shot.png where there is none. Extra arguments go to the app / renderer.
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,4 @@
-// The accuracy knobs (README, "Accuracy"): precision, intersection formula, samples per pixel, frame,
+// The accuracy knobs (docs/accuracy.md): precision, intersection formula, samples per pixel, frame,
 // placement route, the exact 2D bar. The command line sets them through src/flags' caster option group; when
 // needs_reference_caster() says so (or the placement route is not the orbit), a command renders with
 // render_with_accuracy() instead of cast_primary_rays().

@@ -1,4 +1,4 @@
-// Documented limits, checked before anything is allocated (README, "Limits and guarantees").
+// Documented limits, checked before anything is allocated (docs/cli.md, "Limits and guarantees").
 #pragma once
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // to the lower object index, a miss gives the background colour.
 //
 // CastMethod::plain is the handout's loop, every object tested for every pixel: the reference. The other
-// methods skip work the scene doesn't need (README, "Speed") and give the SAME ids: they run the plain
+// methods skip work the scene doesn't need (docs/speed.md) and give the SAME ids: they run the plain
 // loop's own ray and intersection code, only on the pixels an object can cover.
 #pragma once
 

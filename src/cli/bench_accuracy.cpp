@@ -361,7 +361,7 @@ int run_bench_accuracy(BenchOptions o) {
 
 void add_bench_accuracy_command(CLI::App& bench, int& exit_code) {
   CLI::App* accuracy =
-      bench.add_subcommand("accuracy", "time against error, --stress, --angles (README \"Accuracy\")");
+      bench.add_subcommand("accuracy", "time against error, --stress, --angles (docs/accuracy.md)");
   auto options = std::make_shared<BenchOptions>();
   add_options(*accuracy, *options);
   accuracy->callback([options, &exit_code] { exit_code = run_bench_accuracy(*options); });

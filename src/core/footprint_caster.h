@@ -7,7 +7,7 @@
 
 namespace raycam::detail {
 
-// Crossover measured by `raycam-cli bench speed` (README, "Speed"): below it, scanning every visible
+// Crossover measured by `raycam-cli bench speed` (docs/speed.md): below it, scanning every visible
 // object's box per band beats sorting the objects into bands first.
 inline constexpr int kBinnedCrossover = 64;
 

@@ -23,7 +23,7 @@ inline double clamped(double x, double lo, double hi) { return lower(higher(x, l
 // What both axes of one object share: the depth c0 of its centre along the view, its radius, and the
 // slack for the rounding that a computed ray and the intersection's arithmetic may suffer near it. The ray's
 // origin and f = origin - centre round at the scale of the coordinates; the naive formula's b² - c cancels,
-// which moves its silhouette by ~ε·|f|²/r (README, "Accuracy").
+// which moves its silhouette by ~ε·|f|²/r (docs/accuracy.md).
 struct Depth {
   double c0, r;
   bool bounded;         // false when the object reaches the eye's plane (c0 ≤ r): every slope is possible

@@ -1,4 +1,4 @@
-// Flag values on CLI11, with ONE message format for every bad value (README, "The command line"):
+// Flag values on CLI11, with ONE message format for every bad value (docs/cli.md):
 //   --res: expected a number in ]0, 1], got '0'
 //   --threads: expected an integer in [1, 256], got nothing
 // Each rule says what it accepts (`expected`) and parses the text; add_checked_option() turns a rule into a

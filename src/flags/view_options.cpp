@@ -67,7 +67,7 @@ CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view) {
       "Camera", "The camera (flags override the scene file's preset; angles in degrees)");
   CameraPreset& camera = view.camera;
   add_checked_option<std::string>(*group, "--scene", "FILE",
-                                  "scene file (JSON, README \"Scene files\"); default: a built-in demo scene",
+                                  "scene file (JSON, docs/cli.md); default: a built-in demo scene",
                                   file_name(), [&view](std::string path) { view.scene_path = path; });
   add_checked_option<int>(*group, "--mode,--view", "2d|3d",
                           "camera kind when no scene file is given (default 3d)", one_of({"2d", "3d"}),
@@ -99,7 +99,7 @@ CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view) {
 CLI::Option_group* add_caster_options(CLI::App& command, CastOptions& cast, AccuracyFlags& accuracy) {
   CLI::Option_group* group = command.add_option_group(
       "Caster",
-      "The caster and the accuracy knobs (README \"Speed\" and \"Accuracy\"; any knob renders with "
+      "The caster and the accuracy knobs (docs/speed.md and docs/accuracy.md; any knob renders with "
       "the reference caster)");
   add_checked_option<int>(*group, "--method", "M",
                           "the caster; every method gives the plain loop's ids (default automatic)",

@@ -1,7 +1,7 @@
 // The overhead view's discs (2D circles, 3D spheres seen from above) as one cached image layer: rasterised on
 // the CPU when the view's placement or the scene changes, uploaded as one texture and drawn as one quad.
 // Through ImGui's draw lists 10⁵ discs were millions of vertices tessellated and uploaded every frame, and
-// as GL instances llvmpipe still paid about a microsecond per disc (README, "Speed").
+// as GL instances llvmpipe still paid about a microsecond per disc (docs/speed.md).
 //
 // Layer pixels: origin at the layer's top-left, y down; pixel (i, j) has its centre at (i + ½, j + ½).
 #pragma once

@@ -43,7 +43,7 @@ enum class SphereDrawing { automatic, impostors, cpu_layer };
 
 class ObserverRenderer {
  public:
-  // Measured with `raycam-cli shot --soak` at 1280×720 (README, "Speed").
+  // Measured with `raycam-cli shot --soak` at 1280×720 (docs/speed.md).
   static constexpr std::size_t kSphereLayerFrom = 20000;
 
   ObserverRenderer();

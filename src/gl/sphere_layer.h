@@ -1,6 +1,6 @@
 // The observer view's spheres cast on the CPU into a colour and depth layer, for scenes with so many spheres
-// that llvmpipe's cost per primitive dominates (10⁵ impostors: ~90 ms of rasterising a frame; README,
-// "Speed"). The same picture as sphere.vert/sphere.frag: the nearest hit of the observer's ray through each
+// that llvmpipe's cost per primitive dominates (10⁵ impostors: ~90 ms of rasterising a frame;
+// docs/speed.md). The same picture as sphere.vert/sphere.frag: the nearest hit of the observer's ray through each
 // pixel centre, lightly shaded, its window depth kept so that the lines and the screen drawn afterwards are
 // hidden by the spheres in front of them.
 //

@@ -254,7 +254,7 @@ json object_json(const Object& object, const char* type, int dimension) {
 namespace {
 // JSON for people: a value that fits on one line of at most kReadableLine characters and holds no array or
 // object bigger than a short array of scalars stays on one line ("center": [1, 2, 3], and each object of
-// "objects" as one line, as in README's example); anything bigger is indented by 2.
+// "objects" as one line, as in docs/cli.md's example); anything bigger is indented by 2.
 constexpr std::size_t kReadableLine = 120;
 
 bool is_flat(const json& value) {

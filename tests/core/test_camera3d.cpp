@@ -308,7 +308,7 @@ TEST_CASE("the printed angle convention looks away; sizes and res are checked",
 }
 
 TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[camera3d]") {
-  // Each factor written out here from the README's formula (rows as printed; GLM stores columns, hence the
+  // Each factor written out here from docs/conventions.md's formula (rows as printed; GLM stores columns, hence the
   // transpose), not through raycam's transform.h: M_d = T(OP)·R_z(θ)·R_y(φ)·R_z(π/2)·H(1, 1, d_f).
   const double theta = 0.4, phi = 1.1, df = 2.0;
   const glm::dvec3 target(1, 2, 3), position = target + 5.0 * spherical(theta, phi);
@@ -346,7 +346,7 @@ TEST_CASE("construction steps go from the identity to M_d, factor by factor", "[
   }
   CHECK(close(camera.world_from_camera(), by_hand[5]));
   // The roll, seen through the image's up vector M_d·(0,1,0): after step 2 canonical up has turned to -x,
-  // and in the end it is (−cos θ cos φ, −sin θ cos φ, sin φ) (README, "Conventions"): world +z is up.
+  // and in the end it is (−cos θ cos φ, −sin θ cos φ, sin φ) (docs/conventions.md): world +z is up.
   CHECK(glm::length(transform_vector(construction_step(p, 2), {0, 1, 0}) - glm::dvec3(-1, 0, 0)) < 1e-15);
   CHECK(glm::length(camera.image_up() - glm::dvec3(-ct * cp, -st * cp, sp)) < 1e-15);
   CHECK(camera.image_up().z > 0);

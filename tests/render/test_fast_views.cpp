@@ -1,4 +1,4 @@
-// The fast paths of the views (README, "Speed") draw what the plain ones draw: the observer's spheres cast on
+// The fast paths of the views (docs/speed.md) draw what the plain ones draw: the observer's spheres cast on
 // the CPU against the GL impostors, and the overhead view's disc layer against the geometry of its discs.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -64,7 +64,7 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
               if (index >= 4) m.*kClassicMistakes[index - 4].flag = true;
             }
           },
-          "show a classic mistake: arccos or an ID of README \"Classic mistakes\" (repeatable)")
+          "show a classic mistake: arccos or an ID of docs/check.md's table of classic mistakes (repeatable)")
       ->type_name("NAME")
       ->check(checked(mistake));
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",

@@ -1,4 +1,4 @@
-// Scene files: JSON, one scene per file, angles in degrees, colours 0–255 (README, "Scene files").
+// Scene files: JSON, one scene per file, angles in degrees, colours 0–255 (docs/cli.md, "Scene files").
 //   { "dimension": 3, "background": [20,20,30],
 //     "objects": [ {"type": "sphere", "center": [0,0,0], "radius": 1, "color": [230,60,50], "name": "red"} ],
 //     "camera": {"target": [0,0,0], "d": 8, "theta": 30, "phi": 60, "df": 2, "res": 1, "size": [256,256]} }
