@@ -2,6 +2,7 @@
 # Runs a command and checks BOTH its exit status and its output (stdout + stderr), so a CTest entry can
 # never pass on output alone (PASS_REGULAR_EXPRESSION makes CTest ignore the exit code).
 #   expect.sh --exit 0|nonzero|N [--match ERE]... [--no-match ERE]... -- command [args...]
+# (the command and its input files by absolute paths: it runs in a temporary folder, see below).
 # Patterns are extended regular expressions (grep -E); match the flag name and the range, not whole
 # sentences, so a reworded message still passes and a wrong range does not.
 set -u
@@ -20,8 +21,12 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ $# -gt 0 ] || { echo "expect.sh: no command" >&2; exit 2; }
-out=$("$@" 2>&1)
+# The command runs in a fresh temporary folder, removed afterwards: a file it writes by a relative name lands
+# there, never in the build or the source tree.
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/raycam-expect.XXXXXX") || { echo "expect.sh: no temporary folder" >&2; exit 2; }
+out=$(cd "$scratch" && "$@" 2>&1)
 status=$?
+rm -rf "$scratch"
 printf '%s\n' "$out"
 fail=0
 case "$want" in
