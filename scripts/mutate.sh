@@ -59,7 +59,7 @@ mutant band-rays-missing-past-a-box-first-block src/core/footprint_caster.cpp 's
 mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/kept += !boxes\[k\].empty();/kept += 1;/' "$CORE" "$CORE_TESTS"
 UI="raycam_ui_tests raycam_render_tests"
 mutant inspector-prints-1.5t src/ui/panels.cpp 's/ray.hit.id, name.c_str(), ray.hit.t);/ray.hit.id, name.c_str(), 1.5 * ray.hit.t);/' "$UI" "^(ui|render):"
-mutant packed-scene-not-repacked src/ui/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "$UI" "^(ui|render):"
+mutant packed-scene-not-repacked src/session/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "raycam_session_tests raycam_render_tests" "^(session|render):"
 # --- structure and hygiene ---
 # Each caught by the direct test named in its regex (not only through the stress suite's error bounds).
 mutant scene-reader-radius-bound-1e300 src/io/scene_file.cpp 's/^\( *\)kMaxCoordinate, true, "\]0, 1e12\]");/\11e300, true, "]0, 1e12]");/' "$CORE" "^core: ?scene files refuse the open bounds"
