@@ -5,10 +5,11 @@
 #include "flag_values.h"
 
 int main(int argc, char** argv) {
-  CLI::App cli("raycam-cli: the raycam camera chapter without a display (render, check, shot, bench)", "raycam-cli");
+  CLI::App cli("raycam-cli: the raycam camera chapter without a display (render, figure, check, shot, bench)", "raycam-cli");
   cli.require_subcommand(1);
   int exit_code = 0;
   raycam::cli::add_render_command(cli, exit_code);
+  raycam::cli::add_figure_command(cli, exit_code);
   raycam::cli::add_check_command(cli, exit_code);
   raycam::cli::add_bench_command(cli, exit_code);
 #ifdef RAYCAM_HAVE_SHOT

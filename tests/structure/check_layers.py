@@ -11,7 +11,7 @@ import sys
 # Lowest first. A target may link only targets of a lower rank.
 LAYERS = [
     ["raycam_core"],
-    ["raycam_io", "raycam_testkit", "raycam_embree"],
+    ["raycam_io", "raycam_testkit", "raycam_embree", "raycam_figure"],
     ["raycam_check"],
     ["raycam_session"],
     ["raycam_flags"],

@@ -1,0 +1,180 @@
+// `raycam-cli figure`: the handout's construction of M_d as figures for course notes and slides: the 2D
+// frames (a) → (d) or the 3D steps 0 → 5, for a scene file or the demo and the camera flags `render` takes.
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "figure_files.h"
+#include "flag_values.h"
+#include "view_options.h"
+
+namespace raycam::cli {
+
+namespace {
+
+// --size: the figure's size with its unit (160x120mm, 1200x900px), or, without a unit, the camera's N|WxH
+// as `render` takes it.
+struct SizeValue {
+  std::optional<figure::PageSize> page;
+  std::vector<int> camera;
+};
+
+constexpr double kMinMm = 20.0, kMaxMm = 2000.0;
+constexpr int kMinPx = 64, kMaxPx = 8192;
+
+flags::ValueRule<SizeValue> size_rule() {
+  const flags::ValueRule<std::vector<int>> camera = flags::size_rule();
+  return {"a figure size W[xH]mm in [20, 2000] or W[xH]px in [64, 8192] (H = 3/4 W when left out), or the "
+          "camera's " + camera.expected,
+          [camera](const std::string& text) -> std::optional<SizeValue> {
+            const bool mm = text.size() > 2 && text.compare(text.size() - 2, 2, "mm") == 0;
+            const bool px = text.size() > 2 && text.compare(text.size() - 2, 2, "px") == 0;
+            if (!mm && !px) {
+              const auto size = camera.parse(text);
+              if (!size) return std::nullopt;
+              return SizeValue{std::nullopt, *size};
+            }
+            const std::string number = text.substr(0, text.size() - 2);
+            const std::size_t x = number.find('x');
+            const flags::ValueRule<double> side =
+                flags::number_in(mm ? flags::Interval{kMinMm, kMaxMm} : flags::Interval{kMinPx, kMaxPx});
+            const auto width = side.parse(number.substr(0, x));
+            const auto height = x == std::string::npos ? std::optional<double>(0.75 * width.value_or(0.0))
+                                                       : side.parse(number.substr(x + 1));
+            if (!width || !height || *height < (mm ? kMinMm : kMinPx)) return std::nullopt;
+            if (px && (*width != std::floor(*width) || *height != std::floor(*height)) && x != std::string::npos)
+              return std::nullopt;
+            return SizeValue{mm ? figure::page_in_mm(*width, *height)
+                                : figure::page_in_px(int(*width), int(std::lround(*height))),
+                             {}};
+          }};
+}
+
+struct FigureOptions {
+  ViewFlags view;
+  std::vector<std::string> frames;  // empty: every frame
+  std::optional<figure::Format> format;
+  std::string out_path;
+  figure::PageSize page = figure::page_in_mm(160.0, 120.0);
+  bool pages = false, no_matrix = false;
+  figure::Language language = figure::Language::en;
+  int rays = 5;
+};
+
+const std::vector<std::string> kFormats = {"svg", "pdf", "png"};
+
+// The frames asked for, as indices: "a,b" or "a..d" (2D), "0,3" or "0..5" (3D).
+std::vector<int> frame_indices(const std::vector<std::string>& asked, int dimension) {
+  const std::string first = dimension == 2 ? "a" : "0";
+  const int count = dimension == 2 ? figure::kFrames2D : figure::kSteps3D;
+  auto index_of = [&](const std::string& name) -> int {
+    if (name.size() != 1 || name[0] < first[0] || name[0] >= first[0] + count) return -1;
+    return name[0] - first[0];
+  };
+  std::vector<int> indices;
+  for (const std::string& item : asked) {
+    const std::size_t dots = item.find("..");
+    const int from = index_of(dots == std::string::npos ? item : item.substr(0, dots));
+    const int to = dots == std::string::npos ? from : index_of(item.substr(dots + 2));
+    if (from < 0 || to < from)
+      throw std::invalid_argument(flags::bad_value_message(
+          "--frames",
+          dimension == 2 ? "frames among a, b, c, d (a 2D scene), or a range such as a..d"
+                         : "steps among 0 … 5 (a 3D scene), or a range such as 0..5",
+          item));
+    for (int i = from; i <= to; ++i) indices.push_back(i);
+  }
+  if (indices.empty())
+    for (int i = 0; i < count; ++i) indices.push_back(i);
+  return indices;
+}
+
+std::optional<figure::Format> format_of_name(const std::string& path) {
+  for (std::size_t i = 0; i < kFormats.size(); ++i) {
+    const std::string ext = "." + kFormats[i];
+    if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0)
+      return figure::Format(i);
+  }
+  return std::nullopt;
+}
+
+int run_figure(FigureOptions options) {
+  const std::optional<figure::Format> named = format_of_name(options.out_path);
+  if (options.format && named && *named != *options.format)
+    throw std::invalid_argument(flags::bad_value_message(
+        "--out", std::string("a file name ending in .") + figure::extension(*options.format) + " (--format)",
+        options.out_path));
+  figure::FigureOutput output;
+  output.format = options.format.value_or(named.value_or(figure::Format::svg));
+  if (options.pages && output.format != figure::Format::pdf)
+    throw std::invalid_argument("--pages: expected --format pdf (one PDF with a page per frame), got --format " +
+                                std::string(figure::extension(output.format)));
+  if (options.out_path.empty()) options.out_path = std::string("figure.") + figure::extension(output.format);
+  output.page = options.page;
+  output.matrix = !options.no_matrix;
+  output.pages = options.pages;
+
+  const ViewSetup setup = make_view_setup(options.view);
+  const std::vector<int> frames = frame_indices(options.frames, setup.dimension);
+  const figure::FigureOptions drawing{options.language, options.rays};
+  const figure::Figure drawn = setup.dimension == 2
+                                   ? figure::construction_figure_2d(setup.file.scene2d, setup.camera2d, drawing)
+                                   : figure::construction_figure_3d(setup.file.scene3d, setup.camera3d, drawing);
+  const figure::WrittenFigure written = figure::write_figure(drawn, frames, output, options.out_path);
+  for (std::size_t i = 0; i < written.files.size(); ++i)
+    std::printf("wrote %s\n", written.files[i].c_str());
+  return 0;
+}
+
+}  // namespace
+
+void add_figure_command(CLI::App& cli, int& exit_code) {
+  CLI::App* command = add_described_subcommand(
+      cli, "figure", "draw the construction of M_d as course figures (SVG, PDF, PNG)",
+      "Draws the handout's frames (a) identity, (b) H(1, d_f) and the first rotation, (c) the rotation onto "
+      "v = PC/|PC|, (d) the translation, for a 2D scene; the steps 0 (identity) … 5 (M_d) for a 3D scene. Each "
+      "frame shows the objects, the target C, the eye, the screen and its pixels, a few primary rays and the "
+      "frame's matrix. Without --scene: the demo scene. See docs/figures.md.\n");
+  auto options = std::make_shared<FigureOptions>();
+  CLI::Option_group* camera = flags::add_view_options(*command, options->view);
+  camera->remove_option(camera->get_option("--size"));  // --size below also takes the figure's size
+  flags::add_checked_option<SizeValue>(
+      *command, "--size", "SIZE",
+      "the figure's size: W[xH]mm (default 160x120mm; PNG at 300 dpi) or W[xH]px; without a unit, the "
+      "camera's N (2D) or WxH (3D) as for render",
+      size_rule(), [options](SizeValue size) {
+        if (size.page)
+          options->page = *size.page;
+        else
+          options->view.camera.size = size.camera;
+      });
+  const flags::ValueRule<std::string> name = flags::file_name();
+  command
+      ->add_option_function<std::vector<std::string>>(
+          "--frames", [options](const std::vector<std::string>& items) { options->frames = items; },
+          "which frames: a,b,c,d or a..d (2D), 0..5 (3D); default: all")
+      ->type_name("LIST")
+      ->delimiter(',');
+  flags::add_checked_option<int>(*command, "--format", "svg|pdf|png",
+                                 "default: from --out's extension, else svg", flags::one_of(kFormats),
+                                 [options](int i) { options->format = figure::Format(i); });
+  flags::add_checked_option<std::string>(
+      *command, "--out", "FILE",
+      "the figure's file; with several frames, one file each: FILE-a.svg, FILE-b.svg… (default figure.svg)",
+      name, [options](std::string path) { options->out_path = path; });
+  command->add_flag("--pages", options->pages, "with --format pdf: one PDF, a page per frame");
+  flags::add_checked_option<int>(*command, "--lang", "fr|en", "the figures' language (default en)",
+                                 flags::one_of({"fr", "en"}),
+                                 [options](int i) { options->language = figure::Language(i); });
+  flags::add_checked_option<int>(*command, "--rays", "N", "primary rays drawn per 2D frame (default 5)",
+                                 flags::integer_in(0, 64), [options](int n) { options->rays = n; });
+  command->add_flag("--no-matrix", options->no_matrix, "leave out each frame's matrix");
+  command->callback([options, &exit_code] { exit_code = run_figure(*options); });
+}
+
+}  // namespace raycam::cli

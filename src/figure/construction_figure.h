@@ -1,0 +1,100 @@
+// The handout's construction of M_d as figures for course notes and slides: the 2D frames (a) → (d) and the
+// 3D steps 0 → 5, each as a list of plane primitives (no drawing library here: construction_figure_painter.h
+// draws them with cairo). The positions are the core's own numbers: each frame's matrix is a product of the
+// camera's placement factors, and every point drawn is that matrix applied to a canonical point.
+#pragma once
+
+#include <array>
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <string>
+#include <vector>
+
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
+#include "raycam/scene.h"
+
+namespace raycam::figure {
+
+enum class Language { fr, en };
+
+enum class Stroke {
+  camera,        // the screen, thick black
+  arrow,         // a vector (u⃗, v⃗): a line with a head
+  construction,  // dashed grey: eye-to-pixel lines, P → C, world axes
+  ray,           // a primary ray, thin
+};
+
+struct Segment {
+  glm::dvec2 from{0.0}, to{0.0};
+  Stroke stroke = Stroke::camera;
+};
+
+struct Disc {  // an object of the scene (3D: the sphere's projected centre and its radius)
+  glm::dvec2 centre{0.0};
+  double radius = 1.0;
+  Rgb8 colour;
+  std::string name;
+};
+
+// The points a figure marks (and a test finds again in the drawing): each is a small cross.
+enum class Point { eye, screen_first_end, screen_last_end, screen_centre, target, origin };
+inline constexpr int kPointKinds = 6;
+
+struct Marker {
+  Point point = Point::eye;
+  glm::dvec2 at{0.0};
+  std::string label;
+};
+
+struct Label {  // free text anchored at a plane point (pixel indices, vector names)
+  glm::dvec2 at{0.0};
+  std::string text;
+};
+
+struct Frame {
+  std::string id;       // "a" … "d" (2D), "0" … "5" (3D): the --frames value and the file name's suffix
+  std::string title;    // "cadre (a)" / "frame (a)", "étape 2" / "step 2"
+  std::string caption;  // what the step applies, in the handout's symbols
+  std::string note;     // a remark under the drawing (may be empty)
+  std::vector<std::array<double, 4>> matrix;  // the frame's product of factors, rows (3 or 4 used)
+  int matrix_size = 3;
+  std::vector<Disc> objects;
+  bool objects_faded = false;  // before M_d is complete the camera is not in the scene yet: objects in grey
+  glm::dvec2 plane_min{0.0}, plane_max{0.0};  // the frame's viewport: the camera and C, plus the objects
+                                              // once the camera is placed
+  std::vector<Segment> segments;
+  std::vector<Marker> markers;
+  std::vector<Label> labels;
+};
+
+struct Figure {
+  Language language = Language::en;
+  std::vector<Frame> frames;
+};
+
+struct FigureOptions {
+  Language language = Language::en;
+  int rays = 5;  // primary rays drawn per frame (evenly spread over the pixels, both ends included)
+};
+
+// The 2D frames of the handout, in order: (a) identity; (b) H(1, d_f) then the first rotation R(ψ0);
+// (c) then R(φ_v), which turns u0 onto v = PC/‖PC‖; (d) then T(ΩP): the camera's M_d.
+inline constexpr int kFrames2D = 4;
+Figure construction_figure_2d(const Scene2D& scene, const Camera2D& camera, const FigureOptions& options);
+
+// The 3D steps 0 (identity) … 5 (M_d), as the app's step-by-step view, in a fixed oblique projection.
+inline constexpr int kSteps3D = kConstructionSteps3D + 1;
+Figure construction_figure_3d(const Scene3D& scene, const Camera3D& camera, const FigureOptions& options);
+
+// The 2D frames' matrices: frame 0 … 3 (a … d). (c) is the core's construction_step(2) and (d) its M_d,
+// reached through the handout's two rotations: R(φ_v)·R(ψ0) = R(α).
+glm::dmat3 frame_matrix_2d(const Camera2D& camera, int frame);
+
+// A number as the figures print it: French with the decimal comma; never "-0".
+std::string decimal(double value, int decimals, Language language);
+
+// The fixed oblique projection of the 3D figures (x towards the viewer, y to the right, z up).
+glm::dvec2 oblique_projection(const glm::dvec3& point);
+
+}  // namespace raycam::figure
