@@ -64,6 +64,15 @@ mutant packed-scene-not-repacked src/session/app_state.cpp 's/^  ++state.scene_v
 # Each caught by the direct test named in its regex (not only through the stress suite's error bounds).
 mutant scene-reader-radius-bound-1e300 src/io/scene_file.cpp 's/^\( *\)kMaxCoordinate, true, "\]0, 1e12\]");/\11e300, true, "]0, 1e12]");/' "$CORE" "^core: ?scene files refuse the open bounds"
 mutant reference-ties-to-later-object src/core/reference_caster.cpp 's/if (t < best) {  \/\/ strict: ties keep the lower index/if (t <= best) {  \/\/ strict: ties keep the lower index/' "$CORE" "^core: ?ties go to the lower index through the accuracy knobs"
+# --- course figures ---
+FIGURE="raycam_figure_tests raycam-cli"
+mutant figure-first-rotation-as-printed src/figure/construction_figure.cpp 's/^constexpr double kFirstRotation2D = glm::half_pi<double>();/constexpr double kFirstRotation2D = -glm::half_pi<double>();/' "$FIGURE" "^figure:"
+mutant figure-matrix-transposed src/figure/construction_figure.cpp 's/rows\[r\]\[c\] = m\[c\]\[r\];/rows[r][c] = m[r][c];/' "$FIGURE" "^figure:"
+mutant figure-3d-target-at-origin src/figure/construction_figure.cpp 's/frame.markers.push_back({Point::target, oblique_projection(orbit.target), "C"});/frame.markers.push_back({Point::target, oblique_projection(glm::dvec3(0.0)), "C"});/' "$FIGURE" "^figure:"
+mutant figure-eye-before-scaling src/figure/construction_figure.cpp 's/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D);/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/; s/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/const glm::dvec2 eye = transform_point(m * glm::inverse(camera.placement().scale), kCanonicalEye2D);/' "$FIGURE" "^figure:"
+mutant figure-png-pixel-size src/figure/figure_files.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
+mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const Disc& disc : frame.objects) {$/  for (const Disc\& disc : frame.objects) { if (\&disc - frame.objects.data() >= 1000) break;/' "$FIGURE" "^figure:"
+mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(lang == Language::fr ? "cadre (" : "frame (")/("frame (")/' "$FIGURE" "^figure:"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

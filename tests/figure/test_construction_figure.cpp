@@ -1,0 +1,290 @@
+// The construction figures are right: each frame's matrix is the product of the handout's factors so far (and
+// the last one is the camera's M_d), the points drawn in the SVG are where the core puts them, the PDF holds
+// the pages and the words of the language asked for, the PNG has the size asked for, and every object of a
+// big scene is drawn.
+#include <stb_image.h>  // implementation provided by Debian's libstb
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+
+#include "../scratch_dir.h"
+#include "construction_figure.h"
+#include "figure_files.h"
+#include "raycam/transform.h"
+
+using namespace raycam;
+using namespace raycam::figure;
+
+namespace {
+
+const Scene2D& scene_2d() {
+  static const Scene2D scene = [] {
+    Scene2D s;
+    s.circles = {{{-1.0, -0.5}, 0.8, {230, 60, 50}, "red"}, {{1.5, 0.8}, 0.5, {60, 190, 80}, "green"}};
+    return s;
+  }();
+  return scene;
+}
+
+const Scene3D& scene_3d() {
+  static const Scene3D scene = [] {
+    Scene3D s;
+    s.spheres = {{{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"}, {{2.0, 1.0, 0.5}, 0.5, {60, 90, 230}, "blue"}};
+    return s;
+  }();
+  return scene;
+}
+
+// Cameras that exercise every quadrant of θ, a target away from the origin and d_f ≠ 1.
+std::vector<Camera2D> cameras_2d() {
+  std::vector<Camera2D> cameras;
+  for (double theta_deg : {90.0, 0.0, 200.0, -35.0}) {
+    Orbit2D orbit;
+    orbit.target = {2.0, -1.0};
+    orbit.d = 5.0;
+    orbit.theta = glm::radians(theta_deg);
+    orbit.df = 1.7;
+    cameras.emplace_back(16, orbit);
+  }
+  return cameras;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string run_output(const std::string& command) {
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[4096];
+    std::size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+    pclose(pipe);
+  }
+  return out;
+}
+
+// The crosses of the SVG by kind (figure_files.h: kind k stroked rgb(0, 0, k+1)): page position of each
+// cross's centre, the middle of its horizontal arm "M x0 y L x1 y".
+std::map<int, std::vector<glm::dvec2>> crosses_in_svg(const std::string& svg) {
+  std::map<int, std::vector<glm::dvec2>> crosses;
+  const std::regex path(R"(<path [^>]*stroke:rgb\(0%,0%,([0-9.]+)%\)[^>]*d=\"M ([-0-9.e]+) ([-0-9.e]+) L ([-0-9.e]+) ([-0-9.e]+) )");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it) {
+    const double blue = std::stod((*it)[1]) / 100.0 * 255.0;
+    const int kind = int(std::lround(blue)) - 1;
+    if (kind < 0 || std::abs(blue - std::round(blue)) > 1e-3) continue;
+    const double x0 = std::stod((*it)[2]), y0 = std::stod((*it)[3]), x1 = std::stod((*it)[4]);
+    crosses[kind].push_back({0.5 * (x0 + x1), y0});
+  }
+  return crosses;
+}
+
+// What the core says each marked point of a frame is, in the plane the figure draws.
+struct Expected {
+  Point point;
+  glm::dvec2 at;
+};
+
+void require_svg_points(const Figure& figure, int index, const std::vector<Expected>& expected,
+                        const FigureOutput& output, const test::ScratchDir& scratch) {
+  const std::string file = scratch.path("frame.svg");
+  write_figure(figure, {index}, output, file);
+  const auto crosses = crosses_in_svg(read_text(file));
+  const PageTransform to_page = page_transform(figure.frames[std::size_t(index)], output.page, output.matrix);
+  for (const Expected& e : expected) {
+    INFO("frame " << index << ", point kind " << int(e.point));
+    REQUIRE(crosses.count(int(e.point)) == 1);
+    REQUIRE(crosses.at(int(e.point)).size() == 1);
+    const glm::dvec2 drawn = crosses.at(int(e.point))[0];
+    CHECK(drawn.x == Approx(to_page.x(e.at.x)).margin(0.01));  // SVG numbers carry ~6 digits
+    CHECK(drawn.y == Approx(to_page.y(e.at.y)).margin(0.01));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("each 2D frame is the handout's factors so far, (c) and (d) the core's", "[figure]") {
+  for (const Camera2D& camera : cameras_2d()) {
+    const Placement2D& p = camera.placement();
+    INFO("theta " << glm::degrees(camera.orbit().theta));
+    // (a) the identity.
+    CHECK(frame_matrix_2d(camera, 0) == glm::dmat3(1.0));
+    // (b) H(1, d_f) then the first rotation: u0 = (0, -1) is scaled to length d_f and turned onto +x, the
+    // direction from which R(φ_v) measures v's angle.
+    const glm::dvec2 u_b = transform_vector(frame_matrix_2d(camera, 1), kCanonicalView2D);
+    CHECK(u_b.x == Approx(camera.orbit().df));
+    CHECK(u_b.y == Approx(0.0).margin(1e-12));
+    // (c) the camera looks along v = PC/‖PC‖, and the product is the core's R(α)·H.
+    const glm::dmat3 c = frame_matrix_2d(camera, 2);
+    const glm::dvec2 v = glm::normalize(camera.orbit().target - camera.screen_centre());
+    CHECK(glm::length(glm::normalize(transform_vector(c, kCanonicalView2D)) - v) < 1e-12);
+    const glm::dmat3 core_c = construction_step(p, 2);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) CHECK(c[i][j] == Approx(core_c[i][j]).margin(1e-12));
+    // (d) M_d itself.
+    const glm::dmat3 d = frame_matrix_2d(camera, 3);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) CHECK(d[i][j] == Approx(camera.world_from_camera()[i][j]).margin(1e-12));
+    // The frames carry those matrices.
+    const Figure figure = construction_figure_2d(scene_2d(), camera, {});
+    REQUIRE(figure.frames.size() == 4);
+    for (int f = 0; f < 4; ++f)
+      for (int r = 0; r < 3; ++r)
+        for (int col = 0; col < 3; ++col)
+          CHECK(figure.frames[std::size_t(f)].matrix[std::size_t(r)][std::size_t(col)] ==
+                frame_matrix_2d(camera, f)[col][r]);
+  }
+}
+
+TEST_CASE("the 2D SVG draws E, the screen's ends, Ω or P and C where the core puts them", "[figure]") {
+  const test::ScratchDir scratch("figure-svg2d");
+  FigureOutput output;
+  output.format = Format::svg;
+  for (const Camera2D& camera : cameras_2d()) {
+    const Figure figure = construction_figure_2d(scene_2d(), camera, {});
+    for (int f = 0; f < kFrames2D; ++f) {
+      const glm::dmat3 m = frame_matrix_2d(camera, f);
+      const auto ends = screen_corners_of(m);
+      std::vector<Expected> expected{{Point::eye, eye_of(m)},
+                                     {Point::screen_first_end, ends[0]},
+                                     {Point::screen_last_end, ends[1]},
+                                     {Point::screen_centre, transform_point(m, glm::dvec2(0.0))},
+                                     {Point::target, camera.orbit().target}};
+      if (f == 3) {  // the placed camera: the core's own eye and screen centre P
+        expected[0].at = camera.eye();
+        expected[3].at = camera.screen_centre();
+      }
+      require_svg_points(figure, f, expected, output, scratch);
+    }
+  }
+}
+
+TEST_CASE("the 3D SVG draws each step's eye, screen and centre as the core's construction", "[figure]") {
+  const test::ScratchDir scratch("figure-svg3d");
+  Orbit3D orbit;
+  orbit.target = {1.0, -2.0, 0.5};
+  orbit.d = 7.0;
+  orbit.theta = glm::radians(40.0);
+  orbit.phi = glm::radians(65.0);
+  orbit.df = 1.8;
+  const Camera3D camera(32, 24, orbit);
+  const Figure figure = construction_figure_3d(scene_3d(), camera, {});
+  REQUIRE(figure.frames.size() == std::size_t(kSteps3D));
+  FigureOutput output;
+  for (int s = 0; s < kSteps3D; ++s) {
+    const glm::dmat4 m = construction_step(camera.placement(), s);
+    const auto corners = screen_corners_of(m);
+    require_svg_points(figure, s,
+                       {{Point::eye, oblique_projection(eye_of(m))},
+                        {Point::screen_first_end, oblique_projection(corners[0])},
+                        {Point::screen_last_end, oblique_projection(corners[2])},
+                        {Point::screen_centre, oblique_projection(transform_point(m, glm::dvec3(0.0)))},
+                        {Point::target, oblique_projection(orbit.target)}},
+                       output, scratch);
+  }
+  // The last step is the camera: its eye is Camera3D's.
+  const glm::dvec3 eye = eye_of(construction_step(camera.placement(), kSteps3D - 1));
+  CHECK(glm::length(eye - camera.eye()) < 1e-12);
+}
+
+TEST_CASE("a PDF of pages holds one page per frame, the language's titles and the matrices", "[figure]") {
+  const test::ScratchDir scratch("figure-pdf");
+  const Camera2D camera = cameras_2d()[2];
+  for (Language language : {Language::fr, Language::en}) {
+    FigureOptions options;
+    options.language = language;
+    const Figure figure = construction_figure_2d(scene_2d(), camera, options);
+    FigureOutput output;
+    output.format = Format::pdf;
+    output.pages = true;
+    const std::string file = scratch.path("frames.pdf");
+    REQUIRE(write_figure(figure, {0, 1, 2, 3}, output, file).files.size() == 1);
+    CHECK(run_output("pdfinfo '" + file + "'").find("Pages:           4") != std::string::npos);
+    const std::string text = run_output("pdftotext -layout '" + file + "' -");
+    const bool fr = language == Language::fr;
+    for (const char* letter : {"a", "b", "c", "d"}) {
+      CHECK(text.find(std::string(fr ? "cadre (" : "frame (") + letter + ")") != std::string::npos);
+      CHECK(text.find(std::string(fr ? "frame (" : "cadre (") + letter + ")") == std::string::npos);
+    }
+    CHECK(text.find(fr ? "homothétie" : "scaling") != std::string::npos);
+    // Every frame's matrix, row by row, with 3 decimals and the language's decimal separator.
+    for (int f = 0; f < 4; ++f) {
+      const glm::dmat3 m = frame_matrix_2d(camera, f);
+      for (int r = 0; r < 3; ++r) {
+        // The numbers in order, any spacing between them (the layout's).
+        std::string pattern = "\\[";
+        for (int c = 0; c < 3; ++c) pattern += " +" + std::regex_replace(decimal(m[c][r], 3, language),
+                                                                          std::regex("[.]"), "\\.");
+        pattern += " +\\]";
+        INFO("frame " << f << " row " << r << ": " << pattern);
+        CHECK(std::regex_search(text, std::regex(pattern)));
+      }
+    }
+  }
+}
+
+TEST_CASE("a PNG has the size asked for, in pixels or in millimetres at 300 dpi", "[figure]") {
+  const test::ScratchDir scratch("figure-png");
+  const Figure figure = construction_figure_2d(scene_2d(), cameras_2d()[0], {});
+  const std::pair<PageSize, std::pair<int, int>> cases[] = {
+      {page_in_px(640, 480), {640, 480}},
+      {page_in_px(333, 777), {333, 777}},
+      {page_in_mm(100.0, 50.0), {int(std::lround(100.0 / 25.4 * 300.0)), int(std::lround(50.0 / 25.4 * 300.0))}}};
+  for (const auto& [page, size] : cases) {
+    FigureOutput output;
+    output.format = Format::png;
+    output.page = page;
+    const std::string file = scratch.path("frame.png");
+    write_figure(figure, {1}, output, file);
+    int width = 0, height = 0, channels = 0;
+    REQUIRE(stbi_info(file.c_str(), &width, &height, &channels) == 1);
+    CHECK(width == size.first);
+    CHECK(height == size.second);
+  }
+}
+
+TEST_CASE("several frames go to one file each, named after the frame", "[figure]") {
+  const test::ScratchDir scratch("figure-files");
+  const Figure figure = construction_figure_2d(scene_2d(), cameras_2d()[0], {});
+  FigureOutput output;
+  const auto written = write_figure(figure, {0, 3}, output, scratch.path("course.svg"));
+  REQUIRE(written.files == std::vector<std::string>{scratch.path("course-a.svg"), scratch.path("course-d.svg")});
+  for (const std::string& file : written.files) CHECK(read_text(file).rfind("<?xml", 0) == 0);
+}
+
+TEST_CASE("a scene of 2000 objects has every object drawn in every frame", "[figure]") {
+  const test::ScratchDir scratch("figure-many");
+  Scene2D scene;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+  for (int i = 0; i < 2000; ++i)
+    scene.circles.push_back({{coordinate(random), coordinate(random) - 25.0}, 0.2, {200, 100, 50}, ""});
+  const Figure figure = construction_figure_2d(scene, cameras_2d()[0], {});
+  FigureOutput output;
+  const auto written = write_figure(figure, {0, 3}, output, scratch.path("many.svg"));
+  CHECK(written.objects_drawn == std::vector<int>{2000, 2000});
+  // Counted again in the file: the placed frame fills each object in its colour.
+  const std::string svg = read_text(written.files[1]);
+  std::size_t filled = 0;
+  for (std::size_t at = 0; (at = svg.find("fill:rgb(78.431373%,39.215686%,19.607843%)", at)) != std::string::npos; ++at)
+    ++filled;
+  CHECK(filled == 2000);
+}
+
+TEST_CASE("numbers in French take the decimal comma and no minus zero", "[figure]") {
+  CHECK(decimal(1.5, 3, Language::fr) == "1,500");
+  CHECK(decimal(1.5, 3, Language::en) == "1.500");
+  CHECK(decimal(-1e-9, 3, Language::en) == "0.000");
+  CHECK(decimal(-0.0, 1, Language::fr) == "0,0");
+}
