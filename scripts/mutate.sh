@@ -72,6 +72,7 @@ mutant figure-3d-target-at-origin src/figure/construction_figure.cpp 's/frame.ma
 mutant figure-eye-before-scaling src/figure/construction_figure.cpp 's/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D);/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/; s/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/const glm::dvec2 eye = transform_point(m * glm::inverse(camera.placement().scale), kCanonicalEye2D);/' "$FIGURE" "^figure:"
 mutant figure-png-pixel-size src/figure/figure_files.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
 mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const Disc& disc : frame.objects) {$/  for (const Disc\& disc : frame.objects) { if (\&disc - frame.objects.data() >= 1000) break;/' "$FIGURE" "^figure:"
+mutant figure-export-ignores-the-step src/session/figure_export.cpp 's/state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1)/count - 1/' "raycam_session_tests" "^session:.*Export figure"
 mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(lang == Language::fr ? "cadre (" : "frame (")/("frame (")/' "$FIGURE" "^figure:"
 MUTANTS_END=1
 

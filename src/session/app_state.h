@@ -33,7 +33,7 @@ struct ObserverOrbit {
 
 // Where a message came from: it is shown in that panel section (or above the status line when the section
 // is closed).
-enum class MessageSource { general, camera, files, caster };
+enum class MessageSource { general, camera, files, caster, construction };
 
 struct AppState {
   // ---- scene and camera parameters (the sliders' model) ----
@@ -113,6 +113,7 @@ struct AppState {
   char save_path[512] = {};       // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   char export_path[512] = "raycam-colour-map.png";
+  std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
 };
 
 // Sets the one message on screen (replacing any other).

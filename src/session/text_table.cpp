@@ -244,6 +244,13 @@ const std::vector<Translation>& translation_table() {
       {"or drop a scene file on the window", "ou déposez un fichier de scène sur la fenêtre"},
       {"export###export", "export###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
+      // ---- panels.cpp: the construction's figures ----
+      {"figure###figure_path", "figure###figure_path"},
+      {"Export figure…", "Exporter la figure…"},
+      {"Export every step", "Exporter toutes les étapes"},
+      {"SVG, PDF or PNG, after the name's extension; the frames as in the handout (docs/figures.md).",
+       "SVG, PDF ou PNG selon l'extension du nom ; les cadres comme dans le TD (docs/figures.md)."},
+      {"%s: expected a name ending in .svg, .pdf or .png", "%s : nom attendu en .svg, .pdf ou .png"},
       {"Screenshot (F12)", "Capture d'écran (F12)"},
       {"wrote %s", "écrit : %s"},
       {"opened %s", "ouvert : %s"},

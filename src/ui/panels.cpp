@@ -4,6 +4,7 @@
 #include "panels.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>  // InputText on a std::string
 #include <imgui_internal.h>  // ImGui::ClearActiveID: Tab leaves a text field
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <optional>
 #include <string>
 
+#include "figure_export.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "raycam/view_setup.h"
@@ -207,6 +209,27 @@ void camera_section(AppState& state) {
 }
 
 // ---- construction of M_d -------------------------------------------------------------------------------
+// The course figures of this camera (raycam-cli figure): the step shown, or every step.
+void figure_export_row(AppState& state) {
+  labelled(tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
+  bool all = false;
+  bool export_now = ImGui::Button(tr("Export figure…"));
+  same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (ImGui::Button(tr("Export every step"))) export_now = all = true;
+  if (export_now) {
+    try {
+      std::string written;
+      for (const std::string& file : export_construction_figure(state, state.figure_path, all))
+        written += (written.empty() ? "" : ", ") + file;
+      set_message(state, MessageSource::construction, false, trf("wrote %s", written.c_str()));
+    } catch (const std::exception& error) {
+      set_message(state, MessageSource::construction, true, error.what());
+    }
+  }
+  explain(tr("SVG, PDF or PNG, after the name's extension; the frames as in the handout (docs/figures.md)."));
+  show_message(state, MessageSource::construction);
+}
+
 void construction_section(AppState& state) {
   if (!section(tr("Construction of M_d###construction"), "M_d###construction", ImGuiTreeNodeFlags_DefaultOpen))
     return;
@@ -270,6 +293,7 @@ void construction_section(AppState& state) {
     g_shown_matrix = construction_step(p, step);
     matrix_table<4>("M", construction_step(p, step));
   }
+  figure_export_row(state);
 }
 
 // ---- ray inspector -------------------------------------------------------------------------------------
