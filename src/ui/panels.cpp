@@ -226,8 +226,8 @@ void figure_export_row(AppState& state) {
       set_message(state, MessageSource::construction, true, error.what());
     }
   }
+  show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
   explain(tr("SVG, PDF or PNG, after the name's extension; the frames as in the handout (docs/figures.md)."));
-  show_message(state, MessageSource::construction);
 }
 
 void construction_section(AppState& state) {
