@@ -10,7 +10,7 @@ packages=(
   xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev                               # command lines
-  libcairo2-dev poppler-utils                # course figures (SVG, PDF, PNG) and their tests (pdftotext)
+  libcairo2-dev libpng-dev poppler-utils     # course figures (SVG, PDF, PNG) and their tests (pdftotext)
   bubblewrap python3                         # `check`: sandbox and the Python example student
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
