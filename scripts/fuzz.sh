@@ -8,9 +8,9 @@ seconds="${1:-60}"
 scripts/install-deps.sh
 CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAYCAM_FUZZ=ON -DRAYCAM_BUILD_APP=OFF \
   -DRAYCAM_BUILD_BENCH=OFF -DRAYCAM_BUILD_TESTS=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_file fuzz_camera
+cmake --build build-fuzz -j"$(nproc)" --target fuzz_scene_file fuzz_camera fuzz_answer
 mkdir -p build-fuzz/artifacts
-for target in scene_file camera; do
+for target in scene_file camera answer; do
   mkdir -p "build-fuzz/corpus/$target"
   echo "fuzz_$target: ${seconds} s"
   "build-fuzz/fuzz_$target" "build-fuzz/corpus/$target" "fuzz/corpus/$target" -max_total_time="$seconds" \

@@ -103,6 +103,48 @@ TEST_CASE("answers: shapes, sizes, ids and md are checked, with the field named"
   CHECK_FALSE(parse_answer("hello", 2, 1, 1, 3).answer);
 }
 
+TEST_CASE("answers: hostile output is a bad answer naming the field, never a crash", "[check][answer]") {
+  // Numbers beyond a double: the reader names the field instead of letting nlohmann's exception escape.
+  ParsedAnswer a = parse_answer(R"({"ids": [0, 1e999]})", 2, 1, 2, 3);
+  CHECK_FALSE(a.answer);
+  CHECK_THAT(a.error, Catch::Contains("ids[1]") && Catch::Contains("out of range"));
+  a = parse_answer(R"({"ids": [0, 0], "md": [[1, 0, 0], [0, -1e999, 0], [0, 0, 1]]})", 2, 1, 2, 3);
+  CHECK_THAT(a.error, Catch::Contains("md"));
+  CHECK_THAT(parse_answer(R"({"ids": [99999999999999999999]})", 2, 1, 1, 3).error, Catch::Contains("ids[0]"));
+
+  // Nesting 100 000 deep (200 KB): refused at the first level the protocol does not have.
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  a = parse_answer("{\"ids\": " + deep + "}", 2, 1, 4, 3);
+  CHECK_THAT(a.error, Catch::Contains("ids[0]: expected an integer id, got a list"));
+  a = parse_answer("{\"ids\": " + deep + "}", 3, 2, 2, 3);
+  CHECK_THAT(a.error, Catch::Contains("ids[0][0]: expected an integer id, got a list"));
+  a = parse_answer("{\"notes\": " + deep + ", \"ids\": [0]}", 2, 1, 1, 3);
+  CHECK_THAT(a.error, Catch::Contains("nested too deep"));
+
+  // Millions of ids: refused as soon as they outnumber the case's pixels, nothing kept of them.
+  std::string many = "{\"ids\": [0";
+  for (int i = 0; i < 3000000; ++i) many += ",0";
+  many += "]}";
+  a = parse_answer(many, 2, 1, 37, 3);
+  CHECK(a.wrong_size);
+  CHECK_FALSE(a.answer);
+  CHECK_THAT(a.error, Catch::Contains("expected 37 ids, got more"));
+  std::string rows = "{\"ids\": [[0, 0]";
+  for (int i = 0; i < 100000; ++i) rows += ", [0, 0]";
+  a = parse_answer(rows + "]}", 3, 4, 2, 3);
+  CHECK(a.wrong_size);
+  CHECK_THAT(a.error, Catch::Contains("expected 4 rows of 2 ids, got more"));
+
+  // Other bytes: not JSON, a string, an object where ids go.
+  CHECK_THAT(parse_answer("\xff\xfe{", 2, 1, 1, 3).error, Catch::Contains("not JSON"));
+  CHECK_THAT(parse_answer(R"({"ids": "0 1"})", 2, 1, 2, 3).error, Catch::Contains("ids: expected a list"));
+  CHECK_THAT(parse_answer(R"({"ids": [{"id": 0}]})", 2, 1, 1, 3).error, Catch::Contains("ids[0]"));
+  // Members the protocol does not know are still ignored.
+  a = parse_answer(R"({"student": "x", "notes": [1, [2, {"a": null}]], "ids": [0, -1]})", 2, 1, 2, 3);
+  CHECK(a.error.empty());
+  CHECK(a.answer->ids == std::vector<int>{0, -1});
+}
+
 namespace {
 SceneFile bar_case(std::vector<Circle> circles, int size) {
   SceneFile file;
