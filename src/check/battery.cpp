@@ -294,7 +294,7 @@ bool reveals(const SceneFile& file, const CaseImage& right, const MistakeInfo& m
     const CaseImage wrong = render_case(file, on, formula);
     bool differs = wrong.rows != right.rows || wrong.columns != right.columns;
     for (std::size_t i = 0; !differs && i < right.pixels(); ++i)
-      differs = !right.ambiguous[i] && !wrong.ambiguous[i] && right.ids[i] != wrong.ids[i];
+      differs = pixel_is_wrong(right.ambiguous[i] || wrong.ambiguous[i], right.ids[i], wrong.ids[i]);
     if (!differs) return false;
   }
   return true;
