@@ -222,7 +222,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_.section(state, ImGui::GetTime());
+    check_section(check_, ImGui::GetTime());
   }
   ImGui::End();
   if (state.map_version != uploaded_map_version_) {
@@ -300,8 +300,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     // A frame just outside the image, so that where the background ends shows against the window.
     ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
                                         0, 0, 1.0f);
-    check_.overlay(state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
-                   high.y);                        // the student's wrong pixels
+    check_overlay(check_, state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
+                  high.y);                         // the student's wrong pixels
     if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
