@@ -16,6 +16,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "camera_ranges.h"
 #include "construction_view.h"
 #include "fonts.h"
 #include "inspection.h"
@@ -97,8 +98,8 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
   if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
     double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
     double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
-    if (io.KeyShift) df = std::clamp(df * std::pow(1.1, io.MouseWheel), 0.05, 20.0);
-    else d = std::clamp(d * std::pow(0.9, io.MouseWheel), 0.1, 200.0);
+    if (io.KeyShift) df = kFocalRange.clamp(df * std::pow(1.1, io.MouseWheel));
+    else d = kDistanceRange.clamp(d * std::pow(0.9, io.MouseWheel));
     state.cameras_dirty = true;
   }
   if (mapping && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {

@@ -18,6 +18,7 @@
 #include <optional>
 #include <string>
 
+#include "camera_ranges.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "raycam/view_setup.h"
@@ -169,10 +170,14 @@ void camera_section(AppState& state) {
   double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
   double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
   double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  bool changed = slider_double(tr("d_f focal distance###df"), df, 0.05, 20.0, "%.3f", true);
-  changed |= slider_double(tr("d distance to C###d"), d, 0.1, 200.0, "%.2f", true);
+  bool changed =
+      slider_double(tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high, "%.3f", true);
+  changed |=
+      slider_double(tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high, "%.2f", true);
   changed |= slider_degrees(tr("θ azimuth###theta"), theta, -180.0, 180.0);
-  if (!is_2d) changed |= slider_degrees(tr("φ polar angle###phi"), state.orbit3d.phi, 0.0, 180.0);
+  if (!is_2d)
+    changed |= slider_degrees(tr("φ polar angle###phi"), state.orbit3d.phi, glm::degrees(kPolarRange.low),
+                              glm::degrees(kPolarRange.high));
   const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
   changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
@@ -182,7 +187,7 @@ void camera_section(AppState& state) {
       changed = true;
     int n = state.max_pixels_2d;
     if (labelled(tr("N max pixels###N"), [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
-      state.max_pixels_2d = std::clamp(n, 1, 4096);
+      state.max_pixels_2d = std::clamp(n, 1, kMaxPixels2DInApp);
       changed = true;
     }
   } else {
@@ -191,8 +196,8 @@ void camera_section(AppState& state) {
       changed = true;
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
     if (labelled(tr("max size W, H###size"), [&](const char* l) { return ImGui::InputInt2(l, size); })) {
-      state.max_columns_3d = std::clamp(size[0], 1, 2048);
-      state.max_rows_3d = std::clamp(size[1], 1, 2048);
+      state.max_columns_3d = std::clamp(size[0], 1, kMaxSideInApp);
+      state.max_rows_3d = std::clamp(size[1], 1, kMaxSideInApp);
       changed = true;
     }
   }
@@ -608,16 +613,16 @@ void handle_shortcuts(AppState& state) {
   if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
   if (!is_2d && pressed(ImGuiKey_UpArrow))
-    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+    state.orbit3d.phi = std::max(kPolarRange.low, state.orbit3d.phi - kStep), changed = true;
   if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(glm::pi<double>(), state.orbit3d.phi + kStep), changed = true;
-  if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
-  if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
+    state.orbit3d.phi = std::min(kPolarRange.high, state.orbit3d.phi + kStep), changed = true;
+  if (pressed(ImGuiKey_PageUp)) df = std::min(kFocalRange.high, df * 1.1), changed = true;
+  if (pressed(ImGuiKey_PageDown)) df = std::max(kFocalRange.low, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();
   const int steps = construction_steps(state);
   for (ImWchar c : io.InputQueueCharacters) {
-    if (c == '+' || c == '=') d = std::max(0.1, d / 1.1), changed = true;
-    if (c == '-') d = std::min(200.0, d * 1.1), changed = true;
+    if (c == '+' || c == '=') d = std::max(kDistanceRange.low, d / 1.1), changed = true;
+    if (c == '-') d = std::min(kDistanceRange.high, d * 1.1), changed = true;
     int step = state.construction_step < 0 ? steps : state.construction_step;
     if (c == '[') step = std::max(0, step - 1);
     if (c == ']') step = std::min(steps, step + 1);
