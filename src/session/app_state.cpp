@@ -141,14 +141,14 @@ bool open_scene(AppState& state, const std::string& path) {
     state.pinned_pixel.reset();
     state.construction_step = -1;
     state.cameras_dirty = true;
-    std::snprintf(state.path_input, sizeof state.path_input, "%s", path.c_str());
-    state.save_path[0] = '\0';  // Save as starts empty: never the file just opened unless the user types it
+    state.path_input = path;
+    state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
     state.overwrite_pending.clear();
     set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
     // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
-    std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
+    state.path_input = state.scene_path;
     set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
     return false;
   }

@@ -114,17 +114,12 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
 }  // namespace
 
 // ---- theme ---------------------------------------------------------------------------------------------
-void apply_theme(const AppState& state) {
-  static bool applied_contrast = false;
-  static float applied_scale = 0.0f;
-  static const ImGuiContext* applied_to = nullptr;  // a new context starts with the default style
-  if (applied_to != ImGui::GetCurrentContext() || applied_scale != state.font_scale ||
-      applied_contrast != state.high_contrast) {
+void apply_theme(const AppState& state, AppliedTheme& applied) {
+  if (applied.context != ImGui::GetCurrentContext() || applied.font_scale != state.font_scale ||
+      applied.high_contrast != state.high_contrast) {
     ImGui::GetStyle() = make_style(state.high_contrast, state.font_scale);
     set_current_theme(state.high_contrast);
-    applied_contrast = state.high_contrast;
-    applied_scale = state.font_scale;
-    applied_to = ImGui::GetCurrentContext();
+    applied = {state.high_contrast, state.font_scale, ImGui::GetCurrentContext()};
   }
   set_language(state.language);
 }
@@ -194,7 +189,7 @@ void FrameRenderer::hover_image(AppState& state) {
 }
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
-  apply_theme(state);
+  apply_theme(state, applied_theme_);
   // 1. input
   handle_shortcuts(state);
   view_input(state);
@@ -242,7 +237,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (state.dimension == 3) observer_window(state, observer_area_, layout);
-  shown_.placement = shown_matrix();
+  shown_.placement = state.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
 
