@@ -171,6 +171,25 @@ void reset_camera(AppState& state);
 // built-in demo scene.
 void switch_dimension(AppState& state, int dimension);
 
+// ---- the camera on screen (2D or 3D): the one place that picks it ----
+// The orbit parameters the 2D and 3D cameras share (Number: double, or const double to read them).
+template <class Number>
+struct SharedOrbit {
+  Number& theta;
+  Number& d;
+  Number& df;
+};
+SharedOrbit<double> active_orbit(AppState& state);
+SharedOrbit<const double> active_orbit(const AppState& state);
+// The target C seen from above (3D: its x and y).
+glm::dvec2 active_target_xy(const AppState& state);
+// The longest side the camera may use: N in 2D, max(W, H) in 3D.
+int active_max_side(const AppState& state);
+// The objects of the scene on screen (circles or spheres).
+std::size_t active_object_count(const AppState& state);
+// The camera's current parameters as a scene file's preset.
+CameraPreset active_preset(const AppState& state);
+
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
 int construction_steps(const AppState& state);
 

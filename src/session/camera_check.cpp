@@ -70,7 +70,7 @@ void work(std::shared_ptr<CheckShared> shared) {
 SceneFile current_case(const AppState& state) {
   SceneFile file = state.file;
   file.dimension = state.dimension;
-  file.camera = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
+  file.camera = active_preset(state);
   return file;
 }
 }  // namespace
@@ -91,7 +91,7 @@ void CameraCheck::set_command(const std::string& command, bool is_file) {
 
 std::string CameraCheck::case_key(const AppState& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
-  const CameraPreset p = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
+  const CameraPreset p = active_preset(state);
   std::ostringstream key;
   key << std::hexfloat << state.dimension << '|' << state.scene_version << '|' << state.scene_path << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'

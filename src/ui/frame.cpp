@@ -83,11 +83,11 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
                       const OverheadMapping* mapping, const ObserverCamera* observer = nullptr) {
   ImGuiIO& io = ImGui::GetIO();
   const bool is_2d = state.dimension == 2;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  double& theta = active_orbit(state).theta;
   if (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) &&
       (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     if (drag_turns_around_target && mapping) {  // the camera follows the mouse around the target
-      const glm::dvec2 target = is_2d ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
+      const glm::dvec2 target = active_target_xy(state);
       const glm::dvec2 towards = mapping->to_world(io.MousePos) - target;
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
     } else if (observer) {  // the camera goes the way the mouse goes, seen by the observer
@@ -96,8 +96,8 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
     state.cameras_dirty = true;
   }
   if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
-    double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-    double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+    const SharedOrbit<double> orbit = active_orbit(state);
+    double &d = orbit.d, &df = orbit.df;
     if (io.KeyShift) df = kFocalRange.clamp(df * std::pow(1.1, io.MouseWheel));
     else d = kDistanceRange.clamp(d * std::pow(0.9, io.MouseWheel));
     state.cameras_dirty = true;

@@ -168,9 +168,8 @@ void camera_section(AppState& state) {
   if (mode_changed) switch_dimension(state, dimension);
 
   const bool is_2d = state.dimension == 2;
-  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
-  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  const SharedOrbit<double> orbit = active_orbit(state);
+  double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
   bool changed = slider_double(state, tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
                                "%.3f", true);
   changed |= slider_double(state, tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
@@ -179,7 +178,7 @@ void camera_section(AppState& state) {
   if (!is_2d)
     changed |= slider_degrees(state, tr("φ polar angle###phi"), state.orbit3d.phi,
                               glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
-  const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
+  const int max_size = active_max_side(state);
   changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     // The target's coordinates are doubles in the widget too, as the sliders'.
@@ -521,8 +520,7 @@ void status_counters(const AppState& state) {
   const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
   const CastStats& w = state.stats;
-  const double objects =
-      double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
+  const double objects = double(active_object_count(state));
   const double plain_tests = double(w.rays) * objects;
   ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
   ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
@@ -601,9 +599,8 @@ void handle_shortcuts(AppState& state) {
   }
   if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
   const bool is_2d = state.dimension == 2;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+  const SharedOrbit<double> orbit = active_orbit(state);
+  double &theta = orbit.theta, &d = orbit.d, &df = orbit.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
   const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
