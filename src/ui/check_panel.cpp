@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "check_texts.h"
 #include "panels.h"
 #include "text.h"
 #include "theme.h"
@@ -39,8 +40,11 @@ void check_section(CameraCheck& check, double now) {
         colour, "%s",
         trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels).c_str());
   else
-    ImGui::TextColored(colour, "%s",
-                       trf("%s: %s", tr(check::status_name(r.status)), r.detail.c_str()).c_str());
+    ImGui::TextColored(
+        colour, "%s",
+        trf("%s: %s", check::text(language_code(current_language()), check::status_name(r.status)),
+            r.detail.c_str())
+            .c_str());
   if (!progress.current) ImGui::TextUnformatted(tr("(for the camera before your last change)"));
   if (!v.sandboxed && !request.is_file)
     ImGui::TextUnformatted(tr("no sandbox: bubblewrap is not available here"));
