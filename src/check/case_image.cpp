@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 #include <optional>
 #include <stdexcept>
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
+#include "raycam/view_setup.h"
 
 namespace raycam::check {
 
@@ -82,9 +82,7 @@ class CaseCamera {
     const std::vector<double>& target = *preset.target;
     if (file.dimension == 2) {
       if (target.size() != 2) throw std::invalid_argument("camera.target: expected 2 components in 2D");
-      camera2d_.emplace((*preset.size).at(0));
-      camera2d_->set_res(*preset.res);
-      camera2d_->set_orbit({{target[0], target[1]}, *preset.d, glm::radians(*preset.theta_deg), *preset.df});
+      camera2d_.emplace(camera2d_from_preset(preset));
       camera2d_->set_mistakes(mistakes);
       columns_ = camera2d_->pixel_count();
       md_ = row_major<3>(camera2d_->world_from_camera());
@@ -92,13 +90,7 @@ class CaseCamera {
     }
     if (target.size() != 3 || preset.size->size() != 2)
       throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
-    camera3d_.emplace((*preset.size)[0], (*preset.size)[1]);
-    camera3d_->set_res(*preset.res);
-    camera3d_->set_orbit({{target[0], target[1], target[2]},
-                          *preset.d,
-                          glm::radians(*preset.theta_deg),
-                          glm::radians(*preset.phi_deg),
-                          *preset.df});
+    camera3d_.emplace(camera3d_from_preset(preset));
     camera3d_->set_mistakes(mistakes);
     rows_ = camera3d_->rows();
     columns_ = camera3d_->columns();
@@ -154,7 +146,7 @@ bool case_reproduces(const SceneFile& file, const ClassicMistakes& mistakes, Int
   const std::size_t stride = pixels % 7919 != 0 ? 7919 : 1;
   for (std::size_t n = 0, i = 0; n < pixels; ++n, i = (i + stride) % pixels) {
     const Verdict v = camera.at(i);
-    if (!v.ambiguous && v.id != ids[i]) return false;
+    if (pixel_is_wrong(v.ambiguous, v.id, ids[i])) return false;
   }
   return true;
 }

@@ -48,6 +48,12 @@ bool case_reproduces(const SceneFile& file, const ClassicMistakes& mistakes, Int
 // M_d equal up to rounding: |a - b| ≤ 1e-6·max(1, max |b|) entry by entry.
 bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected);
 
+// The pass rule at one pixel: an answer is wrong there when its id differs from the reference's and the
+// reference's centre ray is not ambiguous (the only place this rule is written).
+inline bool pixel_is_wrong(bool reference_ambiguous, int reference_id, int answer_id) {
+  return !reference_ambiguous && reference_id != answer_id;
+}
+
 // Number of objects in the case (ids run from -1 to objects - 1).
 int object_count(const SceneFile& file);
 

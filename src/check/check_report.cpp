@@ -194,7 +194,10 @@ std::vector<std::string> write_difference_images(const std::string& dir, const s
         const int got = inside ? answer.ids[std::size_t(y) * answer.columns + x] : -2;
         Rgb8 difference = colour_of(file, ref.ids[p]);
         difference = {std::uint8_t(difference.r / 3), std::uint8_t(difference.g / 3), std::uint8_t(difference.b / 3)};
-        if (got != ref.ids[p]) difference = ref.ambiguous[p] ? kAmbiguous : kWrong;
+        if (pixel_is_wrong(ref.ambiguous[p], ref.ids[p], got))
+          difference = kWrong;
+        else if (got != ref.ids[p])
+          difference = kAmbiguous;
         put(x_difference + drawn, y, difference);
       }
     for (int y = 0; y < answer.rows; ++y)

@@ -87,23 +87,28 @@ CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& refere
   return result;
 }
 
+RunResult read_answer_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  RunResult run;
+  if (!in) {
+    run.end = RunResult::End::could_not_start;
+    run.error = path + ": cannot open the answer file";
+    return run;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  run.end = RunResult::End::exited;
+  run.out = text.str();
+  return run;
+}
+
 StudentReport check_answer_files(const std::string& dir, const std::vector<CheckCase>& cases,
                                  const std::vector<CaseImage>& references) {
   StudentReport report;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const int number = int(i) + 1;
     const std::string path = dir + "/" + answer_file_name(number, int(cases.size()));
-    std::ifstream in(path, std::ios::binary);
-    RunResult run;
-    if (!in) {
-      run.end = RunResult::End::could_not_start;
-      run.error = path + ": cannot open the answer file";
-    } else {
-      std::ostringstream text;
-      text << in.rdbuf();
-      run.end = RunResult::End::exited;
-      run.out = text.str();
-    }
+    const RunResult run = read_answer_file(path);
     report.results.push_back(result_of_run(number, cases[i], references[i], run));
     if (run.end == RunResult::End::could_not_start) report.results.back().status = CaseStatus::bad_output;
   }

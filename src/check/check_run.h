@@ -32,6 +32,10 @@ CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& refere
 std::string case_file_name(int number, int count);
 std::string answer_file_name(int number, int count);
 
+// An answer file read as if a program had printed it (could_not_start, with a message naming the file,
+// when it cannot be read).
+RunResult read_answer_file(const std::string& path);
+
 // Grades DIR/answer_NN.json for every case (a missing or unreadable file is a bad output).
 StudentReport check_answer_files(const std::string& dir, const std::vector<CheckCase>& cases,
                                  const std::vector<CaseImage>& references);

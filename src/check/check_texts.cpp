@@ -1,19 +1,13 @@
 #include "check_texts.h"
 
 #include <cstdarg>
-#include <cstdlib>
-#include <cstring>
-#include <stdexcept>
 #include <vector>
+
+#include "raycam/language.h"
 
 namespace raycam::check {
 
 namespace {
-struct Translation {
-  const char* en;
-  const char* fr;
-};
-
 // French in the handout's words. Keep the printf conversions identical in both columns.
 const std::vector<Translation>& table() {
   static const std::vector<Translation> entries = {
@@ -56,34 +50,20 @@ const std::vector<Translation>& table() {
 }  // namespace
 
 const char* text(const std::string& lang, const char* english) {
-  if (lang != "fr") return english;
-  for (const Translation& t : table())
-    if (std::strcmp(t.en, english) == 0) return t.fr;
-  return english;
+  static const TranslationTable french(table());
+  return french.lookup(lang == "fr" ? Language::fr : Language::en, english);
 }
 
 std::string textf(const std::string& lang, const char* english_format, ...) {
-  const char* format = text(lang, english_format);
   va_list args;
   va_start(args, english_format);
-  va_list copy;
-  va_copy(copy, args);
-  const int size = std::vsnprintf(nullptr, 0, format, copy);
-  va_end(copy);
-  std::string out(std::size_t(std::max(size, 0)), '\0');
-  if (size > 0) std::vsnprintf(out.data(), out.size() + 1, format, args);
+  std::string out = format_text(text(lang, english_format), args);
   va_end(args);
   return out;
 }
 
 std::string check_language(const std::string& flag_value) {
-  if (flag_value == "fr" || flag_value == "en") return flag_value;
-  if (!flag_value.empty()) throw std::invalid_argument("--lang: expected fr or en, got '" + flag_value + "'");
-  for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) {
-    const char* value = std::getenv(name);
-    if (value && *value) return std::strncmp(value, "fr", 2) == 0 ? "fr" : "en";
-  }
-  return "en";
+  return language_code(flag_value.empty() ? language_from_environment() : parse_language_flag(flag_value));
 }
 
 }  // namespace raycam::check

@@ -1,7 +1,7 @@
 // The check command's visible text in English or French (the language is per call: --batch grades many
-// students on many threads). Same shape as the window's table (src/ui/text.h), which raycam-cli cannot
-// link (it lives in the ImGui library): the English text is the key, the French in check_texts.cpp. The
-// mistakes' own explanations live beside them in the core (classic_mistakes.cpp).
+// students on many threads). The machinery is the window's (raycam/language.h): the English text is the
+// key, the French in check_texts.cpp's own table. The mistakes' own explanations live beside them in the
+// core (classic_mistakes.cpp).
 #pragma once
 
 #include <string>

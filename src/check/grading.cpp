@@ -56,6 +56,14 @@ std::vector<int> depth_map(const CaseImage& reference) {
 }
 }  // namespace
 
+std::vector<std::uint8_t> wrong_pixel_mask(const CaseImage& reference, const Answer& answer) {
+  std::vector<std::uint8_t> wrong(reference.pixels(), 0);
+  if (answer.rows != reference.rows || answer.columns != reference.columns) return wrong;
+  for (std::size_t i = 0; i < reference.pixels(); ++i)
+    wrong[i] = pixel_is_wrong(reference.ambiguous[i], reference.ids[i], answer.ids[i]);
+  return wrong;
+}
+
 CaseResult grade_answer(const CaseImage& reference, const ParsedAnswer& parsed) {
   CaseResult result;
   result.dimension = reference.dimension;
@@ -72,7 +80,7 @@ CaseResult grade_answer(const CaseImage& reference, const ParsedAnswer& parsed) 
   if (answer.md) result.md = md_matches(*answer.md, reference.md) ? "match" : "differs";
   const std::vector<int> depths = depth_map(reference);
   for (std::size_t i = 0; i < reference.pixels(); ++i) {
-    if (reference.ambiguous[i] || reference.ids[i] == answer.ids[i]) continue;
+    if (!pixel_is_wrong(reference.ambiguous[i], reference.ids[i], answer.ids[i])) continue;
     ++result.wrong_pixels;
     const int depth = depths[i];
     if (!result.worst || depth > result.worst->depth)

@@ -9,6 +9,7 @@
 // mistakes before pairs, then the table's order (so in 3D upside_down comes before mirrored+rows_flipped).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ struct CaseResult {
   std::optional<Answer> answer;           // kept for the diagnosis and the difference images
   std::vector<std::string> explained_by;  // explanation IDs reproducing this case
 };
+
+// 1 at each pixel where `answer` is wrong (pixel_is_wrong), in protocol order; all 0 when the answer is not the
+// reference's size.
+std::vector<std::uint8_t> wrong_pixel_mask(const CaseImage& reference, const Answer& answer);
 
 // The verdict on an answer (the program exited 0 and printed `parsed`).
 CaseResult grade_answer(const CaseImage& reference, const ParsedAnswer& parsed);

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <limits>
 
+#include "raycam/camera2d.h"  // raster_from_screen
 #include "raycam/intersect.h"
 #include "raycam/parallel.h"
 
@@ -44,13 +45,13 @@ PixelRect pixels_of(const Sphere& sphere, const SphereLayerView& view) {
     }
   if (behind == 4) return PixelRect{};
   if (behind > 0) return all;
-  // NDC x ↦ pixel index: the centre of pixel i is at i.
+  // NDC x ↦ pixel index: the core's raster coordinate, where pixel i's centre is i + 1/2.
   constexpr double kSlack = 1e-3;  // of a pixel, far above the rounding here
   const auto first = [](double ndc, int count) {
-    return std::max(0, int(std::ceil((ndc + 1.0) * 0.5 * count - 0.5 - kSlack)));
+    return std::max(0, int(std::ceil(raster_from_screen(ndc, count) - 0.5 - kSlack)));
   };
   const auto last = [](double ndc, int count) {
-    return std::min(count - 1, int(std::floor((ndc + 1.0) * 0.5 * count - 0.5 + kSlack)));
+    return std::min(count - 1, int(std::floor(raster_from_screen(ndc, count) - 0.5 + kSlack)));
   };
   if (!(high_x >= -2.0 && low_x <= 2.0 && high_y >= -2.0 && low_y <= 2.0))
     return PixelRect{};  // off screen (or NaN)

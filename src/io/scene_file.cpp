@@ -11,7 +11,6 @@
 #include <stdexcept>
 
 #include "raycam/limits.h"
-#include "validation.h"
 
 namespace raycam {
 

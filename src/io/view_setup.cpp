@@ -52,34 +52,49 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     if (preset.size && (*preset.size)[0] > kMaxPixels2D)
       throw std::invalid_argument("--size: expected N in [1, " + std::to_string(kMaxPixels2D) +
                                   "] for a 2D scene");
-    setup.camera2d = Camera2D(preset.size ? (*preset.size)[0] : kDefaultSize2D);
-    Orbit2D orbit;
-    if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1]};
-    if (preset.d) orbit.d = *preset.d;
-    if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
-    if (preset.df) orbit.df = *preset.df;
-    setup.camera2d.set_orbit(orbit);
-    if (preset.res) setup.camera2d.set_res(*preset.res);
+    setup.camera2d = camera2d_from_preset(preset);
   } else {
-    int columns = kDefaultSize3D, rows = kDefaultSize3D;
-    if (preset.size) {
-      if (preset.size->size() == 1 && (*preset.size)[0] > kMaxSide3D)
-        throw std::invalid_argument("--size: expected N or WxH with sides in [1, " +
-                                    std::to_string(kMaxSide3D) + "]");
-      columns = (*preset.size)[0];
-      rows = preset.size->size() == 2 ? (*preset.size)[1] : columns;
-    }
-    setup.camera3d = Camera3D(columns, rows);
-    Orbit3D orbit;
-    if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1], (*preset.target)[2]};
-    if (preset.d) orbit.d = *preset.d;
-    if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
-    if (preset.phi_deg) orbit.phi = glm::radians(*preset.phi_deg);
-    if (preset.df) orbit.df = *preset.df;
-    setup.camera3d.set_orbit(orbit);
-    if (preset.res) setup.camera3d.set_res(*preset.res);
+    if (preset.size && preset.size->size() == 1 && (*preset.size)[0] > kMaxSide3D)
+      throw std::invalid_argument("--size: expected N or WxH with sides in [1, " + std::to_string(kMaxSide3D) +
+                                  "]");
+    setup.camera3d = camera3d_from_preset(preset);
   }
   return setup;
+}
+
+Camera2D camera2d_from_preset(const CameraPreset& preset) {
+  if ((preset.target && preset.target->size() != 2) || (preset.size && preset.size->size() != 1))
+    throw std::invalid_argument("camera: expected a 2-component target and size [N] in 2D");
+  Camera2D camera(preset.size ? (*preset.size)[0] : kDefaultSize2D);
+  Orbit2D orbit;
+  if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1]};
+  if (preset.d) orbit.d = *preset.d;
+  if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
+  if (preset.df) orbit.df = *preset.df;
+  camera.set_orbit(orbit);
+  if (preset.res) camera.set_res(*preset.res);
+  return camera;
+}
+
+Camera3D camera3d_from_preset(const CameraPreset& preset) {
+  if ((preset.target && preset.target->size() != 3) ||
+      (preset.size && preset.size->size() != 1 && preset.size->size() != 2))
+    throw std::invalid_argument("camera: expected a 3-component target and size [N] or [columns, rows] in 3D");
+  int columns = kDefaultSize3D, rows = kDefaultSize3D;
+  if (preset.size) {
+    columns = (*preset.size)[0];
+    rows = preset.size->size() == 2 ? (*preset.size)[1] : columns;
+  }
+  Camera3D camera(columns, rows);
+  Orbit3D orbit;
+  if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1], (*preset.target)[2]};
+  if (preset.d) orbit.d = *preset.d;
+  if (preset.theta_deg) orbit.theta = glm::radians(*preset.theta_deg);
+  if (preset.phi_deg) orbit.phi = glm::radians(*preset.phi_deg);
+  if (preset.df) orbit.df = *preset.df;
+  camera.set_orbit(orbit);
+  if (preset.res) camera.set_res(*preset.res);
+  return camera;
 }
 
 CameraPreset preset_of(const Camera2D& camera) {

@@ -59,7 +59,7 @@ AppState make_app_state(const AppOptions& options) {
                                   "x" + std::to_string(rows) + " image");
     state.pinned_pixel = options.inspect;
   }
-  if (!state.scene_path.empty()) std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
+  if (!state.scene_path.empty()) state.path_input = state.scene_path;
   return state;
 }
 

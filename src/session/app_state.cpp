@@ -1,5 +1,6 @@
 #include "app_state.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -85,7 +86,8 @@ bool recast_if_needed(AppState& state, bool interacting) {
   if (state.refine_pending) {  // fewer rays in proportion: res scales both sides in 3D
     const double factor = is_2d ? kInteractiveBudgetMs / predicted_ms : std::sqrt(kInteractiveBudgetMs / predicted_ms);
     if (is_2d) state.camera2d.set_res(std::max(state.res * factor, 1.0 / state.max_pixels_2d));
-    else state.camera3d.set_res(std::max(state.res * factor, 1.0 / std::max(state.max_columns_3d, state.max_rows_3d)));
+    else
+      state.camera3d.set_res(std::max(state.res * factor, 1.0 / active_max_side(state)));
   }
   const auto start = std::chrono::steady_clock::now();
   bool cast = false;
@@ -95,7 +97,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
     try {
       state.map = is_2d ? render_with_accuracy(state.camera2d, state.file.scene2d, knobs)
                         : render_with_accuracy(state.camera3d, state.file.scene3d, knobs);
-      const long long objects = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
+      const long long objects = active_object_count(state);
       state.stats = CastStats{static_cast<long long>(rays),
                               static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
       cast = true;
@@ -141,14 +143,14 @@ bool open_scene(AppState& state, const std::string& path) {
     state.pinned_pixel.reset();
     state.construction_step = -1;
     state.cameras_dirty = true;
-    std::snprintf(state.path_input, sizeof state.path_input, "%s", path.c_str());
-    state.save_path[0] = '\0';  // Save as starts empty: never the file just opened unless the user types it
+    state.path_input = path;
+    state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
     state.overwrite_pending.clear();
     set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
     // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
-    std::snprintf(state.path_input, sizeof state.path_input, "%s", state.scene_path.c_str());
+    state.path_input = state.scene_path;
     set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
     return false;
   }
@@ -158,9 +160,9 @@ bool save_preset(AppState& state, const std::string& path) {
   try {
     place_cameras(state);
     SceneFile file = state.file;
-    file.camera = state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
+    file.camera = active_preset(state);
     if (state.arccos_route) {  // save what the student set, not what the mistake produced
-      file.camera.theta_deg = glm::degrees(state.dimension == 2 ? state.orbit2d.theta : state.orbit3d.theta);
+      file.camera.theta_deg = glm::degrees(active_orbit(state).theta);
       if (state.dimension == 3) file.camera.phi_deg = glm::degrees(state.orbit3d.phi);
     }
     save_scene_file(file, path);
@@ -228,6 +230,32 @@ void switch_dimension(AppState& state, int dimension) {
   state.pinned_pixel.reset();
   ++state.scene_version;
   state.cameras_dirty = true;
+}
+
+SharedOrbit<double> active_orbit(AppState& state) {
+  if (state.dimension == 2) return {state.orbit2d.theta, state.orbit2d.d, state.orbit2d.df};
+  return {state.orbit3d.theta, state.orbit3d.d, state.orbit3d.df};
+}
+
+SharedOrbit<const double> active_orbit(const AppState& state) {
+  if (state.dimension == 2) return {state.orbit2d.theta, state.orbit2d.d, state.orbit2d.df};
+  return {state.orbit3d.theta, state.orbit3d.d, state.orbit3d.df};
+}
+
+glm::dvec2 active_target_xy(const AppState& state) {
+  return state.dimension == 2 ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
+}
+
+int active_max_side(const AppState& state) {
+  return state.dimension == 2 ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
+}
+
+std::size_t active_object_count(const AppState& state) {
+  return state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
+}
+
+CameraPreset active_preset(const AppState& state) {
+  return state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
 }
 
 int construction_steps(const AppState& state) {

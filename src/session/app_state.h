@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/mat4x4.hpp>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -17,6 +19,11 @@
 #include "text.h"
 
 namespace raycam::ui {
+
+// A widget's rectangle on screen, in pixels: (x0, y0) its top-left corner, (x1, y1) its bottom-right.
+struct WidgetRect {
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
 
 struct PixelIndex {
   int row = 0;
@@ -103,16 +110,23 @@ struct AppState {
   std::string message;
   bool message_is_error = false;
   MessageSource message_source = MessageSource::general;
+  long long message_shown_frame = -1;  // the frame in which a panel section showed it (else the frame does)
+
+  // ---- what the panels showed (read by the frame after them) ----
+  glm::dmat4 shown_matrix{1.0};      // the last product the construction table showed (2D: its 3×3 top-left)
+  float font_scale_editing = -1.0f;  // the font scale slider's value while dragged (applied on release)
+  // A test hook, null in the app: where each labelled widget "###id" was last drawn (screen corners).
+  std::map<std::string, WidgetRect>* widget_rects = nullptr;
 
   // ---- Check my camera (check_panel.h) ----
   std::string check_command;  // --check CMD: handed to the panel at the next frame, then cleared
   bool check_waiting = false;  // a verdict is on its way: the window keeps drawing (frame_needs_redraw)
 
   // ---- text inputs (Open and Save as have their own paths) ----
-  char path_input[512] = {};      // Open
-  char save_path[512] = {};       // Save as: never filled with the opened file's path
+  std::string path_input;         // Open
+  std::string save_path;          // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
-  char export_path[512] = "raycam-colour-map.png";
+  std::string export_path = "raycam-colour-map.png";
   std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
 };
 
@@ -157,6 +171,25 @@ void reset_camera(AppState& state);
 // Switches between the 2D and 3D cameras; a scene file holds one kind of scene, so the other kind is the
 // built-in demo scene.
 void switch_dimension(AppState& state, int dimension);
+
+// ---- the camera on screen (2D or 3D): the one place that picks it ----
+// The orbit parameters the 2D and 3D cameras share (Number: double, or const double to read them).
+template <class Number>
+struct SharedOrbit {
+  Number& theta;
+  Number& d;
+  Number& df;
+};
+SharedOrbit<double> active_orbit(AppState& state);
+SharedOrbit<const double> active_orbit(const AppState& state);
+// The target C seen from above (3D: its x and y).
+glm::dvec2 active_target_xy(const AppState& state);
+// The longest side the camera may use: N in 2D, max(W, H) in 3D.
+int active_max_side(const AppState& state);
+// The objects of the scene on screen (circles or spheres).
+std::size_t active_object_count(const AppState& state);
+// The camera's current parameters as a scene file's preset.
+CameraPreset active_preset(const AppState& state);
 
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
 int construction_steps(const AppState& state);

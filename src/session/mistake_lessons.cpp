@@ -13,11 +13,9 @@
 namespace raycam::ui {
 
 namespace {
-double& focal(AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
-double focal(const AppState& state) { return state.dimension == 2 ? state.orbit2d.df : state.orbit3d.df; }
-int max_side(const AppState& state) {
-  return state.dimension == 2 ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
-}
+double& focal(AppState& state) { return active_orbit(state).df; }
+double focal(const AppState& state) { return active_orbit(state).df; }
+int max_side(const AppState& state) { return active_max_side(state); }
 
 // ---- pixel edges ---------------------------------------------------------------------------------------
 std::string pixel_edges_does(const AppState& state) {

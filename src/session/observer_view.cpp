@@ -7,6 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
+#include "camera_ranges.h"
+
 namespace raycam::ui {
 
 namespace {
@@ -61,7 +63,7 @@ void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, do
   const double theta_sign = glm::dot(along_theta, observer.right) >= 0.0 ? 1.0 : -1.0;
   orbit.theta += theta_sign * dx * kRadiansPerPixel;
   // Screen y grows downwards; z = d·cos φ grows as φ decreases: dragging up (dy < 0) lowers φ.
-  orbit.phi = std::clamp(orbit.phi + dy * kRadiansPerPixel, 0.0, glm::pi<double>());
+  orbit.phi = kPolarRange.clamp(orbit.phi + dy * kRadiansPerPixel);
   state.cameras_dirty = true;
 }
 

@@ -15,14 +15,17 @@
 #include <string_view>
 #include <vector>
 
+#include "raycam/language.h"
+
 namespace raycam::ui {
 
-enum class Language { en, fr };
-
-struct Translation {
-  const char* en;
-  const char* fr;
-};
+// The language machinery is raycam/language.h's (shared with the check command); its names, here too.
+using raycam::Language;
+using raycam::language_code;
+using raycam::language_from_code;
+using raycam::language_from_environment;
+using raycam::parse_language_flag;
+using raycam::Translation;
 
 // The text in the current language. `english` must be a key of the table (the test enforces it); a
 // missing key is shown as it is, in English.
@@ -39,15 +42,6 @@ constexpr const char* tr_later(const char* english) { return english; }
 
 void set_language(Language language);
 Language current_language();
-
-// "fr", "fr_FR.UTF-8", "en_GB:en" ... → the language, or nothing for another language or "C"/"POSIX".
-std::optional<Language> language_from_code(std::string_view code);
-// The first of LANGUAGE, LC_ALL, LC_MESSAGES, LANG that is set and not empty decides (as gettext does);
-// French if it names French, English otherwise.
-Language language_from_environment();
-// The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
-Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
-const char* language_code(Language language);  // "en", "fr"
 
 // The whole table (for the tests and for the font's glyph ranges).
 const std::vector<Translation>& translations();

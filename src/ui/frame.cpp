@@ -16,6 +16,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "camera_ranges.h"
 #include "construction_view.h"
 #include "fonts.h"
 #include "inspection.h"
@@ -82,11 +83,11 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
                       const OverheadMapping* mapping, const ObserverCamera* observer = nullptr) {
   ImGuiIO& io = ImGui::GetIO();
   const bool is_2d = state.dimension == 2;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
+  double& theta = active_orbit(state).theta;
   if (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) &&
       (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
     if (drag_turns_around_target && mapping) {  // the camera follows the mouse around the target
-      const glm::dvec2 target = is_2d ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
+      const glm::dvec2 target = active_target_xy(state);
       const glm::dvec2 towards = mapping->to_world(io.MousePos) - target;
       if (glm::length(towards) > 0) theta = std::atan2(towards.y, towards.x);
     } else if (observer) {  // the camera goes the way the mouse goes, seen by the observer
@@ -95,10 +96,10 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
     state.cameras_dirty = true;
   }
   if (hovered && io.MouseWheel != 0.0f && !io.KeyCtrl) {
-    double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-    double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
-    if (io.KeyShift) df = std::clamp(df * std::pow(1.1, io.MouseWheel), 0.05, 20.0);
-    else d = std::clamp(d * std::pow(0.9, io.MouseWheel), 0.1, 200.0);
+    const SharedOrbit<double> orbit = active_orbit(state);
+    double &d = orbit.d, &df = orbit.df;
+    if (io.KeyShift) df = kFocalRange.clamp(df * std::pow(1.1, io.MouseWheel));
+    else d = kDistanceRange.clamp(d * std::pow(0.9, io.MouseWheel));
     state.cameras_dirty = true;
   }
   if (mapping && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
@@ -113,17 +114,12 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
 }  // namespace
 
 // ---- theme ---------------------------------------------------------------------------------------------
-void apply_theme(const AppState& state) {
-  static bool applied_contrast = false;
-  static float applied_scale = 0.0f;
-  static const ImGuiContext* applied_to = nullptr;  // a new context starts with the default style
-  if (applied_to != ImGui::GetCurrentContext() || applied_scale != state.font_scale ||
-      applied_contrast != state.high_contrast) {
+void apply_theme(const AppState& state, AppliedTheme& applied) {
+  if (applied.context != ImGui::GetCurrentContext() || applied.font_scale != state.font_scale ||
+      applied.high_contrast != state.high_contrast) {
     ImGui::GetStyle() = make_style(state.high_contrast, state.font_scale);
     set_current_theme(state.high_contrast);
-    applied_contrast = state.high_contrast;
-    applied_scale = state.font_scale;
-    applied_to = ImGui::GetCurrentContext();
+    applied = {state.high_contrast, state.font_scale, ImGui::GetCurrentContext()};
   }
   set_language(state.language);
 }
@@ -193,7 +189,7 @@ void FrameRenderer::hover_image(AppState& state) {
 }
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
-  apply_theme(state);
+  apply_theme(state, applied_theme_);
   // 1. input
   handle_shortcuts(state);
   view_input(state);
@@ -222,7 +218,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_.section(state, ImGui::GetTime());
+    check_section(check_, ImGui::GetTime());
   }
   ImGui::End();
   if (state.map_version != uploaded_map_version_) {
@@ -241,7 +237,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (state.dimension == 3) observer_window(state, observer_area_, layout);
-  shown_.placement = shown_matrix();
+  shown_.placement = state.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
 
@@ -300,8 +296,8 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     // A frame just outside the image, so that where the background ends shows against the window.
     ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
                                         0, 0, 1.0f);
-    check_.overlay(state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
-                   high.y);                        // the student's wrong pixels
+    check_overlay(check_, state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
+                  high.y);                         // the student's wrong pixels
     if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};

@@ -45,6 +45,13 @@ struct FrameLayout {
   ShownValues shown;
 };
 
+// The theme and font scale last applied to an ImGui context's style.
+struct AppliedTheme {
+  bool high_contrast = false;
+  float font_scale = 0.0f;
+  const ImGuiContext* context = nullptr;  // a new context starts with the default style
+};
+
 class FrameRenderer {
  public:
   FrameRenderer();  // needs a current GL 3.3 context and an ImGui context
@@ -73,13 +80,14 @@ class FrameRenderer {
   ShownValues shown_;
   ObserverCamera observer_view_;  // last frame's, for the mouse
   CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
+  AppliedTheme applied_theme_;
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
 // the state's font scale when it changed (fonts.h). Both hosts (GLFW window, OSMesa) call it every frame.
 void prepare_frame(const AppState& state);
 
-// Dark or high-contrast theme and the font scale (lecture mode).
-void apply_theme(const AppState& state);
+// Dark or high-contrast theme and the font scale (lecture mode), when they differ from `applied`.
+void apply_theme(const AppState& state, AppliedTheme& applied);
 
 }  // namespace raycam::ui

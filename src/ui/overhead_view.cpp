@@ -21,7 +21,8 @@ glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
 glm::dvec2 xy(glm::dvec2 p) { return p; }
 
 double camera_reach(const AppState& state) {
-  return state.dimension == 2 ? state.orbit2d.d + state.orbit2d.df : state.orbit3d.d + state.orbit3d.df;
+  const auto orbit = active_orbit(state);
+  return orbit.d + orbit.df;
 }
 
 // The camera's eye and screen corners in the world (2D: the two screen ends), seen from above.
@@ -41,7 +42,7 @@ void fit_overhead(AppState& state) {
                                        ? camera_outline(state.camera2d.world_from_camera(), &eye)
                                        : camera_outline(state.camera3d.world_from_camera(), &eye);
   points.push_back(eye);
-  const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
+  const glm::dvec2 target = active_target_xy(state);
   points.push_back(target);
   // Objects near the action count; a huge "ground" sphere or a far outlier would shrink everything else.
   const double reach = 2.5 * camera_reach(state);
@@ -300,7 +301,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
     else
       draw_construction_3d(draw, m, construction_step(state.camera3d.placement(), state.construction_step));
   }
-  const glm::dvec2 target = state.dimension == 2 ? state.orbit2d.target : xy(state.orbit3d.target);
+  const glm::dvec2 target = active_target_xy(state);
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
 
   if (inspected) {

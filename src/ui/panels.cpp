@@ -1,11 +1,10 @@
 // Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
 // status line · help · shortcuts. Every visible string goes through tr()/trf() (text.h).
-#include "raycam/image_files.h"
 #include "panels.h"
 
 #include <imgui.h>
-#include <imgui_stdlib.h>  // InputText on a std::string
 #include <imgui_internal.h>  // ImGui::ClearActiveID: Tab leaves a text field
+#include <imgui_stdlib.h>    // InputText on a std::string: a path is never cut
 
 #include <algorithm>
 #include <array>
@@ -19,9 +18,11 @@
 #include <optional>
 #include <string>
 
+#include "camera_ranges.h"
 #include "figure_export.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
+#include "raycam/image_files.h"
 #include "raycam/view_setup.h"
 #include "text.h"
 #include "theme.h"
@@ -29,15 +30,12 @@
 namespace raycam::ui {
 
 namespace {
-int g_tab_key = -1;                    // the host's key index of Tab, taken away from ImGui (take_tab_key)
-long long g_message_shown_frame = -1;  // the frame in which a section showed the message
-glm::dmat4 g_shown_matrix{1.0};        // the last product the construction table showed
-std::map<std::string, std::pair<ImVec2, ImVec2>> g_widget_rects;  // by "###id": where tests click
+int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take_tab_key)
 
 // The label beside the widget when both fit, else on its own line above a full-width widget: a label is
 // never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
 template <class Widget>
-bool labelled(const char* label, Widget widget) {
+bool labelled(const AppState& state, const char* label, Widget widget) {
   const std::string text = label;
   const std::size_t hidden = text.find("##");
   const std::string shown = text.substr(0, hidden);
@@ -55,15 +53,18 @@ bool labelled(const char* label, Widget widget) {
     ImGui::SetNextItemWidth(avail);
     changed = widget(id.c_str());
   }
-  g_widget_rects[id] = {ImGui::GetItemRectMin(), ImGui::GetItemRectMax()};
+  if (state.widget_rects) {
+    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+    (*state.widget_rects)[id] = {low.x, low.y, high.x, high.y};
+  }
   return changed;
 }
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
-bool slider_double(const char* label, double& value, double lo, double hi, const char* format,
-                   bool logarithmic = false) {
+bool slider_double(const AppState& state, const char* label, double& value, double lo, double hi,
+                   const char* format, bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-  return labelled(label, [&](const char* l) {
+  return labelled(state, label, [&](const char* l) {
     return ImGui::SliderScalar(l, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
   });
 }
@@ -76,10 +77,10 @@ bool drag_doubles(const char* label, double* values, int count) {
                             ImGuiSliderFlags_AlwaysClamp);
 }
 
-bool slider_degrees(const char* label, double& radians, double lo_deg, double hi_deg) {
+bool slider_degrees(const AppState& state, const char* label, double& radians, double lo_deg, double hi_deg) {
   double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
-  if (!slider_double(label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
+  if (!slider_double(state, label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
   radians = glm::radians(degrees);
   return true;
 }
@@ -168,33 +169,38 @@ void camera_section(AppState& state) {
   if (mode_changed) switch_dimension(state, dimension);
 
   const bool is_2d = state.dimension == 2;
-  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
-  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  bool changed = slider_double(tr("d_f focal distance###df"), df, 0.05, 20.0, "%.3f", true);
-  changed |= slider_double(tr("d distance to C###d"), d, 0.1, 200.0, "%.2f", true);
-  changed |= slider_degrees(tr("θ azimuth###theta"), theta, -180.0, 180.0);
-  if (!is_2d) changed |= slider_degrees(tr("φ polar angle###phi"), state.orbit3d.phi, 0.0, 180.0);
-  const int max_size = is_2d ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
-  changed |= slider_double(tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+  const SharedOrbit<double> orbit = active_orbit(state);
+  double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
+  bool changed = slider_double(state, tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+                               "%.3f", true);
+  changed |= slider_double(state, tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+                           "%.2f", true);
+  changed |= slider_degrees(state, tr("θ azimuth###theta"), theta, -180.0, 180.0);
+  if (!is_2d)
+    changed |= slider_degrees(state, tr("φ polar angle###phi"), state.orbit3d.phi,
+                              glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+  const int max_size = active_max_side(state);
+  changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     // The target's coordinates are doubles in the widget too, as the sliders'.
-    if (labelled(tr("target C###target"),
+    if (labelled(state, tr("target C###target"),
                  [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit2d.target), 2); }))
       changed = true;
     int n = state.max_pixels_2d;
-    if (labelled(tr("N max pixels###N"), [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
-      state.max_pixels_2d = std::clamp(n, 1, 4096);
+    if (labelled(state, tr("N max pixels###N"),
+                 [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
+      state.max_pixels_2d = std::clamp(n, 1, kMaxPixels2DInApp);
       changed = true;
     }
   } else {
-    if (labelled(tr("target C###target"),
+    if (labelled(state, tr("target C###target"),
                  [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit3d.target), 3); }))
       changed = true;
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
-    if (labelled(tr("max size W, H###size"), [&](const char* l) { return ImGui::InputInt2(l, size); })) {
-      state.max_columns_3d = std::clamp(size[0], 1, 2048);
-      state.max_rows_3d = std::clamp(size[1], 1, 2048);
+    if (labelled(state, tr("max size W, H###size"),
+                 [&](const char* l) { return ImGui::InputInt2(l, size); })) {
+      state.max_columns_3d = std::clamp(size[0], 1, kMaxSideInApp);
+      state.max_rows_3d = std::clamp(size[1], 1, kMaxSideInApp);
       changed = true;
     }
   }
@@ -211,7 +217,7 @@ void camera_section(AppState& state) {
 // ---- construction of M_d -------------------------------------------------------------------------------
 // The course figures of this camera (raycam-cli figure): the step shown, or every step.
 void figure_export_row(AppState& state) {
-  labelled(tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
+  labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
   bool all = false;
   bool export_now = ImGui::Button(tr("Export figure…"));
   same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
@@ -270,7 +276,7 @@ void construction_section(AppState& state) {
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
-    g_shown_matrix = glm::dmat4(construction_step(p, step));
+    state.shown_matrix = glm::dmat4(construction_step(p, step));
     matrix_table<3>("M", construction_step(p, step));
   } else {
     const Placement3D& p = state.camera3d.placement();
@@ -290,7 +296,7 @@ void construction_section(AppState& state) {
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
     ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
-    g_shown_matrix = construction_step(p, step);
+    state.shown_matrix = construction_step(p, step);
     matrix_table<4>("M", construction_step(p, step));
   }
   figure_export_row(state);
@@ -381,12 +387,12 @@ void mistakes_section(AppState& state) {
 namespace {
 // A combo over a fixed list of (value, name); returns true when the user picked another value.
 template <class T, class Options>  // Options: a range of std::pair<T, const char*>
-bool choice(const char* label, T& value, const Options& options) {
+bool choice(const AppState& state, const char* label, T& value, const Options& options) {
   const char* current = "?";
   for (const auto& [v, name] : options)
     if (v == value) current = name;
   bool changed = false;
-  if (labelled(label, [&](const char* l) { return ImGui::BeginCombo(l, tr(current)); })) {
+  if (labelled(state, label, [&](const char* l) { return ImGui::BeginCombo(l, tr(current)); })) {
     for (const auto& [v, name] : options)
       if (ImGui::Selectable(tr(name), v == value) && v != value) {
         value = v;
@@ -415,14 +421,14 @@ void caster_section(AppState& state) {
     for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = {kCastMethods[i], cast_method_name(kCastMethods[i])};
     return methods;
   }();
-  bool changed = choice(tr("method###method"), state.cast_options.method, kMethods);
+  bool changed = choice(state, tr("method###method"), state.cast_options.method, kMethods);
   explain(
       tr("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
          "of view and test each object only on the pixels its projection can cover. The status line's "
          "tooltip shows the work done and skipped."));
-  changed |= choice(tr("precision###precision"), knobs.scalar, kScalars);
-  changed |= choice(tr("intersection###intersection"), knobs.formula, kFormulas);
-  changed |= choice(tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
+  changed |= choice(state, tr("precision###precision"), knobs.scalar, kScalars);
+  changed |= choice(state, tr("intersection###intersection"), knobs.formula, kFormulas);
+  changed |= choice(state, tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
   changed |= checkbox(tr("camera-relative rays"), &knobs.camera_relative);
   if (state.dimension == 2)
     changed |= checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
@@ -440,16 +446,16 @@ void files_section(AppState& state) {
   if (has_message || !state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
   if (!section(tr("Scene file###files"), tr("Files###files"))) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
-  const auto path_box = [](const char* label, char* buffer, std::size_t size) {
-    return labelled(label, [&](const char* l) {
-      return ImGui::InputText(l, buffer, size, ImGuiInputTextFlags_EnterReturnsTrue);
+  const auto path_box = [&](const char* label, std::string& path) {
+    return labelled(state, label, [&](const char* l) {
+      return ImGui::InputText(l, &path, ImGuiInputTextFlags_EnterReturnsTrue);
     });
   };
-  bool open = path_box(tr("open###open_path"), state.path_input, sizeof state.path_input);
+  bool open = path_box(tr("open###open_path"), state.path_input);
   open |= ImGui::Button(tr("Open"));
   if (open) open_scene(state, state.path_input);
   explain(tr("or drop a scene file on the window"));
-  bool save = path_box(tr("save as###save_path"), state.save_path, sizeof state.save_path);
+  bool save = path_box(tr("save as###save_path"), state.save_path);
   save |= ImGui::Button(tr("Save camera preset as…"));
   if (save) save_preset_as(state, state.save_path, false);
   if (!state.overwrite_pending.empty()) {  // asked before replacing a file
@@ -460,12 +466,12 @@ void files_section(AppState& state) {
     same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
     if (ImGui::Button(tr("Cancel"))) state.overwrite_pending.clear();
   }
-  labelled(tr("export###export"),
-           [&](const char* l) { return ImGui::InputText(l, state.export_path, sizeof state.export_path); });
+  labelled(state, tr("export###export"),
+           [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
   if (ImGui::Button(tr("Export colour map PNG"))) {
     try {
       write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
-      set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path));
+      set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, error.what());
     }
@@ -479,9 +485,9 @@ void files_section(AppState& state) {
 void lecture_section(AppState& state) {
   if (!section(tr("Lecture mode###lecture"), tr("Lecture###lecture"))) return;
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
-  static float editing = -1.0f;
+  float& editing = state.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;
-  labelled(tr("font scale###font_scale"), [&](const char* l) {
+  labelled(state, tr("font scale###font_scale"), [&](const char* l) {
     return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   });
   if (ImGui::IsItemActive()) {
@@ -493,7 +499,7 @@ void lecture_section(AppState& state) {
   checkbox(tr("high contrast"), &state.high_contrast);
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
-  choice(tr("Language / Langue###language"), state.language, kLanguages);
+  choice(state, tr("Language / Langue###language"), state.language, kLanguages);
   if (ImGui::Button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
   same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (ImGui::Button(tr("Help (F1)"))) state.show_help = !state.show_help;
@@ -507,18 +513,12 @@ bool show_message(AppState& state, MessageSource source) {
   ImGui::TextWrapped("%s", state.message.c_str());  // wrapped: never clipped
   ImGui::PopStyleColor();
   if (ImGui::SmallButton(tr("Dismiss###dismiss_message"))) state.message.clear();
-  g_message_shown_frame = state.frame_count;
+  state.message_shown_frame = state.frame_count;
   return true;
 }
 
-bool message_shown_this_frame(const AppState& state) { return g_message_shown_frame == state.frame_count; }
-
-const glm::dmat4& shown_matrix() { return g_shown_matrix; }
-
-std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id) {
-  const auto found = g_widget_rects.find(id);
-  if (found == g_widget_rects.end()) return std::nullopt;
-  return found->second;
+bool message_shown_this_frame(const AppState& state) {
+  return state.message_shown_frame == state.frame_count;
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
@@ -543,8 +543,7 @@ void status_counters(const AppState& state) {
   const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
   const CastStats& w = state.stats;
-  const double objects =
-      double(state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size());
+  const double objects = double(active_object_count(state));
   const double plain_tests = double(w.rays) * objects;
   ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
   ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
@@ -623,25 +622,24 @@ void handle_shortcuts(AppState& state) {
   }
   if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
   const bool is_2d = state.dimension == 2;
-  double& theta = is_2d ? state.orbit2d.theta : state.orbit3d.theta;
-  double& d = is_2d ? state.orbit2d.d : state.orbit3d.d;
-  double& df = is_2d ? state.orbit2d.df : state.orbit3d.df;
+  const SharedOrbit<double> orbit = active_orbit(state);
+  double &theta = orbit.theta, &d = orbit.d, &df = orbit.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
   bool changed = false;
   const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
   if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
   if (!is_2d && pressed(ImGuiKey_UpArrow))
-    state.orbit3d.phi = std::max(0.0, state.orbit3d.phi - kStep), changed = true;
+    state.orbit3d.phi = std::max(kPolarRange.low, state.orbit3d.phi - kStep), changed = true;
   if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(glm::pi<double>(), state.orbit3d.phi + kStep), changed = true;
-  if (pressed(ImGuiKey_PageUp)) df = std::min(20.0, df * 1.1), changed = true;
-  if (pressed(ImGuiKey_PageDown)) df = std::max(0.05, df / 1.1), changed = true;
+    state.orbit3d.phi = std::min(kPolarRange.high, state.orbit3d.phi + kStep), changed = true;
+  if (pressed(ImGuiKey_PageUp)) df = std::min(kFocalRange.high, df * 1.1), changed = true;
+  if (pressed(ImGuiKey_PageDown)) df = std::max(kFocalRange.low, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();
   const int steps = construction_steps(state);
   for (ImWchar c : io.InputQueueCharacters) {
-    if (c == '+' || c == '=') d = std::max(0.1, d / 1.1), changed = true;
-    if (c == '-') d = std::min(200.0, d * 1.1), changed = true;
+    if (c == '+' || c == '=') d = std::max(kDistanceRange.low, d / 1.1), changed = true;
+    if (c == '-') d = std::min(kDistanceRange.high, d * 1.1), changed = true;
     int step = state.construction_step < 0 ? steps : state.construction_step;
     if (c == '[') step = std::max(0, step - 1);
     if (c == ']') step = std::min(steps, step + 1);

@@ -32,10 +32,6 @@ void status_counters(const AppState& state);
 bool show_message(AppState& state, MessageSource source);
 // Did a section show the message this frame? If not, the frame shows it above the status line.
 bool message_shown_this_frame(const AppState& state);
-// The matrix the construction table showed last (2D: its 3×3 in the top-left of a 4×4).
-const glm::dmat4& shown_matrix();
-// Where the labelled widget "###id" (e.g. "###theta") was last drawn, as (min, max) screen corners.
-std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const std::string& id);
 // Is a text field (or a slider typed into with ctrl+click) being edited now?
 bool editing_text();
 // Takes Tab away from ImGui's focus cycling (call before ImGui::NewFrame, after the backend set its keys).

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <fstream>
 #include <glm/trigonometric.hpp>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,14 +78,25 @@ void ctrl_click(headless::HeadlessRenderer& renderer, ui::AppState& state, ImVec
 ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
   return {(r.first.x + r.second.x) / 2, (r.first.y + r.second.y) / 2};
 }
+
+// Where the panels drew the labelled widget "###id" (state.widget_rects, the panels' test hook).
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const ui::AppState& state, const std::string& id) {
+  if (!state.widget_rects) return std::nullopt;
+  const auto found = state.widget_rects->find(id);
+  if (found == state.widget_rects->end()) return std::nullopt;
+  const ui::WidgetRect& r = found->second;
+  return std::pair<ImVec2, ImVec2>{{r.x0, r.y0}, {r.x1, r.y1}};
+}
 }  // namespace
 
 TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
           "[render][input][same-frame]") {
   ui::AppState state = state_for({"--size", "64x64"});
+  std::map<std::string, ui::WidgetRect> rects;
+  state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
-  const auto theta = ui::widget_rect("###theta");
+  const auto theta = widget_rect(state, "###theta");
   REQUIRE(theta);
   const float y = centre(*theta).y;
   const double before = state.orbit3d.theta;
@@ -144,6 +157,8 @@ TEST_CASE(
     "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
     "[render][input][keyboard]") {
   ui::AppState state = state_for({});
+  std::map<std::string, ui::WidgetRect> rects;
+  state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   CHECK(state.window_title == "raycam — 3D — demo scene");
@@ -158,7 +173,7 @@ TEST_CASE(
   tap(renderer, state, ImGuiKey_RightArrow);
   CHECK(state.orbit3d.theta == Approx(theta + glm::radians(5.0)));
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
-  const auto d_slider = ui::widget_rect("###d");
+  const auto d_slider = widget_rect(state, "###d");
   REQUIRE(d_slider);
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
@@ -224,6 +239,8 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
     for (const char* view : {"3d", "2d"})
       for (const float scale : {1.0f, 1.5f, 2.0f, 3.0f}) {
         ui::AppState state = state_for({"--view", view, "--lang", language});
+        std::map<std::string, ui::WidgetRect> rects;
+        state.widget_rects = &rects;
         state.font_scale = scale;
         headless::HeadlessRenderer renderer(1280, 800);
         renderer.render_settled(state);
@@ -238,7 +255,7 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
         CHECK(layout.status.x + layout.status.w <= 1280.5f);
         // Every labelled widget of the panel lies inside the panel (its label beside it or above it).
         for (const char* id : {"###df", "###d", "###theta", "###res", "###target"}) {
-          const auto rect = ui::widget_rect(id);
+          const auto rect = widget_rect(state, id);
           REQUIRE(rect);
           CHECK(rect->second.x <= layout.panel.x + layout.panel.w);
         }

@@ -39,11 +39,11 @@ TEST_CASE("a failed open leaves the scene, the camera and the Open box as they w
   ui::AppState state = state_for({"--theta", "40"});
   REQUIRE(ui::save_preset(state, good));
   REQUIRE(ui::open_scene(state, good));
-  CHECK(std::string(state.path_input) == good);
+  CHECK(state.path_input == good);
   state.orbit3d.theta = 1.25;  // the student moved the camera since
   const auto spheres = state.file.scene3d.spheres.size();
   const std::string missing = (scratch.dir / "typo.json").string();
-  std::snprintf(state.path_input, sizeof state.path_input, "%s", missing.c_str());  // typed in the box
+  state.path_input = missing;  // typed in the box
   CHECK_FALSE(ui::open_scene(state, missing));
   CHECK(state.message_is_error);
   CHECK(state.message_source == ui::MessageSource::files);
@@ -51,7 +51,7 @@ TEST_CASE("a failed open leaves the scene, the camera and the Open box as they w
   CHECK(state.file.scene3d.spheres.size() == spheres);
   CHECK(state.orbit3d.theta == 1.25);
   CHECK(state.scene_path == good);
-  CHECK(std::string(state.path_input) == good);  // the box shows the file on screen again
+  CHECK(state.path_input == good);  // the box shows the file on screen again
 }
 
 TEST_CASE("Save as never writes over a file without a yes, and never defaults to the opened file",
@@ -61,7 +61,7 @@ TEST_CASE("Save as never writes over a file without a yes, and never defaults to
   ui::AppState state = state_for({});
   REQUIRE(ui::save_preset(state, opened));
   REQUIRE(ui::open_scene(state, opened));
-  CHECK(std::string(state.save_path).empty());  // Save as starts empty after an open
+  CHECK(state.save_path.empty());  // Save as starts empty after an open
   const std::string before = read(opened);
   state.orbit3d.d = 3.5;
   CHECK_FALSE(ui::save_preset_as(state, opened, false));  // exists: asks

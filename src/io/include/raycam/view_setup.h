@@ -40,6 +40,13 @@ ViewSetup make_view_setup(const ViewFlags& flags);
 // first, then render_with_accuracy(camera, scene, knobs) of the core.
 ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags);
 
+// The camera a preset places: the fields it sets over the defaults (Orbit2D{} / Orbit3D{}, res 1, size
+// kDefaultSize2D / kDefaultSize3D; a 3D size N is N×N). Degrees become radians here and nowhere else. The
+// core's rules apply (std::invalid_argument naming the field); a target or size with the wrong number of
+// components is the caller's to report in its own words (also std::invalid_argument here).
+Camera2D camera2d_from_preset(const CameraPreset& preset);
+Camera3D camera3d_from_preset(const CameraPreset& preset);
+
 // The camera preset equivalent to a camera's current state (for saving presets).
 CameraPreset preset_of(const Camera2D& camera);
 CameraPreset preset_of(const Camera3D& camera);

@@ -1,11 +1,12 @@
-// "Check my camera" (src/ui/check_panel.h) without a window: the verdict on the current camera comes from a
-// thread of its own after the quiet time, a mistaken program is diagnosed, and a hanging one never blocks.
+// "Check my camera" (src/session/camera_check.h) without a window: the verdict on the current camera comes
+// from a thread of its own after the quiet time, a mistaken program is diagnosed, and a hanging one never
+// blocks.
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <thread>
 
 #include "app_options.h"
-#include "check_panel.h"
+#include "camera_check.h"
 
 using namespace raycam;
 using namespace raycam::ui;

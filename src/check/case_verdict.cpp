@@ -1,0 +1,42 @@
+#include "case_verdict.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "check_run.h"
+#include "raycam/scene_file.h"
+
+namespace raycam::check {
+
+CaseVerdict grade_case(const CheckCase& checked, const CaseSource& source) {
+  const CaseImage reference = render_case(checked.file);
+  std::string why;
+  const bool reads_file = source.argv.empty();
+  const std::optional<Sandbox> sandbox = reads_file ? std::nullopt : probe_sandbox(why);
+  RunResult run;
+  if (reads_file) {
+    run = read_answer_file(source.answer_path);
+  } else {
+    RunLimits limits;
+    limits.timeout_seconds = source.timeout_seconds;
+    run = run_student(source.argv, scene_to_json(checked.file), limits, sandbox);
+  }
+  CaseVerdict verdict;
+  verdict.sandboxed = bool(sandbox);
+  verdict.result = result_of_run(1, checked, reference, run);
+  verdict.dimension = reference.dimension;
+  verdict.rows = reference.rows;
+  verdict.columns = reference.columns;
+  const CaseResult& r = verdict.result;
+  verdict.wrong =
+      r.answer ? wrong_pixel_mask(reference, *r.answer) : std::vector<std::uint8_t>(reference.pixels(), 0);
+  const double tests = double(reference.pixels()) * std::max(1, object_count(checked.file));
+  if (r.answer && r.status != CaseStatus::pass && tests <= source.diagnosis_budget) {
+    std::vector<CaseResult> results = {verdict.result};
+    verdict.diagnosis = diagnose({checked}, results);
+    verdict.diagnosed = true;
+  }
+  return verdict;
+}
+
+}  // namespace raycam::check

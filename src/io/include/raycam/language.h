@@ -1,0 +1,46 @@
+// The two languages of raycam's visible text, and what every translated text needs: the language from a
+// flag or the environment, a table of French by English key, and printf-style formatting. The window's
+// table is src/session/text_table.cpp (tr(), text.h), the check command's src/check/check_texts.cpp; the
+// English text is the key in both, as gettext's msgid.
+#pragma once
+
+#include <cstdarg>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+namespace raycam {
+
+enum class Language { en, fr };
+
+struct Translation {
+  const char* en;
+  const char* fr;
+};
+
+// French by English key, built once from a table's entries.
+class TranslationTable {
+ public:
+  explicit TranslationTable(const std::vector<Translation>& entries);
+  // `english` in `language`: itself in English, or when the table lacks it.
+  const char* lookup(Language language, const char* english) const;
+
+ private:
+  std::unordered_map<std::string_view, const char*> french_;
+};
+
+// printf into a std::string (`args` is consumed).
+std::string format_text(const char* format, va_list args);
+
+// "fr", "fr_FR.UTF-8", "en_GB:en" ... → the language, or nothing for another language or "C"/"POSIX".
+std::optional<Language> language_from_code(std::string_view code);
+// The first of LANGUAGE, LC_ALL, LC_MESSAGES, LANG that is set and not empty decides (as gettext does);
+// French if it names French, English otherwise.
+Language language_from_environment();
+// The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
+Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
+const char* language_code(Language language);  // "en", "fr"
+
+}  // namespace raycam

@@ -1,0 +1,195 @@
+// Section index: the worker · CameraCheck (debounce) · what the panel reads.
+#include "camera_check.h"
+
+#include <sys/stat.h>
+
+#include <condition_variable>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "raycam/view_setup.h"
+#include "student_process.h"
+
+namespace raycam::ui {
+
+// ---- the worker ----------------------------------------------------------------------------------------
+struct CheckJob {
+  std::string key;
+  check::CheckCase checked;
+  check::CaseSource source;
+};
+
+struct CheckShared {
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::optional<CheckJob> pending;
+  bool running = false, stop = false, worker_started = false;
+  std::shared_ptr<const KeyedVerdict> latest;
+  double started_at = 0;
+};
+
+namespace {
+// A case that could not be run (a command that does not split, a camera the core refuses): shown as a
+// crash with its reason, never thrown at the frame.
+std::shared_ptr<const KeyedVerdict> crashed(const std::string& key, const std::string& why) {
+  auto verdict = std::make_shared<KeyedVerdict>();
+  verdict->key = key;
+  verdict->verdict.result.status = check::CaseStatus::crash;
+  verdict->verdict.result.detail = why;
+  return verdict;
+}
+
+void work(std::shared_ptr<CheckShared> shared) {
+  for (;;) {
+    CheckJob job;
+    {
+      std::unique_lock<std::mutex> lock(shared->mutex);
+      shared->wake.wait(lock, [&] { return shared->stop || shared->pending; });
+      if (shared->stop) return;
+      job = std::move(*shared->pending);
+      shared->pending.reset();
+      shared->running = true;
+    }
+    std::shared_ptr<const KeyedVerdict> verdict;
+    try {
+      verdict = std::make_shared<const KeyedVerdict>(
+          KeyedVerdict{job.key, check::grade_case(job.checked, job.source)});
+    } catch (const std::exception& error) {
+      verdict = crashed(job.key, error.what());
+    }
+    std::lock_guard<std::mutex> lock(shared->mutex);
+    shared->latest = std::move(verdict);
+    shared->running = false;
+  }
+}
+
+// The case as the student's program receives it: the scene and the current camera's parameters.
+SceneFile current_case(const AppState& state) {
+  SceneFile file = state.file;
+  file.dimension = state.dimension;
+  file.camera = active_preset(state);
+  return file;
+}
+}  // namespace
+
+// ---- CameraCheck (debounce) -------------------------------------------------------------------------------
+CameraCheck::CameraCheck() : shared_(std::make_shared<CheckShared>()) {}
+
+CameraCheck::~CameraCheck() {
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  shared_->stop = true;
+  shared_->wake.notify_all();
+}
+
+void CameraCheck::set_command(const std::string& command, bool is_file) {
+  request_.command = command;
+  request_.is_file = is_file;
+}
+
+std::string CameraCheck::case_key(const AppState& state) const {
+  // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
+  const CameraPreset p = active_preset(state);
+  std::ostringstream key;
+  key << std::hexfloat << state.dimension << '|' << state.scene_version << '|' << state.scene_path << '|'
+      << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
+      << p.df.value_or(0) << '|' << p.res.value_or(0) << '|';
+  for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';
+  for (int s : p.size.value_or(std::vector<int>{})) key << s << ',';
+  key << '|' << request_.is_file << '|' << request_.command;
+  if (request_.is_file) {  // an answer file edited by hand counts as a change
+    struct stat info;
+    if (stat(request_.command.c_str(), &info) == 0)
+      key << '|' << info.st_mtim.tv_sec << '.' << info.st_mtim.tv_nsec;
+  }
+  return key.str();
+}
+
+void CameraCheck::update(const AppState& state, double now) {
+  if (request_.command.empty()) return;
+  const std::string key = case_key(state);
+  if (key != last_key_) {
+    last_key_ = key;
+    changed_at_ = now;
+  }
+  const bool due = request_.check_now ||
+                   (request_.automatic && key != submitted_key_ && now - changed_at_ >= kQuietSeconds);
+  if (!due) return;
+  request_.check_now = false;
+  CheckJob job;
+  job.key = key;
+  job.checked = {"the current camera", current_case(state)};
+  job.source.timeout_seconds = kCheckTimeout;
+  job.source.diagnosis_budget = kDiagnosisBudget;
+  try {
+    if (request_.is_file)
+      job.source.answer_path = request_.command;
+    else
+      job.source.argv = check::absolutise_paths(check::split_command(request_.command, "command"));
+  } catch (const std::invalid_argument& error) {
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    shared_->latest = crashed(key, error.what());
+    submitted_key_ = key;
+    return;
+  }
+  submitted_key_ = key;
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  shared_->pending = std::move(job);  // a newer case replaces one still waiting
+  shared_->started_at = now;
+  if (!shared_->worker_started) {
+    shared_->worker_started = true;
+    std::thread(work, shared_).detach();  // it holds the shared state; it ends when stop is set
+  }
+  shared_->wake.notify_all();
+}
+
+// ---- what the panel reads
+// ----------------------------------------------------------------------------------
+std::shared_ptr<const KeyedVerdict> CameraCheck::latest() const {
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  return shared_->latest;
+}
+
+CheckProgress CameraCheck::progress() const {
+  CheckProgress progress;
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  progress.running = shared_->running || shared_->pending.has_value();
+  progress.started_at = shared_->started_at;
+  progress.latest = shared_->latest;
+  progress.current = progress.latest && progress.latest->key == last_key_;
+  return progress;
+}
+
+std::string CameraCheck::status() const {
+  const auto verdict = latest();
+  return verdict ? check::status_name(verdict->verdict.result.status) : "";
+}
+
+std::string CameraCheck::top_diagnosis() const {
+  const auto verdict = latest();
+  return verdict && !verdict->verdict.diagnosis.empty() ? verdict->verdict.diagnosis[0].id() : "";
+}
+
+long long CameraCheck::wrong_pixels() const {
+  const auto verdict = latest();
+  return verdict ? verdict->verdict.result.wrong_pixels : 0;
+}
+
+bool CameraCheck::up_to_date() const {
+  const auto verdict = latest();
+  return verdict && verdict->key == last_key_;
+}
+
+bool CameraCheck::waiting() const {
+  return busy() || (!request_.command.empty() && request_.automatic && last_key_ != submitted_key_) ||
+         request_.check_now;
+}
+
+bool CameraCheck::busy() const {
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  return shared_->running || shared_->pending.has_value();
+}
+
+}  // namespace raycam::ui

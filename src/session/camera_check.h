@@ -1,0 +1,80 @@
+// "Check my camera": the student's own program (or an answer file) run on the CURRENT camera and scene,
+// through the same protocol and grading as `raycam-cli check` (check::grade_case). It runs on a thread of
+// its own, debounced (kQuietSeconds after the last change), so the frame never waits for it: a slow or broken
+// program only shows "running" or its error. The panel that shows it is ui/check_panel.h.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "app_state.h"
+#include "case_verdict.h"
+
+namespace raycam::ui {
+
+inline constexpr double kQuietSeconds = 0.3;   // after the last camera or scene change
+inline constexpr double kCheckTimeout = 10.0;  // per run, as `raycam-cli check`'s default
+// Above this many ray-object tests the single case is still graded but not diagnosed (91 renders of it).
+inline constexpr double kDiagnosisBudget = 2e7;
+
+// What the panel edits: the command and when to run it.
+struct CheckRequest {
+  std::string command;  // a program, or an answer file's path when `is_file`
+  bool is_file = false;
+  bool automatic = true;   // check when the camera changes
+  bool check_now = false;  // once, at the next update()
+};
+
+// A verdict and the case (and command) it was made for.
+struct KeyedVerdict {
+  std::string key;
+  check::CaseVerdict verdict;
+};
+
+// What the panel shows, taken at once.
+struct CheckProgress {
+  bool running = false;  // queued or running
+  double started_at = 0;
+  std::shared_ptr<const KeyedVerdict> latest;  // null while none
+  bool current = false;                        // `latest` is for the case seen at the last update()
+};
+
+struct CheckShared;  // the job and the latest verdict, shared with the worker thread
+
+class CameraCheck {
+ public:
+  CameraCheck();
+  ~CameraCheck();  // never waits for a running program: the worker finishes on its own (its timeout)
+
+  // Every frame, after the cast: notices a changed case or command and, after kQuietSeconds of quiet, hands
+  // it to the worker. `now` is seconds on any steady clock.
+  void update(const AppState& state, double now);
+
+  CheckRequest& request() { return request_; }
+  CheckProgress progress() const;
+
+  // For tests and the host: the command (a program, or an answer file's path when `is_file`).
+  void set_command(const std::string& command, bool is_file);
+  // The latest verdict's status ("pass", "fail", "crash", "timeout", "bad-output"), empty while none; its
+  // first diagnosis ("" if none); whether a run is queued or running.
+  std::string status() const;
+  std::string top_diagnosis() const;
+  long long wrong_pixels() const;
+  bool busy() const;
+  // The latest verdict is for the camera, scene and command seen at the last update().
+  bool up_to_date() const;
+  // A verdict is on its way (quiet time, queued or running): the window keeps drawing to show it.
+  bool waiting() const;
+
+ private:
+  std::string case_key(const AppState& state) const;
+  std::shared_ptr<const KeyedVerdict> latest() const;
+
+  std::shared_ptr<CheckShared> shared_;
+  CheckRequest request_;
+  std::string last_key_;       // the case (and command) last seen
+  std::string submitted_key_;  // the case last handed to the worker
+  double changed_at_ = 0;
+};
+
+}  // namespace raycam::ui

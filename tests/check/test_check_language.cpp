@@ -1,0 +1,65 @@
+// The check command's language follows the window's rule (raycam/language.h): --lang first, else the
+// first of LANGUAGE, LC_ALL, LC_MESSAGES, LANG that is set, French only when it names French.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "check_texts.h"
+#include "raycam/language.h"
+
+using namespace raycam;
+
+namespace {
+// Sets the locale variables for one scope and puts back what was there.
+class LocaleEnvironment {
+ public:
+  LocaleEnvironment() {
+    for (int i = 0; i < 4; ++i) {
+      const char* value = std::getenv(kNames[i]);
+      if (value) saved_[i] = value;
+      ::unsetenv(kNames[i]);
+    }
+  }
+  ~LocaleEnvironment() {
+    for (int i = 0; i < 4; ++i)
+      if (saved_[i]) ::setenv(kNames[i], saved_[i]->c_str(), 1);
+      else ::unsetenv(kNames[i]);
+  }
+
+ private:
+  static constexpr const char* kNames[4] = {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"};
+  std::optional<std::string> saved_[4];
+};
+}  // namespace
+
+TEST_CASE("check's language: --lang, else the environment by the window's rule", "[check][language]") {
+  LocaleEnvironment scope;
+  CHECK(check::check_language("") == "en");  // nothing set
+  ::setenv("LANG", "fr_FR.UTF-8", 1);
+  CHECK(check::check_language("") == "fr");
+  CHECK(check::check_language("en") == "en");  // the flag wins
+  ::setenv("LC_ALL", "C", 1);                   // the first one set decides, even when it names no language
+  CHECK(check::check_language("") == "en");
+  ::setenv("LANGUAGE", "fr:en", 1);
+  CHECK(check::check_language("") == "fr");
+  ::setenv("LANGUAGE", "french", 1);  // not a language code: English, as the window decides
+  CHECK(check::check_language("") == "en");
+  CHECK(check::check_language("") == language_code(language_from_environment()));
+  CHECK_THROWS_WITH(check::check_language("de"), "--lang: expected fr or en, got 'de'");
+}
+
+TEST_CASE("check's texts: French by English key, English when asked or when the key is unknown",
+          "[check][language]") {
+  const std::string french = check::text("fr", "wrong pixels");
+  CHECK(!french.empty());
+  CHECK(french != "wrong pixels");
+  CHECK(std::string(check::text("en", "wrong pixels")) == "wrong pixels");
+  CHECK(std::string(check::text("fr", "no such key")) == "no such key");
+  // The formatter fills the French format.
+  const std::string format = check::text("fr", "warning: %s\n");
+  REQUIRE(format.find("%s") != std::string::npos);
+  std::string expected = format;
+  expected.replace(expected.find("%s"), 2, "x");
+  CHECK(check::textf("fr", "warning: %s\n", "x") == expected);
+}
