@@ -8,8 +8,11 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <grp.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -128,25 +131,63 @@ std::vector<std::string> child_environment(const std::string& work) {
           "LANG=C.UTF-8", "LC_ALL=C.UTF-8", "PYTHONDONTWRITEBYTECODE=1"};
 }
 
+// What a program needs to run and nothing else: the system's programs and libraries (/usr and the root's
+// links into it), the few /etc files the dynamic loader and interpreters read, /opt; not /home, /root, /etc's
+// other files, the instructor's output folders, other submissions nor anything else of the machine.
+const char* const kSystemFolders[] = {"/usr", "/opt"};
+const char* const kRootLinks[] = {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"};
+const char* const kEtcFiles[] = {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives",
+                                 "/etc/localtime", "/etc/mime.types"};
+
 // The bwrap command line around `argv` (see the header for what each part isolates).
 std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& work, const std::vector<std::string>& argv) {
-  std::vector<std::string> words = {sandbox.bwrap, "--ro-bind", "/", "/", "--dev", "/dev", "--proc", "/proc",
-                                    "--tmpfs", "/tmp", "--tmpfs", "/run"};
-  for (const std::string& hidden : sandbox.hidden) words.insert(words.end(), {"--tmpfs", hidden});
+  std::vector<std::string> words = {sandbox.bwrap};
+  for (const char* folder : kSystemFolders) words.insert(words.end(), {"--ro-bind-try", folder, folder});
+  for (const char* link : kRootLinks) {
+    std::error_code error;
+    if (fs::is_symlink(link, error))  // merged /usr: /bin -> usr/bin
+      words.insert(words.end(), {"--symlink", fs::read_symlink(link, error).string(), link});
+    else if (fs::is_directory(link, error))
+      words.insert(words.end(), {"--ro-bind", link, link});
+  }
+  for (const char* file : kEtcFiles) words.insert(words.end(), {"--ro-bind-try", file, file});
+  words.insert(words.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
+  // The student's own folder, and the folders of the files its command names (its program, its script).
   std::vector<std::string> shown = sandbox.shown;
-  // The program's own files under /tmp would vanish behind the empty /tmp: show their folders again.
   for (const std::string& word : argv) {
     std::error_code error;
-    if (word.rfind("/tmp/", 0) == 0 && fs::exists(word, error))
+    if (word.rfind('/', 0) == 0 && fs::exists(word, error) && word.rfind("/usr/", 0) != 0)
       shown.push_back(fs::is_directory(word, error) ? word : fs::path(word).parent_path().string());
   }
-  for (const std::string& dir : shown) words.insert(words.end(), {"--ro-bind", dir, dir});
-  words.insert(words.end(), {"--bind", work, work, "--remount-ro", "/tmp", "--remount-ro", "/run"});
-  for (const std::string& hidden : sandbox.hidden) words.insert(words.end(), {"--remount-ro", hidden});
-  words.insert(words.end(), {"--remount-ro", "/dev", "--unshare-all", "--unshare-user", "--uid", "65534", "--gid",
-                             "65534", "--die-with-parent", "--new-session", "--chdir", work, "--"});
+  for (const std::string& dir : shown)
+    if (dir != "/") words.insert(words.end(), {"--ro-bind", dir, dir});
+  words.insert(words.end(), {"--bind", work, work, "--remount-ro", "/tmp", "--remount-ro", "/dev", "--unshare-all",
+                             "--unshare-user", "--uid", "65534", "--gid", "65534", "--die-with-parent",
+                             "--new-session", "--chdir", work, "--"});
   words.insert(words.end(), argv.begin(), argv.end());
   return words;
+}
+
+// Run as root, a sandboxed program would keep root's rights on every file bwrap shows it (a user namespace
+// maps its "nobody" back to root). So the child drops to an unprivileged uid of its own before starting
+// bwrap: one per run, from a range no account uses, so that the process cap below counts this run only.
+constexpr uid_t kFirstRunUid = 3'900'000'000u;
+uid_t next_run_uid() {
+  static std::atomic<unsigned> counter{0};
+  return kFirstRunUid + uid_t(getpid() % 100000) * 1000u + (counter++ % 1000u);
+}
+
+// Processes (threads included) of `uid` now: the cap is set this many above, for a user who is not root.
+int processes_of(uid_t uid) {
+  int count = 0;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator("/proc", error)) {
+    struct stat info {};
+    if (std::isdigit(static_cast<unsigned char>(entry.path().filename().string()[0])) &&
+        stat(entry.path().c_str(), &info) == 0 && info.st_uid == uid)
+      ++count;
+  }
+  return count;
 }
 
 // Runs still going when the process exits (a detached worker of the app's panel, a test that ends while a
@@ -189,8 +230,17 @@ void stop(pid_t pid) {
 
 // ---- the child (after fork: async-signal-safe calls only) -------------------------------------------------
 [[noreturn]] void exec_child(const char* program, char* const* argv, char* const* envp, const char* work, int in,
-                             int out, int err, int report, const RunLimits& limits) {
+                             int out, int err, int report, const RunLimits& limits, uid_t run_uid,
+                             rlim_t max_processes) {
   setpgid(0, 0);
+  if (run_uid != 0 && (setgroups(0, nullptr) != 0 || setgid(gid_t(run_uid)) != 0 || setuid(run_uid) != 0)) {
+    const int code = errno;
+    ssize_t ignored = write(report, &code, sizeof code);
+    (void)ignored;
+    _exit(127);
+  }
+  const rlimit processes{max_processes, max_processes};
+  setrlimit(RLIMIT_NPROC, &processes);
   signal(SIGPIPE, SIG_DFL);  // ignored in raycam-cli; an ignored signal would stay ignored across exec
   const rlimit memory{rlim_t(limits.memory_bytes), rlim_t(limits.memory_bytes)};
   const rlimit file{rlim_t(limits.file_bytes), rlim_t(limits.file_bytes)};
@@ -235,6 +285,17 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   }
   const std::string work = pattern;
   track(work, 0);
+  // Sandboxed under root: the run's own uid (see next_run_uid), which must own its folder to write there.
+  const uid_t run_uid = sandbox && geteuid() == 0 ? next_run_uid() : 0;
+  if (run_uid != 0 && chown(work.c_str(), run_uid, gid_t(run_uid)) != 0) {
+    result.error = "cannot give the run its temporary directory: " + std::string(std::strerror(errno));
+    std::error_code ignored;
+    fs::remove_all(work, ignored);
+    untrack(work);
+    return result;
+  }
+  const rlim_t max_processes =
+      rlim_t(limits.max_processes) + rlim_t(run_uid != 0 ? 0 : processes_of(geteuid()));
   std::vector<std::string> command = sandbox ? sandboxed(*sandbox, work, argv) : argv;
   std::vector<std::string> environment = child_environment(work);
   std::vector<char*> c_argv = c_strings(command), c_envp = c_strings(environment);
@@ -246,7 +307,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
     if (pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), work.c_str(), in.read, out.write, err.write,
-                             report.write, limits);
+                             report.write, limits, run_uid, max_processes);
     setpgid(pid, pid);  // also here: whichever runs first, the group exists before we may signal it
     track(work, pid);
     in.close_read();

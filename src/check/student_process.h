@@ -1,10 +1,14 @@
 // Running one untrusted student program on one case: no shell, a fresh temporary directory, the case on
 // stdin, a timeout, capped output, stderr kept, and (where it works) a bubblewrap sandbox.
 //
-// The sandbox (bwrap): the whole system read-only, /tmp and /run empty and read-only, /dev only the basic
-// devices (read-only), the program's own temporary directory the only writable place, no network (a new network namespace: not even the host's
-// loopback), new user/PID/IPC/UTS namespaces (the program runs as "nobody" and all its processes die with
-// it), and an address-space cap. Without the sandbox the same limits apply except the isolation.
+// The sandbox (bwrap) shows the program only what running needs, read-only: /usr (and /bin, /lib… that link
+// into it), /opt, the dynamic loader's few /etc files, its own folder and the folders of the files its command
+// names; /tmp empty, /dev only the basic devices, its own temporary directory the only writable place. Not
+// /home, /root, the rest of /etc, the report or CSV folders, other submissions. No network (a new network
+// namespace: not even the host's loopback), new user/PID/IPC/UTS namespaces (all its processes die with it).
+// Run by root, the program runs under an unprivileged uid of its own (never root's rights on what it sees);
+// a run may start at most RunLimits::max_processes processes; and an address-space cap. Without the sandbox
+// the same limits apply except the isolation and the uid.
 #pragma once
 
 #include <optional>
@@ -28,6 +32,7 @@ struct RunLimits {
   std::size_t max_stderr_bytes = std::size_t(16) << 10;  // kept for the report; the rest is read and dropped
   long long memory_bytes = 2LL << 30;                     // address space (RLIMIT_AS)
   long long file_bytes = 64LL << 20;                      // largest file it may write (RLIMIT_FSIZE)
+  int max_processes = 256;  // processes and threads a run may start (RLIMIT_NPROC, counted per run)
 };
 
 struct Sandbox {

@@ -183,6 +183,24 @@ TEST_CASE("the memory cap stops a student that allocates too much", "[check][cli
   CHECK(roomy.report["results"][0]["status"] == "bad-output");
 }
 
+// Canaries outside /tmp (the sandbox's own empty /tmp would hide them whatever the sandbox shows): a folder
+// of its own under /var/tmp, removed at the end.
+struct VarTmpDir {
+  fs::path dir = fs::path("/var/tmp") / ("raycam-canary-" + std::to_string(getpid()));
+  VarTmpDir() {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~VarTmpDir() { fs::remove_all(dir); }
+  std::string plant(const std::string& name, fs::perms perms = fs::perms::owner_read | fs::perms::owner_write) const {
+    const fs::path file = dir / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << "secret";
+    fs::permissions(file, perms);
+    return file.string();
+  }
+};
+
 TEST_CASE("the sandbox stops a student writing outside its folder or opening a socket",
           "[check][cli][sandbox]") {
   // A TCP server on the host's loopback, and a file path outside the student's folder.
@@ -195,7 +213,8 @@ TEST_CASE("the sandbox stops a student writing outside its folder or opening a s
   socklen_t length = sizeof address;
   getsockname(server, reinterpret_cast<sockaddr*>(&address), &length);
   fcntl(server, F_SETFL, O_NONBLOCK);
-  const std::string outside = fs::absolute(scratch("escape")).string() + "/escaped.txt";
+  const VarTmpDir outside_dir;  // not under /tmp, which the sandbox replaces by an empty folder of its own
+  const std::string outside = (outside_dir.dir / "escaped.txt").string();
   const std::string student = std::string("--student \"python3 ") + MISBEHAVING_PY + " escape " +
                               std::to_string(ntohs(address.sin_port)) + " " + outside + "\" --cases 1";
   auto connections = [&] {
@@ -222,6 +241,33 @@ TEST_CASE("the sandbox stops a student writing outside its folder or opening a s
   CHECK(connections() == 1);
   CHECK(fs::exists(outside));
   close(server);
+}
+
+TEST_CASE("the sandbox shows a student only what running needs", "[check][cli][sandbox]") {
+  if (!sandbox_works()) return;  // the sandbox cannot start here: the test above checks the refusal
+  const VarTmpDir canaries;
+  // The student's own folder, world-readable as a checked-out submission is, with a file only its owner reads.
+  const std::string own = canaries.plant("alice/camera.py", fs::perms(0644));
+  fs::copy_file(MISBEHAVING_PY, own, fs::copy_options::overwrite_existing);
+  fs::permissions(canaries.dir / "alice", fs::perms(0755));
+  fs::permissions(canaries.dir, fs::perms(0755));
+  const std::string owners_only = canaries.plant("alice/owners-only.txt");
+  const std::string home = canaries.plant("home/prof/.ssh/id_ed25519");
+  const std::string beside = canaries.plant("bob/camera.py", fs::perms(0644));  // another student
+  const std::string other_report = canaries.plant("reports/previous.json", fs::perms(0644));  // the CSV's folder
+  const std::vector<std::string> secrets = {home, beside, other_report, owners_only, "/etc/shadow", "/root/.bashrc"};
+  std::string student = "--student \"python3 " + own + " snoop";
+  for (const std::string& secret : secrets) student += " " + secret;
+  const Checked c = check(student + "\" --cases 1 --require-sandbox", "snoop");
+  INFO(c.output);
+  REQUIRE(c.report.is_object());
+  REQUIRE(c.report["sandbox"] == true);
+  const std::string err = c.report["results"][0]["stderr"].get<std::string>();
+  for (const std::string& secret : secrets) {
+    INFO(err);
+    CHECK_THAT(err, Catch::Contains("stopped " + secret));
+  }
+  if (geteuid() == 0) CHECK_THAT(err, !Catch::Contains("uid 0\n"));  // never root's rights in the sandbox
 }
 
 TEST_CASE("write-cases then answers: answer files made by hand are graded", "[check][cli]") {

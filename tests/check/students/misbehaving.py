@@ -9,6 +9,7 @@
   bad-ids    valid JSON, an id out of range
   memory     allocates 300 MiB, then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
+  snoop PATH...      tries to read each file, says on stderr which it could ("read PATH") and which not
 """
 import json
 import os
@@ -43,6 +44,16 @@ if mode == "bad-ids":
 if mode == "memory":
     block = bytearray(300 << 20)
     print('{"ids": "allocated"}')
+    sys.exit(0)
+if mode == "snoop":
+    for path in sys.argv[2:]:
+        try:
+            with open(path) as secret:
+                secret.read()
+            print("read", path, file=sys.stderr)
+        except OSError as error:
+            print("stopped", path, type(error).__name__, file=sys.stderr)
+    print("uid", os.getuid(), file=sys.stderr)
     sys.exit(0)
 if mode == "escape":
     port, path = int(sys.argv[2]), sys.argv[3]
