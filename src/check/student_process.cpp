@@ -74,9 +74,20 @@ std::vector<std::string> absolutise_paths(std::vector<std::string> words) {
 }
 
 // ---- finding programs ------------------------------------------------------------------------------------
-std::string find_program(const std::string& name) {
+// Whether any user may run `path`: every folder above it can be crossed by others, and the file read and
+// run by them (a sandboxed run under root has no more rights than that).
+bool others_can_run(const std::string& path) {
+  struct stat info {};
+  if (stat(path.c_str(), &info) != 0 || (info.st_mode & (S_IXOTH | S_IROTH)) != (S_IXOTH | S_IROTH)) return false;
+  for (fs::path dir = fs::path(path).parent_path(); !dir.empty() && dir != dir.root_path(); dir = dir.parent_path())
+    if (stat(dir.c_str(), &info) != 0 || !(info.st_mode & S_IXOTH)) return false;
+  return true;
+}
+
+std::string find_program(const std::string& name, bool for_others) {
   if (name.empty()) return {};
-  if (name.find('/') != std::string::npos) return access(name.c_str(), X_OK) == 0 ? name : std::string();
+  if (name.find('/') != std::string::npos)
+    return access(name.c_str(), X_OK) == 0 && (!for_others || others_can_run(name)) ? name : std::string();
   const char* path = std::getenv("PATH");
   std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
   for (std::size_t start = 0; start <= dirs.size();) {
@@ -85,7 +96,8 @@ std::string find_program(const std::string& name) {
     const std::string dir = dirs.substr(start, end - start);
     const std::string candidate = (dir.empty() ? "." : dir) + "/" + name;
     struct stat info;
-    if (stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) && access(candidate.c_str(), X_OK) == 0)
+    if (stat(candidate.c_str(), &info) == 0 && S_ISREG(info.st_mode) && access(candidate.c_str(), X_OK) == 0 &&
+        (!for_others || others_can_run(candidate)))
       return candidate;
     start = end + 1;
   }
@@ -171,7 +183,7 @@ std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& wo
 // Run as root, a sandboxed program would keep root's rights on every file bwrap shows it (a user namespace
 // maps its "nobody" back to root). So the child drops to an unprivileged uid of its own before starting
 // bwrap: one per run, from a range no account uses, so that the process cap below counts this run only.
-constexpr uid_t kFirstRunUid = 3'900'000'000u;
+constexpr uid_t kFirstRunUid = 2'000'000'000u;  // below 2^31: the kernel maps no uid above into a user namespace
 uid_t next_run_uid() {
   static std::atomic<unsigned> counter{0};
   return kFirstRunUid + uid_t(getpid() % 100000) * 1000u + (counter++ % 1000u);
@@ -270,9 +282,16 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     return result;
   }
   std::vector<std::string> argv = argv_in;
-  const std::string program = find_program(argv[0]);
+  // Sandboxed under root the run has no rights of root's: its program comes from where anyone may run it
+  // (/usr/bin/python3, not a shim in root's home).
+  const bool unprivileged = sandbox && geteuid() == 0;
+  const std::string program = find_program(argv[0], unprivileged);
   if (program.empty()) {
-    result.error = "cannot find an executable program '" + argv[0] + "'";
+    result.error = unprivileged && !find_program(argv[0]).empty()
+                       ? "'" + argv[0] + "' is found only where an unprivileged user cannot run it (" +
+                             find_program(argv[0]) + "): sandboxed runs do not have root's rights; install it "
+                             "for every user or give a path others can read"
+                       : "cannot find an executable program '" + argv[0] + "'";
     return result;
   }
   argv[0] = program;
@@ -286,7 +305,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   const std::string work = pattern;
   track(work, 0);
   // Sandboxed under root: the run's own uid (see next_run_uid), which must own its folder to write there.
-  const uid_t run_uid = sandbox && geteuid() == 0 ? next_run_uid() : 0;
+  const uid_t run_uid = unprivileged ? next_run_uid() : 0;
   if (run_uid != 0 && chown(work.c_str(), run_uid, gid_t(run_uid)) != 0) {
     result.error = "cannot give the run its temporary directory: " + std::string(std::strerror(errno));
     std::error_code ignored;

@@ -61,7 +61,8 @@ RunResult run_student(const std::vector<std::string>& argv, const std::string& i
 // On failure `why` says what went wrong.
 std::optional<Sandbox> probe_sandbox(std::string& why);
 
-// The program found in PATH (or as given when it has a '/'); empty if none is executable.
-std::string find_program(const std::string& name);
+// The program found in PATH (or as given when it has a '/'); empty if none is executable (with `for_others`,
+// by any user: the folders above it crossable and the file readable and runnable by others).
+std::string find_program(const std::string& name, bool for_others = false);
 
 }  // namespace raycam::check

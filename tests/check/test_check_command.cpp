@@ -256,9 +256,13 @@ TEST_CASE("the sandbox shows a student only what running needs", "[check][cli][s
   const std::string beside = canaries.plant("bob/camera.py", fs::perms(0644));  // another student
   const std::string other_report = canaries.plant("reports/previous.json", fs::perms(0644));  // the CSV's folder
   const std::vector<std::string> secrets = {home, beside, other_report, owners_only, "/etc/shadow", "/root/.bashrc"};
-  std::string student = "--student \"python3 " + own + " snoop";
-  for (const std::string& secret : secrets) student += " " + secret;
-  const Checked c = check(student + "\" --cases 1 --require-sandbox", "snoop");
+  // The list goes in a file of the student's own folder: paths on its command line would be shown to it.
+  const std::string list = canaries.plant("alice/secrets.txt", fs::perms(0644));
+  {
+    std::ofstream names(list);
+    for (const std::string& secret : secrets) names << secret << "\n";
+  }
+  const Checked c = check("--student \"python3 " + own + " snoop " + list + "\" --cases 1 --require-sandbox", "snoop");
   INFO(c.output);
   REQUIRE(c.report.is_object());
   REQUIRE(c.report["sandbox"] == true);
@@ -304,7 +308,10 @@ TEST_CASE("batch grades every folder in parallel into one CSV row each (a hangin
     fs::copy_file(program, folder + "/" + fs::path(program).filename().string());
     const std::string run = folder + "/run.sh";
     std::ofstream(run) << "#!/bin/sh\ncd \"$(dirname \"$0\")\"\nexec " << command << "\n";
-    fs::permissions(run, fs::perms::owner_exec, fs::perm_options::add);
+    // Runnable by anyone, as an unzipped or cloned submission is: run by root, a sandboxed program has no
+    // more rights than any user.
+    fs::permissions(run, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                    fs::perm_options::add);
   };
   const auto file_name = [](const char* path) { return fs::path(path).filename().string(); };
   student("alice", EXAMPLE_STUDENT_CPP, "./" + file_name(EXAMPLE_STUDENT_CPP));

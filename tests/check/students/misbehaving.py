@@ -9,7 +9,8 @@
   bad-ids    valid JSON, an id out of range
   memory     allocates 300 MiB, then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
-  snoop PATH...      tries to read each file, says on stderr which it could ("read PATH") and which not
+  snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
+                     ("read PATH") and which not ("stopped PATH")
 """
 import json
 import os
@@ -46,7 +47,9 @@ if mode == "memory":
     print('{"ids": "allocated"}')
     sys.exit(0)
 if mode == "snoop":
-    for path in sys.argv[2:]:
+    with open(sys.argv[2]) as names:
+        paths = names.read().split()
+    for path in paths:
         try:
             with open(path) as secret:
                 secret.read()
