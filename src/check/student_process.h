@@ -57,6 +57,10 @@ struct RunResult {
 RunResult run_student(const std::vector<std::string>& argv, const std::string& input, const RunLimits& limits,
                       const std::optional<Sandbox>& sandbox);
 
+// Kills every run still going (its whole process group) and removes its temporary folder: at exit, and from
+// raycam-cli check when SIGINT or SIGTERM interrupts a batch.
+void stop_live_runs();
+
 // Whether bwrap exists and can start a sandbox here (checked once per process by running `true` in it).
 // On failure `why` says what went wrong.
 std::optional<Sandbox> probe_sandbox(std::string& why);

@@ -8,6 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <csignal>
+#include <functional>
+#include <mutex>
+#include <pthread.h>
 #include <thread>
 
 #include "check_report.h"
@@ -33,13 +37,34 @@ struct CheckFlags {
   bool require_sandbox = false, no_sandbox = false;
 };
 
+// Written to a new temporary file beside `path` (O_EXCL: never through a link a program left), then renamed
+// over it: a link at `path` is replaced, not followed.
 void write_text_file(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!(out << text) || !out.flush()) throw std::runtime_error(path + ": cannot write");
+  std::string temporary = path + ".XXXXXX";
+  const int fd = mkstemp(temporary.data());
+  if (fd < 0) throw std::runtime_error(path + ": cannot write");
+  const bool written = ::write(fd, text.data(), text.size()) == ssize_t(text.size());
+  if (::close(fd) != 0 || !written || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot write");
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write");
+}
+
+// Every output named on the command line is checked before the first run: a mistyped folder is bad usage
+// (exit 2) at once, not a failure after a class's programs have run.
+void require_output(const std::string& flag, const std::string& path, bool folder) {
+  if (path.empty()) return;
+  std::error_code error;
+  const fs::path target(path);
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const std::string expected = folder ? "a folder to write in (existing, or new in an existing folder)"
+                                      : "a file to write (new, or a file to replace) in an existing folder";
+  std::string got;
+  if (folder && fs::exists(target, error) && !fs::is_directory(target, error)) got = " (not a folder)";
+  else if (!folder && fs::is_directory(target, error)) got = " (a folder)";
+  else if (!fs::is_directory(parent, error)) got = " (its folder does not exist)";
+  else if (access(parent.c_str(), W_OK) != 0 && !(folder && fs::is_directory(target, error))) got = " (not writable)";
+  if (!got.empty()) throw std::invalid_argument(flags::bad_value_message(flag, expected, path) + got);
 }
 
 // The sandbox to use, or none: refuses with --require-sandbox, warns on the terminal otherwise.
@@ -128,7 +153,19 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     std::fflush(stderr);
   };
   std::vector<std::string> rows(submissions.size());
+  std::function<void(std::size_t, const StudentReport&)> record_student;
+  std::vector<std::string> output_errors;  // a write that failed for one student: said at the end
+  std::mutex output_mutex;
   auto on_student = [&](std::size_t s, const StudentReport& report) {
+    try {
+      record_student(s, report);
+    } catch (const std::exception& error) {  // never out of a worker thread: the batch goes on
+      std::lock_guard<std::mutex> lock(output_mutex);
+      output_errors.push_back(submissions[s].name + ": " + error.what());
+    }
+  };
+  // The bookkeeping for one student (called from the workers, one student at a time).
+  record_student = [&](std::size_t s, const StudentReport& report) {
     ++students_done;
     rows[s] = csv_row(submissions[s].name, report, bool(sandbox));
     csv << rows[s] << std::flush;
@@ -144,15 +181,39 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   };
   const std::vector<StudentReport> reports =
       check_submissions(submissions, cases, references, limits_of(flags), threads, on_run, on_student);
-  if (terminal) std::fprintf(stderr, "\n");
+  if (terminal) {
+    const std::size_t runs = submissions.size() * cases.size();
+    on_run(runs, runs);  // the bar ends at N/N students, whatever order the last callbacks came in
+    std::fprintf(stderr, "\n");
+  }
+  for (const std::string& error : output_errors) std::fprintf(stderr, "raycam-cli check: %s\n", error.c_str());
   csv.close();
   std::string sorted = csv_header();
   for (const std::string& row : rows) sorted += row;
   write_text_file(flags.csv, sorted);
   std::printf("%s", textf(header.lang, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
+  if (!output_errors.empty()) return 1;
   for (const StudentReport& report : reports)
     if (report.passed() != int(cases.size())) return 1;
   return 0;
+}
+
+// Ctrl-C or SIGTERM during a check: the programs still running are killed and their temporary folders
+// removed before the process ends (a signal's default action would leave both behind). The signals are
+// taken by one thread (sigwait); the workers never see them.
+void clean_up_on_interrupt() {
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started after this
+  std::thread([signals] {
+    int received = 0;
+    sigwait(&signals, &received);
+    stop_live_runs();
+    std::fprintf(stderr, "\nraycam-cli check: interrupted; the running programs were stopped\n");
+    _exit(128 + received);
+  }).detach();
 }
 }  // namespace
 
@@ -204,6 +265,12 @@ int run_check(const Args& args) {
   if (flags.require_sandbox && flags.no_sandbox)
     throw std::invalid_argument("--require-sandbox and --no-sandbox contradict each other");
 
+  const bool batch = !flags.batch.empty();
+  require_output("--report", flags.report, batch);  // --batch: a folder of reports
+  require_output("--csv", flags.csv, false);
+  require_output("--diff-dir", flags.diff_dir, true);
+  require_output("--write-cases", flags.write_cases, true);
+
   ReportHeader header;
   header.lang = check_language(flags.lang);
   header.mode = flags.mode;
@@ -226,11 +293,16 @@ int run_check(const Args& args) {
     header.sandbox_note = "answer files: no program run";
     return finish(flags, header, cases, references, check_answer_files(flags.answers, cases, references));
   }
+  clean_up_on_interrupt();
   if (!flags.batch.empty()) return run_batch(flags, header, cases, references);
 
   Submission submission;
   submission.name = "student";
   submission.argv = absolutise_paths(split_command(flags.student, "--student"));
+  std::error_code not_a_folder;
+  if (fs::is_directory(submission.argv[0], not_a_folder))
+    throw std::invalid_argument(flags::bad_value_message("--student", "a program (\"COMMAND ARGS\")",
+                                                         flags.student) + " (a folder)");
   if (find_program(submission.argv[0]).empty())
     throw std::invalid_argument("--student: cannot find an executable program '" + submission.argv[0] + "'");
   submission.sandbox = choose_sandbox(flags, header);

@@ -372,3 +372,47 @@ TEST_CASE("lang fr gives the table and the score and the diagnosis in French", "
   CHECK_THAT(c.output, Catch::Contains("le pixel k va à l'indice k"));
   CHECK_THAT(c.report["diagnosis"][0]["text"].get<std::string>(), Catch::Contains("le pixel k"));
 }
+
+TEST_CASE("bad outputs, a folder as the program and a repeated flag are bad usage before any run",
+          "[check][cli][usage]") {
+  const std::string dir = scratch("usage");
+  const std::string file = dir + "/a-file";
+  std::ofstream(file) << "x";
+  const std::string example = "--student \"python3 " + std::string(EXAMPLE_STUDENT_PY) + "\" --cases 1";
+  Checked c = check(example + " --diff-dir " + file, "usage_diff_file");
+  CHECK(c.exit_code == 2);
+  CHECK_THAT(c.output, Catch::Contains("--diff-dir: expected a folder") && Catch::Contains("(not a folder)"));
+  CHECK_THAT(c.output, !Catch::Contains("score"));  // nothing ran
+  c = check(example + " --csv " + dir + "/missing/grades.csv", "usage_csv");
+  CHECK(c.exit_code == 2);
+  CHECK_THAT(c.output, Catch::Contains("--csv: expected a file") && Catch::Contains("does not exist"));
+  c = check("--student " + dir, "usage_student_folder");
+  CHECK(c.exit_code == 2);
+  CHECK_THAT(c.output, Catch::Contains("--student: expected a program") && Catch::Contains("(a folder)"));
+  c = check(example + " --student \"python3 x.py\"", "usage_twice");
+  CHECK(c.exit_code == 2);
+  CHECK_THAT(c.output, Catch::Contains("raycam-cli check: error: --student: expected one value, given more than once"));
+  // A batch whose --diff-dir is a file stops before its first student.
+  fs::create_directories(dir + "/class/alice");
+  c = check("--batch " + dir + "/class --student-cmd \"{dir}/run.sh\" --csv " + dir + "/g.csv --diff-dir " + file,
+            "usage_batch_diff");
+  CHECK(c.exit_code == 2);
+  CHECK_FALSE(fs::exists(dir + "/g.csv"));
+}
+
+TEST_CASE("an interrupted check stops its programs and leaves no temporary folder", "[check][cli][signal]") {
+  const std::string dir = scratch("interrupt");
+  const std::string tmp = dir + "/tmp";
+  fs::create_directories(tmp);
+  fs::permissions(tmp, fs::perms::all);  // like /tmp: a sandboxed run's own uid makes its folder here
+  const std::string command = "TMPDIR=" + tmp + " " + RAYCAM_CLI + " check --student \"python3 " +
+                              MISBEHAVING_PY + " hang\" --cases 2 --timeout 60 > " + dir +
+                              "/out.txt 2>&1 & pid=$!; sleep 2; kill -INT $pid; wait $pid; echo $?";
+  FILE* shell = popen(command.c_str(), "r");
+  REQUIRE(shell);
+  char status[16] = {};
+  REQUIRE(fgets(status, sizeof status, shell));
+  pclose(shell);
+  CHECK(std::string(status) == "130\n");  // 128 + SIGINT
+  CHECK(fs::is_empty(tmp));  // the runs' folders are gone
+}
