@@ -136,7 +136,7 @@ std::string csv_field(const std::string& text) {
 }  // namespace
 
 std::string csv_header() {
-  return "student,passed,cases,score,top_diagnosis,explains,fail,crash,timeout,bad_output,sandbox\n";
+  return "student,passed,cases,score,top_diagnosis,explains,fail,crash,timeout,bad_output,sandbox,checker_error\n";
 }
 
 std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed) {
@@ -149,7 +149,7 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
          (explained ? std::to_string(report.diagnosis[0].cases.size()) : std::string("0")) + "," +
          std::to_string(report.count(CaseStatus::fail)) + "," + std::to_string(report.count(CaseStatus::crash)) + "," +
          std::to_string(report.count(CaseStatus::timeout)) + "," + std::to_string(report.count(CaseStatus::bad_output)) +
-         "," + (sandboxed ? "yes" : "no") + "\n";
+         "," + (sandboxed ? "yes" : "no") + "," + std::to_string(report.count(CaseStatus::checker_error)) + "\n";
 }
 
 // ---- difference images -------------------------------------------------------------------------------------

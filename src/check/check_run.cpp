@@ -134,8 +134,15 @@ std::vector<StudentReport> check_submissions(
   auto work = [&] {
     for (std::size_t item; (item = next++) < total;) {
       const std::size_t s = item / cases.size(), i = item % cases.size();
-      const RunResult run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
+      RunResult run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
+      if (run.infrastructure_failure)  // once more (a process table full for a moment), then the checker's error
+        run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
       CaseResult result = result_of_run(int(i) + 1, cases[i], references[i], run);
+      if (run.infrastructure_failure) {
+        result.status = CaseStatus::checker_error;
+        result.detail = "the checker could not run the program: " +
+                        (run.error.empty() ? run.err.substr(0, 200) : run.error);
+      }
       bool complete = false;
       {
         std::lock_guard<std::mutex> lock(mutex);

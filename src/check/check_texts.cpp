@@ -23,6 +23,7 @@ const std::vector<Translation>& table() {
       {"pass", "réussi"},
       {"fail", "échec"},
       {"crash", "plantage"},
+      {"checker-error", "erreur du correcteur"},
       {"timeout", "trop long"},
       {"bad-output", "sortie invalide"},
       {" (md differs)", " (md diffère)"},

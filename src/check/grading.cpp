@@ -12,6 +12,7 @@ const char* status_name(CaseStatus status) {
     case CaseStatus::crash: return "crash";
     case CaseStatus::timeout: return "timeout";
     case CaseStatus::bad_output: return "bad-output";
+    case CaseStatus::checker_error: return "checker-error";
   }
   return "?";
 }

@@ -21,8 +21,10 @@
 
 namespace raycam::check {
 
-enum class CaseStatus { pass, fail, crash, timeout, bad_output };
-const char* status_name(CaseStatus status);  // "pass", "fail", "crash", "timeout", "bad-output"
+// checker_error: the checker could not run the program (the sandbox did not start, no process could be
+// forked), twice: not counted against the student, who is to be checked again.
+enum class CaseStatus { pass, fail, crash, timeout, bad_output, checker_error };
+const char* status_name(CaseStatus status);  // "pass", "fail", "crash", "timeout", "bad-output", "checker-error"
 
 // The wrong pixel deepest inside a region where the reference is one id (the clearest error to look at).
 struct WorstPixel {

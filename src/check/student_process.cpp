@@ -173,6 +173,8 @@ std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& wo
   }
   for (const std::string& dir : shown)
     if (dir != "/") words.insert(words.end(), {"--ro-bind", dir, dir});
+  // bwrap writes its "child-pid" JSON on fd 4 once the sandbox is up: no bytes there means it never started.
+  words.insert(words.end(), {"--info-fd", "4"});
   words.insert(words.end(), {"--bind", work, work, "--remount-ro", "/tmp", "--remount-ro", "/dev", "--unshare-all",
                              "--unshare-user", "--uid", "65534", "--gid", "65534", "--die-with-parent",
                              "--new-session", "--chdir", work, "--"});
@@ -252,7 +254,7 @@ void stop(pid_t pid) {
 
 // ---- the child (after fork: async-signal-safe calls only) -------------------------------------------------
 [[noreturn]] void exec_child(const char* program, char* const* argv, char* const* envp, const char* work, int in,
-                             int out, int err, int report, const RunLimits& limits, uid_t run_uid,
+                             int out, int err, int report, int info, const RunLimits& limits, uid_t run_uid,
                              rlim_t max_processes) {
   setpgid(0, 0);
   sigset_t none;  // raycam-cli check blocks SIGINT and SIGTERM for its signal thread: not the student's
@@ -273,9 +275,11 @@ void stop(pid_t pid) {
   setrlimit(RLIMIT_AS, &memory);
   setrlimit(RLIMIT_FSIZE, &file);
   setrlimit(RLIMIT_CORE, &no_core);
-  if (dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 || dup2(report, 3) < 0) _exit(127);
+  if (dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(err, 2) < 0 || dup2(report, 3) < 0 ||
+      (info >= 0 && dup2(info, 4) < 0))
+    _exit(127);
   fcntl(3, F_SETFD, FD_CLOEXEC);
-  close_range(4, ~0U, 0);  // nothing else of ours leaks into the student's program
+  close_range(info >= 0 ? 5 : 4, ~0U, 0);  // nothing else of ours leaks into the student's program
   if (chdir(work) == 0) execve(program, argv, envp);
   const int code = errno;
   ssize_t ignored = write(3, &code, sizeof code);
@@ -313,6 +317,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/raycam-check-XXXXXX";
   if (!mkdtemp(pattern.data())) {
     result.error = "cannot create a temporary directory: " + std::string(std::strerror(errno));
+    result.infrastructure_failure = true;
     return result;
   }
   const std::string work = pattern;
@@ -335,17 +340,18 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   const auto start = Clock::now();
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.timeout_seconds));
   try {
-    Pipe in, out, err, report;
+    Pipe in, out, err, report, info;
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
     if (pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), work.c_str(), in.read, out.write, err.write,
-                             report.write, limits, run_uid, max_processes);
+                             report.write, sandbox ? info.write : -1, limits, run_uid, max_processes);
     setpgid(pid, pid);  // also here: whichever runs first, the group exists before we may signal it
     track(work, pid);
     in.close_read();
     out.close_write();
     err.close_write();
     report.close_write();
+    info.close_write();
     int exec_errno = 0;
     if (read(report.read, &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
       waitpid(pid, nullptr, 0);
@@ -415,9 +421,15 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     }
     kill(-pid, SIGKILL);  // anything it left behind in its group
-  } catch (const std::exception& error) {
+    if (sandbox) {  // see RunResult::infrastructure_failure
+      fcntl(info.read, F_SETFL, O_NONBLOCK);
+      char started[64];
+      result.infrastructure_failure = read(info.read, started, sizeof started) <= 0;
+    }
+  } catch (const std::exception& error) {  // fork or pipe failed: the machine, not the program
     result.end = RunResult::End::could_not_start;
     result.error = error.what();
+    result.infrastructure_failure = true;
   }
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::error_code ignored;

@@ -44,6 +44,9 @@ struct Sandbox {
 
 struct RunResult {
   enum class End { exited, signalled, timed_out, output_too_large, could_not_start };
+  // The checker's own failure, not the program's: the sandbox did not start (bwrap wrote no "started"
+  // message on its info pipe) or this process could not fork or make a folder.
+  bool infrastructure_failure = false;
   End end = End::could_not_start;
   int exit_code = 0;
   int signal = 0;

@@ -230,3 +230,30 @@ TEST_CASE("the worst pixel of an image is the wrong one farthest from any edge (
   CHECK(result.worst->column == 6);
   CHECK(result.worst->depth == 4);
 }
+
+TEST_CASE("a run's processes are capped, and a sandbox that cannot start is the checker's failure",
+          "[check][sandbox]") {
+  std::string why;
+  const std::optional<Sandbox> sandbox = probe_sandbox(why);
+  if (!sandbox) return;  // no sandbox here: the cap and the info pipe are the sandbox's
+  const std::vector<std::string> forks = {"python3", MISBEHAVING_PY, "forks", "600"};
+  RunLimits limits;
+  limits.max_processes = 64;
+  RunResult run = run_student(forks, "", limits, sandbox);
+  REQUIRE(run.end == RunResult::End::exited);
+  CHECK_FALSE(run.infrastructure_failure);
+  int started = -1;
+  std::sscanf(run.err.c_str() + run.err.find("started"), "started %d", &started);
+  CHECK(started >= 0);
+  CHECK(started < 64);
+  // bwrap itself cannot start (no process left for it): not the student's crash.
+  limits.max_processes = 1;
+  run = run_student({"python3", "-c", "print(1)"}, "", limits, sandbox);
+  CHECK(run.infrastructure_failure);
+  // A program that only says "bwrap:" and fails is the program's failure.
+  limits = RunLimits{};
+  run = run_student({"python3", "-c", "import sys; print('bwrap: fake', file=sys.stderr); sys.exit(1)"}, "", limits,
+                    sandbox);
+  CHECK(run.end == RunResult::End::exited);
+  CHECK_FALSE(run.infrastructure_failure);
+}

@@ -9,6 +9,7 @@
   bad-ids    valid JSON, an id out of range
   memory     allocates 300 MiB, then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
+  forks N            starts N children that sleep, says on stderr how many it could start
   snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
                      ("read PATH") and which not ("stopped PATH")
 """
@@ -45,6 +46,18 @@ if mode == "bad-ids":
 if mode == "memory":
     block = bytearray(300 << 20)
     print('{"ids": "allocated"}')
+    sys.exit(0)
+if mode == "forks":
+    started = 0
+    for _ in range(int(sys.argv[2])):
+        try:
+            if os.fork() == 0:
+                time.sleep(30)
+                os._exit(0)
+            started += 1
+        except OSError:
+            break
+    print("started", started, file=sys.stderr)
     sys.exit(0)
 if mode == "snoop":
     with open(sys.argv[2]) as names:
