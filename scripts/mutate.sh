@@ -74,6 +74,14 @@ mutant figure-png-pixel-size src/figure/figure_files.cpp 's/return {0.75 \* widt
 mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const Disc& disc : frame.objects) {$/  for (const Disc\& disc : frame.objects) { if (\&disc - frame.objects.data() >= 1000) break;/' "$FIGURE" "^figure:"
 mutant figure-export-ignores-the-step src/session/figure_export.cpp 's/state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1)/count - 1/' "raycam_session_tests" "^session:.*Export figure"
 mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(lang == Language::fr ? "cadre (" : "frame (")/("frame (")/' "$FIGURE" "^figure:"
+# --- checker safety ---
+CHECK="raycam_check_tests raycam-cli"
+mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = result.wrong_pixels == 0 ? CaseStatus::pass/result.status = result.wrong_pixels <= 1 ? CaseStatus::pass/' "$CHECK" "^check:"
+mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(words.end(), {"--bind", work, work, "--remount-ro"/  words.insert(words.end(), {"--bind", "\/var", "\/var", "--bind", work, work, "--remount-ro"/' "$CHECK" "^check:"
+mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline) timed_out = true;/      if (false) timed_out = true;/' "$CHECK" "^check:"
+mutant score-line-counts-failures src/check/check_report.cpp 's/cases passed (%.0f %%)\\n", report.passed(), n,/cases passed (%.0f %%)\\n", n - report.passed(), n,/' "$CHECK" "^check:"
+mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
+mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -416,3 +416,12 @@ TEST_CASE("an interrupted check stops its programs and leaves no temporary folde
   CHECK(std::string(status) == "130\n");  // 128 + SIGINT
   CHECK(fs::is_empty(tmp));  // the runs' folders are gone
 }
+
+TEST_CASE("the text report's score line counts the cases passed", "[check][cli][report]") {
+  // A mirrored camera passes the cases where mirroring changes nothing, fails the others.
+  const Checked c = check(mistaken("mirrored") + " --mode 2d", "score_line");
+  const int passed = c.report["passed"].get<int>(), cases = int(c.report["results"].size());
+  REQUIRE(passed < cases);  // a mix, so that passed and failed counts differ
+  const std::string line = "score: " + std::to_string(passed) + " / " + std::to_string(cases) + " cases passed";
+  CHECK_THAT(c.output, Catch::Contains(line));
+}

@@ -257,3 +257,11 @@ TEST_CASE("a run's processes are capped, and a sandbox that cannot start is the 
   CHECK(run.end == RunResult::End::exited);
   CHECK_FALSE(run.infrastructure_failure);
 }
+
+TEST_CASE("a program that closes its stdout and goes on is stopped at the timeout", "[check][timeout]") {
+  RunLimits limits;
+  limits.timeout_seconds = 1.0;
+  const RunResult run = run_student({"python3", MISBEHAVING_PY, "close-sleep"}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::timed_out);
+  CHECK(run.seconds < 10.0);  // the deadline, not the program's 60 s
+}

@@ -9,6 +9,7 @@
   bad-ids    valid JSON, an id out of range
   memory     allocates 300 MiB, then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
+  close-sleep        closes its stdout and stderr at once, then sleeps far past any timeout
   forks N            starts N children that sleep, says on stderr how many it could start
   snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
                      ("read PATH") and which not ("stopped PATH")
@@ -46,6 +47,11 @@ if mode == "bad-ids":
 if mode == "memory":
     block = bytearray(300 << 20)
     print('{"ids": "allocated"}')
+    sys.exit(0)
+if mode == "close-sleep":
+    os.close(1)
+    os.close(2)
+    time.sleep(60)
     sys.exit(0)
 if mode == "forks":
     started = 0
