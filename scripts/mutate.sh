@@ -81,6 +81,7 @@ mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(wor
 mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline) timed_out = true;/      if (false) timed_out = true;/' "$CHECK" "^check:"
 mutant score-line-counts-failures src/check/check_report.cpp 's/cases passed (%.0f %%)\\n", report.passed(), n,/cases passed (%.0f %%)\\n", n - report.passed(), n,/' "$CHECK" "^check:"
 mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
+mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 MUTANTS_END=1
 

@@ -27,6 +27,7 @@ struct ClassicMistakes {
   bool no_t_min = false;               // hits with t < 0 accepted: the smaller root wins, whatever its sign
   bool theta_phi_swapped = false;      // 3D: θ used as φ and φ as θ
   bool res_truncated = false;          // n = floor(res·N) instead of round(res·N)
+  bool square_pixels = false;          // 3D: screen stretched to the image's aspect (a look-at camera's habit)
 };
 
 // Only the printed rotation sign, as `on` says (the placement's older boolean form).
@@ -46,7 +47,7 @@ struct MistakeInfo {
   const char* explanation_fr;
 };
 
-inline constexpr std::size_t kClassicMistakeCount = 13;
+inline constexpr std::size_t kClassicMistakeCount = 14;
 // Every mistake, in the order the app lists them and the diagnosis breaks ties.
 extern const MistakeInfo kClassicMistakes[kClassicMistakeCount];
 

@@ -192,7 +192,8 @@ std::vector<Design> designs_3d() {
   return {
       {"3D: theta in the first quadrant, phi 60, off-centre target, a sphere behind the camera",
        {"printed_rotation_sign", "pixel_edges", "mirrored", "upside_down", "rows_flipped", "degrees_as_radians",
-        "no_focal_scale", "direction_translated", "skip_renormalise", "no_t_min", "theta_phi_swapped"},
+        "no_focal_scale", "direction_translated", "skip_renormalise", "no_t_min", "theta_phi_swapped",
+        "square_pixels"},
        [](Jitter& j) {
          const glm::dvec3 target{j.around(0.5, 0.3), j.around(-0.3, 0.3), j.around(0.2, 0.3)};
          Builder3D b(target, j.around(7, 0.8), j.around(35, 10, 1), j.around(62, 8, 1), j.around(1.8, 0.3), 40, 30,
@@ -201,20 +202,22 @@ std::vector<Design> designs_3d() {
          b.sphere(b.frame.eye - j.around(3, 0.5) * b.frame.view + j.around(0.4, 0.3) * b.frame.up, j.around(1.5, 0.2));
          return b.file;
        }},
-      {"3D: phi near the north pole, theta in the second quadrant",
+      // Within 0.01° of the poles: where a camera that derives θ from the view vector (the handout's arccos
+      // route) or a look-at camera with a fixed up vector is nearest to losing θ, which only rolls the image.
+      {"3D: phi within 0.01° of the north pole, theta in the second quadrant",
        {"theta_phi_swapped", "upside_down", "rows_flipped", "mirrored", "degrees_as_radians"},
        [](Jitter& j) {
          const glm::dvec3 target{j.around(-0.4, 0.3), j.around(0.6, 0.3), j.around(0.0, 0.3)};
-         Builder3D b(target, j.around(6, 0.8), j.around(140, 20, 1), j.around(4, 2, 1), j.around(1.5, 0.3), 36, 28,
+         Builder3D b(target, j.around(6, 0.8), j.around(140, 20, 1), j.around(0.005, 0.004, 4), j.around(1.5, 0.3), 36, 28,
                      1.0);
          asymmetric_spheres(b, j, target);
          return b.file;
        }},
-      {"3D: phi near the south pole, theta in the third quadrant",
+      {"3D: phi within 0.01° of the south pole, theta in the third quadrant",
        {"theta_phi_swapped", "upside_down", "rows_flipped", "mirrored", "printed_rotation_sign"},
        [](Jitter& j) {
          const glm::dvec3 target{j.around(0.2, 0.3), j.around(0.1, 0.3), j.around(1.0, 0.3)};
-         Builder3D b(target, j.around(6, 0.8), j.around(235, 20, 1), j.around(176, 2, 1), j.around(1.7, 0.3), 36, 28,
+         Builder3D b(target, j.around(6, 0.8), j.around(235, 20, 1), j.around(179.995, 0.004, 4), j.around(1.7, 0.3), 36, 28,
                      1.0);
          asymmetric_spheres(b, j, target);
          return b.file;

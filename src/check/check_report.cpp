@@ -2,6 +2,8 @@
 #include "raycam/image_files.h"
 #include "check_report.h"
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -44,9 +46,27 @@ std::string stderr_excerpt(const std::string& err) {
 }  // namespace
 
 // ---- terminal text -----------------------------------------------------------------------------------------
+namespace {
+// The run's detail in the report's language: the words the checker writes itself (the reasons a reader or a
+// program gives stay as they are).
+std::string detail_text(const std::string& lang, const std::string& detail) {
+  const std::string exit_status = "exit status ";
+  if (detail.rfind(exit_status, 0) == 0) {
+    const std::size_t end = detail.find_first_not_of("0123456789", exit_status.size());
+    const int code = std::atoi(detail.c_str() + exit_status.size());
+    return textf(lang, "exit status %d", code) + (end == std::string::npos ? "" : detail.substr(end));
+  }
+  if (detail == "no answer within the timeout") return text(lang, detail.c_str());
+  return detail;
+}
+}  // namespace
+
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
   const std::string& lang = h.lang;
-  std::string out = textf(lang, "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n", cases.size(),
+  std::string out = textf(lang,
+                          cases.size() == 1 ? "raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n"
+                                            : "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
+                          cases.size(),
                           h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
   if (!h.sandboxed && !h.sandbox_note.empty()) out += textf(lang, "warning: %s\n", h.sandbox_note.c_str());
   out += textf(lang, "%5s  %3s  %-10s  %15s  %s\n", text(lang, "case"), text(lang, "dim"), text(lang, "status"),
@@ -55,12 +75,13 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
     const std::string wrong = r.status == CaseStatus::pass || r.status == CaseStatus::fail
                                   ? std::to_string(r.wrong_pixels) + " / " + std::to_string(r.pixels)
                                   : std::string();
-    const std::string why = r.status == CaseStatus::fail ? pixel_text(lang, r) : r.detail;
+    const std::string why = r.status == CaseStatus::fail ? pixel_text(lang, r) : detail_text(lang, r.detail);
     out += textf(lang, "%5d  %dD   %-10s  %15s  %s%s\n", r.number, r.dimension, text(lang, status_name(r.status)),
                  wrong.c_str(), why.c_str(), r.md == "differs" ? text(lang, " (md differs)") : "");
   }
   const int n = int(report.results.size());
-  out += textf(lang, "score: %d / %d cases passed (%.0f %%)\n", report.passed(), n,
+  out += textf(lang, n == 1 ? "score: %d / %d case passed (%.0f %%)\n" : "score: %d / %d cases passed (%.0f %%)\n",
+               report.passed(), n,
                n ? 100.0 * report.passed() / n : 0.0);
   bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
   for (const CaseResult& r : report.results)

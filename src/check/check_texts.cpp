@@ -13,6 +13,11 @@ const std::vector<Translation>& table() {
   static const std::vector<Translation> entries = {
       {"raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
        "raycam-cli check : %zu cas (mode %s, graine %llu), bac à sable : %s\n"},
+      {"raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n",
+       "raycam-cli check : %zu cas (mode %s, graine %llu), bac à sable : %s\n"},
+      {"score: %d / %d case passed (%.0f %%)\n", "score : %d / %d cas réussi (%.0f %%)\n"},
+      {"exit status %d", "code de sortie %d"},
+      {"no answer within the timeout", "pas de réponse dans le délai"},
       {"none", "aucun"},
       {"warning: %s\n", "attention : %s\n"},
       {"case", "cas"},
@@ -43,7 +48,7 @@ const std::vector<Translation>& table() {
        "le bac à sable ne démarre pas et --require-sandbox est donné : %s"},
       {"running student programs WITHOUT a sandbox (%s): they can read and write what you can",
        "programmes des étudiants lancés SANS bac à sable (%s) : ils peuvent lire et écrire ce que vous pouvez"},
-      {"%zu submissions x %zu cases on %d threads\n", "%zu rendus x %zu cas sur %d fils\n"},
+      {"%zu submissions x %zu cases on %d threads\n", "%zu rendus × %zu cas, %d exécutions à la fois\n"},
       {"wrote %s (%zu students)\n", "%s écrit (%zu étudiants)\n"},
   };
   return entries;

@@ -148,7 +148,10 @@ glm::dvec3 Camera3D::image_right() const { return transform_vector(world_from_ca
 // Pixel centres through the pixel <-> screen pair (the printed 2k/n is a pixel's corner: pixel_edges).
 double Camera3D::canonical_x(int column) const {
   if (mistakes_.mirrored) column = columns_ - 1 - column;  // classic mistake: columns reversed
-  return raycam::screen_from_raster(mistakes_.pixel_edges ? column : column + 0.5, columns_);
+  const double x = raycam::screen_from_raster(mistakes_.pixel_edges ? column : column + 0.5, columns_);
+  // Classic mistake: the screen's half-width taken as the image's aspect (Ray Tracing in One Weekend's look-at
+  // camera) where the handout's canonical screen is the square [-1, 1]² whatever nbc and nbl (exercise 3).
+  return mistakes_.square_pixels ? x * double(columns_) / double(rows_) : x;
 }
 
 double Camera3D::canonical_y(int row) const {

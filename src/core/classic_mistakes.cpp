@@ -58,12 +58,12 @@ const MistakeInfo kClassicMistakes[kClassicMistakeCount] = {
      "Ex. 2: u_k = M_d·u_k^0 is a vector (w = 0): the translation T(OP) must not move it.",
      "Ex. 2 : u_k = M_d·u_k^0 est un vecteur (w = 0) : la translation T(OP) ne doit pas le déplacer."},
     {"eye_origin", &ClassicMistakes::eye_origin, true, true, "rays start at the eye",
-     "rayons partant de l'oeil",
+     "rayons partant de l'œil",
      "Ex. 2: the ray is [P_k, u_k), starting on the screen at P_k = M_d·P_k^0; from the eye, objects between "
      "the eye and the screen appear.",
-     "Ex. 2 : le rayon est [P_k, u_k), il part de l'écran en P_k = M_d·P_k^0 ; depuis l'oeil, les objets "
+     "Ex. 2 : le rayon est [P_k, u_k), il part de l'écran en P_k = M_d·P_k^0 ; depuis l'œil, les objets "
      "entre "
-     "l'oeil et l'écran apparaissent."},
+     "l'œil et l'écran apparaissent."},
     {"no_t_min", &ClassicMistakes::no_t_min, true, true, "hits behind the ray accepted",
      "impacts derrière le rayon acceptés",
      "Ex. 2: a ray is a half-line, only hits with t >= 0 count; otherwise objects behind the screen come "
@@ -81,6 +81,12 @@ const MistakeInfo kClassicMistakes[kClassicMistakeCount] = {
      "n = partie entière de res N",
      "Ex. 1 step 3: the useful size is n = res·N rounded to the nearest integer, not truncated.",
      "Ex. 1 étape 3 : la taille utile est n = res·N arrondi à l'entier le plus proche, pas tronqué."},
+    {"square_pixels", &ClassicMistakes::square_pixels, false, true, "screen stretched to the image's aspect",
+     "écran étiré au format de l'image",
+     "Ex. 3: the canonical screen is the square [-1, 1]² whatever nbl and nbc; stretched to the image's aspect "
+     "(the square pixels of a look-at camera), a non-square image sees a wider field.",
+     "Ex. 3 : l'écran canonique est le carré [-1, 1]², quels que soient nbl et nbc ; étiré au format de "
+     "l'image (les pixels carrés d'une caméra « look-at »), une image non carrée voit un champ plus large."},
 };
 
 const MistakeInfo* find_mistake(std::string_view id) {
@@ -99,7 +105,7 @@ bool mistakes_change_only_placement(const ClassicMistakes& m) {
   // These build another M_d (still a rotation times H and T) or another n: the footprint bounds, computed
   // from the camera's own M_d and pixel count, hold for them. The others change the rays or the hit rule.
   return !(m.pixel_edges || m.skip_renormalise || m.mirrored || m.rows_flipped || m.direction_translated ||
-           m.eye_origin || m.no_t_min);
+           m.eye_origin || m.no_t_min || m.square_pixels);
 }
 
 }  // namespace raycam

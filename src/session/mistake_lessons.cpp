@@ -32,6 +32,13 @@ void pixel_edges_show(AppState& state) { state.res = std::max(0.05, 1.0 / max_si
 // ---- res truncated -------------------------------------------------------------------------------------
 void res_truncated_show(AppState& state) { state.res = 12.75 / max_side(state); }  // round 13, floor 12
 
+// ---- square pixels ---------------------------------------------------------------------------------------
+// Only a non-square image shows it: the canonical screen is the square whatever nbc and nbl.
+void square_pixels_show(AppState& state) {
+  if (state.dimension == 2) switch_dimension(state, 3);
+  state.max_rows_3d = std::max(16, state.max_columns_3d / 2);
+}
+
 // ---- forgot to renormalise -----------------------------------------------------------------------------
 // u_k = M_d·(P_k^0 - E0) keeps the length of (x, y, -d_f): |u| = sqrt(x² + y² + d_f²), from d_f on the axis
 // to sqrt(1 + d_f²) (2D) or sqrt(2 + d_f²) (3D) at the edges. With f = origin - centre and b̂ = f·û:
@@ -129,6 +136,9 @@ const std::vector<MistakeLesson>& mistake_lessons() {
                     "the image"));
     extend("res_truncated", nullptr, res_truncated_show,
            tr_later("res·N = 12.75: floor gives 12 pixels, round 13; count them"));
+    extend("square_pixels", nullptr, square_pixels_show,
+           tr_later("the image is now twice as wide as tall: the square screen gives it pixels twice as tall as "
+                    "wide, the stretched screen sees twice the field across"));
     extend("no_focal_scale", nullptr, focal_scale_show,
            tr_later("d_f = 3: without H the field of view stays 90°, as at d_f = 1"));
     const char* behind = tr_later(

@@ -176,6 +176,10 @@ const std::vector<Translation>& translation_table() {
        "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
       {"res·N = 12.75: floor gives 12 pixels, round 13; count them",
        "res·N = 12,75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
+      {"the image is now twice as wide as tall: the square screen gives it pixels twice as tall as wide, the "
+       "stretched screen sees twice the field across",
+       "l'image est maintenant deux fois plus large que haute : l'écran carré lui donne des pixels deux fois "
+       "plus hauts que larges, l'écran étiré voit un champ deux fois plus large"},
       {"d_f = 3: without H the field of view stays 90°, as at d_f = 1",
        "d_f = 3 : sans H l'angle d'ouverture reste 90°, comme avec d_f = 1"},
       {"the object nearest the target is now between the eye and the screen: the correct camera does not see "

@@ -35,7 +35,7 @@ Scene3D spheres_around_target() {
 }
 }  // namespace
 
-TEST_CASE("the mistake table names the issue's thirteen IDs once each, in both languages", "[mistake]") {
+TEST_CASE("the mistake table names the fourteen IDs once each, in both languages", "[mistake]") {
   const std::set<std::string> expected = {"printed_rotation_sign",
                                           "pixel_edges",
                                           "mirrored",
@@ -48,6 +48,7 @@ TEST_CASE("the mistake table names the issue's thirteen IDs once each, in both l
                                           "no_t_min",
                                           "theta_phi_swapped",
                                           "skip_renormalise",
+                                          "square_pixels",
                                           "res_truncated"};
   std::set<std::string> seen;
   ClassicMistakes all;

@@ -188,8 +188,10 @@ int main(int argc, char** argv) {
       image.emplace_back();
       // pixel_edges: the printed -1 + 2k/n on both axes (y counts down from the top edge)
       const double y = has("pixel_edges") ? 1.0 - 2.0 * r / rows : 1.0 - (2.0 * r + 1.0) / rows;
+      // square_pixels: the screen's half-width is the image's aspect, as a look-at camera makes it
+      const double aspect = has("square_pixels") ? double(columns) / rows : 1.0;
       for (int c = 0; c < columns; ++c)
-        image.back().push_back(cast(objects, m, {pixel_x(c, columns), y, 0.0}, {0.0, 0.0, 1.0}));
+        image.back().push_back(cast(objects, m, {aspect * pixel_x(c, columns), y, 0.0}, {0.0, 0.0, 1.0}));
       if (has("mirrored")) std::reverse(image.back().begin(), image.back().end());
     }
     if (has("rows_flipped")) std::reverse(image.begin(), image.end());
