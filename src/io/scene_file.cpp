@@ -329,12 +329,12 @@ void save_scene_file(const SceneFile& file, const std::string& path) {
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(temporary + ": cannot open for writing");
+    if (!out) throw std::runtime_error(path + ": cannot write (no temporary file beside it); left unchanged");
     out << text;
     out.flush();
     if (!out) {
       std::remove(temporary.c_str());
-      throw std::runtime_error(temporary + ": write failed; " + path + " left unchanged");
+      throw std::runtime_error(path + ": write failed; left unchanged");
     }
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) {

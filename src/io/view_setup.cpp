@@ -1,5 +1,7 @@
 #include "raycam/view_setup.h"
 
+#include <cmath>
+
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
@@ -97,12 +99,22 @@ Camera3D camera3d_from_preset(const CameraPreset& preset) {
   return camera;
 }
 
+namespace {
+// An angle as a file keeps it: the degrees the user set (30, not 29.999999999999996 from 30° → radians →
+// degrees), to 1e-9 of a degree, far below any slider's or flag's step.
+double degrees_for_file(double radians) {
+  const double degrees = glm::degrees(radians);
+  const double rounded = std::round(degrees * 1e9) / 1e9;
+  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;
+}
+}  // namespace
+
 CameraPreset preset_of(const Camera2D& camera) {
   CameraPreset preset;
   const Orbit2D& orbit = camera.orbit();
   preset.target = std::vector<double>{orbit.target.x, orbit.target.y};
   preset.d = orbit.d;
-  preset.theta_deg = glm::degrees(orbit.theta);
+  preset.theta_deg = degrees_for_file(orbit.theta);
   preset.df = orbit.df;
   preset.res = camera.res();
   preset.size = std::vector<int>{camera.max_pixels()};
@@ -114,8 +126,8 @@ CameraPreset preset_of(const Camera3D& camera) {
   const Orbit3D& orbit = camera.orbit();
   preset.target = std::vector<double>{orbit.target.x, orbit.target.y, orbit.target.z};
   preset.d = orbit.d;
-  preset.theta_deg = glm::degrees(orbit.theta);
-  preset.phi_deg = glm::degrees(orbit.phi);
+  preset.theta_deg = degrees_for_file(orbit.theta);
+  preset.phi_deg = degrees_for_file(orbit.phi);
   preset.df = orbit.df;
   preset.res = camera.res_columns();
   preset.size = std::vector<int>{camera.max_columns(), camera.max_rows()};

@@ -174,7 +174,8 @@ bool save_preset(AppState& state, const std::string& path) {
   }
 }
 
-bool save_preset_as(AppState& state, const std::string& path, bool overwrite) {
+bool save_preset_as(AppState& state, std::string path, bool overwrite) {
+  // `path` is a copy: the Replace button passes state.overwrite_pending itself, cleared on the next line.
   state.overwrite_pending.clear();
   if (path.empty()) {
     set_message(state, MessageSource::files, true, tr("Save as: type the path of the file to write"));

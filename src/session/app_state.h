@@ -158,7 +158,7 @@ bool open_scene(AppState& state, const std::string& path);
 bool save_preset(AppState& state, const std::string& path);
 // Save as: an existing file is replaced only when `overwrite` is true; otherwise state.overwrite_pending
 // names it and the panel asks. Returns true if it saved.
-bool save_preset_as(AppState& state, const std::string& path, bool overwrite);
+bool save_preset_as(AppState& state, std::string path, bool overwrite);
 
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.

@@ -79,6 +79,52 @@ TEST_CASE("Save as never writes over a file without a yes, and never defaults to
   CHECK(state.message_is_error);
 }
 
+TEST_CASE("Replace writes the file the prompt names, as the panel's button calls it", "[ui][files]") {
+  Scratch scratch;
+  const std::string path = (scratch.dir / "lesson.json").string();
+  ui::AppState state = state_for({});
+  REQUIRE(ui::save_preset(state, path));
+  const std::string before = read(path);
+  state.orbit3d.d = 3.5;
+  state.save_path = path;
+  CHECK_FALSE(ui::save_preset_as(state, state.save_path, false));  // "… already exists. Replace it?"
+  REQUIRE(state.overwrite_pending == path);
+  // The Replace button hands the pending path itself (a reference to the state's own string).
+  CHECK(ui::save_preset_as(state, state.overwrite_pending, true));
+  CHECK_FALSE(state.message_is_error);
+  CHECK(read(path) != before);
+  CHECK(ui::open_scene(state, path));
+  CHECK(state.orbit3d.d == 3.5);
+}
+
+TEST_CASE("a save that fails leaves the old file as it was and names the path typed", "[ui][files]") {
+  Scratch scratch;
+  const std::string path = (scratch.dir / "lesson.json").string();
+  ui::AppState state = state_for({});
+  REQUIRE(ui::save_preset(state, path));
+  const std::string before = read(path);
+  fs::create_directory(path + ".tmp");  // the temporary file cannot be made: the write fails
+  state.orbit3d.d = 3.5;
+  CHECK_FALSE(ui::save_preset(state, path));
+  CHECK(state.message_is_error);
+  CHECK_THAT(state.message, Catch::Contains(path + ":"));
+  CHECK_THAT(state.message, !Catch::Contains(".tmp"));
+  CHECK(read(path) == before);  // intact
+  fs::remove(path + ".tmp");
+  for (const auto& entry : fs::directory_iterator(scratch.dir)) CHECK(entry.path().extension() != ".tmp");
+}
+
+TEST_CASE("saved angles are the degrees the user set", "[ui][files]") {
+  Scratch scratch;
+  const std::string path = (scratch.dir / "angles.json").string();
+  ui::AppState state = state_for({"--view", "3d", "--theta", "30", "--phi", "60"});
+  REQUIRE(ui::save_preset(state, path));
+  const std::string text = read(path);
+  CHECK_THAT(text, Catch::Contains("\"theta\": 30.0}") || Catch::Contains("\"theta\": 30.0,"));
+  CHECK_THAT(text, Catch::Contains("\"phi\": 60.0,") || Catch::Contains("\"phi\": 60.0}"));
+  CHECK_THAT(text, !Catch::Contains("29.99") && !Catch::Contains("59.99"));
+}
+
 TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "scene.json").string();
