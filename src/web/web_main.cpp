@@ -24,7 +24,7 @@ std::string query_value(const char* key) {
   char* value = reinterpret_cast<char*>(EM_ASM_INT(
       {
         const found = new URLSearchParams(window.location.search).get(UTF8ToString($0));
-        return found === null ? 0 : stringToNewUTF8(found);
+        return found === null ? 0 : allocateUTF8(found);
       },
       key));
   if (!value) return {};
@@ -34,7 +34,7 @@ std::string query_value(const char* key) {
 }
 
 std::string browser_language() {
-  char* value = reinterpret_cast<char*>(EM_ASM_INT({ return stringToNewUTF8(navigator.language || "en"); }));
+  char* value = reinterpret_cast<char*>(EM_ASM_INT({ return allocateUTF8(navigator.language || "en"); }));
   std::string text(value);
   std::free(value);
   return text;
