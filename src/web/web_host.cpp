@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "downloads.h"
 #include "gl.h"
@@ -55,7 +56,13 @@ void install_wake_callbacks(GLFWwindow* window) {
 void tick() {
   if (!page.host->wants_frame(*page.state)) return;  // asleep until note_event()
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
-  if (result.drawn) page.downloads->offer_new_files();  // Save as, PNGs, screenshots become downloads
+  if (!result.drawn) return;
+  page.downloads->offer_new_files();  // Save as, PNGs, screenshots become downloads
+  static std::string applied_title;
+  if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
+    glfwSetWindowTitle(page.window, page.state->window_title.c_str());
+    applied_title = page.state->window_title;
+  }
 }
 }  // namespace
 
