@@ -4,7 +4,9 @@
 #include <emscripten.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
@@ -72,6 +74,28 @@ EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* i
     return 1;
   }
 }
+// The median time in milliseconds of `repeats` casts of a 3D scene file's camera (the automatic caster, the
+// page's one thread), for scripts/bench_web.py; -1 when the file does not open.
+EMSCRIPTEN_KEEPALIVE double raycam_time_cast(const char* scene_path, int repeats) {
+  try {
+    raycam::ViewFlags flags;
+    flags.scene_path = std::string(scene_path);
+    const raycam::ViewSetup setup = raycam::make_view_setup(flags);
+    std::vector<double> times;
+    for (int i = 0; i < std::max(1, repeats); ++i) {
+      const double start = emscripten_get_now();
+      const raycam::ColourMap map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d);
+      times.push_back(emscripten_get_now() - start);
+      if (map.ids.empty()) break;  // (uses the result)
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return -1.0;
+  }
+}
+
 EMSCRIPTEN_KEEPALIVE const char* raycam_last_error() { return last_error.c_str(); }
 
 // The message the app's status line shows now (the browser tests read the page's errors here).
