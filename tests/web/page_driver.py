@@ -31,6 +31,8 @@ class Page:
             options.add_experimental_option("prefs", {"download.default_directory": downloads,
                                                       "download.prompt_for_download": False})
         self.driver = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+        if downloads:  # headless Chromium saves downloads only when told where
+            self.driver.execute_cdp_cmd("Page.setDownloadBehavior", {"behavior": "allow", "downloadPath": downloads})
 
     def open(self, query=""):
         self.driver.get(self.url + query)

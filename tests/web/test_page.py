@@ -94,7 +94,9 @@ def open_in_page(page, name, content):
 
 
 with tempfile.TemporaryDirectory() as scratch:
-    page = Page(web_folder)
+    downloads = os.path.join(scratch, "downloads")
+    os.mkdir(downloads)
+    page = Page(web_folder, downloads=downloads)
     try:
         page.open()
         time.sleep(1.0)
@@ -122,6 +124,18 @@ with tempfile.TemporaryDirectory() as scratch:
         press_tab()
         title = wait_for(page, "return document.title", lambda t: "3D" in t)
         check("3D" in title, "Tab switches back to 3D (title %r)" % title)
+
+        ActionChains(page.driver).key_down(Keys.F12).pause(0.2).key_up(Keys.F12).perform()
+        shot = os.path.join(downloads, "raycam-screenshot-001.png")
+        deadline = time.time() + 10
+        while time.time() < deadline and not os.path.exists(shot):
+            time.sleep(0.1)
+        with open(shot, "rb") if os.path.exists(shot) else open(os.devnull, "rb") as png:
+            header = png.read(24)
+        size = (int.from_bytes(header[16:20], "big"), int.from_bytes(header[20:24], "big")) if header else None
+        canvas_size = tuple(page.call("return [Module.canvas.width, Module.canvas.height]"))
+        check(header[:8] == b"\x89PNG\r\n\x1a\n" and size == canvas_size,
+              "F12: the screenshot is a download, a PNG of the canvas's size (%s, canvas %s)" % (size, canvas_size))
 
         with open(os.path.join(scenes_folder, "symmetric3d.json")) as text:
             open_in_page(page, "picked3d.json", text.read())
