@@ -99,6 +99,9 @@ EMSCRIPTEN_KEEPALIVE double raycam_time_cast(const char* scene_path, int repeats
 EMSCRIPTEN_KEEPALIVE const char* raycam_last_error() { return last_error.c_str(); }
 
 // The message the app's status line shows now (the browser tests read the page's errors here).
+// Frames drawn since the page opened (the browser test checks that an idle page draws none).
+EMSCRIPTEN_KEEPALIVE double raycam_frames_drawn() { return double(raycam::web::page_state().frame_count); }
+
 EMSCRIPTEN_KEEPALIVE const char* raycam_status_message() { return raycam::web::page_state().message.c_str(); }
 }
 

@@ -104,6 +104,18 @@ with tempfile.TemporaryDirectory() as scratch:
         title = wait_for(page, "return document.title", lambda t: "3D" in t)
         check("3D" in title and "demo scene" in title, "the page opens on the 3D demo scene (title %r)" % title)
 
+        frames = "return Module.ccall('raycam_frames_drawn', 'number', [], [])"
+        time.sleep(1.0)
+        idle_start = page.call(frames)
+        time.sleep(1.5)
+        idle_end = page.call(frames)
+        check(idle_start > 0 and idle_end == idle_start,
+              "the idle page draws nothing (%s frames, then %s 1.5 s later)" % (idle_start, idle_end))
+        ActionChains(page.driver).move_to_element_with_offset(
+            page.driver.find_element("id", "canvas"), 10, 10).perform()
+        woken = wait_for(page, frames, lambda n: n > idle_end, 5)
+        check(woken > idle_end, "a mouse move wakes it (%s frames)" % woken)
+
         scenes = sorted(glob.glob(os.path.join(scenes_folder, "*.json"))) + stress_scenes(scratch)
         for scene in scenes:
             native = native_ids(scene, scratch)
