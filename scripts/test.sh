@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
+scripts/web.sh --build-only  # the web page, for CTest's browser tests (docs/web.md)
 # Tests write only into temporary folders: the checkout's status (tracked changes and untracked files,
 # build/ ignored) must be the same after CTest as before it. Compared, not required empty, so a developer's
 # own uncommitted edits do not fail it.

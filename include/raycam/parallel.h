@@ -12,6 +12,10 @@ namespace raycam::detail {
 
 // 0 means every hardware thread.
 inline int resolve_threads(int requested) {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+  (void)requested;
+  return 1;  // the web page is built without threads: every cast runs on the calling thread
+#endif
   if (requested > 0) return requested;
   return std::max(1, int(std::thread::hardware_concurrency()));
 }

@@ -36,7 +36,11 @@ std::string numbered(const char* stem, int number, int count) {
 }
 
 std::string signal_text(int signal) {
+#ifdef __GLIBC__
   const char* name = sigabbrev_np(signal);
+#else
+  const char* name = nullptr;  // the web page's libc has no signal names (and runs no programs)
+#endif
   return "killed by signal " + std::to_string(signal) + (name ? std::string(" (SIG") + name + ")" : "");
 }
 }  // namespace

@@ -4,7 +4,11 @@
 // binary links both).
 #pragma once
 
+#ifdef __EMSCRIPTEN__
+#include <GLES3/gl3.h>  // the web build: WebGL 2 (src/web/)
+#else
 #ifndef GL_GLEXT_PROTOTYPES
 #define GL_GLEXT_PROTOTYPES
 #endif
 #include <GL/glcorearb.h>
+#endif

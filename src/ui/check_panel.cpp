@@ -19,6 +19,10 @@ void check_section(CameraCheck& check, double now) {
                      tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                         "it is checked whenever they change (README, \"Check your own camera\")."));
   ImGui::PopStyleColor();
+#ifdef __EMSCRIPTEN__  // the web page runs no program and has no worker thread for the check
+  ImGui::TextWrapped("%s", tr("Running your program needs the desktop app (docs/web.md)."));
+  return;
+#endif
   CheckRequest& request = check.request();
   ImGui::InputText(tr("program###check_command"), &request.command);
   checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);

@@ -1,0 +1,126 @@
+#include "web_host.h"
+
+#include <GLFW/glfw3.h>
+#include <emscripten.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include "downloads.h"
+#include "gl.h"
+
+namespace raycam::web {
+
+namespace {
+struct Page {
+  GLFWwindow* window = nullptr;
+  ui::AppState* state = nullptr;
+  WebHost* host = nullptr;
+  ui::FrameRenderer* frame = nullptr;
+  Downloads* downloads = nullptr;
+};
+Page page;
+
+void note(GLFWwindow*) { page.host->note_event(); }
+
+void key_callback(GLFWwindow* window, int key, int, int action, int) {
+  note(window);
+  if (action != GLFW_PRESS) return;
+  if (key == GLFW_KEY_F1) page.state->show_help = !page.state->show_help;
+  if (key == GLFW_KEY_F12) ui::request_screenshot(*page.state);  // a download, as the Screenshot button
+}
+
+// emscripten's GLFW writes a dropped file into the page's file system and passes its path: the desktop's
+// open_scene reads it, with the same checks and messages (a bad file keeps the current scene).
+void drop_callback(GLFWwindow* window, int count, const char** paths) {
+  note(window);
+  if (count > 0) ui::open_scene(*page.state, paths[0]);
+}
+
+void install_wake_callbacks(GLFWwindow* window) {
+  glfwSetKeyCallback(window, key_callback);
+  glfwSetDropCallback(window, drop_callback);
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { note(w); });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { note(w); });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { note(w); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { note(w); });
+  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { note(w); });
+  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { note(w); });
+  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
+}
+
+void tick() {
+  if (!page.host->wants_frame(*page.state)) return;  // asleep until note_event()
+  const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
+  if (!result.drawn) return;
+  page.downloads->offer_new_files();  // Save as, PNGs, screenshots become downloads
+  static std::string applied_title;
+  if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
+    glfwSetWindowTitle(page.window, page.state->window_title.c_str());
+    applied_title = page.state->window_title;
+  }
+}
+}  // namespace
+
+ui::AppState& page_state() { return *page.state; }
+void wake_page() { page.host->note_event(); }
+
+void WebHost::note_event() {
+  settle_frames_ = kSettleFrames;
+  if (sleeping_) {
+    sleeping_ = false;
+    emscripten_resume_main_loop();
+  }
+}
+
+bool WebHost::wants_frame(const ui::AppState& state) {
+  if (settle_frames_ > 0 || ui::frame_needs_redraw(state)) {
+    settle_frames_ = std::max(0, settle_frames_ - 1);
+    return true;
+  }
+  sleeping_ = true;
+  emscripten_pause_main_loop();
+  return false;
+}
+
+ui::FramebufferSize WebHost::begin(const ui::AppState&) {
+  glfwGetFramebufferSize(window_, &size_.width, &size_.height);
+  if (size_.empty()) return {};
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  return size_;
+}
+
+gl::RgbaImage WebHost::read_back() const { return gl::read_framebuffer(size_.width, size_.height); }
+
+void run_page(ui::AppState& state) {
+  if (!glfwInit()) {
+    std::fprintf(stderr, "raycam: cannot start GLFW in this page\n");
+    return;
+  }
+  int width = EM_ASM_INT(return window.innerWidth;), height = EM_ASM_INT(return window.innerHeight;);
+  GLFWwindow* window = glfwCreateWindow(std::max(width, 320), std::max(height, 240), "raycam", nullptr, nullptr);
+  if (!window) {
+    std::fprintf(stderr, "raycam: this browser gives no WebGL 2 context\n");
+    return;
+  }
+  glfwMakeContextCurrent(window);
+  // Objects of the page live as long as the page: the loop below never returns.
+  static WebHost host(window);
+  static Downloads downloads;
+  page = Page{window, &state, &host, nullptr, &downloads};
+  install_wake_callbacks(window);  // before ImGui's backend, which chains to them
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 300 es");
+  static ui::FrameRenderer frame;
+  page.frame = &frame;
+  emscripten_set_main_loop(tick, 0, false);
+}
+
+}  // namespace raycam::web

@@ -1,0 +1,128 @@
+// raycam in a browser page: the options come from the page's address (?lang=fr|en, ?scene=NAME of scenes/)
+// and the browser's language, the frame is the desktop's (web_host.cpp), and a few functions are callable
+// from JavaScript (the file picker, the browser tests).
+#include <emscripten.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+
+#include "app_options.h"
+#include "app_state.h"
+#include "raycam/ray_caster.h"
+#include "raycam/image_files.h"
+#include "raycam/language.h"
+#include "raycam/scene.h"
+#include "raycam/view_setup.h"
+#include "web_host.h"
+
+namespace {
+// The value of `key` in the page address's query, or nothing.
+std::string query_value(const char* key) {
+  char* value = reinterpret_cast<char*>(EM_ASM_INT(
+      {
+        const found = new URLSearchParams(window.location.search).get(UTF8ToString($0));
+        return found === null ? 0 : allocateUTF8(found);
+      },
+      key));
+  if (!value) return {};
+  std::string text(value);
+  std::free(value);
+  return text;
+}
+
+std::string browser_language() {
+  char* value = reinterpret_cast<char*>(EM_ASM_INT({ return allocateUTF8(navigator.language || "en"); }));
+  std::string text(value);
+  std::free(value);
+  return text;
+}
+
+std::string last_error;
+}  // namespace
+
+extern "C" {
+// The file picker's file (written into the page's file system by the page's script): opened as if dropped.
+EMSCRIPTEN_KEEPALIVE void raycam_open_file(const char* path) {
+  raycam::ui::open_scene(raycam::web::page_state(), path);
+  raycam::web::wake_page();
+}
+
+// The ids `raycam-cli render --ids` writes for a scene file (its camera as the file says), written to
+// `ids_path`; returns 0, or 1 with raycam_last_error() saying why (the CLI's message).
+EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* ids_path) {
+  try {
+    raycam::ViewFlags flags;
+    flags.scene_path = std::string(scene_path);
+    const raycam::ViewSetup setup = raycam::make_view_setup(flags);
+    raycam::ColourMap map;
+    if (setup.dimension == 2) {
+      raycam::validate(setup.file.scene2d);
+      map = raycam::cast_primary_rays(setup.camera2d, setup.file.scene2d, raycam::CastOptions{});
+    } else {
+      raycam::validate(setup.file.scene3d);
+      map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d, raycam::CastOptions{});
+    }
+    raycam::write_ids(map, ids_path);
+    return 0;
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return 1;
+  }
+}
+// The median time in milliseconds of `repeats` casts of a 3D scene file's camera (the automatic caster, the
+// page's one thread), for scripts/bench_web.py; -1 when the file does not open.
+EMSCRIPTEN_KEEPALIVE double raycam_time_cast(const char* scene_path, int repeats) {
+  try {
+    raycam::ViewFlags flags;
+    flags.scene_path = std::string(scene_path);
+    const raycam::ViewSetup setup = raycam::make_view_setup(flags);
+    std::vector<double> times;
+    for (int i = 0; i < std::max(1, repeats); ++i) {
+      const double start = emscripten_get_now();
+      const raycam::ColourMap map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d);
+      times.push_back(emscripten_get_now() - start);
+      if (map.ids.empty()) break;  // (uses the result)
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return -1.0;
+  }
+}
+
+EMSCRIPTEN_KEEPALIVE const char* raycam_last_error() { return last_error.c_str(); }
+
+// The message the app's status line shows now (the browser tests read the page's errors here).
+// Frames drawn since the page opened (the browser test checks that an idle page draws none).
+EMSCRIPTEN_KEEPALIVE double raycam_frames_drawn() { return double(raycam::web::page_state().frame_count); }
+
+EMSCRIPTEN_KEEPALIVE const char* raycam_status_message() { return raycam::web::page_state().message.c_str(); }
+}
+
+int main() {
+  chdir("/home/web_user");  // the app writes relative paths here: web_host.cpp offers them as downloads
+  raycam::ui::AppOptions options;
+  options.demo_on_bad_scene = true;
+  static raycam::ui::AppState state;
+  try {
+    const std::string lang = query_value("lang");
+    options.language = lang.empty() ? raycam::language_from_code(browser_language()).value_or(raycam::Language::en)
+                                    : raycam::parse_language_flag(lang, "?lang");
+    const std::string scene = query_value("scene");
+    if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
+    state = raycam::ui::make_app_state(options);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "raycam: error: %s\n", error.what());
+    options.language.reset();
+    options.view.scene_path.reset();
+    state = raycam::ui::make_app_state(options);
+    state.message = error.what();
+  }
+  raycam::web::run_page(state);
+}
