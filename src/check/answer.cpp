@@ -23,7 +23,6 @@ class AnswerReader final : public nlohmann::json_sax<json> {
   }
 
   Answer answer;
-  std::optional<std::vector<double>> md;
   bool seen_ids = false;
   bool too_big = false;  // more ids than the case has: refused while reading
   std::string error;
@@ -67,7 +66,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
         row_length_ = 0;
         return push(Kind::row);
       case Place::md:
-        md.emplace();
+        answer.md.emplace();
         return push(Kind::md);
       case Place::md_row:
         if (md_rows_ >= dimension_ + 1) return fail(md_expected());
@@ -204,7 +203,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
   }
   bool md_number(double value) {
     if (md_columns_ >= dimension_ + 1) return fail(md_expected());
-    md->push_back(value);
+    answer.md->push_back(value);
     ++md_columns_;
     return advance();
   }
@@ -235,8 +234,7 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
     parsed.error = reader.error;
     return parsed;
   }
-  Answer answer = std::move(reader.answer);
-  if (reader.md) answer.md.emplace(std::move(*reader.md));
+  Answer& answer = reader.answer;
   if (dimension == 2) answer.rows = 1;
   const std::size_t width = std::size_t(std::max(answer.columns, 1));
   for (std::size_t i = 0; i < answer.ids.size(); ++i)
@@ -255,7 +253,7 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
                                         " ids, got " + std::to_string(answer.rows) + " of " +
                                         std::to_string(answer.columns);
   }
-  parsed.answer = std::move(answer);
+  parsed.answer.emplace(std::move(answer));
   return parsed;
 }
 

@@ -318,6 +318,8 @@ const std::vector<Translation>& translation_table() {
       {"pin the ray inspector", "fixer l'inspecteur de rayon"},
 
       // ---- check_panel.cpp: Check my camera ----
+      {"Running your program needs the desktop app (docs/web.md).",
+       "Lancer votre programme demande l'application de bureau (docs/web.md)."},
       {"Check my camera###check", "Vérifier ma caméra###check"},
       {"Check###check", "Vérifier###check"},
       {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
