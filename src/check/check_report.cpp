@@ -2,9 +2,12 @@
 #include "raycam/image_files.h"
 #include "check_report.h"
 
-#include <cstdlib>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -191,6 +194,23 @@ Rgb8 colour_of(const SceneFile& file, int id) {
 int drawn_column(int dimension, int columns, int column) { return dimension == 2 ? columns - 1 - column : column; }
 }  // namespace
 
+void write_replacing(const std::string& path, const std::function<void(const std::string& temporary)>& write_to) {
+  std::string temporary = path + ".XXXXXX";
+  const int fd = mkstemp(temporary.data());
+  if (fd < 0) throw std::runtime_error(path + ": cannot write");
+  ::close(fd);
+  try {
+    write_to(temporary);
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw std::runtime_error(path + ": cannot write");
+  }
+}
+
 std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
                                                  const std::vector<CaseImage>& references,
                                                  const StudentReport& report) {
@@ -230,7 +250,7 @@ std::vector<std::string> write_difference_images(const std::string& dir, const s
     const int scale_y = ref.dimension == 2 ? 48 : scale_x;
     std::string name = case_file_name(r.number, int(cases.size()));  // case_NN.json → case_NN.png
     const std::string path = dir + "/" + name.replace(name.size() - 5, 5, ".png");
-    write_png(canvas, path, scale_x, scale_y);
+    write_replacing(path, [&](const std::string& temporary) { write_png(canvas, temporary, scale_x, scale_y); });
     written.push_back(path);
   }
   return written;

@@ -2,6 +2,8 @@
 // a --batch CSV row, and the --diff-dir images.
 #pragma once
 
+#include <functional>
+
 #include <string>
 #include <vector>
 
@@ -31,6 +33,10 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
 // --diff-dir: DIR/case_NN.png for every failing case with an answer: reference | student | difference (wrong
 // pixels red, ambiguous ones yellow, agreeing ones dimmed); 2D bars in image order, drawn tall. Returns the
 // paths written. Throws std::runtime_error naming a path that cannot be written.
+// Writes `path` through `write_to(temporary)`: a new file beside it (mkstemp, so never a link a program left),
+// then renamed over it: a link at `path` is replaced, not followed, and a failed write leaves `path` as it was.
+void write_replacing(const std::string& path, const std::function<void(const std::string& temporary)>& write_to);
+
 std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
                                                  const std::vector<CaseImage>& references,
                                                  const StudentReport& report);

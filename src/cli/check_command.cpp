@@ -37,17 +37,11 @@ struct CheckFlags {
   bool require_sandbox = false, no_sandbox = false;
 };
 
-// Written to a new temporary file beside `path` (O_EXCL: never through a link a program left), then renamed
-// over it: a link at `path` is replaced, not followed.
 void write_text_file(const std::string& path, const std::string& text) {
-  std::string temporary = path + ".XXXXXX";
-  const int fd = mkstemp(temporary.data());
-  if (fd < 0) throw std::runtime_error(path + ": cannot write");
-  const bool written = ::write(fd, text.data(), text.size()) == ssize_t(text.size());
-  if (::close(fd) != 0 || !written || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw std::runtime_error(path + ": cannot write");
-  }
+  write_replacing(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!(out << text) || !out.flush()) throw std::runtime_error(path + ": cannot write");
+  });
 }
 
 // Every output named on the command line is checked before the first run: a mistyped folder is bad usage

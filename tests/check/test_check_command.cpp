@@ -425,3 +425,29 @@ TEST_CASE("the text report's score line counts the cases passed", "[check][cli][
   const std::string line = "score: " + std::to_string(passed) + " / " + std::to_string(cases) + " cases passed";
   CHECK_THAT(c.output, Catch::Contains(line));
 }
+
+TEST_CASE("outputs replace a link left where they go, never write through it", "[check][cli][usage]") {
+  const std::string dir = scratch("links");
+  const std::string victim = dir + "/victim.txt", diffs = dir + "/diffs";
+  std::ofstream(victim) << "keep me";
+  fs::create_directories(diffs);
+  fs::create_symlink(victim, diffs + "/case_01.png");  // where the first failing case's image goes
+  fs::create_symlink(victim, dir + "/report-link.json");
+  const Checked c = check(mistaken("mirrored") + " --no-sandbox --diff-dir " + diffs, "links_run");
+  REQUIRE(c.exit_code == 1);
+  std::ifstream in(victim);
+  std::string content;
+  std::getline(in, content);
+  CHECK(content == "keep me");
+  CHECK_FALSE(fs::is_symlink(diffs + "/case_01.png"));
+  CHECK(fs::is_regular_file(diffs + "/case_01.png"));
+}
+
+TEST_CASE("a look-at camera with square pixels is named square_pixels", "[check][cli][diagnosis]") {
+  // An independent camera (Ray Tracing in One Weekend's frame from P, C and up = z), not the mistaken
+  // student's switch: what students bring. It agrees on the square 2D bars and near the poles.
+  const Checked c = check(std::string("--student \"python3 ") + LOOKAT_PY + " " + EXAMPLES_DIR + "\"", "lookat");
+  CHECK(c.exit_code == 1);
+  CHECK(top_diagnosis(c) == "square_pixels");
+  CHECK(c.report["diagnosis"][0]["explains"] == kDefaultCases - c.report["passed"].get<int>());
+}
