@@ -83,6 +83,7 @@ mutant score-line-counts-failures src/check/check_report.cpp 's/cases passed (%.
 mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant diff-image-written-through-links src/check/check_report.cpp 's/    write_replacing(path, \[\&\](const std::string\& temporary) { write_png(canvas, temporary, scale_x, scale_y); });/    write_png(canvas, path, scale_x, scale_y);/' "$CHECK" "^check:"
+mutant french-details-left-english src/check/check_report.cpp 's/^  if (lang != "fr") return detail;/  return detail;/' "$CHECK" "^check:"
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 # --- projector and state ---
 SESSION="raycam_session_tests"

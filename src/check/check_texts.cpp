@@ -16,8 +16,6 @@ const std::vector<Translation>& table() {
       {"raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n",
        "raycam-cli check : %zu cas (mode %s, graine %llu), bac à sable : %s\n"},
       {"score: %d / %d case passed (%.0f %%)\n", "score : %d / %d cas réussi (%.0f %%)\n"},
-      {"exit status %d", "code de sortie %d"},
-      {"no answer within the timeout", "pas de réponse dans le délai"},
       {"none", "aucun"},
       {"warning: %s\n", "attention : %s\n"},
       {"case", "cas"},

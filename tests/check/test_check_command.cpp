@@ -451,3 +451,15 @@ TEST_CASE("a look-at camera with square pixels is named square_pixels", "[check]
   CHECK(top_diagnosis(c) == "square_pixels");
   CHECK(c.report["diagnosis"][0]["explains"] == kDefaultCases - c.report["passed"].get<int>());
 }
+
+TEST_CASE("the French report says why in French, details included", "[check][cli][language]") {
+  for (const char* mode : {"crash", "garbage", "bad-ids"}) {
+    INFO(mode);
+    const Checked c = check(std::string("--lang fr --cases 1 --student \"python3 ") + MISBEHAVING_PY + " " + mode + "\"",
+                            std::string("fr_") + mode);
+    CHECK_THAT(c.output, Catch::Contains("score : 0 / 1 cas réussi"));
+    for (const char* english : {"exit status", "expected", "not JSON", "got "}) CHECK_THAT(c.output, !Catch::Contains(english));
+  }
+  const Checked wrong = check("--lang fr --mode 2d --cases 1 --student \"python3 -c 'print(\\\"{\\\\\\\"ids\\\\\\\": [0]}\\\")'\"", "fr_size");
+  CHECK_THAT(wrong.output, Catch::Contains("identifiants attendus, 1 reçus"));
+}
