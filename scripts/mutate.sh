@@ -88,6 +88,7 @@ mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid 
 # --- projector and state ---
 SESSION="raycam_session_tests"
 mutant save-straight-to-target src/io/scene_file.cpp 's/^  const std::string temporary = path + ".tmp";/  const std::string temporary = path;/' "$SESSION" "^session:"
+mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state);$/  (void)place_pin;/' "$SESSION" "^session:"
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
 MUTANTS_END=1
 

@@ -69,6 +69,31 @@ bool uses_reference_caster(const AppState& state) {
   return needs_reference_caster(state.accuracy.options, state.accuracy.exact && state.dimension == 2);
 }
 
+namespace {
+// The pin follows res: it keeps its canonical point (its pixel's centre, as a fraction of the image's width
+// and height, taken in the image it was pinned in), and each new image pins the pixel that covers that point,
+// so changing res or a coarse preview during a drag never drops it nor lets it drift.
+void remember_pin_point(AppState& state) {
+  if (!state.pinned_pixel) {
+    state.pin_point.reset();
+    return;
+  }
+  const bool moved_by_user = !state.pin_point || state.pinned_pixel->row != state.pin_placed.row ||
+                             state.pinned_pixel->column != state.pin_placed.column;
+  if (moved_by_user && state.map.width > 0 && state.map.height > 0)
+    state.pin_point = glm::dvec2((state.pinned_pixel->column + 0.5) / state.map.width,
+                                 (state.pinned_pixel->row + 0.5) / state.map.height);
+}
+void place_pin(AppState& state) {
+  if (!state.pinned_pixel || !state.pin_point) return;
+  const auto cell = [](double fraction, int count) {
+    return std::clamp(int(std::floor(fraction * count)), 0, std::max(count - 1, 0));
+  };
+  state.pinned_pixel = PixelIndex{cell(state.pin_point->y, state.map.height), cell(state.pin_point->x, state.map.width)};
+  state.pin_placed = *state.pinned_pixel;
+}
+}  // namespace
+
 bool recast_if_needed(AppState& state, bool interacting) {
   if (!state.cameras_dirty && !(state.refine_pending && !interacting)) return false;
   try {
@@ -89,6 +114,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
     else
       state.camera3d.set_res(std::max(state.res * factor, 1.0 / active_max_side(state)));
   }
+  remember_pin_point(state);
   const auto start = std::chrono::steady_clock::now();
   bool cast = false;
   if (uses_reference_caster(state)) {
@@ -122,6 +148,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);
   state.cameras_dirty = false;
+  place_pin(state);
   ++state.map_version;
   ++state.cast_count;
   return true;

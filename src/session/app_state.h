@@ -68,6 +68,8 @@ struct AppState {
   std::string mistake_look_at;  // after a mistake's "show me": what to look at (empty: nothing shown)
   int construction_step = -1;  // -1: the final camera; 0..steps: the handout's frames a → d
   std::optional<PixelIndex> pinned_pixel;   // clicked, or --inspect
+  std::optional<glm::dvec2> pin_point;      // its canonical point as a fraction of the image (follows res)
+  PixelIndex pin_placed;                    // the pixel the last image pinned for that point
   std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
 
   // ---- display ----

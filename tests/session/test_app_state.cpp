@@ -172,3 +172,24 @@ TEST_CASE("switching 2D/3D away from a file and back shows and names that file a
   ui::switch_dimension(state, 2);
   CHECK_THAT(ui::window_title(state), Catch::Contains("classic2d.json"));
 }
+
+TEST_CASE("a pinned ray follows res: the same canonical point, not dropped, no drift", "[ui][state]") {
+  ui::AppState state = state_for({"--view", "3d", "--size", "200x100"});
+  ui::recast_if_needed(state, false);
+  REQUIRE(state.map.width == 200);
+  state.pinned_pixel = ui::PixelIndex{30, 150};  // the pixel centred at (150.5 / 200, 30.5 / 100)
+  for (double res : {0.5, 0.37, 1.0}) {
+    state.res = res;
+    state.cameras_dirty = true;
+    ui::recast_if_needed(state, false);
+    INFO("res " << res << ": " << state.map.width << " x " << state.map.height);
+    REQUIRE(state.pinned_pixel);
+    // The pinned pixel covers the point pinned first.
+    CHECK(state.pinned_pixel->column <= 150.5 / 200 * state.map.width);
+    CHECK(state.pinned_pixel->column + 1 > 150.5 / 200 * state.map.width);
+    CHECK(state.pinned_pixel->row <= 30.5 / 100 * state.map.height);
+    CHECK(state.pinned_pixel->row + 1 > 30.5 / 100 * state.map.height);
+  }
+  CHECK(state.pinned_pixel->column == 150);  // back at res 1: the very pixel, no drift through the others
+  CHECK(state.pinned_pixel->row == 30);
+}
