@@ -10,8 +10,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "check_texts.h"
 #include "raycam/view_setup.h"
 #include "student_process.h"
+#include "text.h"
 
 namespace raycam::ui {
 
@@ -190,6 +192,14 @@ bool CameraCheck::waiting() const {
 bool CameraCheck::busy() const {
   std::lock_guard<std::mutex> lock(shared_->mutex);
   return shared_->running || shared_->pending.has_value();
+}
+
+std::string check_header(const CheckProgress& progress) {
+  if (progress.running || !progress.latest || !progress.current) return {};
+  const check::CaseResult& r = progress.latest->verdict.result;
+  if (r.status == check::CaseStatus::pass) return {};
+  if (r.status == check::CaseStatus::fail) return trf("CHECK: %lld pixels wrong", r.wrong_pixels);
+  return trf("CHECK: %s", check::text(language_code(current_language()), check::status_name(r.status)));
 }
 
 }  // namespace raycam::ui

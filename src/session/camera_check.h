@@ -39,6 +39,11 @@ struct CheckProgress {
   bool current = false;                        // `latest` is for the case seen at the last update()
 };
 
+// What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
+// wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty
+// while none, while a run is going (the old verdict is no longer the image's), or when it passed.
+std::string check_header(const CheckProgress& progress);
+
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 
 class CameraCheck {

@@ -318,6 +318,8 @@ const std::vector<Translation>& translation_table() {
       {"pin the ray inspector", "fixer l'inspecteur de rayon"},
 
       // ---- check_panel.cpp: Check my camera ----
+      {"CHECK: %lld pixels wrong", "VÉRIFICATION : %lld pixels faux"},
+      {"CHECK: %s", "VÉRIFICATION : %s"},
       {"Running your program needs the desktop app (docs/web.md).",
        "Lancer votre programme demande l'application de bureau (docs/web.md)."},
       {"Check my camera###check", "Vérifier ma caméra###check"},

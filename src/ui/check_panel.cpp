@@ -32,7 +32,7 @@ void check_section(CameraCheck& check, double now) {
 
   const CheckProgress progress = check.progress();
   if (progress.running) ImGui::TextUnformatted(trf("running… (%.1f s)", now - progress.started_at).c_str());
-  if (!progress.latest) return;
+  if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
   const check::CaseResult& r = v.result;
   const ImVec4 colour =

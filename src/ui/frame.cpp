@@ -277,7 +277,10 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   // because a narrow header clips the end.
   const std::string mistakes = mistakes_on(state);
   if (!mistakes.empty()) title = trf("MISTAKE ON: %s", mistakes.c_str()) + "  |  " + title;
-  const int header_colours = mistakes.empty() ? 0 : 2;
+  // A failing check names itself the same way, where the eye is.
+  const std::string check = check_header(check_.progress());
+  if (!check.empty()) title = check + "  |  " + title;
+  const int header_colours = mistakes.empty() && check.empty() ? 0 : 2;
   if (header_colours) {
     ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, kMistakeHeader);

@@ -71,3 +71,24 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CHECK(check.status().empty());
   CHECK_FALSE(check.up_to_date());
 }  // the destructor does not wait either: the worker finishes on its own
+
+TEST_CASE("a failing check names itself in the image's header; a re-run clears it", "[ui][check]") {
+  ui::CheckProgress progress;
+  CHECK(ui::check_header(progress).empty());  // no verdict yet
+  auto verdict = std::make_shared<ui::KeyedVerdict>();
+  verdict->verdict.result.status = check::CaseStatus::fail;
+  verdict->verdict.result.wrong_pixels = 27932;
+  progress.latest = verdict;
+  progress.current = true;
+  CHECK(ui::check_header(progress) == "CHECK: 27932 pixels wrong");
+  progress.running = true;  // checking again: the old verdict is not this image's any more
+  CHECK(ui::check_header(progress).empty());
+  progress.running = false;
+  progress.current = false;  // made for the camera before the last change
+  CHECK(ui::check_header(progress).empty());
+  progress.current = true;
+  verdict->verdict.result.status = check::CaseStatus::crash;
+  CHECK(ui::check_header(progress) == "CHECK: crash");
+  verdict->verdict.result.status = check::CaseStatus::pass;
+  CHECK(ui::check_header(progress).empty());
+}
