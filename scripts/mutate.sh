@@ -84,6 +84,7 @@ mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? i
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant diff-image-written-through-links src/check/check_report.cpp 's/    write_replacing(path, \[\&\](const std::string\& temporary) { write_png(canvas, temporary, scale_x, scale_y); });/    write_png(canvas, path, scale_x, scale_y);/' "$CHECK" "^check:"
 mutant french-details-left-english src/check/check_report.cpp 's/^  if (lang != "fr") return detail;/  return detail;/' "$CHECK" "^check:"
+mutant detached-child-holds-the-answer src/check/student_process.cpp 's/^      if (exited \&\& now >= drained_by) break;/      (void)drained_by;/' "$CHECK" "^check:"
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 # --- projector and state ---
 SESSION="raycam_session_tests"

@@ -368,19 +368,30 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     if (input.empty()) in.close_write();
     bool too_large = false, timed_out = false;
     char buffer[65536];
+    // The program itself may end while something it started still holds its output open (a setsid child,
+    // out of its process group): its answer counts once it has exited, after a short drain of what it wrote.
+    int status = 0;
+    bool exited = false;
+    Clock::time_point drained_by = deadline;
     while (out.read >= 0 || err.read >= 0) {
       const auto now = Clock::now();
-      if (now >= deadline) {
+      if (now >= deadline && !exited) {
         timed_out = true;
         break;
       }
+      if (!exited && waitpid(pid, &status, WNOHANG) == pid) {
+        exited = true;
+        drained_by = std::min(deadline, now + std::chrono::milliseconds(200));
+      }
+      if (exited && now >= drained_by) break;
       pollfd fds[3];
       int count = 0;
       if (in.write >= 0) fds[count++] = {in.write, POLLOUT, 0};
       if (out.read >= 0) fds[count++] = {out.read, POLLIN, 0};
       if (err.read >= 0) fds[count++] = {err.read, POLLIN, 0};
-      const int wait_ms =
-          int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
+      // Short waits until the program has exited (its exit is noticed above), then until the drain ends.
+      const int wait_ms = exited ? int(std::chrono::duration_cast<std::chrono::milliseconds>(drained_by - now).count()) + 1
+                                 : std::min(50, int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1);
       if (poll(fds, nfds_t(count), wait_ms) < 0 && errno != EINTR) break;
       for (int i = 0; i < count; ++i) {
         if (!fds[i].revents) continue;
@@ -405,9 +416,8 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       if (too_large) break;
     }
     // Output closed: wait for the exit, still under the deadline (a program may close stdout and go on).
-    int status = 0;
-    pid_t done = 0;
-    while (!timed_out && !too_large && (done = waitpid(pid, &status, WNOHANG)) == 0) {
+    pid_t done = exited ? pid : 0;
+    while (!exited && !timed_out && !too_large && (done = waitpid(pid, &status, WNOHANG)) == 0) {
       if (Clock::now() >= deadline) timed_out = true;
       else usleep(2000);
     }

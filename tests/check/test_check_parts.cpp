@@ -265,3 +265,21 @@ TEST_CASE("a program that closes its stdout and goes on is stopped at the timeou
   CHECK(run.end == RunResult::End::timed_out);
   CHECK(run.seconds < 10.0);  // the deadline, not the program's 60 s
 }
+
+TEST_CASE("a program's answer counts when it exits, even if a detached child still holds its output",
+          "[check][timeout]") {
+  RunLimits limits;
+  limits.timeout_seconds = 5.0;
+  const std::string program =
+      "import os, sys, time\n"
+      "print('{\"ids\": [0]}', flush=True)\n"
+      "if os.fork() == 0:\n"
+      "    os.setsid()  # out of the run's process group, stdout still open\n"
+      "    time.sleep(20)\n"
+      "    os._exit(0)\n";
+  const RunResult run = run_student({"python3", "-c", program}, "", limits, std::nullopt);
+  CHECK(run.end == RunResult::End::exited);
+  CHECK(run.exit_code == 0);
+  CHECK(run.out == "{\"ids\": [0]}\n");
+  CHECK(run.seconds < 3.0);
+}
