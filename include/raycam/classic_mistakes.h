@@ -56,12 +56,6 @@ const MistakeInfo* find_mistake(std::string_view id);
 bool any_mistake(const ClassicMistakes& mistakes);
 // True when every mistake that is on only changes M_d or n (the accelerated casters stay exact for them).
 bool mistakes_change_only_placement(const ClassicMistakes& mistakes);
-// "fr" gives the French text, anything else English.
-inline const char* mistake_label(const MistakeInfo& info, std::string_view lang) {
-  return lang == "fr" ? info.label_fr : info.label_en;
-}
-inline const char* mistake_explanation(const MistakeInfo& info, std::string_view lang) {
-  return lang == "fr" ? info.explanation_fr : info.explanation_en;
-}
+// The label and explanation in a language: raycam/language.h (io) picks between the _en and _fr texts.
 
 }  // namespace raycam

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "raycam/language.h"
+
 namespace raycam::check {
 
 const char* status_name(CaseStatus status) {
@@ -101,7 +103,8 @@ std::string Explanation::id() const {
 std::string Explanation::text(const std::string& lang) const {
   std::string joined;
   for (const MistakeInfo* mistake : mistakes)
-    joined += (joined.empty() ? "" : " + ") + std::string(mistake_explanation(*mistake, lang));
+    joined += (joined.empty() ? "" : " + ") +
+              std::string(mistake_explanation(*mistake, language_from_code(lang).value_or(Language::en)));
   return joined;
 }
 

@@ -53,4 +53,12 @@ Language parse_language_flag(const std::string& value, const std::string& flag) 
 
 const char* language_code(Language language) { return language == Language::fr ? "fr" : "en"; }
 
+const char* mistake_label(const MistakeInfo& info, Language language) {
+  return language == Language::fr ? info.label_fr : info.label_en;
+}
+
+const char* mistake_explanation(const MistakeInfo& info, Language language) {
+  return language == Language::fr ? info.explanation_fr : info.explanation_en;
+}
+
 }  // namespace raycam

@@ -11,6 +11,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "raycam/classic_mistakes.h"
+
 namespace raycam {
 
 enum class Language { en, fr };
@@ -42,5 +44,9 @@ Language language_from_environment();
 // The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
 Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
 const char* language_code(Language language);  // "en", "fr"
+
+// A classic mistake's checkbox label and one-line explanation (the core keeps both languages beside it).
+const char* mistake_label(const MistakeInfo& info, Language language);
+const char* mistake_explanation(const MistakeInfo& info, Language language);
 
 }  // namespace raycam
