@@ -44,7 +44,7 @@ mutant exact-bar-no-circle-crossings src/core/exact_bar.cpp '/add_direction(base
 mutant footprint-no-rounding-slack src/core/screen_footprint.cpp 's/slack = 64 \* kEpsilon/slack = 0 * kEpsilon/; s/slack += 16 \* kEpsilon/slack += 0 * kEpsilon/; s/kRelativeSlack = 1e-9;/kRelativeSlack = 0;/; s/kIndexSlack = 1e-6;/kIndexSlack = 0;/' "$CORE" "$CORE_TESTS"
 mutant plain-ties-to-higher-index src/core/ray_caster.cpp 's/if (t < hit.t) hit/if (t <= hit.t) hit/' "$CORE" "$CORE_TESTS"
 mutant fast-ties-to-higher-index-2d src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
-mutant fast-ties-to-higher-index-3d src/core/band_kernels.h 's/const bool nearer = t < depth\[p\];/const bool nearer = t <= depth[p];/' "$CORE" "$CORE_TESTS"
+mutant fast-ties-to-higher-index-3d src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t <= depth;/' "$CORE" "$CORE_TESTS"
 mutant radius-0-accepted src/core/validation.cpp 's/value <= 0.0 || value > kMaxCoordinate/value < 0.0 || value > kMaxCoordinate/' "$CORE" "$CORE_TESTS"
 mutant res-0-accepted src/core/validation.cpp 's/if (!(value > 0.0 \&\& value <= 1.0))/if (!(value >= 0.0 \&\& value <= 1.0))/' "$CORE" "$CORE_TESTS"
 mutant roll-left-out-of-the-product src/core/camera3d.cpp 's/const glm::dmat4 factors\[\] = {placement.scale, placement.roll,/const glm::dmat4 factors[] = {placement.scale, glm::dmat4(1.0),/' "$CORE" "$CORE_TESTS"
@@ -91,6 +91,10 @@ SESSION="raycam_session_tests"
 mutant save-straight-to-target src/io/scene_file.cpp 's/^  const std::string temporary = path + ".tmp";/  const std::string temporary = path;/' "$SESSION" "^session:"
 mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state);$/  (void)place_pin;/' "$SESSION" "^session:"
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
+# --- fast on scenes it has never seen ---
+mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
+mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/return distance - radius - corner_distance - 1e-6/return distance - radius - 1e-6/' "$CORE" "$CORE_TESTS"
+mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -42,6 +42,10 @@ struct CastOptions {
   IntersectFormula formula = IntersectFormula::stable;
   CastMethod method = CastMethod::automatic;
   int threads = 0;  // 0: all hardware threads; 3D only (a 2D bar takes microseconds on one)
+  // 3D footprint and binned casters: take each pixel's candidates near to far and skip those that cannot
+  // be nearer than its hit so far (the stable formula only). false: object order and every test, the
+  // caster as it was before (the speed bench's before/after). The ids are the same either way.
+  bool near_to_far = true;
 };
 
 // Work done by one cast, shown by the app's status line.
@@ -51,6 +55,8 @@ struct CastStats {
   long long objects_culled = 0;      // behind the screen or outside the field of view: never tested
   long long pixels_skipped = 0;      // pixels no object can cover: background without casting a ray
   int threads = 1;                   // threads that shared the pixels (one when the work is too small)
+  long long box_tests = 0;           // 3D accelerated: the tests with no skipping (the boxes' total area,
+                                     // so box_tests / rays is the depth complexity of what overlaps)
 };
 
 Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectFormula formula);

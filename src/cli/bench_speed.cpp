@@ -26,6 +26,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "commands.h"
@@ -34,6 +35,7 @@
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
+#include "raycam/speed_families.h"
 #include "raycam/standard_scenes.h"
 #include "raycam/view_setup.h"
 #include "view_options.h"
@@ -55,6 +57,9 @@ struct SpeedOptions {
   std::vector<int> counts{1, 10, 100, 1000, 10000, 100000};
   std::vector<int> sides{256, 1024};
   std::vector<int> threads{1, 2};
+  std::vector<std::string> families = testkit::speed_family_names();  // the families' table, at the most threads
+  std::vector<int> family_counts{1000, 10000, 100000};
+  std::string write_family, write_path;  // --write-family NAME --to FILE: its scene file instead of a run
   int repeats = 7;
   double min_seconds = 0.1;  // per repetition: Google Benchmark runs as many iterations as fit
   bool extras = true;        // scaling with the pixel count, 2D bars
@@ -76,6 +81,7 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
       "flag goes to Google Benchmark.",
       "raycam-cli bench speed");
   app.allow_extras();
+  const std::vector<std::string> family_names = testkit::speed_family_names();
   // --quick first: CLI11 runs the callbacks in this order, so `--quick --repeats 1` keeps the 1.
   app.add_flag_callback("--quick", [&o] {
     o.counts = {1, 100, 10000};
@@ -83,7 +89,8 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
     o.repeats = 3;
     o.min_seconds = 0.01;
     o.extras = false;
-  }, "K = 1,100,10000 at 256 px, 3 short repetitions, no extras (a smoke test: seconds)");
+    o.family_counts = {1000};
+  }, "K = 1,100,10000 at 256 px (families: K = 1000), 3 short repetitions, no extras (a smoke test)");
   const auto list = [&app](const char* name, const char* help, int lo, int hi, std::vector<int>& store) {
     flags::add_checked_list<int>(app, name, "LIST", help, flags::integer_in(lo, hi),
                                  [&store](std::vector<int> values) { store = std::move(values); });
@@ -91,6 +98,20 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
   list("--counts", "sphere counts K (default 1,10,100,1000,10000,100000)", 0, 2000000, o.counts);
   list("--sizes", "image sides (default 256,1024)", 1, 8192, o.sides);
   list("--threads", "thread counts (default 1,2)", 1, 256, o.threads);
+  list("--family-counts", "sphere counts K of the families' table (default 1000,10000,100000)", 0, 2000000,
+       o.family_counts);
+  flags::add_checked_list<int>(app, "--families", "LIST", "scene families of the families' table (default all)",
+                               flags::one_of(family_names), [&o, family_names](std::vector<int> picked) {
+                                 o.families.clear();
+                                 for (int i : picked) o.families.push_back(family_names[std::size_t(i)]);
+                               });
+  flags::add_checked_option<int>(app, "--write-family", "NAME",
+                                 "write that family's scene (K: the first of --family-counts) with its camera "
+                                 "to --to FILE, and stop (to time it in the window: shot --soak)",
+                                 flags::one_of(family_names),
+                                 [&o, family_names](int i) { o.write_family = family_names[std::size_t(i)]; });
+  flags::add_checked_option<std::string>(app, "--to", "FILE", "with --write-family: the scene file to write",
+                                         flags::file_name(), [&o](std::string path) { o.write_path = std::move(path); });
   flags::add_checked_option<int>(app, "--repeats", "R", "repetitions per variant, the median is reported (default 7)",
                                  flags::integer_in(1, 1000), [&o](int r) { o.repeats = r; });
   flags::add_checked_option<std::string>(app, "--csv", "FILE", "also write every median as CSV", flags::file_name(),
@@ -111,62 +132,72 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
                  extra.c_str());
     return 2;
   }
+  if (o.write_family.empty() != o.write_path.empty()) {
+    std::fprintf(stderr, "raycam-cli bench speed: error: --write-family and --to go together\n");
+    return 2;
+  }
   return std::nullopt;
 }
 
 // ---- fixtures
 // ----------------------------------------------------------------------------------------------
+// The cube family's camera: the grid's scene and the scaling extras.
 Camera3D bench_camera(int columns, int rows) {
   Camera3D camera(columns, rows);
-  camera.set_orbit({{0, 0, 0}, 35.0, glm::radians(30.0), glm::radians(60.0), 2.0});  // the whole cube in view
+  camera.set_orbit(testkit::speed_family("cube", 0).orbit);  // the whole cube in view
   return camera;
 }
 
 // The grid's fixtures, built once on first use and kept for the run (outside every timing): a scene and its
-// Embree BVH per K; a camera, the plain loop's map (when affordable) and Embree's ray table per (K, side).
+// Embree BVH per (family, K); a camera, the reference ids and Embree's ray table per (family, K, side).
 struct SceneFixture {
-  Scene3D scene;
+  testkit::SpeedFamily family;
   PackedScene3D packed;  // raycam's compact copy, made once as Embree's BVH is (its cost: the "packing" variant)
 #ifdef RAYCAM_HAVE_EMBREE
   std::unique_ptr<bench::EmbreeCaster> embree;
 #endif
 };
+// The reference ids: the plain loop's map when affordable; else the object-order caster's (every box test
+// run, nothing skipped, itself checked against the plain loop pixel for pixel by the test suite), with the
+// plain loop on sampled pixels besides.
 struct ImageFixture {
   Camera3D camera{1, 1};
   bool plain_affordable = false;
-  ColourMap plain;
+  ColourMap reference;
   std::vector<Ray3D> ray_table;
 };
 
 class SceneGrid {
  public:
-  SceneFixture& scene(int count) {
-    auto found = scenes_.find(count);
+  SceneFixture& scene(const std::string& family, int count) {
+    const auto key = std::make_pair(family, count);
+    auto found = scenes_.find(key);
     if (found != scenes_.end()) return *found->second;
     auto fixture = std::make_unique<SceneFixture>();
-    fixture->scene = testkit::random_spheres(count);
-    fixture->packed.pack(fixture->scene);
+    fixture->family = testkit::speed_family(family, count);
+    fixture->packed.pack(fixture->family.scene);
 #ifdef RAYCAM_HAVE_EMBREE
-    fixture->embree = std::make_unique<bench::EmbreeCaster>(fixture->scene);
+    fixture->embree = std::make_unique<bench::EmbreeCaster>(fixture->family.scene);
 #endif
-    return *scenes_.emplace(count, std::move(fixture)).first->second;
+    return *scenes_.emplace(key, std::move(fixture)).first->second;
   }
-  ImageFixture& image(int count, int side) {
-    const auto key = std::make_pair(count, side);
+  ImageFixture& image(const std::string& family, int count, int side) {
+    const auto key = std::make_tuple(family, count, side);
     auto found = images_.find(key);
     if (found != images_.end()) return *found->second;
     auto fixture = std::make_unique<ImageFixture>();
-    fixture->camera = bench_camera(side, side);
+    SceneFixture& scene_fixture = scene(family, count);
+    fixture->camera = Camera3D(side, side);
+    fixture->camera.set_orbit(scene_fixture.family.orbit);
     fixture->plain_affordable = double(side) * side * std::max(count, 1) <= kMaxPlainTests;
-    if (fixture->plain_affordable) {
-      CastOptions options;
-      options.method = CastMethod::plain;
-      cast_primary_rays(fixture->camera, scene(count).scene, fixture->plain, options);
-    }
+    CastOptions options;
+    options.method = fixture->plain_affordable ? CastMethod::plain : CastMethod::automatic;
+    options.near_to_far = false;
+    cast_primary_rays(fixture->camera, scene_fixture.packed, fixture->reference, options);
     return *images_.emplace(key, std::move(fixture)).first->second;
   }
-  std::vector<Ray3D>& ray_table(int count, int side) {
-    ImageFixture& f = image(count, side);
+  std::vector<Ray3D>& ray_table(const std::string& family, int count, int side) {
+    ImageFixture& f = image(family, count, side);
     if (f.ray_table.empty()) {
       f.ray_table.resize(std::size_t(side) * side);
       for (int row = 0; row < side; ++row)
@@ -176,29 +207,28 @@ class SceneGrid {
   }
 
  private:
-  std::map<int, std::unique_ptr<SceneFixture>> scenes_;
-  std::map<std::pair<int, int>, std::unique_ptr<ImageFixture>> images_;
+  std::map<std::pair<std::string, int>, std::unique_ptr<SceneFixture>> scenes_;
+  std::map<std::tuple<std::string, int, int>, std::unique_ptr<ImageFixture>> images_;
 };
 
-// Ids checked against the plain loop: every pixel when its map is at hand, else sampled pixels recomputed
-// with nearest_hit over every sphere (the plain loop, pixel by pixel).
+// Ids checked against the reference map, every pixel; when that is not the plain loop's, also sampled
+// pixels recomputed with nearest_hit over every sphere (the plain loop, pixel by pixel), once.
 struct IdCheck {
   long long differing = 0, checked = 0;
 };
-IdCheck check_ids(const ImageFixture& image, const Scene3D& scene, const ColourMap& map) {
+IdCheck check_ids(const ImageFixture& image, const Scene3D& scene, const ColourMap& map, bool sample_plain) {
   IdCheck check;
-  if (image.plain_affordable) {
-    for (std::size_t i = 0; i < map.ids.size(); ++i) check.differing += map.ids[i] != image.plain.ids[i];
-    check.checked = static_cast<long long>(map.ids.size());
-    return check;
-  }
+  for (std::size_t i = 0; i < map.ids.size(); ++i) check.differing += map.ids[i] != image.reference.ids[i];
+  check.checked = static_cast<long long>(map.ids.size());
+  if (image.plain_affordable || !sample_plain) return check;
   std::mt19937 engine(7);
   const Camera3D& camera = image.camera;
-  for (int s = 0; s < kSampledPixels; ++s) {
+  // About 10⁸ tests: 4096 pixels up to K = 24000, fewer beyond (1000 at K = 10⁵).
+  const int samples = int(std::clamp(1e8 / std::max(1.0, double(scene.spheres.size())), 256.0, double(kSampledPixels)));
+  for (int s = 0; s < samples; ++s) {
     const int row = int(engine() % unsigned(camera.rows())), column = int(engine() % unsigned(camera.columns()));
     const Hit hit = nearest_hit(scene.spheres, camera.primary_ray(row, column), IntersectFormula::stable);
     check.differing += hit.id != map.id_at(row, column);
-    ++check.checked;
   }
   return check;
 }
@@ -229,12 +259,16 @@ struct Variant {
   Kind kind;
 };
 
+// The automatic caster as it was before the near-to-far order: the before/after in one run.
+const char* const kObjectOrder = "object order";
+
 std::vector<Variant> variants() {
   std::vector<Variant> v = {
       {"fill only", Kind::floor}, {"rays only", Kind::floor}, {"projection", Kind::floor}, {"packing", Kind::floor}};
   for (CastMethod method : {CastMethod::plain, CastMethod::culled, CastMethod::footprint, CastMethod::binned,
                             CastMethod::automatic})
     v.push_back({cast_method_name(method), Kind::raycam});
+  v.push_back({kObjectOrder, Kind::raycam});
 #ifdef RAYCAM_HAVE_EMBREE
   for (const char* name : {"embree packet1", "embree packet16", "embree p16 ray table"})
     v.push_back({name, Kind::embree});
@@ -245,6 +279,7 @@ std::vector<Variant> variants() {
 // ---- registration
 // ------------------------------------------------------------------------------------------
 struct Case {
+  std::string family;
   int count = 0, side = 0, threads = 0;
   Variant variant;
   IdCheck ids;
@@ -252,7 +287,7 @@ struct Case {
 
 // What the reporter keeps of each benchmark: the median and the spread of its repetitions.
 struct Result {
-  double median_ms = 0, stddev_ms = 0, mrays = 0, tests_per_pixel = 0;
+  double median_ms = 0, stddev_ms = 0, mrays = 0, tests_per_pixel = 0, box_tests_per_pixel = 0;
 };
 
 struct Run {
@@ -263,7 +298,7 @@ struct Run {
 };
 
 std::string case_name(const Case& c) {
-  return "speed/K:" + std::to_string(c.count) + "/side:" + std::to_string(c.side) +
+  return "speed/" + c.family + "/K:" + std::to_string(c.count) + "/side:" + std::to_string(c.side) +
          "/threads:" + std::to_string(c.threads) + "/" + c.variant.name;
 }
 
@@ -277,10 +312,10 @@ benchmark::internal::Benchmark* configure(benchmark::internal::Benchmark* b, con
 }
 
 void run_case(benchmark::State& state, Run& run, Case& c) {
-  SceneFixture& fixture = run.grid.scene(c.count);
-  ImageFixture& image = run.grid.image(c.count, c.side);
+  SceneFixture& fixture = run.grid.scene(c.family, c.count);
+  ImageFixture& image = run.grid.image(c.family, c.count, c.side);
   const Camera3D& camera = image.camera;
-  const Scene3D& scene = fixture.scene;
+  const Scene3D& scene = fixture.family.scene;
   const double pixels = double(c.side) * c.side;
   ColourMap map;
   CastStats stats;
@@ -304,12 +339,13 @@ void run_case(benchmark::State& state, Run& run, Case& c) {
   else if (name == "embree packet16")
     cast = [&] { fixture.embree->cast(camera, 16, c.threads, map); };
   else if (name == "embree p16 ray table") {
-    const std::vector<Ray3D>* table = &run.grid.ray_table(c.count, c.side);
+    const std::vector<Ray3D>* table = &run.grid.ray_table(c.family, c.count, c.side);
     cast = [&, table] { fixture.embree->cast(camera, 16, c.threads, map, table); };
   }
 #endif
   else {
-    options.method = cast_method_named(name).value();
+    options.method = name == kObjectOrder ? CastMethod::automatic : cast_method_named(name).value();
+    options.near_to_far = name != kObjectOrder;
     cast = [&] { cast_primary_rays(camera, fixture.packed, map, options, &stats); };
   }
   cast();  // warm-up: first touch of the map and of the caster's reused memory
@@ -317,13 +353,24 @@ void run_case(benchmark::State& state, Run& run, Case& c) {
   state.counters["Mrays/s"] =
       benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["tests/px"] = double(stats.intersection_tests) / pixels;
-  // Every repetition is checked when the plain map is at hand; sampled checks (about a second at K = 10⁵)
-  // once.
-  if (c.variant.kind != Kind::floor && (image.plain_affordable || c.ids.checked == 0)) {
-    const IdCheck check = check_ids(image, scene, map);
+  state.counters["boxes/px"] = double(stats.box_tests) / pixels;
+  // Every repetition is checked against the reference map; the sampled plain loop (about a second at
+  // K = 10⁵) once.
+  if (c.variant.kind != Kind::floor) {
+    const IdCheck check = check_ids(image, scene, map, c.ids.checked == 0);
     if (c.variant.kind == Kind::raycam) c.ids.differing = std::max(c.ids.differing, check.differing);
     c.ids.checked = check.checked;
   }
+}
+
+void register_case(Run& run, const Case& c) {
+  const std::string name = case_name(c);
+  for (const auto& existing : run.cases)
+    if (case_name(*existing) == name) return;  // the cube's rows of the families' table are the grid's
+  run.cases.push_back(std::make_unique<Case>(c));
+  Case* kept = run.cases.back().get();
+  configure(benchmark::RegisterBenchmark(name.c_str(), [&run, kept](benchmark::State& state) { run_case(state, run, *kept); }),
+            run.options);
 }
 
 void register_grid(Run& run) {
@@ -334,13 +381,18 @@ void register_grid(Run& run) {
         for (const Variant& variant : variants()) {
           const bool quadratic = variant.name == "plain" || variant.name == "culled";
           if (quadratic && double(side) * side * std::max(count, 1) > kMaxPlainTests) continue;
-          run.cases.push_back(std::make_unique<Case>(Case{count, side, threads, variant, {}}));
-          Case* c = run.cases.back().get();
-          configure(
-              benchmark::RegisterBenchmark(case_name(*c).c_str(),
-                                           [&run, c](benchmark::State& state) { run_case(state, run, *c); }),
-              o);
+          register_case(run, Case{"cube", count, side, threads, variant, {}});
         }
+  // The families' table: the automatic caster before and after, Embree and the floor, at the most threads.
+  const std::vector<Variant> all = variants();
+  for (const std::string& family : o.families)
+    for (int count : o.family_counts)
+      for (int side : o.sides)
+        for (const Variant& variant : all)
+          if (variant.kind == Kind::embree ? variant.name != "embree p16 ray table"
+                                           : variant.name == "automatic" || variant.name == kObjectOrder ||
+                                                 variant.name == "fill only" || variant.name == "projection")
+            register_case(run, Case{family, count, side, o.threads.back(), variant, {}});
 }
 
 // How cost grows with the pixel count (K = 1000, automatic, the most threads), and 2D bars (demo scene).
@@ -350,7 +402,7 @@ void register_extras(Run& run) {
   for (int side : {128, 256, 512, 1024, 2048})
     configure(benchmark::RegisterBenchmark(("scaling/side:" + std::to_string(side)).c_str(),
                                            [&run, side, threads](benchmark::State& state) {
-                                             const PackedScene3D& scene = run.grid.scene(1000).packed;
+                                             const PackedScene3D& scene = run.grid.scene("cube", 1000).packed;
                                              const Camera3D camera = bench_camera(side, side);
                                              ColourMap map;
                                              CastOptions options;
@@ -399,6 +451,7 @@ class KeepingReporter : public benchmark::ConsoleReporter {
         };
         result.mrays = counter("Mrays/s");
         result.tests_per_pixel = counter("tests/px");
+        result.box_tests_per_pixel = counter("boxes/px");
       } else if (r.aggregate_name == "stddev") {
         result.stddev_ms = ms;
       }
@@ -410,9 +463,18 @@ class KeepingReporter : public benchmark::ConsoleReporter {
   std::map<std::string, Result>& results_;
 };
 
-const Result* find(const Run& run, int count, int side, int threads, const std::string& variant) {
-  const auto found = run.results.find(case_name(Case{count, side, threads, {variant, Kind::raycam}, {}}));
+const Result* find(const Run& run, const std::string& family, int count, int side, int threads, const std::string& variant) {
+  const auto found = run.results.find(case_name(Case{family, count, side, threads, {variant, Kind::raycam}, {}}));
   return found == run.results.end() ? nullptr : &found->second;
+}
+
+// The best of Embree's variants for one case, 0 when Embree is not in this build.
+double embree_best_ms(const Run& run, const std::string& family, int count, int side, int threads) {
+  double best = 0.0;
+  for (const char* e : {"embree packet1", "embree packet16", "embree p16 ray table"})
+    if (const Result* r = find(run, family, count, side, threads, e))
+      best = best == 0.0 ? r->median_ms : std::min(best, r->median_ms);
+  return best;
 }
 
 void print_summary(const Run& run) {
@@ -426,18 +488,17 @@ void print_summary(const Run& run) {
   for (int count : o.counts)
     for (int side : o.sides)
       for (int threads : o.threads) {
-        const Result* raycam = find(run, count, side, threads, "automatic");
+        const Result* raycam = find(run, "cube", count, side, threads, "automatic");
         if (!raycam) continue;
-        double embree = 0.0, spread = raycam->stddev_ms / raycam->median_ms;
+        const double embree = embree_best_ms(run, "cube", count, side, threads);
+        double spread = raycam->stddev_ms / raycam->median_ms;
         for (const char* e : {"embree packet1", "embree packet16", "embree p16 ray table"})
-          if (const Result* r = find(run, count, side, threads, e)) {
-            embree = embree == 0.0 ? r->median_ms : std::min(embree, r->median_ms);
+          if (const Result* r = find(run, "cube", count, side, threads, e))
             spread = std::max(spread, r->stddev_ms / r->median_ms);
-          }
-        const Result* fill = find(run, count, side, threads, "fill only");
-        const Result* rays = find(run, count, side, threads, "rays only");
-        const Result* projection = find(run, count, side, threads, "projection");
-        const Result* packing = find(run, count, side, threads, "packing");
+        const Result* fill = find(run, "cube", count, side, threads, "fill only");
+        const Result* rays = find(run, "cube", count, side, threads, "rays only");
+        const Result* projection = find(run, "cube", count, side, threads, "projection");
+        const Result* packing = find(run, "cube", count, side, threads, "packing");
         std::printf("| %d | %d | %d | %.3f | %.0f | ", count, side, threads, raycam->median_ms,
                     raycam->mrays);
         if (embree > 0)
@@ -449,6 +510,53 @@ void print_summary(const Run& run) {
                     packing ? packing->median_ms : 0.0, fill ? raycam->median_ms / fill->median_ms : 0.0,
                     100.0 * spread);
       }
+}
+
+// One row per family, K and side; then the worst family's speed-up against Embree per K and side, the
+// goal's measure (≥ 10× at 1024², ≥ 5× at 256²).
+void print_families(const Run& run) {
+  const SpeedOptions& o = run.options;
+  if (o.families.empty()) return;
+  const int threads = o.threads.back();
+  std::printf(
+      "\nScene families, %d threads: raycam (automatic, near to far) against itself in object order (the caster "
+      "before), Embree's best and the floor; tests/px are the intersection tests run per pixel, boxes/px the "
+      "tests without skipping (the depth complexity of what overlaps):\n\n"
+      "| family | K | side | raycam ms | object order ms | after/before | Embree best ms | speed-up | tests/px "
+      "| boxes/px | fill only ms | projection ms |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+      threads);
+  std::map<std::pair<int, int>, std::pair<double, std::string>> worst;  // (K, side) -> speed-up, family
+  for (const std::string& family : o.families) {
+    for (int count : o.family_counts)
+      for (int side : o.sides) {
+        const Result* after = find(run, family, count, side, threads, "automatic");
+        const Result* before = find(run, family, count, side, threads, kObjectOrder);
+        if (!after || !before) continue;
+        const double embree = embree_best_ms(run, family, count, side, threads);
+        const Result* fill = find(run, family, count, side, threads, "fill only");
+        const Result* projection = find(run, family, count, side, threads, "projection");
+        std::printf("| %s | %d | %d | %.3f | %.3f | %.2f | ", family.c_str(), count, side, after->median_ms,
+                    before->median_ms, after->median_ms / before->median_ms);
+        if (embree > 0) {
+          const double speed_up = embree / after->median_ms;
+          std::printf("%.3f | %.1fx | ", embree, speed_up);
+          auto& w = worst[{count, side}];
+          if (w.second.empty() || speed_up < w.first) w = {speed_up, family};
+        } else {
+          std::printf("- | - | ");
+        }
+        std::printf("%.2f | %.2f | %.3f | %.3f |\n", after->tests_per_pixel, after->box_tests_per_pixel,
+                    fill ? fill->median_ms : 0.0, projection ? projection->median_ms : 0.0);
+      }
+  }
+  if (worst.empty()) return;
+  std::printf("\nWorst family against Embree (goal: at least 10x at 1024 px, 5x at 256 px):\n\n"
+              "| K | side | worst family | speed-up | goal |\n|---|---|---|---|---|\n");
+  for (const auto& [key, value] : worst) {
+    const double goal = key.second >= 1024 ? 10.0 : 5.0;
+    std::printf("| %d | %d | %s | %.1fx | %s |\n", key.first, key.second, value.second.c_str(), value.first,
+                value.first >= goal ? "met" : "NOT met");
+  }
 }
 
 void print_extras(const Run& run) {
@@ -476,12 +584,12 @@ void write_csv(const Run& run) {
   if (run.options.csv_path.empty()) return;
   std::ofstream csv(run.options.csv_path);
   if (!csv) throw std::runtime_error(run.options.csv_path + ": cannot write the CSV");
-  csv << "K,side,threads,variant,median_ms,stddev_ms,mrays_per_s,tests_per_pixel,ids_differing,ids_checked\n";
+  csv << "family,K,side,threads,variant,median_ms,stddev_ms,mrays_per_s,tests_per_pixel,ids_differing,ids_checked\n";
   for (const auto& c : run.cases) {
     const auto found = run.results.find(case_name(*c));
     if (found == run.results.end()) continue;
     const Result& r = found->second;
-    csv << c->count << ',' << c->side << ',' << c->threads << ",\"" << c->variant.name << "\"," << r.median_ms
+    csv << '"' << c->family << "\"," << c->count << ',' << c->side << ',' << c->threads << ",\"" << c->variant.name << "\"," << r.median_ms
         << ',' << r.stddev_ms << ',' << r.mrays << ',' << r.tests_per_pixel << ',' << c->ids.differing << ','
         << c->ids.checked << '\n';
   }
@@ -552,6 +660,25 @@ int run_scene(const SpeedOptions& o) {
   std::printf("\n");
   return 0;
 }
+
+// A family as a scene file, its camera as the file's preset (angles in degrees, as files take them).
+int write_family_scene(const SpeedOptions& o) {
+  const int count = o.family_counts.front();
+  const testkit::SpeedFamily family = testkit::speed_family(o.write_family, count);
+  SceneFile file;
+  file.dimension = 3;
+  file.scene3d = family.scene;
+  const Orbit3D& orbit = family.orbit;
+  file.camera.target = std::vector<double>{orbit.target.x, orbit.target.y, orbit.target.z};
+  file.camera.d = orbit.d;
+  file.camera.theta_deg = glm::degrees(orbit.theta);
+  file.camera.phi_deg = glm::degrees(orbit.phi);
+  file.camera.df = orbit.df;
+  save_scene_file(file, o.write_path);
+  std::printf("%s: the \"%s\" family, K = %d (%s)\n", o.write_path.c_str(), family.name.c_str(), count,
+              family.description.c_str());
+  return 0;
+}
 }  // namespace
 
 // ---- entry point
@@ -560,6 +687,7 @@ int run_bench_speed(const Args& args) {
   Run run;
   if (const std::optional<int> exit_now = parse_options(args, run.options)) return *exit_now;
   if (!run.options.scene_path.empty()) return run_scene(run.options);
+  if (!run.options.write_family.empty()) return write_family_scene(run.options);
   const int hardware = int(std::thread::hardware_concurrency());
   std::printf("raycam bench speed: %d hardware threads, Google Benchmark, %d repetitions a variant", hardware,
               run.options.repeats);
@@ -575,6 +703,7 @@ int run_bench_speed(const Args& args) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::ClearRegisteredBenchmarks();
   print_summary(run);
+  print_families(run);
   if (run.options.extras) print_extras(run);
   std::printf("\nPeak resident memory of this run: %.1f MB\n", double(resident_kb("VmHWM:")) / 1024.0);
   write_csv(run);

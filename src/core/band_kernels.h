@@ -34,19 +34,22 @@ struct PixelRun {
   int count, rows, stride;
 };
 
-// One sphere against a run of the band's pixels: the plain loop's nearest_hit_t and depth test (strict '<':
-// objects come in index order, so a tie keeps the lower index). kFormula is fixed for the whole loop, so
-// that only its own arithmetic is in it. Scalar and inline, for runs shorter than kVectorRun: at 10⁵
-// spheres most boxes are one to three pixels wide, where a vectorised row (a call, a vector's set-up) costs
-// more than its tests. With nearest_hit_t written without branches, a ray that misses costs no
+// One sphere against a run of the band's pixels: the plain loop's nearest_hit_t, and a depth test that
+// gives the plain loop's answer whatever order the objects come in (nearer_hit: the smaller t, and on a tie
+// the lower index, which the plain loop's strict '<' in index order keeps). kFormula is fixed for the whole
+// loop, so that only its own arithmetic is in it. Scalar and inline, for runs shorter than kVectorRun: at
+// 10⁵ spheres most boxes are one to three pixels wide, where a vectorised row (a call, a vector's set-up)
+// costs more than its tests. With nearest_hit_t written without branches, a ray that misses costs no
 // mispredicted branch.
+inline bool nearer_hit(double t, int object, double depth, int id) { return t < depth || (t == depth && object < id); }
+
 template <IntersectFormula kFormula>
 inline void test_pixel(const glm::dvec3& centre, double radius, int object, std::size_t p, const double* ox,
                        const double* oy, const double* oz, const double* dx, const double* dy, const double* dz,
                        double* depth, int* id, unsigned char* covered) {
   const double t = nearest_hit_t(glm::dvec3(ox[p], oy[p], oz[p]), glm::dvec3(dx[p], dy[p], dz[p]), centre, radius,
                                  kFormula);
-  const bool nearer = t < depth[p];
+  const bool nearer = nearer_hit(t, object, depth[p], id[p]);
   depth[p] = nearer ? t : depth[p];
   id[p] = nearer ? object : id[p];
   covered[p] = 1;
@@ -70,12 +73,29 @@ inline constexpr int kVectorRun = 4;
 void test_sphere_vectorised(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
                             const PixelRun& run, BandPixels& band);
 
-// What the casters call: the vectorised rows for runs of kVectorRun pixels or more, else the scalar loop.
-inline void test_sphere(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
-                        const PixelRun& run, BandPixels& band) {
-  if (run.count >= kVectorRun) test_sphere_vectorised(centre, radius, object, formula, run, band);
-  else if (formula == IntersectFormula::naive) test_sphere_scalar<IntersectFormula::naive>(centre, radius, object, run, band);
-  else test_sphere_scalar<IntersectFormula::stable>(centre, radius, object, run, band);
+// Whether any of a row's `count` pixels has its hit so far at nearest_t or beyond: only those can take an
+// object no ray reaches before nearest_t (a tie at nearest_t may still win on its index).
+inline bool row_can_change(const double* depth, int count, double nearest_t) {
+  bool open = false;
+  for (int i = 0; i < count; ++i) open |= depth[i] >= nearest_t;
+  return open;
+}
+
+// What the casters call, row by row: a row whose pixels all hold a hit nearer than nearest_t (the sphere's
+// bound, -∞ for none) is skipped; the others get the vectorised rows for runs of kVectorRun pixels or more,
+// else the scalar loop. Returns the tests run.
+inline long long test_sphere(const glm::dvec3& centre, double radius, double nearest_t, int object,
+                             IntersectFormula formula, const PixelRun& run, BandPixels& band) {
+  long long tests = 0;
+  for (int row = 0; row < run.rows; ++row) {
+    const PixelRun one{run.at + std::size_t(row) * std::size_t(run.stride), run.count, 1, run.stride};
+    if (!row_can_change(&band.depth[one.at], one.count, nearest_t)) continue;
+    tests += one.count;
+    if (one.count >= kVectorRun) test_sphere_vectorised(centre, radius, object, formula, one, band);
+    else if (formula == IntersectFormula::naive) test_sphere_scalar<IntersectFormula::naive>(centre, radius, object, one, band);
+    else test_sphere_scalar<IntersectFormula::stable>(centre, radius, object, one, band);
+  }
+  return tests;
 }
 
 }  // namespace raycam::detail

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "raycam/ray_caster.h"
+#include "raycam/speed_families.h"
 #include "raycam/stress_cases.h"
 #include "test_support.h"
 
@@ -260,5 +261,34 @@ TEST_CASE("a colour map reused across casts is rewritten whole", "[caster][accel
     camera.set_orbit({{0, 0, 0}, 9, theta, 1.0, 1.5});
     cast_primary_rays(camera, scene, map);
     CHECK(differences(map, cast_primary_rays(camera, scene, with(CastMethod::plain))) == 0);
+  }
+}
+
+// The speed bench's scene families (small K, small images): the near-to-far order gives the plain loop's
+// ids on each, with skipping on and off, and where spheres hide each other it runs fewer tests than the
+// boxes hold (the caster's cost follows what is visible); never more tests than the boxes hold.
+TEST_CASE("near to far: every scene family gives the plain loop's ids, and skips hidden spheres' tests",
+          "[caster][accelerated][families]") {
+  for (const std::string& name : testkit::speed_family_names()) {
+    const testkit::SpeedFamily family = testkit::speed_family(name, 3000);
+    Camera3D camera(72, 64);
+    camera.set_orbit(family.orbit);
+    INFO(name);
+    const ColourMap plain = cast_primary_rays(camera, family.scene, with(CastMethod::plain));
+    for (CastMethod method : {CastMethod::footprint, CastMethod::binned, CastMethod::automatic}) {
+      long long tests[2] = {0, 0};
+      for (bool near_to_far : {true, false}) {
+        CastOptions options = with(method, 2);
+        options.near_to_far = near_to_far;
+        CastStats stats;
+        INFO(cast_method_name(method) << (near_to_far ? ", near to far" : ", object order"));
+        CHECK(differences(cast_primary_rays(camera, family.scene, options, &stats), plain) == 0);
+        CHECK(stats.intersection_tests <= stats.box_tests);
+        tests[near_to_far] = stats.intersection_tests;
+        if (!near_to_far) CHECK(stats.intersection_tests == stats.box_tests);  // the caster before: every test
+      }
+      // Where big and small spheres hide each other (box depth 2.8 here), a third of the tests are skipped.
+      if (name == "radii ×20") CHECK(double(tests[true]) < 0.67 * double(tests[false]));
+    }
   }
 }

@@ -193,3 +193,35 @@ TEST_CASE("a band's ray columns are the camera's primary rays, bit for bit", "[c
     CHECK(differing == 0);
   }
 }
+
+// The depth test the casters run in any object order (near to far): a tie keeps the lower index whichever
+// comes first, as the plain loop's strict '<' in index order does; a row whose hit is nearer than a
+// sphere's bound is skipped (no test, no change).
+TEST_CASE("a band's depth test keeps the lower index on a tie in any order, and skips what is hidden",
+          "[caster][vector]") {
+  for (int count : {1, detail::kVectorRun + 1}) {  // the scalar and the vectorised rows
+    INFO(count << " pixels a row");
+    detail::BandPixels band;
+    band.reset(std::size_t(count));
+    for (int p = 0; p < count; ++p) {  // rays along -z from z = 10, 0.01 apart in x
+      band.ox[std::size_t(p)] = 0.01 * p;
+      band.oy[std::size_t(p)] = band.dx[std::size_t(p)] = band.dy[std::size_t(p)] = 0.0;
+      band.oz[std::size_t(p)] = 10.0;
+      band.dz[std::size_t(p)] = -1.0;
+    }
+    const detail::PixelRun run{0, count, 1, count};
+    const glm::dvec3 centre{0.0, 0.0, 0.0};
+    const double none = -kNoHit<double>;  // no bound: always tested
+    CHECK(detail::test_sphere(centre, 1.0, none, 7, IntersectFormula::stable, run, band) == count);
+    CHECK(detail::test_sphere(centre, 1.0, none, 3, IntersectFormula::stable, run, band) == count);  // the same sphere
+    CHECK(detail::test_sphere(centre, 1.0, none, 5, IntersectFormula::stable, run, band) == count);
+    for (int p = 0; p < count; ++p) CHECK(band.id[std::size_t(p)] == 3);
+    const double hit = band.depth[0];
+    CHECK(hit == Approx(9.0).margin(1e-3));
+    // A bigger sphere behind, whose bound says it cannot be nearer than 9.5: skipped, nothing changes.
+    CHECK(detail::test_sphere({0.0, 0.0, -5.0}, 4.0, 9.5, 0, IntersectFormula::stable, run, band) == 0);
+    // The same sphere with a bound at the hit itself: tested (a tie there could still win on its index).
+    CHECK(detail::test_sphere({0.0, 0.0, -5.0}, 4.0, hit, 0, IntersectFormula::stable, run, band) == count);
+    for (int p = 0; p < count; ++p) CHECK(band.id[std::size_t(p)] == 3);
+  }
+}
