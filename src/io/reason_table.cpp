@@ -21,7 +21,7 @@ const std::vector<ReasonPattern>& reason_patterns() {
       // ---- the JSON library's reasons, kept after "line L, column C:" ----
       {"syntax error while parsing {context*} - {what*}", "erreur de syntaxe dans {context} : {what}"},
       {"{what*}; last read: '{token}'", "{what} ; lu en dernier : « {token} »"},
-      {"unexpected {got*}; expected {wanted*}", "{got} inattendu ; attendu : {wanted}"},
+      {"unexpected {got*}; expected {wanted*}", "reçu : {got} ; attendu : {wanted}"},
       {"value", "une valeur"},
       {"object key", "une clé d'objet"},
       {"object separator", "un séparateur d'objet"},
@@ -107,7 +107,7 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"expected {rows} rows of {columns} ids, got more",
        "on attend {rows} lignes de {columns} identifiants ; davantage reçues"},
       {"expected {rows} rows of {columns} ids, got {got_rows} of {got_columns}",
-       "on attend {rows} lignes de {columns} identifiants ; reçu : {got_rows} lignes de {got_columns}"},
+       "on attend {rows} lignes de {columns} identifiants ; reçu : {got_rows} × {got_columns}"},
       {"expected {count} ids, got more", "on attend {count} identifiants ; davantage reçus"},
       {"expected {count} ids, got {got}", "on attend {count} identifiants ; reçu : {got}"},
       {"expected {what*}", "on attend {what}"},

@@ -318,7 +318,10 @@ TEST_CASE("error reasons: every reason the window can show reads in French, its 
     INFO(french);
     CHECK(french != reason.english);
     for (const std::string& part : reason.kept) CHECK_THAT(french, Catch::Contains(part));
-    for (const std::string& word : words_of(around_kept(french, reason))) CHECK(kEnglish.count(word) == 0);
+    for (const std::string& word : words_of(around_kept(french, reason))) {
+      CAPTURE(word);
+      CHECK(kEnglish.count(word) == 0);
+    }
     const std::string words = around_kept(french, reason);
     for (std::size_t at = words.find(':'); at != std::string::npos; at = words.find(':', at + 1))
       CHECK((at > 0 && words[at - 1] == ' '));  // French typography: a space before the colon
