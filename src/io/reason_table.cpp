@@ -69,6 +69,11 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"{path}: cannot write PNG (does the directory exist and is it writable?)",
        "{path} : impossible d'écrire le PNG (le dossier existe-t-il, et peut-on y écrire ?)"},
 
+      // ---- the construction figure's files (src/figure), exported from the window ----
+      {"{path}: cannot write the figure ({reason})", "{path} : impossible d'écrire la figure ({reason})"},
+      {"{path}: cannot open for writing", "{path} : impossible d'ouvrir le fichier en écriture"},
+      {"{path}: cannot write the PNG", "{path} : impossible d'écrire le PNG"},
+
       // ---- io: the scene file against the command line's flags (shown when the app opens on the demo) ----
       {"--mode: {flag}d does not match the scene file {path}, which is {dimension}D",
        "--mode : {flag}d ne correspond pas au fichier de scène {path}, qui est en {dimension}D"},

@@ -17,10 +17,12 @@
 
 #include "../scratch_dir.h"
 #include "answer.h"
+#include "app_options.h"
 #include "app_state.h"
 #include "case_image.h"
 #include "check_report.h"
 #include "check_run.h"
+#include "figure_export.h"
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/exact_bar.h"
@@ -186,6 +188,19 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(thrown_by([&] { write_png(ColourMap(0, 0, Rgb8{}), png); }), {png});
   const std::string unwritable = scratch.path("no-such-folder/map.png");
   add(thrown_by([&] { write_png(ColourMap(2, 2, Rgb8{}), unwritable); }), {unwritable});
+
+  // ---- the construction figure, exported from the window ----
+  ui::AppOptions options;
+  options.language = Language::en;
+  const ui::AppState app = ui::make_app_state(options);
+  const std::string svg = scratch.path("no-such-folder/figure.svg");
+  const std::string no_svg = thrown_by([&] { ui::export_construction_figure(app, svg, false); });
+  add(no_svg, {svg, no_svg.substr(no_svg.rfind('(') + 1)});  // the drawing library's reason, as it is
+  const std::string png_figure = scratch.path("no-such-folder/figure.png");
+  add(thrown_by([&] { ui::export_construction_figure(app, png_figure, false); }), {png_figure});
+  const std::string full = scratch.path("full.png");
+  fs::create_symlink("/dev/full", full);  // opens, then every write fails
+  add(thrown_by([&] { ui::export_construction_figure(app, full, false); }), {full});
 
   // ---- io: the scene file against the command line's flags ----
   const std::string scene3d = scratch.path("three.json");
@@ -362,7 +377,7 @@ TEST_CASE("error reasons: each French template places every part of its English 
   }
 }
 
-TEST_CASE("error reasons: an unknown reason stays in English, whole; a known one reads as written",
+TEST_CASE("error reasons: an unknown reason stays in English, whole, and a known one reads as written",
           "[session][language][reasons]") {
   CHECK(translate_reason(Language::fr, "a reason nobody wrote a pattern for") == "a reason nobody wrote a pattern for");
   CHECK(translate_reason(Language::fr, "") == "");
