@@ -56,9 +56,12 @@ const std::vector<CompiledPattern>& compiled_patterns() {
 // Nested reasons are a few levels deep at most (a detail around a reason around a phrase); the bound only
 // guards against a table whose patterns would feed each other forever.
 constexpr int kMaxDepth = 8;
+// std::regex matches by recursion, about one level per character: a reason longer than this (a path pasted
+// by mistake, tens of kilobytes) would overflow the stack, so it is shown as it is.
+constexpr std::size_t kMaxLength = 2048;
 
 std::string french_of(const std::string& english, std::vector<std::size_t>* used, int depth) {
-  if (depth > kMaxDepth) return english;
+  if (depth > kMaxDepth || english.size() > kMaxLength) return english;
   const std::vector<CompiledPattern>& patterns = compiled_patterns();
   for (std::size_t i = 0; i < patterns.size(); ++i) {
     const CompiledPattern& p = patterns[i];

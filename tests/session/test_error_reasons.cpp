@@ -381,6 +381,9 @@ TEST_CASE("error reasons: an unknown reason stays in English, whole, and a known
           "[session][language][reasons]") {
   CHECK(translate_reason(Language::fr, "a reason nobody wrote a pattern for") == "a reason nobody wrote a pattern for");
   CHECK(translate_reason(Language::fr, "") == "");
+  // A reason too long for the regular expressions' recursion (a pasted path) is shown as it is, whole.
+  const std::string pasted = "/" + std::string(100000, 'x') + ": cannot open scene file";
+  CHECK(translate_reason(Language::fr, pasted) == pasted);
   // Written by hand from the pattern's intent, not copied from the output.
   CHECK(translate_reason(Language::fr, "/tmp/x.json: cannot open scene file") ==
         "/tmp/x.json : impossible d'ouvrir le fichier de scène");

@@ -59,7 +59,7 @@ struct ReasonPattern {
 const std::vector<ReasonPattern>& reason_patterns();
 
 // `english` (an exception's what(), a checker's detail) in `language`: the French of the first pattern it
-// matches, or `english` itself (no pattern matches, or Language::en): no reason is ever lost. `used`, when
+// matches, or `english` itself (no pattern matches, Language::en, or longer than 2 KiB): no reason is lost. `used`, when
 // given, receives the index in reason_patterns() of every pattern applied, nested ones included.
 std::string translate_reason(Language language, const std::string& english,
                              std::vector<std::size_t>* used = nullptr);
