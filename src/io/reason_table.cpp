@@ -1,8 +1,9 @@
-// Every error reason raycam shows, English pattern → French (the syntax is raycam/language.h's ReasonPattern).
-// Grouped by the code that writes the English; within a group, a specific pattern comes before a general one
-// that would also match (the first match wins). Field names, paths, numbers and JSON values stay as they are;
-// French typography: a space before ':' and ';', « » around quoted names. tests/session/test_error_reasons.cpp
-// produces every message from its real code path and checks each pattern is used.
+// Every error reason raycam shows, English pattern → French (the syntax is raycam/language.h's
+// ReasonPattern). Grouped by the code that writes the English; within a group, a specific pattern comes
+// before a general one that would also match (the first match wins). Field names, paths, numbers and JSON
+// values stay as they are; French typography: a space before ':' and ';', « » around quoted names.
+// tests/session/test_error_reasons.cpp produces every message from its real code path and checks each pattern
+// is used.
 #include "raycam/language.h"
 
 namespace raycam {
@@ -38,7 +39,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
       // ---- io: a scene file's fields (source: field: expected what, got value) ----
       {"{source}: {field}: expected no such field (known: {keys})",
        "{source} : {field} : champ inconnu (champs connus : {keys})"},
-      {"{source}: {field*}: expected {what*}, got {value}", "{source} : {field} : on attend {what} ; reçu : {value}"},
+      {"{source}: {field*}: expected {what*}, got {value}",
+       "{source} : {field} : on attend {what} ; reçu : {value}"},
       {"{source}: {field*}: expected {what*}", "{source} : {field} : on attend {what}"},
       {"(top level)", "(racine du document)"},
       {"a number in {range} degrees", "un nombre de degrés dans {range}"},
@@ -64,8 +66,10 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"{path}: cannot write (no temporary file beside it); left unchanged",
        "{path} : écriture impossible (aucun fichier temporaire possible à côté) ; laissé tel quel"},
       {"{path}: write failed; left unchanged", "{path} : échec de l'écriture ; laissé tel quel"},
-      {"{path}: cannot replace file; left unchanged", "{path} : impossible de remplacer le fichier ; laissé tel quel"},
-      {"{path}: cannot write an empty colour map", "{path} : impossible d'écrire une carte des couleurs vide"},
+      {"{path}: cannot replace file; left unchanged",
+       "{path} : impossible de remplacer le fichier ; laissé tel quel"},
+      {"{path}: cannot write an empty colour map",
+       "{path} : impossible d'écrire une carte des couleurs vide"},
       {"{path}: cannot write PNG (does the directory exist and is it writable?)",
        "{path} : impossible d'écrire le PNG (le dossier existe-t-il, et peut-on y écrire ?)"},
 
@@ -79,16 +83,19 @@ const std::vector<ReasonPattern>& reason_patterns() {
        "--mode : {flag}d ne correspond pas au fichier de scène {path}, qui est en {dimension}D"},
       {"--target: expected {components} for a {dimension}D scene",
        "--target : on attend {components} pour une scène {dimension}D"},
-      {"--phi: only for 3D scenes (this one is 2D)", "--phi : seulement pour une scène 3D (celle-ci est en 2D)"},
+      {"--phi: only for 3D scenes (this one is 2D)",
+       "--phi : seulement pour une scène 3D (celle-ci est en 2D)"},
       {"--size: expected N for a 2D scene", "--size : on attend N pour une scène 2D"},
-      {"--size: expected N in [1, {max}] for a 2D scene", "--size : on attend N dans [1, {max}] pour une scène 2D"},
+      {"--size: expected N in [1, {max}] for a 2D scene",
+       "--size : on attend N dans [1, {max}] pour une scène 2D"},
       {"--size: expected N or WxH with sides in [1, {max}]",
        "--size : on attend N ou LxH, chaque côté dans [1, {max}]"},
 
       // ---- core: a camera or scene out of range ----
       {"{field}: the camera sits on its target (P = C); expected P != C",
        "{field} : la caméra est sur sa cible (P = C) ; on attend P != C"},
-      {"{field} = {value} is out of range: expected {what*}", "{field} = {value} hors limites : on attend {what}"},
+      {"{field} = {value} is out of range: expected {what*}",
+       "{field} = {value} hors limites : on attend {what}"},
       {"a finite angle with |angle| <= {max} rad", "un angle fini avec |angle| <= {max} rad"},
       {"circles: the exact bar takes at most {max} circles (its cost is quadratic), got {count}",
        "circles : la barre exacte prend au plus {max} cercles (son coût est quadratique) ; reçu : {count}"},
@@ -100,8 +107,10 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"killed by signal {number}", "tué par le signal {number}"},
       {"no answer within the timeout", "pas de réponse dans le délai"},
       {"more than {size} MiB on stdout: stopped", "plus de {size} Mio sur la sortie : arrêté"},
-      {"the checker could not run the program: {reason*}", "le correcteur n'a pas pu lancer le programme : {reason}"},
-      {"cannot create a temporary directory: {reason}", "impossible de créer un dossier temporaire : {reason}"},
+      {"the checker could not run the program: {reason*}",
+       "le correcteur n'a pas pu lancer le programme : {reason}"},
+      {"cannot create a temporary directory: {reason}",
+       "impossible de créer un dossier temporaire : {reason}"},
       {"cannot find an executable program '{program}'", "aucun programme exécutable nommé « {program} »"},
       {"cannot run '{program}': {reason}", "impossible de lancer « {program} » : {reason}"},
       {"{path}: cannot open the answer file", "{path} : impossible d'ouvrir le fichier de réponse"},
@@ -116,7 +125,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"expected {count} ids, got more", "on attend {count} identifiants ; davantage reçus"},
       {"expected {count} ids, got {got}", "on attend {count} identifiants ; reçu : {got}"},
       {"expected {what*}", "on attend {what}"},
-      {"{at} = {id}: expected an id in [-1, {max}]", "{at} = {id} : on attend un identifiant dans [-1, {max}]"},
+      {"{at} = {id}: expected an id in [-1, {max}]",
+       "{at} = {id} : on attend un identifiant dans [-1, {max}]"},
       {"md: expected {rows} rows of {columns} numbers (finite), got {value*}",
        "md : on attend {rows} lignes de {columns} nombres (finis) ; reçu : {value}"},
       {"md: expected {rows} rows of {columns} numbers", "md : on attend {rows} lignes de {columns} nombres"},

@@ -32,7 +32,8 @@ CompiledPattern compile(const ReasonPattern& pattern) {
   const std::string en = pattern.en;
   std::string expression;
   std::size_t last = 0;
-  for (auto it = std::sregex_iterator(en.begin(), en.end(), kPlaceholder); it != std::sregex_iterator(); ++it) {
+  for (auto it = std::sregex_iterator(en.begin(), en.end(), kPlaceholder); it != std::sregex_iterator();
+       ++it) {
     expression += escaped(en.substr(last, std::size_t(it->position()) - last)) + "(.+?)";
     compiled.names.push_back((*it)[1]);
     compiled.nested.push_back((*it)[2].length() > 0);

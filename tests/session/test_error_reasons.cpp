@@ -27,8 +27,8 @@
 #include "raycam/camera3d.h"
 #include "raycam/exact_bar.h"
 #include "raycam/image_files.h"
-#include "raycam/limits.h"
 #include "raycam/language.h"
+#include "raycam/limits.h"
 #include "raycam/scene.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
@@ -66,7 +66,8 @@ SceneFile small_case() {
 }
 
 std::string answer_error(const std::string& text, int dimension = 2) {
-  return dimension == 2 ? check::parse_answer(text, 2, 1, 4, 2).error : check::parse_answer(text, 3, 2, 2, 2).error;
+  return dimension == 2 ? check::parse_answer(text, 2, 1, 4, 2).error
+                        : check::parse_answer(text, 3, 2, 2, 2).error;
 }
 
 check::RunResult ended(check::RunResult::End end, int code = 0) {
@@ -88,8 +89,10 @@ struct TemporaryFolder {
     ::setenv("TMPDIR", value, 1);
   }
   ~TemporaryFolder() {
-    if (saved.empty()) ::unsetenv("TMPDIR");
-    else ::setenv("TMPDIR", saved.c_str(), 1);
+    if (saved.empty())
+      ::unsetenv("TMPDIR");
+    else
+      ::setenv("TMPDIR", saved.c_str(), 1);
   }
   std::string saved;
 };
@@ -150,12 +153,14 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
       {"lesson.json", "objects[0].center[1]", "\"x\""});
   add(scene_error(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})"),
       {"lesson.json", "objects[0].radius", "]0, 1e12]", "-1"});
-  add(scene_error(R"({"dimension": 2, "objects": [{"type": "circle", "center": [0, 0], "radius": 1, "color": [1, 2]}]})"),
+  add(scene_error(
+          R"({"dimension": 2, "objects": [{"type": "circle", "center": [0, 0], "radius": 1, "color": [1, 2]}]})"),
       {"lesson.json", "objects[0].color", "3", "[0, 255]", "[1,2]"});
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": 1})"), {"lesson.json", "camera"});
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": {"theta": 1e7}})"),
       {"lesson.json", "camera.theta", "[-1e6, 1e6]", "10000000.0"});
-  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [1]}})"), {"lesson.json", "camera.size"});
+  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [1]}})"),
+      {"lesson.json", "camera.size"});
   add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [16384, 16384]}})"),
       {"lesson.json", "camera.size", std::to_string(kMaxPixels3D)});
   std::string many = "{\"dimension\": 2, \"objects\": [0";
@@ -214,10 +219,17 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
     return thrown_by([&] { make_view_setup(flags); });
   };
   add(setup_error(scene3d, [](ViewFlags& f) { f.dimension = 2; }), {"--mode", "2", scene3d, "3D"});
-  add(setup_error(scene3d, [](ViewFlags& f) { f.camera.target = std::vector<double>{1, 2}; }),
+  add(setup_error(scene3d,
+                  [](ViewFlags& f) {
+                    f.camera.target = std::vector<double>{1, 2};
+                  }),
       {"--target", "x,y,z", "3D"});
   add(setup_error(scene2d, [](ViewFlags& f) { f.camera.phi_deg = 10; }), {"--phi", "3D", "2D"});
-  add(setup_error(scene2d, [](ViewFlags& f) { f.camera.size = std::vector<int>{4, 4}; }), {"--size", "N", "2D"});
+  add(setup_error(scene2d,
+                  [](ViewFlags& f) {
+                    f.camera.size = std::vector<int>{4, 4};
+                  }),
+      {"--size", "N", "2D"});
   add(setup_error(scene2d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxPixels2D + 1}; }),
       {"--size", "N", std::to_string(kMaxPixels2D), "2D"});
   add(setup_error(scene3d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxSide3D + 1}; }),
@@ -254,7 +266,8 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   std::ofstream(broken) << "#!/raycam-no-such-interpreter\n";
   ::chmod(broken.c_str(), 0755);
   const std::string cannot_run = check::run_student({broken}, "", {}, std::nullopt).error;
-  add(cannot_run, {broken, cannot_run.substr(cannot_run.rfind(": ") + 2)});  // the C library's reason, as it is
+  add(cannot_run,
+      {broken, cannot_run.substr(cannot_run.rfind(": ") + 2)});  // the C library's reason, as it is
   {
     const TemporaryFolder scope("/raycam-no-such-folder");
     const std::string no_folder = check::run_student({"true"}, "", {}, std::nullopt).error;
@@ -295,31 +308,36 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
 std::vector<std::string> words_of(const std::string& text) {
   std::vector<std::string> words(1);
   for (unsigned char c : text) {
-    if (std::isalpha(c) || c >= 0x80) words.back() += char(std::tolower(c));
-    else if (!words.back().empty()) words.emplace_back();
+    if (std::isalpha(c) || c >= 0x80)
+      words.back() += char(std::tolower(c));
+    else if (!words.back().empty())
+      words.emplace_back();
   }
   return words;
 }
 
 // English words of the reasons; none of them is also a French word of the table.
 const std::set<std::string> kEnglish = {
-    "cannot", "open",     "file",     "expected",  "syntax",    "error",   "write",    "failed",  "replace",
-    "unchanged", "limit",  "larger",   "known",     "field",     "read",    "got",      "number",  "array",
-    "object", "string",   "integer",  "must",      "only",      "scene",   "exit",     "status",  "killed",
-    "answer",   "more",     "rows",      "columns",   "while",   "parsing",  "unexpected", "invalid",
-    "literal", "the",     "is",       "of",        "in",        "an",      "with",     "for",     "than",
-    "out",    "range",    "temporary", "directory", "program",  "timeout", "within",   "stopped", "nested",
-    "deep",   "overflow", "required", "finite",    "degrees",   "camera",  "sits",     "over",    "at",
-    "most",   "bar",      "takes",    "circles",   "quadratic", "does",    "not",      "match",   "which",
-    "sides",  "empty",    "map",      "colour",    "top",       "level",   "left",     "writable", "exist",
-    "list",   "boolean",  "find",     "executable", "run",      "could",   "checker",  "id",      "where",
-    "row",    "has",      "quote",    "missing",   "closing",   "input",   "end",      "key",     "separator",
-    "value",  "last",     "too",      "these",     "one",       "no",      "such",     "beside",  "it"};
+    "cannot",  "open",       "file",      "expected",   "syntax",  "error",   "write",     "failed",
+    "replace", "unchanged",  "limit",     "larger",     "known",   "field",   "read",      "got",
+    "number",  "array",      "object",    "string",     "integer", "must",    "only",      "scene",
+    "exit",    "status",     "killed",    "answer",     "more",    "rows",    "columns",   "while",
+    "parsing", "unexpected", "invalid",   "literal",    "the",     "is",      "of",        "in",
+    "an",      "with",       "for",       "than",       "out",     "range",   "temporary", "directory",
+    "program", "timeout",    "within",    "stopped",    "nested",  "deep",    "overflow",  "required",
+    "finite",  "degrees",    "camera",    "sits",       "over",    "at",      "most",      "bar",
+    "takes",   "circles",    "quadratic", "does",       "not",     "match",   "which",     "sides",
+    "empty",   "map",        "colour",    "top",        "level",   "left",    "writable",  "exist",
+    "list",    "boolean",    "find",      "executable", "run",     "could",   "checker",   "id",
+    "where",   "row",        "has",       "quote",      "missing", "closing", "input",     "end",
+    "key",     "separator",  "value",     "last",       "too",     "these",   "one",       "no",
+    "such",    "beside",     "it"};
 
 // `french` without the variable parts (they may hold any word).
 std::string around_kept(std::string french, const Reason& reason) {
   for (const std::string& part : reason.kept)
-    for (std::size_t at; !part.empty() && (at = french.find(part)) != std::string::npos;) french.erase(at, part.size());
+    for (std::size_t at; !part.empty() && (at = french.find(part)) != std::string::npos;)
+      french.erase(at, part.size());
   return french;
 }
 }  // namespace
@@ -379,7 +397,8 @@ TEST_CASE("error reasons: each French template places every part of its English 
 
 TEST_CASE("error reasons: an unknown reason stays in English, whole, and a known one reads as written",
           "[session][language][reasons]") {
-  CHECK(translate_reason(Language::fr, "a reason nobody wrote a pattern for") == "a reason nobody wrote a pattern for");
+  CHECK(translate_reason(Language::fr, "a reason nobody wrote a pattern for") ==
+        "a reason nobody wrote a pattern for");
   CHECK(translate_reason(Language::fr, "") == "");
   // A reason too long for the regular expressions' recursion (a pasted path) is shown as it is, whole.
   const std::string pasted = "/" + std::string(100000, 'x') + ": cannot open scene file";
@@ -404,7 +423,8 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
   const std::string missing = scratch.path("typo.json");
   CHECK_FALSE(ui::open_scene(state, missing));
   // The window's French puts a no-break space before a colon.
-  CHECK(state.message == "impossible d'ouvrir\u00a0: " + missing + "\u00a0: impossible d'ouvrir le fichier de scène");
+  CHECK(state.message ==
+        "impossible d'ouvrir\u00a0: " + missing + "\u00a0: impossible d'ouvrir le fichier de scène");
   CHECK(ui::tr_reason("exit status 2") == "code de sortie 2");
   ui::set_language(Language::en);
   CHECK(ui::tr_reason("exit status 2") == "exit status 2");
@@ -420,5 +440,6 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
   const std::string text = check::text_report(header, {check::CheckCase{"", small_case()}}, report);
   CHECK_THAT(text, Catch::Contains("code de sortie 2"));
   header.lang = "en";
-  CHECK_THAT(check::text_report(header, {check::CheckCase{"", small_case()}}, report), Catch::Contains("exit status 2"));
+  CHECK_THAT(check::text_report(header, {check::CheckCase{"", small_case()}}, report),
+             Catch::Contains("exit status 2"));
 }
