@@ -83,7 +83,7 @@ mutant score-line-counts-failures src/check/check_report.cpp 's/cases passed (%.
 mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant diff-image-written-through-links src/check/check_report.cpp 's/    write_replacing(path, \[\&\](const std::string\& temporary) { write_png(canvas, temporary, scale_x, scale_y); });/    write_png(canvas, path, scale_x, scale_y);/' "$CHECK" "^check:"
-mutant french-details-left-english src/check/check_report.cpp 's/^  if (lang != "fr") return detail;/  return detail;/' "$CHECK" "^check:"
+mutant french-details-left-english src/check/check_report.cpp 's/^  return translate_reason(language_from_code(lang).value_or(Language::en), detail);/  return detail;/' "$CHECK" "^check:"
 mutant detached-child-holds-the-answer src/check/student_process.cpp 's/^      if (exited \&\& now >= drained_by) break;/      (void)drained_by;/' "$CHECK" "^check:"
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 # --- projector and state ---
@@ -95,6 +95,10 @@ mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(ro
 mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/return distance - radius - corner_distance - 1e-6/return distance - radius - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
+# --- one language for error reasons ---
+mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
+mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
+mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

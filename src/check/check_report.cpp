@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <regex>
 #include <stdexcept>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "check_texts.h"
 #include "raycam/colour_map.h"
+#include "raycam/language.h"
 
 namespace raycam::check {
 
@@ -52,35 +52,11 @@ std::string stderr_excerpt(const std::string& err) {
 // ---- terminal text -----------------------------------------------------------------------------------------
 namespace {
 // The run's detail in the report's language. The checker writes its details in English (they also go to the
-// JSON report, which tools read); the French text report turns each of its phrasings into French, numbers and
-// names kept. A reason a program printed itself stays as it is.
+// JSON report, which tools read); the French text report translates them with the module that translates
+// every error reason (raycam/language.h), numbers and names kept. A reason a program printed itself stays as
+// it is.
 std::string detail_text(const std::string& lang, const std::string& detail) {
-  if (lang != "fr") return detail;
-  static const std::pair<std::regex, const char*> kFrench[] = {
-      {std::regex("^exit status (\\d+)"), "code de sortie $1"},
-      {std::regex("killed by signal (\\d+)"), "tué par le signal $1"},
-      {std::regex("^no answer within the timeout$"), "pas de réponse dans le délai"},
-      {std::regex("^more than (\\d+) MiB on stdout: stopped$"), "plus de $1 Mio sur la sortie : arrêté"},
-      {std::regex("^not JSON: syntax error at byte (\\d+)$"), "pas du JSON : erreur de syntaxe à l'octet $1"},
-      {std::regex("^not JSON$"), "pas du JSON"},
-      {std::regex("^expected a JSON object with \"ids\"$"), "un objet JSON avec \"ids\" était attendu"},
-      {std::regex("^expected (\\d+) ids, got more$"), "$1 identifiants attendus, davantage reçus"},
-      {std::regex("^expected (\\d+) ids, got (\\d+)$"), "$1 identifiants attendus, $2 reçus"},
-      {std::regex("^expected (\\d+) rows of (\\d+) ids, got more$"),
-       "$1 lignes de $2 identifiants attendues, davantage reçues"},
-      {std::regex("^expected (\\d+) rows of (\\d+) ids, got (\\d+) of (\\d+)$"),
-       "$1 lignes de $2 identifiants attendues, $3 de $4 reçues"},
-      {std::regex("^(\\S+) = (-?\\d+): expected an id in \\[-1, (-?\\d+)\\]$"),
-       "$1 = $2 : identifiant attendu dans [-1, $3]"},
-      {std::regex("^(\\S+): expected an integer id, got (.*)$"), "$1 : identifiant entier attendu, reçu : $2"},
-      {std::regex("^(\\S+): expected a list of (integers|rows), got (.*)$"), "$1 : liste attendue, reçu : $3"},
-      {std::regex("^(\\S+): nested too deep$"), "$1 : imbrication trop profonde"},
-      {std::regex("^md: expected (\\d+) rows of (\\d+) numbers(.*)$"), "md : $1 lignes de $2 nombres attendues$3"},
-      {std::regex("^the checker could not run the program: (.*)$"), "le correcteur n'a pas pu lancer le programme : $1"},
-  };
-  std::string text = detail;
-  for (const auto& [pattern, french] : kFrench) text = std::regex_replace(text, pattern, french);
-  return text;
+  return translate_reason(language_from_code(lang).value_or(Language::en), detail);
 }
 }  // namespace
 

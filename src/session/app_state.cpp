@@ -99,7 +99,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   try {
     place_cameras(state);
   } catch (const std::exception& error) {  // a parameter out of range: keep the last image, say why
-    set_message(state, MessageSource::camera, true, error.what());
+    set_message(state, MessageSource::camera, true, tr_reason(error.what()));
     state.cameras_dirty = false;
     return false;
   }
@@ -129,7 +129,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
       cast = true;
     } catch (const std::invalid_argument& error) {  // e.g. the exact bar refuses a huge scene: say so, draw fast
       set_message(state, MessageSource::caster, true,
-                  std::string(error.what()) + tr(" (drawn with the fast caster)"));
+                  tr_reason(error.what()) + tr(" (drawn with the fast caster)"));
     }
   }
   if (!cast) {
@@ -155,8 +155,9 @@ bool recast_if_needed(AppState& state, bool interacting) {
 }
 
 std::string cannot_open_message(const std::string& path, const std::string& reason) {
-  return reason.find(path) == std::string::npos ? trf("cannot open %s: %s", path.c_str(), reason.c_str())
-                                                : trf("cannot open: %s", reason.c_str());
+  const std::string shown = tr_reason(reason);
+  return reason.find(path) == std::string::npos ? trf("cannot open %s: %s", path.c_str(), shown.c_str())
+                                                : trf("cannot open: %s", shown.c_str());
 }
 
 bool open_scene(AppState& state, const std::string& path) {
@@ -196,7 +197,7 @@ bool save_preset(AppState& state, const std::string& path) {
     set_message(state, MessageSource::files, false, trf("saved the camera preset to %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
-    set_message(state, MessageSource::files, true, trf("cannot save: %s", error.what()));
+    set_message(state, MessageSource::files, true, trf("cannot save: %s", tr_reason(error.what()).c_str()));
     return false;
   }
 }

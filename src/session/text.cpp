@@ -27,6 +27,18 @@ std::string trf(const char* english_format, ...) {
   return text;
 }
 
+std::string with_no_break_spaces(std::string text) {
+  for (const char* mark : {" ;", " :", " ?", " !"})
+    for (std::size_t at = text.find(mark); at != std::string::npos; at = text.find(mark, at + 2))
+      text.replace(at, 1, "\u00a0");
+  return text;
+}
+
+std::string tr_reason(const std::string& english) {
+  const std::string shown = translate_reason(g_language, english);
+  return g_language == Language::fr ? with_no_break_spaces(shown) : shown;
+}
+
 void set_language(Language language) { g_language = language; }
 Language current_language() { return g_language; }
 

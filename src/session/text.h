@@ -40,6 +40,15 @@ std::string trf(const char* english_format, ...)
 // Marks a string that is translated later, where it is shown (gettext's N_): arrays of labels, choices.
 constexpr const char* tr_later(const char* english) { return english; }
 
+// French typography in a text written with plain spaces (the core's, the reasons' table): a no-break space
+// before ; : ? ! so that a wrapped line never starts with one.
+std::string with_no_break_spaces(std::string text);
+
+// An error reason (an exception's what(), a checker's detail: English from core, io or the checker) in the
+// current language, by raycam/language.h's translate_reason(), French spacing included. Every reason the
+// window shows goes through it.
+std::string tr_reason(const std::string& english);
+
 void set_language(Language language);
 Language current_language();
 

@@ -47,7 +47,7 @@ void check_section(CameraCheck& check, double now) {
     ImGui::TextColored(
         colour, "%s",
         trf("%s: %s", check::text(language_code(current_language()), check::status_name(r.status)),
-            r.detail.c_str())
+            tr_reason(r.detail).c_str())
             .c_str());
   if (!progress.current) ImGui::TextUnformatted(tr("(for the camera before your last change)"));
   if (!v.sandboxed && !request.is_file)

@@ -33,7 +33,7 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
       gl::write_png(host.read_back(), path);
       set_message(state, MessageSource::files, false, trf("wrote %s", path.c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, error.what());
+      set_message(state, MessageSource::files, true, tr_reason(error.what()));
       result.screenshot_failed = true;
     }
     state.request_screenshot = false;

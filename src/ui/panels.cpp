@@ -92,12 +92,8 @@ void same_line_if_fits(float width) {
 }
 
 void explain(const char* text) {
-  // French typography: a no-break space before ; : ? ! so that a wrapped line never starts with one (the
-  // core's texts, e.g. the mistakes', are written with plain spaces).
-  std::string shown = text;
-  for (const char* mark : {" ;", " :", " ?", " !"})
-    for (std::size_t at = shown.find(mark); at != std::string::npos; at = shown.find(mark, at + 2))
-      shown.replace(at, 1, "\u00a0");
+  // French typography (the core's texts, e.g. the mistakes', are written with plain spaces).
+  const std::string shown = with_no_break_spaces(text);
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   ImGui::TextWrapped("%s", shown.c_str());
   ImGui::PopStyleColor();
@@ -229,7 +225,7 @@ void figure_export_row(AppState& state) {
         written += (written.empty() ? "" : ", ") + file;
       set_message(state, MessageSource::construction, false, trf("wrote %s", written.c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::construction, true, error.what());
+      set_message(state, MessageSource::construction, true, tr_reason(error.what()));
     }
   }
   show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
@@ -473,7 +469,7 @@ void files_section(AppState& state) {
       write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
       set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, error.what());
+      set_message(state, MessageSource::files, true, tr_reason(error.what()));
     }
   }
   same_line_if_fits(ImGui::CalcTextSize(tr("Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);

@@ -18,6 +18,7 @@
 #include "raycam/language.h"
 #include "raycam/scene.h"
 #include "raycam/view_setup.h"
+#include "text.h"
 #include "web_host.h"
 
 namespace {
@@ -122,7 +123,7 @@ int main() {
     options.language.reset();
     options.view.scene_path.reset();
     state = raycam::ui::make_app_state(options);
-    state.message = error.what();
+    state.message = raycam::ui::tr_reason(error.what());
   }
   raycam::web::run_page(state);
 }

@@ -461,5 +461,5 @@ TEST_CASE("the French report says why in French, details included", "[check][cli
     for (const char* english : {"exit status", "expected", "not JSON", "got "}) CHECK_THAT(c.output, !Catch::Contains(english));
   }
   const Checked wrong = check("--lang fr --mode 2d --cases 1 --student \"python3 -c 'print(\\\"{\\\\\\\"ids\\\\\\\": [0]}\\\")'\"", "fr_size");
-  CHECK_THAT(wrong.output, Catch::Contains("identifiants attendus, 1 reçus"));
+  CHECK_THAT(wrong.output, Catch::Contains("identifiants ; reçu : 1"));
 }

@@ -1,7 +1,9 @@
 // The two languages of raycam's visible text, and what every translated text needs: the language from a
 // flag or the environment, a table of French by English key, and printf-style formatting. The window's
 // table is src/session/text_table.cpp (tr(), text.h), the check command's src/check/check_texts.cpp; the
-// English text is the key in both, as gettext's msgid.
+// English text is the key in both, as gettext's msgid. Error reasons (what core, io and the checker throw or
+// report, in English, with paths, numbers and field names inside) are translated by pattern where they are
+// shown: translate_reason().
 #pragma once
 
 #include <cstdarg>
@@ -44,6 +46,23 @@ Language language_from_environment();
 // The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
 Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
 const char* language_code(Language language);  // "en", "fr"
+
+// An error reason's English phrasing and its French. In `en`, "{name}" stands for a variable part (a path, a
+// number, a field name), kept as it is; "{name*}" for a nested reason, itself translated. `fr` places each
+// name once, as "{name}" (without the star). Any other brace is literal text.
+struct ReasonPattern {
+  const char* en;
+  const char* fr;
+};
+
+// Every reason raycam may show (src/io/reason_table.cpp); the first pattern matching the whole text wins.
+const std::vector<ReasonPattern>& reason_patterns();
+
+// `english` (an exception's what(), a checker's detail) in `language`: the French of the first pattern it
+// matches, or `english` itself (no pattern matches, Language::en, or longer than 2 KiB): no reason is lost. `used`, when
+// given, receives the index in reason_patterns() of every pattern applied, nested ones included.
+std::string translate_reason(Language language, const std::string& english,
+                             std::vector<std::size_t>* used = nullptr);
 
 // A classic mistake's checkbox label and one-line explanation (the core keeps both languages beside it).
 const char* mistake_label(const MistakeInfo& info, Language language);

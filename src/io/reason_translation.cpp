@@ -1,0 +1,98 @@
+// translate_reason(): each ReasonPattern's English becomes an anchored regular expression once (literal text
+// escaped, each placeholder a lazy group), matched against the whole reason; the French template is then
+// filled with the captured parts.
+#include <regex>
+
+#include "raycam/language.h"
+
+namespace raycam {
+
+namespace {
+const std::regex kPlaceholder(R"(\{([a-z_]+)(\*?)\})");
+
+struct CompiledPattern {
+  std::regex english;
+  std::vector<std::string> names;  // in capture order
+  std::vector<bool> nested;        // "{name*}": translated in turn
+  std::string french;
+};
+
+std::string escaped(const std::string& literal) {
+  static const std::string special = R"(\^$.|?*+()[]{})";
+  std::string out;
+  for (char c : literal) {
+    if (special.find(c) != std::string::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+CompiledPattern compile(const ReasonPattern& pattern) {
+  CompiledPattern compiled;
+  const std::string en = pattern.en;
+  std::string expression;
+  std::size_t last = 0;
+  for (auto it = std::sregex_iterator(en.begin(), en.end(), kPlaceholder); it != std::sregex_iterator();
+       ++it) {
+    expression += escaped(en.substr(last, std::size_t(it->position()) - last)) + "(.+?)";
+    compiled.names.push_back((*it)[1]);
+    compiled.nested.push_back((*it)[2].length() > 0);
+    last = std::size_t(it->position() + it->length());
+  }
+  expression += escaped(en.substr(last));
+  compiled.english = std::regex(expression);
+  compiled.french = pattern.fr;
+  return compiled;
+}
+
+const std::vector<CompiledPattern>& compiled_patterns() {
+  static const std::vector<CompiledPattern> all = [] {
+    std::vector<CompiledPattern> out;
+    for (const ReasonPattern& pattern : reason_patterns()) out.push_back(compile(pattern));
+    return out;
+  }();
+  return all;
+}
+
+// Nested reasons are a few levels deep at most (a detail around a reason around a phrase); the bound only
+// guards against a table whose patterns would feed each other forever.
+constexpr int kMaxDepth = 8;
+// std::regex matches by recursion, about one level per character: a reason longer than this (a path pasted
+// by mistake, tens of kilobytes) would overflow the stack, so it is shown as it is.
+constexpr std::size_t kMaxLength = 2048;
+
+std::string french_of(const std::string& english, std::vector<std::size_t>* used, int depth) {
+  if (depth > kMaxDepth || english.size() > kMaxLength) return english;
+  const std::vector<CompiledPattern>& patterns = compiled_patterns();
+  for (std::size_t i = 0; i < patterns.size(); ++i) {
+    const CompiledPattern& p = patterns[i];
+    std::smatch match;
+    if (!std::regex_match(english, match, p.english)) continue;
+    if (used) used->push_back(i);
+    std::vector<std::string> parts;
+    for (std::size_t k = 0; k < p.names.size(); ++k)
+      parts.push_back(p.nested[k] ? french_of(match[k + 1], used, depth + 1) : std::string(match[k + 1]));
+    // One pass over the template: a captured part that looks like "{name}" is never filled in turn.
+    std::string text;
+    std::size_t last = 0;
+    for (auto it = std::sregex_iterator(p.french.begin(), p.french.end(), kPlaceholder);
+         it != std::sregex_iterator(); ++it) {
+      text += p.french.substr(last, std::size_t(it->position()) - last);
+      std::size_t k = 0;
+      while (k < p.names.size() && p.names[k] != (*it)[1]) ++k;
+      text += k < p.names.size() ? parts[k] : it->str();
+      last = std::size_t(it->position() + it->length());
+    }
+    text += p.french.substr(last);
+    return text;
+  }
+  return english;
+}
+}  // namespace
+
+std::string translate_reason(Language language, const std::string& english, std::vector<std::size_t>* used) {
+  if (language == Language::en) return english;
+  return french_of(english, used, 0);
+}
+
+}  // namespace raycam
