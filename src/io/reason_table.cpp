@@ -12,6 +12,7 @@ const std::vector<ReasonPattern>& reason_patterns() {
   static const std::vector<ReasonPattern> table = {
       // ---- io: reading a scene file ----
       {"{path}: cannot open scene file", "{path} : impossible d'ouvrir le fichier de scène"},
+      {"{path}: is a folder, not a scene file", "{path} : c'est un dossier, pas un fichier de scène"},
       {"{path}: file is larger than the limit of {size} MiB",
        "{path} : fichier trop gros, au-delà de la limite de {size} Mio"},
       {"{path}: cannot read scene file", "{path} : impossible de lire le fichier de scène"},

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -222,6 +223,9 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
 }
 
 SceneFile load_scene_file(const std::string& path) {
+  // A folder opens as a stream whose size reads as huge: it would be refused as "larger than the limit".
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) throw std::invalid_argument(path + ": is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw std::invalid_argument(path + ": cannot open scene file");
   const std::streamoff size = in.tellg();

@@ -132,7 +132,7 @@ TEST_CASE("check names pairs of mistakes", "[check][cli][diagnosis]") {
   }
 }
 
-TEST_CASE("upside down and mirrored + rows flipped give one image; md tells them apart",
+TEST_CASE("upside down and mirrored + rows flipped give one image, md tells them apart",
           "[check][cli][diagnosis]") {
   Checked c = check(mistaken("upside_down"), "upside_ids");
   REQUIRE(c.report["diagnosis"].size() >= 2);

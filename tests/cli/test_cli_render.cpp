@@ -85,7 +85,7 @@ TEST_CASE("render with a scene file uses its preset, flags override it", "[cli]"
   check_same(read_ids(scratch("cli_scene.txt")), cast_primary_rays(camera, scene));
 }
 
-TEST_CASE("render --method and --threads give the plain loop's ids; accuracy knobs reach the caster", "[cli]") {
+TEST_CASE("render --method and --threads give the plain loop's ids, accuracy knobs reach the caster", "[cli]") {
   Camera3D camera(96, 64);
   camera.set_orbit({{0, 0, 0}, 8.0, glm::radians(30.0), glm::radians(60.0), 2.0});
   CastOptions plain;

@@ -17,7 +17,7 @@ ViewSetup demo(int dimension) {
 }
 }  // namespace
 
-TEST_CASE("default knobs reproduce the plain caster; --exact reproduces the exact bar", "[accuracy][flags]") {
+TEST_CASE("default knobs reproduce the plain caster, --exact reproduces the exact bar", "[accuracy][flags]") {
   AccuracyFlags defaults;
   const ViewSetup setup2d = demo(2);
   const ColourMap plain2d = cast_primary_rays(setup2d.camera2d, setup2d.file.scene2d);

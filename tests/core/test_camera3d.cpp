@@ -286,7 +286,7 @@ TEST_CASE("free placement puts the screen at P looking at C", "[camera3d]") {
   CHECK_THROWS_WITH(camera.set_free({1, 1, 1}, {1, 1, 1}, 1.0), Catch::Contains("sits on its target"));
 }
 
-TEST_CASE("the printed angle convention looks away; sizes and res are checked",
+TEST_CASE("the printed angle convention looks away, sizes and res are checked",
           "[camera3d][input][mistake]") {
   Camera3D camera(10, 6);
   camera.set_orbit({{1, 2, 3}, 5.0, 0.4, 1.1, 1.0});

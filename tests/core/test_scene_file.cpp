@@ -98,7 +98,7 @@ TEST_CASE("bad scene files name the file, the field and what was expected", "[sc
   CHECK_THAT(error_of(""), Catch::Contains("scene.json"));
 }
 
-TEST_CASE("loading names a missing file; saving replaces atomically", "[scene_file][input]") {
+TEST_CASE("loading names a missing file, saving replaces atomically", "[scene_file][input]") {
   CHECK_THROWS_WITH(load_scene_file("/nonexistent/dir/scene.json"),
                     Catch::Contains("/nonexistent/dir/scene.json"));
   const std::string path = "raycam_test_scene.json";

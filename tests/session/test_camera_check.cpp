@@ -72,7 +72,7 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CHECK_FALSE(check.up_to_date());
 }  // the destructor does not wait either: the worker finishes on its own
 
-TEST_CASE("a failing check names itself in the image's header; a re-run clears it", "[ui][check]") {
+TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
   ui::CheckProgress progress;
   CHECK(ui::check_header(progress).empty());  // no verdict yet
   auto verdict = std::make_shared<ui::KeyedVerdict>();

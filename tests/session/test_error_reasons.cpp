@@ -123,7 +123,9 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   std::ofstream(huge).put('{');
   fs::resize_file(huge, kMaxSceneFileBytes + 1);  // sparse: nothing is written
   add(thrown_by([&] { load_scene_file(huge); }), {huge, "256"});
-  add(thrown_by([&] { load_scene_file(scratch.dir.string()); }), {scratch.dir.string()});  // a folder
+  const std::string folder_reason = thrown_by([&] { load_scene_file(scratch.dir.string()); });
+  CHECK(folder_reason.find("is a folder") != std::string::npos);  // not "larger than the limit"
+  add(folder_reason, {scratch.dir.string()});
   // A file that holds less than its size says (sysfs gives every file 4096 bytes) cannot be read in full.
   const std::string short_file = "/sys/devices/system/cpu/online";
   add(thrown_by([&] { load_scene_file(short_file); }), {short_file});

@@ -122,7 +122,7 @@ TEST_CASE("equal depth: identical objects always show the lower index", "[stress
   }
 }
 
-TEST_CASE("the handout's arccos route loses ~sqrt(2 eps) near ±1; atan2 does not", "[stress][angles]") {
+TEST_CASE("the handout's arccos route loses ~sqrt(2 eps) near ±1, atan2 does not", "[stress][angles]") {
   // Unit vectors a small angle δ from +x (2D) or from +z (3D): the true angle is δ.
   double worst_arccos = 0, worst_stable = 0;
   for (double delta = 1e-12; delta < 1e-2; delta *= 3.7) {
