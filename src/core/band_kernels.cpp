@@ -38,9 +38,30 @@ RAYCAM_VECTOR_LOOP void test_row(glm::dvec3 centre, double radius, int object, i
   for (int i = 0; i < count; ++i)
     test_pixel<kFormula>(centre, radius, object, std::size_t(i), ox, oy, oz, dx, dy, dz, depth, id, covered);
 }
+template <IntersectFormula kFormula>
+RAYCAM_VECTOR_LOOP void pending_hits(PendingTests& q) {
+  const int count = q.count;
+  for (int i = 0; i < count; ++i)
+    q.t[i] = nearest_hit_t(glm::dvec3(q.ox[i], q.oy[i], q.oz[i]), glm::dvec3(q.dx[i], q.dy[i], q.dz[i]),
+                           glm::dvec3(q.cx[i], q.cy[i], q.cz[i]), q.radius[i], kFormula);
+}
 }  // namespace
 
+void run_pending_tests(IntersectFormula formula, BandPixels& band) {
+  PendingTests& q = band.pending;
+  if (formula == IntersectFormula::naive) pending_hits<IntersectFormula::naive>(q);
+  else pending_hits<IntersectFormula::stable>(q);
+  for (int i = 0; i < q.count; ++i) {  // in order: two tests of one pixel must not race
+    const std::size_t p = std::size_t(q.pixel[i]);
+    const bool nearer = nearer_hit(q.t[i], q.object[i], band.depth[p], band.id[p]);
+    band.depth[p] = nearer ? q.t[i] : band.depth[p];
+    band.id[p] = nearer ? q.object[i] : band.id[p];
+  }
+  q.count = 0;
+}
+
 void BandPixels::reset(std::size_t pixels) {
+  pending.count = 0;
   for (std::vector<double>* column : {&ox, &oy, &oz, &dx, &dy, &dz}) column->resize(pixels);
   depth.assign(pixels, kNoHit<double>);
   id.assign(pixels, -1);

@@ -2,6 +2,7 @@
 // band's rays made as columns, and one sphere tested against a run of them.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -12,13 +13,25 @@ namespace raycam::detail {
 
 // A band of pixels, row after row: its rays as columns (pixel p's ray starts at (ox, oy, oz)[p] with unit
 // direction (dx, dy, dz)[p]) and its depth buffer: the nearest t so far, that object's index (-1: none),
-// and whether any object's box covers the pixel.
+// and whether any object's box covers the pixel; and the tests pending on it (run_pending_tests).
+// Tests of short box rows waiting to run together: (pixel, sphere) pairs, their rays and spheres copied
+// into columns so that one vectorised loop runs them. Alone, a 1–3 pixel row is a chain of dependent
+// scalar steps (a square root, a division) and a branch or two; at 10⁵ spheres most rows are such.
+struct PendingTests {
+  static constexpr int kCapacity = 128;  // its columns (11 KB) stay in L1 beside the band's rays
+  alignas(64) double ox[kCapacity], oy[kCapacity], oz[kCapacity], dx[kCapacity], dy[kCapacity], dz[kCapacity];
+  alignas(64) double cx[kCapacity], cy[kCapacity], cz[kCapacity], radius[kCapacity], t[kCapacity];
+  int pixel[kCapacity], object[kCapacity];
+  int count = 0;
+};
+
 struct BandPixels {
   std::vector<double> ox, oy, oz, dx, dy, dz;
   std::vector<double> depth;
   std::vector<int> id;
   std::vector<unsigned char> covered;
-  void reset(std::size_t pixels);  // nothing seen, nothing covered (the rays are left to make_row_rays)
+  PendingTests pending;
+  void reset(std::size_t pixels);  // nothing seen, nothing covered, nothing pending (the rays are left to make_row_rays)
 };
 
 // The rays of columns first…last of a row into the band's pixels row_at + first … row_at + last: column c's
@@ -37,10 +50,8 @@ struct PixelRun {
 // One sphere against a run of the band's pixels: the plain loop's nearest_hit_t, and a depth test that
 // gives the plain loop's answer whatever order the objects come in (nearer_hit: the smaller t, and on a tie
 // the lower index, which the plain loop's strict '<' in index order keeps). kFormula is fixed for the whole
-// loop, so that only its own arithmetic is in it. Scalar and inline, for runs shorter than kVectorRun: at
-// 10⁵ spheres most boxes are one to three pixels wide, where a vectorised row (a call, a vector's set-up)
-// costs more than its tests. With nearest_hit_t written without branches, a ray that misses costs no
-// mispredicted branch.
+// loop, so that only its own arithmetic is in it. With nearest_hit_t written without branches, a ray that
+// misses costs no mispredicted branch, and a row of them vectorises.
 inline bool nearer_hit(double t, int object, double depth, int id) { return t < depth || (t == depth && object < id); }
 
 template <IntersectFormula kFormula>
@@ -55,21 +66,42 @@ inline void test_pixel(const glm::dvec3& centre, double radius, int object, std:
   covered[p] = 1;
 }
 
-template <IntersectFormula kFormula>
-inline void test_sphere_scalar(const glm::dvec3& centre, double radius, int object, const PixelRun& run,
-                               BandPixels& band) {
-  for (int row = 0; row < run.rows; ++row) {
-    const std::size_t begin = run.at + std::size_t(row) * std::size_t(run.stride), end = begin + std::size_t(run.count);
-    for (std::size_t p = begin; p < end; ++p)
-      test_pixel<kFormula>(centre, radius, object, p, band.ox.data(), band.oy.data(), band.oz.data(), band.dx.data(),
-                           band.dy.data(), band.dz.data(), band.depth.data(), band.id.data(), band.covered.data());
+// Runs the pending tests (vectorised: the same nearest_hit_t, so the same t) and applies them to the depth
+// buffer with nearer_hit, whose answer does not depend on the order of the tests.
+void run_pending_tests(IntersectFormula formula, BandPixels& band);
+
+// Queues a short row's tests (the pixels that could still change), running the queue when it is full.
+// Returns the tests queued.
+inline int queue_row_tests(const glm::dvec3& centre, double radius, double nearest_t, int object, std::size_t at,
+                            int count, IntersectFormula formula, BandPixels& band) {
+  PendingTests& q = band.pending;
+  if (q.count + count > PendingTests::kCapacity) run_pending_tests(formula, band);
+  const int before = q.count;
+  for (std::size_t p = at; p < at + std::size_t(count); ++p) {
+    const int i = q.count;
+    q.ox[i] = band.ox[p];
+    q.oy[i] = band.oy[p];
+    q.oz[i] = band.oz[p];
+    q.dx[i] = band.dx[p];
+    q.dy[i] = band.dy[p];
+    q.dz[i] = band.dz[p];
+    q.cx[i] = centre.x;
+    q.cy[i] = centre.y;
+    q.cz[i] = centre.z;
+    q.radius[i] = radius;
+    q.pixel[i] = int(p);
+    q.object[i] = object;
+    q.count += band.depth[p] >= nearest_t;  // written always, kept only if the pixel could change
+    band.covered[p] = 1;
   }
+  return q.count - before;
 }
 
-// The same for runs of at least kVectorRun pixels a row: each row's tests vectorised (as many pixels at once
-// as a vector holds doubles), with the same nearest_hit_t, so the same t. The threshold was measured with
-// `bench speed` (4, 8 and 16: 4 best at K = 10⁵, 8 or less 20 % faster than 16 at K = 1000, 1024²).
-inline constexpr int kVectorRun = 4;
+// Runs of at least kVectorRun pixels a row: each row's tests vectorised in place (as many pixels at once as a
+// vector holds doubles), with the same nearest_hit_t, so the same t. Shorter rows are queued: a row of 4 to 15
+// is mostly a vector's set-up and a masked tail. The threshold was measured with `bench speed`'s families
+// (4, 16 and 64: 16 best; the grazing layer at K = 10⁵, 1024²: 10.1, 7.1 and 7.7 ms).
+inline constexpr int kVectorRun = 16;
 void test_sphere_vectorised(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
                             const PixelRun& run, BandPixels& band);
 
@@ -83,17 +115,20 @@ inline bool row_can_change(const double* depth, int count, double nearest_t) {
 
 // What the casters call, row by row: a row whose pixels all hold a hit nearer than nearest_t (the sphere's
 // bound, -∞ for none) is skipped; the others get the vectorised rows for runs of kVectorRun pixels or more,
-// else the scalar loop. Returns the tests run.
+// else join the pending tests (run_pending_tests must run before the band's depth buffer is read). Returns
+// the tests run or queued.
 inline long long test_sphere(const glm::dvec3& centre, double radius, double nearest_t, int object,
                              IntersectFormula formula, const PixelRun& run, BandPixels& band) {
   long long tests = 0;
   for (int row = 0; row < run.rows; ++row) {
     const PixelRun one{run.at + std::size_t(row) * std::size_t(run.stride), run.count, 1, run.stride};
     if (!row_can_change(&band.depth[one.at], one.count, nearest_t)) continue;
-    tests += one.count;
-    if (one.count >= kVectorRun) test_sphere_vectorised(centre, radius, object, formula, one, band);
-    else if (formula == IntersectFormula::naive) test_sphere_scalar<IntersectFormula::naive>(centre, radius, object, one, band);
-    else test_sphere_scalar<IntersectFormula::stable>(centre, radius, object, one, band);
+    if (one.count >= kVectorRun) {
+      test_sphere_vectorised(centre, radius, object, formula, one, band);
+      tests += one.count;
+    } else {
+      tests += queue_row_tests(centre, radius, nearest_t, object, one.at, one.count, formula, band);
+    }
   }
   return tests;
 }

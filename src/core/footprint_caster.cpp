@@ -346,6 +346,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
       }
       for_each_candidate([&](const Candidate& c) { splat(c, columns, row_begin, row_end, options.formula, s); });
     }
+    run_pending_tests(options.formula, s.pixels);
     write_band(scene.background, scene.colour.data(), row_begin, row_end, s, out);
   });
 

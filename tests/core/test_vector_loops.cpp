@@ -215,6 +215,7 @@ TEST_CASE("a band's depth test keeps the lower index on a tie in any order, and 
     CHECK(detail::test_sphere(centre, 1.0, none, 7, IntersectFormula::stable, run, band) == count);
     CHECK(detail::test_sphere(centre, 1.0, none, 3, IntersectFormula::stable, run, band) == count);  // the same sphere
     CHECK(detail::test_sphere(centre, 1.0, none, 5, IntersectFormula::stable, run, band) == count);
+    detail::run_pending_tests(IntersectFormula::stable, band);  // short rows' tests wait in a queue
     for (int p = 0; p < count; ++p) CHECK(band.id[std::size_t(p)] == 3);
     const double hit = band.depth[0];
     CHECK(hit == Approx(9.0).margin(1e-3));
@@ -222,6 +223,7 @@ TEST_CASE("a band's depth test keeps the lower index on a tie in any order, and 
     CHECK(detail::test_sphere({0.0, 0.0, -5.0}, 4.0, 9.5, 0, IntersectFormula::stable, run, band) == 0);
     // The same sphere with a bound at the hit itself: tested (a tie there could still win on its index).
     CHECK(detail::test_sphere({0.0, 0.0, -5.0}, 4.0, hit, 0, IntersectFormula::stable, run, band) == count);
+    detail::run_pending_tests(IntersectFormula::stable, band);
     for (int p = 0; p < count; ++p) CHECK(band.id[std::size_t(p)] == 3);
   }
 }
