@@ -91,6 +91,7 @@ SESSION="raycam_session_tests"
 mutant save-straight-to-target src/io/scene_file.cpp 's/^  const std::string temporary = path + ".tmp";/  const std::string temporary = path;/' "$SESSION" "^session:"
 mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state);$/  (void)place_pin;/' "$SESSION" "^session:"
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
+mutant key-changes-not-spread src/ui/key_queue.h 's/    if (!changed(key) \&\& !waiting(key)) {/    if (true) {/' "raycam_ui_tests" "^ui:"
 # --- fast on scenes it has never seen ---
 mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/return distance - radius - corner_distance - 1e-6/return distance - radius - 1e-6/' "$CORE" "$CORE_TESTS"

@@ -40,6 +40,14 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
     state.request_quit = true;
 }
 
+// Installed over ImGui's backend's key callback (which chains to key_callback): a key's changes reach ImGui
+// one per frame (KeyEventQueue).
+void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  note(window);
+  if (action == GLFW_REPEAT || callbacks_of(window).host->keys().arrive(key, action == GLFW_PRESS))
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+
 void drop_callback(GLFWwindow* window, int count, const char** paths) {
   note(window);
   // A bad file shows its error in the status line and keeps the current scene.
@@ -78,6 +86,9 @@ void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
 bool GlfwHost::should_close() const { return quit_signal || glfwWindowShouldClose(window_); }
 
 ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
+  // A key's changes held since the last frame, before this frame's events (key_queue.h).
+  for (const ui::KeyEventQueue::Event& e : keys_.start_frame())
+    ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
   if (scripted_) {
     glfwPollEvents();
   } else {
@@ -85,7 +96,7 @@ ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
     // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
     for (;;) {
       const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
-      const bool busy = !minimised && (settle_frames_ > 0 || ui::frame_needs_redraw(state));
+      const bool busy = !minimised && (settle_frames_ > 0 || keys_.holding() || ui::frame_needs_redraw(state));
       if (busy || should_close()) break;
       glfwWaitEventsTimeout(kIdleWaitSeconds);
     }
@@ -135,6 +146,7 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  glfwSetKeyCallback(window, queued_key_callback);  // over the backend's, which it calls
   ImGui_ImplOpenGL3_Init("#version 330 core");
   int exit_code = 0;
   {

@@ -9,6 +9,7 @@
 
 #include "app_options.h"
 #include "frame_host.h"
+#include "key_queue.h"
 
 struct GLFWwindow;
 
@@ -38,12 +39,14 @@ class GlfwHost : public ui::FrameHost {
 
   void note_event() { settle_frames_ = kSettleFrames; }  // called by every GLFW callback
   bool should_close() const;
+  ui::KeyEventQueue& keys() { return keys_; }  // key events spread over frames (key_queue.h)
 
  private:
   GLFWwindow* window_;
   bool scripted_;
   int settle_frames_ = kSettleFrames;  // the first frames draw at once
   ui::FramebufferSize size_;
+  ui::KeyEventQueue keys_;
 };
 
 }  // namespace raycam::app
