@@ -66,23 +66,26 @@ std::string renormalise_does(const AppState& state) {
 void renormalise_show(AppState& state) { focal(state) = 1.0; }
 
 // ---- scaling H forgotten -------------------------------------------------------------------------------
-void focal_scale_show(AppState& state) {
-  if (std::abs(focal(state) - 1.0) < 0.5) focal(state) = 3.0;  // at d_f = 1, H is the identity anyway
-}
+// d_f = 3, whatever it was: the line says so, and at d_f = 1 H is the identity anyway.
+void focal_scale_show(AppState& state) { focal(state) = 3.0; }
 
 // ---- rays from the eye, hits behind the ray --------------------------------------------------------------
 // Both only change what lies between the eye and the screen. Keep the camera's direction and move it so that
-// the object nearest the target sits just behind the screen, between it and the eye: the correct camera
-// does not see it, the mistaken one does.
+// the object nearest the target sits just behind the screen, between it and the eye, and to one side: its
+// disc then covers half the image (centred, an object as wide as the screen would fill it all, a flat
+// square that says nothing). The correct camera sees past it; the mistaken one shows it on that half.
 template <class Vector, class Objects>
-void put_object_behind_screen(const Objects& objects, Vector& target, double d, double& df, const Vector& view) {
+void put_object_behind_screen(const Objects& objects, Vector& target, double d, double& df, const Vector& view,
+                              const Vector& side) {
   if (objects.empty()) return;
   const auto nearest = std::min_element(objects.begin(), objects.end(), [&](const auto& a, const auto& b) {
     return glm::length(a.centre - target) < glm::length(b.centre - target);
   });
-  const Vector screen_centre = nearest->centre + view * (1.25 * nearest->radius);
+  const double r = nearest->radius, depth = 1.25 * r;  // the centre's distance in front of the screen
+  df = std::max(df, 3.0 * r);                             // the eye behind the object
+  // r to the side: the object's edge on the axis, so its disc starts at the image's centre.
+  const Vector screen_centre = nearest->centre + view * depth - side * r;
   target = screen_centre + view * d;
-  df = std::max(df, 3.0 * nearest->radius);  // the eye behind the object
 }
 void object_behind_screen_show(AppState& state) {
   try {
@@ -92,10 +95,18 @@ void object_behind_screen_show(AppState& state) {
   }
   if (state.dimension == 2)
     put_object_behind_screen(state.file.scene2d.circles, state.orbit2d.target, state.orbit2d.d, state.orbit2d.df,
-                             state.camera2d.view_direction());
+                             state.camera2d.view_direction(), state.camera2d.image_right());
   else
     put_object_behind_screen(state.file.scene3d.spheres, state.orbit3d.target, state.orbit3d.d, state.orbit3d.df,
-                             state.camera3d.view_direction());
+                             state.camera3d.view_direction(), state.camera3d.image_right());
+}
+std::string eye_origin_does(const AppState&) {
+  return tr("Rays start at the eye instead of the pixel on the screen: what lies between the eye and the "
+            "screen is now seen, and t is measured from the eye. At most settings nothing is there: show me.");
+}
+std::string no_t_min_does(const AppState&) {
+  return tr("The smaller root is taken whatever its sign: a hit behind the ray's start on the screen counts, "
+            "and beats any in front. At most settings nothing is behind the screen: show me.");
 }
 
 // ---- arccos route --------------------------------------------------------------------------------------
@@ -129,8 +140,8 @@ const std::vector<MistakeLesson>& mistake_lessons() {
     };
     extend("pixel_edges", pixel_edges_does, pixel_edges_show,
            tr_later(
-               "res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the "
-               "image jump half a pixel"));
+               "res 0.05: each ray leaves from a pixel's left edge, not its centre; toggle to see the image "
+               "jump half a pixel"));
     extend("skip_renormalise", renormalise_does, renormalise_show,
            tr_later("d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of "
                     "the image"));
@@ -142,10 +153,10 @@ const std::vector<MistakeLesson>& mistake_lessons() {
     extend("no_focal_scale", nullptr, focal_scale_show,
            tr_later("d_f = 3: without H the field of view stays 90°, as at d_f = 1"));
     const char* behind = tr_later(
-        "the object nearest the target is now between the eye and the screen: the "
-        "correct camera does not see it, the mistaken one shows it");
-    extend("eye_origin", nullptr, object_behind_screen_show, behind);
-    extend("no_t_min", nullptr, object_behind_screen_show, behind);
+        "the object nearest the target is now between the eye and the screen, to the right: the correct "
+        "camera sees past it, the mistaken one shows it on the right half of the image");
+    extend("eye_origin", eye_origin_does, object_behind_screen_show, behind);
+    extend("no_t_min", no_t_min_does, object_behind_screen_show, behind);
     all.push_back(
         {"arccos", nullptr, arccos_does, arccos_show,
          tr_later("φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare")});

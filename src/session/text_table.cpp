@@ -166,12 +166,10 @@ const std::vector<Translation>& translation_table() {
        "Placer la caméra à partir de P et C avec l'arccos du TD : près d'un pôle, un arrondi ε de l'entrée "
        "devient "
        "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
-      {"res 0.05: each ray leaves from a pixel's left edge (ticks on the screen); toggle to see the image "
-       "jump "
-       "half a pixel",
-       "res 0,05 : chaque rayon part du bord gauche d'un pixel (graduations sur l'écran) ; cocher et "
-       "décocher pour "
-       "voir l'image sauter d'un demi-pixel"},
+      {"res 0.05: each ray leaves from a pixel's left edge, not its centre; toggle to see the image jump half a "
+       "pixel",
+       "res 0,05 : chaque rayon part du bord gauche d'un pixel, pas de son centre ; cocher et décocher pour voir "
+       "l'image sauter d'un demi-pixel"},
       {"d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image",
        "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
       {"res·N = 12.75: floor gives 12 pixels, round 13; count them",
@@ -182,12 +180,19 @@ const std::vector<Translation>& translation_table() {
        "plus hauts que larges, l'écran étiré voit un champ deux fois plus large"},
       {"d_f = 3: without H the field of view stays 90°, as at d_f = 1",
        "d_f = 3 : sans H l'angle d'ouverture reste 90°, comme avec d_f = 1"},
-      {"the object nearest the target is now between the eye and the screen: the correct camera does not see "
-       "it, "
-       "the mistaken one shows it",
-       "l'objet le plus proche de la cible est maintenant entre l'œil et l'écran : la caméra correcte ne le "
-       "voit "
-       "pas, la caméra erronée le montre"},
+      {"the object nearest the target is now between the eye and the screen, to the right: the correct camera "
+       "sees past it, the mistaken one shows it on the right half of the image",
+       "l'objet le plus proche de la cible est maintenant entre l'œil et l'écran, à droite : la caméra correcte "
+       "voit au-delà, la caméra erronée le montre sur la moitié droite de l'image"},
+      {"Rays start at the eye instead of the pixel on the screen: what lies between the eye and the screen is "
+       "now seen, and t is measured from the eye. At most settings nothing is there: show me.",
+       "Les rayons partent de l'œil au lieu du pixel sur l'écran : ce qui est entre l'œil et l'écran devient "
+       "visible, et t se mesure depuis l'œil. Le plus souvent il n'y a rien là : « Montre-moi »."},
+      {"The smaller root is taken whatever its sign: a hit behind the ray's start on the screen counts, and "
+       "beats any in front. At most settings nothing is behind the screen: show me.",
+       "La plus petite racine est prise quel que soit son signe : un impact derrière le départ du rayon sur "
+       "l'écran compte, et l'emporte sur ceux de devant. Le plus souvent il n'y a rien derrière l'écran : "
+       "« Montre-moi »."},
       {"φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare",
        "φ = 1e-7° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
       {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},

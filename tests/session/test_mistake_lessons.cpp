@@ -167,3 +167,31 @@ TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the 
       CHECK(hits > 0);
     }
 }
+
+// What each show-me line says is what the state shows: H forgotten says d_f = 3 (at d_f = 2 too); the two
+// mistakes about what lies between the eye and the screen show the object on part of the image, not as a
+// flat square filling it (which says nothing), and the correct camera sees past it there.
+TEST_CASE("show me sets what its line says, and the image shows the mistake on part of it", "[ui][mistakes]") {
+  for (const char* view : {"2d", "3d"}) {
+    INFO(view);
+    ui::AppState focal = state_for({"--view", view, "--df", "2"});
+    ui::show_mistake(focal, *ui::find_lesson("no_focal_scale"));
+    CHECK(ui::active_orbit(focal).df == 3.0);
+    CHECK(std::string(focal.mistake_look_at).find("d_f = 3") != std::string::npos);
+    for (const char* id : {"eye_origin", "no_t_min"}) {
+      INFO(id);
+      ui::AppState state = state_for({"--view", view});
+      const ui::MistakeLesson& lesson = *ui::find_lesson(id);
+      CHECK(lesson.what_it_does != nullptr);  // a line says what the mistake does before any show-me
+      ui::show_mistake(state, lesson);
+      const std::vector<int> with_mistake = ids_now(state);
+      ui::mistake_flag(state, lesson) = false;
+      const std::vector<int> without = ids_now(state);
+      const int differing = count_differences(with_mistake, without);
+      CHECK(differing * 10 >= int(without.size()));      // the mistake shows…
+      CHECK(differing * 10 <= 9 * int(without.size()));  // …on part of the image, not all of it
+      const int first = with_mistake.front();
+      CHECK(std::any_of(with_mistake.begin(), with_mistake.end(), [&](int id) { return id != first; }));
+    }
+  }
+}
