@@ -251,7 +251,7 @@ const std::vector<Translation>& translation_table() {
       {"cannot save: %s", "impossible d'enregistrer : %s"},
       {"demo scene", "scène de démonstration"},
       {"or drop a scene file on the window", "ou déposez un fichier de scène sur la fenêtre"},
-      {"export###export", "export###export"},
+      {"export###export", "exporter###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
       // ---- panels.cpp: the construction's figures ----
       {"figure###figure_path", "figure###figure_path"},
@@ -300,7 +300,7 @@ const std::vector<Translation>& translation_table() {
       {"φ −/+ 5° (3D)", "φ −/+ 5° (3D)"},
       {"+ / −", "+ / −"},
       {"d closer / further", "d plus près / plus loin"},
-      {"PgUp / PgDn", "PgUp / PgDn"},
+      {"PgUp / PgDn", "Pg préc. / Pg suiv."},
       {"d_f larger / smaller", "d_f plus grande / plus petite"},
       {"[ / ]", "[ / ]"},
       {"construction step back / forward", "étape de construction précédente / suivante"},
