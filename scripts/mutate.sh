@@ -92,6 +92,7 @@ mutant save-straight-to-target src/io/scene_file.cpp 's/^  const std::string tem
 mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state);$/  (void)place_pin;/' "$SESSION" "^session:"
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
 mutant key-changes-not-spread src/ui/key_queue.h 's/    if (!changed(key) \&\& !waiting(key)) {/    if (true) {/' "raycam_ui_tests" "^ui:"
+mutant idle-loop-polls src/app/glfw_host.cpp 's/      glfwWaitEventsTimeout(kIdleWaitSeconds);/      glfwPollEvents();/' "raycam raycam_app_tests" "^app: an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"
 mutant show-me-object-centred src/session/mistake_lessons.cpp 's/  const Vector screen_centre = nearest->centre + view \* depth - side \* r;/  const Vector screen_centre = nearest->centre + view * depth;/' "$SESSION" "^session:"

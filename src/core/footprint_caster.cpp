@@ -21,8 +21,11 @@ constexpr int kBatch = 256;               // spheres projected at once (their bo
 constexpr long long kThreadedWork = 100000;
 // Buckets of the near-to-far order: finer than the spheres' depth spread needs (8 candidates a bucket).
 constexpr int kMaxDepthBuckets = 8192;
-// Average box depth from which sorting near to far pays (measured with `bench speed`'s families).
+// Where sorting near to far pays (measured with `bench speed`'s families): from an average box depth of 1,
+// and boxes of 4 pixels on average (the narrow family at K = 10⁵, 2 pixels a box at 256²: 1.37× slower
+// sorted; radii ×20, 7 pixels a box: 2.7× faster).
 constexpr double kNearToFarDepth = 1.0;
+constexpr double kNearToFarBoxPixels = 4.0;
 
 // An object that survived culling, with the pixels it can cover. A compact copy of what the pixel loop
 // reads, in object order: with many objects, reading them from the scene (names and all) by index costs
@@ -282,11 +285,14 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const Bands& binned = workspace.bands;
   // Each candidate costs a few tests' worth besides its tests (its rows of rays, its bands).
   long long work = pixels / 4 + 4 * visible_count;
-  // The tests with no skipping; where they cover each pixel less than kNearToFarDepth times on average, few
-  // could be skipped and sorting would cost more than it saves.
+  // The tests with no skipping. Sorting costs a pass over the candidates; it pays where they cover each pixel
+  // at least kNearToFarDepth times on average (else few tests could be skipped) and each candidate's box holds
+  // at least kNearToFarBoxPixels pixels (else the sort costs about what the tests it skips would).
   const long long box_area = method == CastMethod::culled ? pixels * visible_count : projection.box_area();
   const bool near_to_far = options.near_to_far && method != CastMethod::culled &&
-                           double(box_area) >= kNearToFarDepth * double(pixels) && projection.sort_near_to_far();
+                           double(box_area) >= kNearToFarDepth * double(pixels) &&
+                           double(box_area) >= kNearToFarBoxPixels * double(visible_count) &&
+                           projection.sort_near_to_far();
   if (method == CastMethod::binned && near_to_far)
     bin_by_band([&](auto&& use) { for (const Candidate& c : visible) use(c); }, bands, workspace.bands);
   else if (method == CastMethod::binned)

@@ -46,7 +46,7 @@ void square_pixels_show(AppState& state) {
 //   p² ≤ r² + (|u|² - 1)·b̂²: objects swell with their distance;
 // - stable: |f - b·u|² = p² + (|u|² - 1)²·b̂², so a ray hits only if p² + (|u|² - 1)²·b̂² ≤ r²: unless
 //   |u| ≈ 1, only objects whose nearest point is close to the screen (b̂ small) are hit.
-// (tests/ui/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
+// (tests/session/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
 std::string renormalise_does(const AppState& state) {
   const double df = focal(state), edge = std::sqrt((state.dimension == 2 ? 1.0 : 2.0) + df * df);
   std::string text = trf("Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
