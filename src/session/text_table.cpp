@@ -90,6 +90,7 @@ const std::vector<Translation>& translation_table() {
 
       // ---- frame.cpp / panels.cpp: views that hold still and follow (i11views) ----
       {"Fit view (F)", "Cadrer (F)"},
+      {"Fit (F)###fit", "Cadrer (F)###fit"},
       {"holds still while the camera moves; drag: the camera around C",
        "reste fixe quand la caméra bouge ; glisser : la caméra autour de C"},
       {"F", "F"},
@@ -168,7 +169,7 @@ const std::vector<Translation>& translation_table() {
        "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
       {"res 0.05: each ray leaves from a pixel's left edge, not its centre; toggle to see the image jump half a "
        "pixel",
-       "res 0,05 : chaque rayon part du bord gauche d'un pixel, pas de son centre ; cocher et décocher pour voir "
+       "res 0.05 : chaque rayon part du bord gauche d'un pixel, pas de son centre ; cocher et décocher pour voir "
        "l'image sauter d'un demi-pixel"},
       {"d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image",
        "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
@@ -273,8 +274,9 @@ const std::vector<Translation>& translation_table() {
       {"Help (F1)", "Aide (F1)"},
 
       // ---- panels.cpp: status line ----
-      {"frame %.1f ms · cast %.2f ms (%s)", "affichage %.1f ms · lancer %.2f ms (%s)"},
-      {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer %.2f ms"},
+      {"frame %.1f ms · cast %.2f ms (%s)", "affichage %.1f ms · lancer de rayons %.2f ms (%s)"},
+      {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer de rayons %.2f ms"},
+      {"cast %.2f ms", "rayons %.2f ms"},
       {"caster: %s", "lanceur : %s"},
       {"%lld casts in %lld frames", "%lld lancers en %lld images"},
       {"rays %lld, %lld pixels skipped", "rayons %lld, %lld pixels évités"},

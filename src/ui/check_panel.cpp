@@ -27,37 +27,35 @@ void check_section(CameraCheck& check, double now) {
   ImGui::InputText(tr("program###check_command"), &request.command);
   checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
   checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
-  ImGui::SameLine();
-  if (ImGui::Button(tr("Check now###check_now"))) request.check_now = true;
+  if (button(tr("Check now###check_now"))) request.check_now = true;
 
   const CheckProgress progress = check.progress();
-  if (progress.running) ImGui::TextUnformatted(trf("running… (%.1f s)", now - progress.started_at).c_str());
+  if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));
   if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
   const check::CaseResult& r = v.result;
   const ImVec4 colour =
       r.status == check::CaseStatus::pass ? current_theme().confirmation : current_theme().error;
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
   if (r.status == check::CaseStatus::pass)
-    ImGui::TextColored(colour, "%s", tr("pass: every pixel agrees"));
+    wrapped_between_words(tr("pass: every pixel agrees"));
   else if (r.status == check::CaseStatus::fail)
-    ImGui::TextColored(
-        colour, "%s",
-        trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels).c_str());
+    wrapped_between_words(trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
   else
-    ImGui::TextColored(
-        colour, "%s",
-        trf("%s: %s", check::text(language_code(current_language()), check::status_name(r.status)),
-            tr_reason(r.detail).c_str())
-            .c_str());
-  if (!progress.current) ImGui::TextUnformatted(tr("(for the camera before your last change)"));
-  if (!v.sandboxed && !request.is_file)
-    ImGui::TextUnformatted(tr("no sandbox: bubblewrap is not available here"));
+    wrapped_between_words(trf("%s: %s", check::text(language_code(current_language()), check::status_name(r.status)),
+                              tr_reason(r.detail).c_str()));
+  ImGui::PopStyleColor();
+  if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
+  if (!v.sandboxed && !request.is_file) wrapped_between_words(tr("no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
     ImGui::TextWrapped("%s", tr("no classic mistake reproduces this image"));
   const char* lang = language_code(current_language());
   for (const check::Explanation& e : v.diagnosis) {
     ImGui::Bullet();
-    ImGui::TextWrapped("%s: %s", e.id().c_str(), e.text(lang).c_str());
+    // The mistakes' names in the window's language, not their ids ("mirrored + rows from the bottom").
+    std::string names;
+    for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(mistake_label(*m, current_language()));
+    wrapped_between_words(trf("%s: %s", names.c_str(), e.text(lang).c_str()));
   }
   if (!r.stderr_text.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);

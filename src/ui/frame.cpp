@@ -317,7 +317,10 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                                          : tr("Overhead view: looking down the z axis###overhead"),
                     tr("Overhead view###overhead"), area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
-    if (ImGui::SmallButton(tr("Fit view (F)"))) state.overhead_fit_pending = true;
+    const char* fit = tr("Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
+    if (ImGui::CalcTextSize(fit).x + 2 * ImGui::GetStyle().FramePadding.x > ImGui::GetContentRegionAvail().x)
+      fit = tr("Fit (F)###fit");
+    if (ImGui::SmallButton(fit)) state.overhead_fit_pending = true;
     // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
     const char* hint = tr("holds still while the camera moves; drag: the camera around C");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);

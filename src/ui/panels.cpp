@@ -17,6 +17,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "camera_ranges.h"
 #include "figure_export.h"
@@ -30,6 +31,37 @@
 namespace raycam::ui {
 
 namespace {
+// `text` in lines no wider than `width`, broken between words only (at spaces and newlines): ImGui's own
+// wrapping also breaks after '.' and ',', inside numbers ("67." / "4°"). A word wider than a whole line
+// keeps a line of its own.
+std::vector<std::string> lines_between_words(const std::string& text, float width) {
+  std::vector<std::string> lines;
+  std::string line;
+  bool open = false;  // a line has started (it may be empty: a blank line)
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t end = std::min(text.find_first_of(" \n", at), text.size());
+    const std::string word = text.substr(at, end - at);
+    const std::string longer = open ? line + " " + word : word;
+    if (open && !line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+      lines.push_back(line);
+      line = word;
+    } else {
+      line = longer;
+    }
+    open = true;
+    if (end < text.size() && text[end] == '\n') {
+      lines.push_back(line);
+      line.clear();
+      open = false;
+    }
+    at = end + 1;
+  }
+  if (open) lines.push_back(line);
+  return lines;
+}
+
+
 int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take_tab_key)
 
 // The label beside the widget when both fit, else on its own line above a full-width widget: a label is
@@ -49,7 +81,7 @@ bool labelled(const AppState& state, const char* label, Widget widget) {
     ImGui::SetNextItemWidth(avail - label_width);
     changed = widget(label);
   } else {
-    ImGui::TextUnformatted(shown.c_str());
+    wrapped_between_words(shown);
     ImGui::SetNextItemWidth(avail);
     changed = widget(id.c_str());
   }
@@ -91,36 +123,44 @@ void same_line_if_fits(float width) {
   if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
 }
 
+// A value as printed with `decimals` decimals, never "-0.000": a value that rounds to zero prints as 0.
+double without_negative_zero(double value, int decimals) {
+  return std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+}
+
 void explain(const char* text) {
   // French typography (the core's texts, e.g. the mistakes', are written with plain spaces).
   const std::string shown = with_no_break_spaces(text);
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  ImGui::TextWrapped("%s", shown.c_str());
+  wrapped_between_words(shown);
   ImGui::PopStyleColor();
 }
 
-// As many decimals as fit the panel (3 at 1×, fewer at lecture sizes): a number is never cut. Right-aligned.
+// Always three decimals, right-aligned: where the panel is narrower than the table (lecture sizes), the table
+// scrolls sideways in its own strip rather than dropping decimals or cutting a column.
 template <int N, class Matrix>
 void matrix_table(const char* id, const Matrix& m) {
+  constexpr int kDecimals = 3;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float rows_height = N * (ImGui::GetTextLineHeight() + 2 * style.CellPadding.y + 1.0f) + 2.0f;
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
-  int decimals = 3;
-  for (; decimals > 0; --decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, -widest);  // the sign takes room too
-    const float cell = ImGui::CalcTextSize(text).x + 2 * ImGui::GetStyle().CellPadding.x + 2;
-    if (N * cell <= ImGui::GetContentRegionAvail().x) break;
-  }
-  if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame)) return;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", kDecimals, -widest);  // the sign takes room too
+  const float cell = ImGui::CalcTextSize(text).x + 2 * style.CellPadding.x + 2;
+  const bool fits = N * cell <= ImGui::GetContentRegionAvail().x;
+  const ImVec2 outer(0.0f, fits ? 0.0f : rows_height + style.ScrollbarSize);
+  if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame |
+                                    (fits ? 0 : ImGuiTableFlags_ScrollX), outer))
+    return;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) {
       ImGui::TableNextColumn();
-      char text[64];
-      std::snprintf(text, sizeof text, "%.*f", decimals, m[column][row]);  // GLM is column-major
+      std::snprintf(text, sizeof text, "%.*f", kDecimals, without_negative_zero(m[column][row], kDecimals));
       const float pad = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(text).x;
       if (pad > 0) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + pad);
-      ImGui::TextUnformatted(text);
+      ImGui::TextUnformatted(text);  // GLM is column-major: m[column][row]
     }
   ImGui::EndTable();
 }
@@ -129,6 +169,16 @@ void matrix_table(const char* id, const Matrix& m) {
 
 // A checkbox whose label wraps under itself when the line is too short for it (lecture sizes): the label
 // is never cut. Clicking the label toggles too, as with ImGui's own checkbox.
+// Text wrapped at the panel's edge between words; a word wider than the whole line wraps inside (rather
+// than be cut).
+void wrapped_between_words(const std::string& text) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  for (const std::string& line : lines_between_words(text, width)) {
+    if (ImGui::CalcTextSize(line.c_str()).x <= width) ImGui::TextUnformatted(line.c_str());
+    else ImGui::TextWrapped("%s", line.c_str());
+  }
+}
+
 bool checkbox(const char* label, bool* value) {
   const float box = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x;
   if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)
@@ -145,6 +195,21 @@ bool checkbox(const char* label, bool* value) {
   }
   return changed;
 }
+
+// A button whose label goes over several lines when it does not fit the panel's width (lecture sizes): a
+// button's text is never cut. Its id stays the one of the label as given.
+bool button(const char* label) {
+  const std::string text = label;
+  const std::size_t hidden = text.find("##");
+  const std::string shown = text.substr(0, hidden);
+  const float room = ImGui::GetContentRegionAvail().x - 2 * ImGui::GetStyle().FramePadding.x;
+  if (ImGui::CalcTextSize(shown.c_str()).x <= room) return ImGui::Button(label);
+  std::string lines;
+  for (const std::string& line : lines_between_words(shown, room)) lines += (lines.empty() ? "" : "\n") + line;
+  const std::string id = hidden == std::string::npos ? "###" + text : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
+  return ImGui::Button((lines + id).c_str());
+}
+
 
 // A section header: the full title if it fits the panel's width, else the brief one (a header never wraps).
 bool section(const char* full, const char* brief, int flags) {
@@ -204,7 +269,7 @@ void camera_section(AppState& state) {
       "%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
                 glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()))
                 .c_str());
-  if (ImGui::Button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
+  if (button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
   explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
@@ -215,9 +280,9 @@ void camera_section(AppState& state) {
 void figure_export_row(AppState& state) {
   labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
   bool all = false;
-  bool export_now = ImGui::Button(tr("Export figure…"));
+  bool export_now = button(tr("Export figure…"));
   same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (ImGui::Button(tr("Export every step"))) export_now = all = true;
+  if (button(tr("Export every step"))) export_now = all = true;
   if (export_now) {
     try {
       std::string written;
@@ -246,7 +311,7 @@ void construction_section(AppState& state) {
                                     tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
                                     tr_later("4: Rz(θ) turns u0 onto v"),
                                     tr_later("5: T(OP) moves the screen to P")};
-  if (ImGui::SliderInt(tr("step###step"), &step, 0, steps, "%d"))
+  if (labelled(state, tr("step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 3) {
@@ -258,7 +323,7 @@ void construction_section(AppState& state) {
           "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
           "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
           "world up points down and the image is upside down."));
-      if (ImGui::Checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+      if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
         state.cameras_dirty = true;
     }
   }
@@ -271,7 +336,7 @@ void construction_section(AppState& state) {
       ImGui::TreePop();
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-    ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
+    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
     state.shown_matrix = glm::dmat4(construction_step(p, step));
     matrix_table<3>("M", construction_step(p, step));
   } else {
@@ -291,7 +356,7 @@ void construction_section(AppState& state) {
       ImGui::TreePop();
     }
     if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
-    ImGui::Text(step == steps ? "M_d" : tr("product of the first %d factors"), step);
+    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
     state.shown_matrix = construction_step(p, step);
     matrix_table<4>("M", construction_step(p, step));
   }
@@ -307,25 +372,36 @@ void inspector_section(const AppState& state) {
     return;
   }
   const InspectedRay ray = inspect_pixel(state, *pixel);
+  // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
+  const int dimensions = state.dimension;
+  const auto line = [dimensions](const char* name, const glm::dvec3& v) {
+    std::string text = std::string(name) + " = (";
+    for (int i = 0; i < dimensions; ++i) {
+      char number[32];
+      std::snprintf(number, sizeof number, "%.4f", without_negative_zero(v[i], 4));
+      text += (i ? ", " : "") + std::string(number);
+    }
+    wrapped_between_words(text + ")");
+  };
   if (state.dimension == 2) {
-    ImGui::Text(tr("column %d = pixel k = %d (k = n−1−column)"), pixel->column, ray.k);
-    ImGui::Text("P_k^0 = (%.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y);
-    ImGui::Text("u_k^0 = (%.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y);
-    ImGui::Text("P_k   = (%.4f, %.4f)", ray.origin.x, ray.origin.y);
-    ImGui::Text("u_k   = (%.4f, %.4f)", ray.direction.x, ray.direction.y);
+    wrapped_between_words(trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
+    line("P_k^0", ray.canonical_pixel);
+    line("u_k^0", ray.canonical_direction);
+    line("P_k  ", ray.origin);
+    line("u_k  ", ray.direction);
   } else {
-    ImGui::Text(tr("row %d, column %d"), pixel->row, pixel->column);
-    ImGui::Text("P^0 = (%.4f, %.4f, %.4f)", ray.canonical_pixel.x, ray.canonical_pixel.y, ray.canonical_pixel.z);
-    ImGui::Text("u^0 = (%.4f, %.4f, %.4f)", ray.canonical_direction.x, ray.canonical_direction.y, ray.canonical_direction.z);
-    ImGui::Text("P   = (%.4f, %.4f, %.4f)", ray.origin.x, ray.origin.y, ray.origin.z);
-    ImGui::Text("u   = (%.4f, %.4f, %.4f)", ray.direction.x, ray.direction.y, ray.direction.z);
+    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
+    line("P^0", ray.canonical_pixel);
+    line("u^0", ray.canonical_direction);
+    line("P  ", ray.origin);
+    line("u  ", ray.direction);
   }
   if (ray.hit.id < 0) {
-    ImGui::TextUnformatted(tr("hit: nothing (background)"));
+    wrapped_between_words(tr("hit: nothing (background)"));
   } else {
     const std::string& name = state.dimension == 2 ? state.file.scene2d.circles[std::size_t(ray.hit.id)].name
                                                    : state.file.scene3d.spheres[std::size_t(ray.hit.id)].name;
-    ImGui::Text(tr("hit: object %d %s at t = %.4f"), ray.hit.id, name.c_str(), ray.hit.t);
+    wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }
 
@@ -333,22 +409,23 @@ void inspector_section(const AppState& state) {
 namespace {
 // The angle recovered from the current CP by the handout's arccos and by atan2, against the slider's angle.
 void arccos_error_line(const AppState& state) {
+  std::string line;
   if (state.dimension == 2) {
     const Orbit2D& o = state.orbit2d;
     const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, glm::two_pi<double>());
-    ImGui::TextColored(
-        current_theme().hint, tr("θ error now: arccos %.1e rad, atan2 %.1e rad"),
-        std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
-        std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
+    line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad",
+               std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
+               std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
   } else {
     const Orbit3D& o = state.orbit3d;
     const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
-    ImGui::TextColored(current_theme().hint, tr("φ error now: arccos %.1e rad, atan2 %.1e rad"),
-                       std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
-                       std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
+    line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad",
+               std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
+               std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
   }
+  explain(line.c_str());  // wrapped: at lecture sizes the line is wider than the panel
 }
 }  // namespace
 
@@ -448,23 +525,23 @@ void files_section(AppState& state) {
     });
   };
   bool open = path_box(tr("open###open_path"), state.path_input);
-  open |= ImGui::Button(tr("Open"));
+  open |= button(tr("Open"));
   if (open) open_scene(state, state.path_input);
   explain(tr("or drop a scene file on the window"));
   bool save = path_box(tr("save as###save_path"), state.save_path);
-  save |= ImGui::Button(tr("Save camera preset as…"));
+  save |= button(tr("Save camera preset as…"));
   if (save) save_preset_as(state, state.save_path, false);
   if (!state.overwrite_pending.empty()) {  // asked before replacing a file
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
     ImGui::TextWrapped("%s", trf("%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
     ImGui::PopStyleColor();
-    if (ImGui::Button(tr("Replace"))) save_preset_as(state, state.overwrite_pending, true);
+    if (button(tr("Replace"))) save_preset_as(state, state.overwrite_pending, true);
     same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (ImGui::Button(tr("Cancel"))) state.overwrite_pending.clear();
+    if (button(tr("Cancel"))) state.overwrite_pending.clear();
   }
   labelled(state, tr("export###export"),
            [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
-  if (ImGui::Button(tr("Export colour map PNG"))) {
+  if (button(tr("Export colour map PNG"))) {
     try {
       write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
       set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
@@ -473,7 +550,7 @@ void files_section(AppState& state) {
     }
   }
   same_line_if_fits(ImGui::CalcTextSize(tr("Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (ImGui::Button(tr("Screenshot (F12)"))) request_screenshot(state);
+  if (button(tr("Screenshot (F12)"))) request_screenshot(state);
   show_message(state, MessageSource::files);
 }
 
@@ -496,9 +573,9 @@ void lecture_section(AppState& state) {
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(state, tr("Language / Langue###language"), state.language, kLanguages);
-  if (ImGui::Button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
+  if (button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
   same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (ImGui::Button(tr("Help (F1)"))) state.show_help = !state.show_help;
+  if (button(tr("Help (F1)"))) state.show_help = !state.show_help;
 }
 
 // ---- messages ------------------------------------------------------------------------------------------
@@ -524,8 +601,10 @@ void status_line(const AppState& state) {
                                                        : cast_method_name(state.cast_options.method));
   std::string line = trf("frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
   if (state.refine_pending) line += std::string(" · ") + tr("coarse preview while dragging");
-  if (ImGui::CalcTextSize(line.c_str()).x > ImGui::GetContentRegionAvail().x)
-    line = trf("frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms);
+  // Shorter and shorter until it fits (1024 px at 3×: the cast time alone).
+  for (const std::string& shorter : {trf("frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms),
+                                     trf("cast %.2f ms", state.cast_ms)})
+    if (ImGui::CalcTextSize(line.c_str()).x > ImGui::GetContentRegionAvail().x) line = shorter;
   ImGui::TextUnformatted(line.c_str());
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();

@@ -16,6 +16,10 @@ namespace raycam::ui {
 // Lecture-size widgets every section uses (also check_panel.cpp): a checkbox whose label wraps instead of
 // being cut, and a section header that shows `brief` when `full` does not fit (flags: ImGuiTreeNodeFlags).
 bool checkbox(const char* label, bool* value);
+// A button whose label goes over several lines rather than be cut.
+bool button(const char* label);
+// Text wrapped at the panel's edge between words only, never inside a number or a word that fits a line.
+void wrapped_between_words(const std::string& text);
 bool section(const char* full, const char* brief, int flags = 0);
 
 void camera_section(AppState& state);

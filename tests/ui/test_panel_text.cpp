@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -203,4 +204,31 @@ TEST_CASE("the status line prints the cast's work counts", "[ui][status]") {
       CHECK(std::regex_search(shown, std::regex("(^|[^0-9.])" + std::to_string(count) + "($|[^0-9.])")));
     }
   }
+}
+
+// Lecture sizes wrap the panel's text at its edge, between words only: never inside a number ("67." then
+// "4°", as ImGui's own wrapping breaks after a '.') and never past the edge.
+TEST_CASE("panel text wraps between words, never inside a number, and never past the edge", "[ui][lecture]") {
+  TextCapture capture;
+  const float width = 150.0f;
+  const std::string text = "n = 256 × 256, field of view 67.4°, half a pixel 0.00391 wide, at t = 12.3456";
+  const std::string logged = capture.capture([&] {
+    ImGui::BeginChild("narrow", {width, 400});
+    ui::wrapped_between_words(text);
+    ImGui::EndChild();
+  });
+  std::vector<std::string> lines;
+  std::istringstream in(logged);
+  for (std::string line; std::getline(in, line);)
+    if (line.find_first_not_of(' ') != std::string::npos) lines.push_back(line.substr(line.find_first_not_of(' ')));
+  INFO(logged);
+  CHECK(lines.size() >= 3);  // it did wrap
+  std::string joined;
+  for (const std::string& line : lines) {
+    CHECK(ImGui::CalcTextSize(line.c_str()).x <= width);
+    for (const char* number : {"67.4°", "0.00391", "12.3456"})  // each number whole on one line, or absent
+      if (line.find(std::string(number).substr(0, 3)) != std::string::npos) CHECK(line.find(number) != std::string::npos);
+    joined += (joined.empty() ? "" : " ") + line;
+  }
+  CHECK(joined == text);  // nothing lost, words in order
 }

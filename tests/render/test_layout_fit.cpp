@@ -1,0 +1,71 @@
+// Layouts that fit a lecture hall's projector: at 1×, 2× and 3× fonts on 1024×768, 1280×800 and 1920×1080, in
+// both languages and both views, with the sections a lecture opens (a mistake shown, a ray pinned, a message),
+// no window of the frame has content wider than what it shows without a horizontal scroll bar: a text, a
+// button or a box that extends past its window's clip rectangle is cut. ImGui measures every item it lays
+// out into its window's content size, so this reads what the frame itself measured, item by item.
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <catch2/catch.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app_flags.h"
+#include "app_options.h"
+#include "headless_renderer.h"
+#include "mistake_lessons.h"
+#include "panels.h"
+
+using namespace raycam;
+
+namespace {
+ui::AppState lecture_state(const char* view, const char* language) {
+  ui::AppOptions options;
+  return ui::make_app_state(
+      flags::parse_app_options({"--view", view, "--lang", language, "--inspect", "3,0"}, options));
+}
+
+// Every visible window whose laid-out content is wider than its inner width while it has no horizontal
+// scroll bar, with by how much.
+std::vector<std::string> cut_windows() {
+  std::vector<std::string> cut;
+  for (ImGuiWindow* window : GImGui->Windows) {
+    if (!window->WasActive || window->Hidden || window->ScrollbarX) continue;
+    const float shown = window->InnerRect.GetWidth(), content = window->ContentSize.x + window->WindowPadding.x;
+    if (content > shown + 1.0f) {
+      std::ostringstream out;
+      out << "'" << window->Name << "' content " << content << " px in " << shown << " px";
+      cut.push_back(out.str());
+    }
+  }
+  return cut;
+}
+
+}  // namespace
+
+TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's content is cut",
+          "[render][lecture][layout]") {
+  struct Screen {
+    int width, height;
+  };
+  int checked = 0;
+  for (const Screen screen : {Screen{1024, 768}, Screen{1280, 800}, Screen{1920, 1080}})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"fr", "en"})
+        for (const char* view : {"2d", "3d"}) {
+          ui::AppState state = lecture_state(view, language);
+          state.font_scale = scale;
+          ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.render_settled(state, 4);
+          const std::vector<std::string> cut = cut_windows();
+          std::string all;
+          for (const std::string& c : cut) all += "\n  " + c;
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":"
+                            << all);
+          CHECK(cut.empty());
+          ++checked;
+        }
+  CHECK(checked == 36);
+}
