@@ -21,6 +21,7 @@ const std::vector<Translation>& translation_table() {
       {"Colour bar: n = %d###image", "Barre de couleurs : n = %d###image"},
       {"%d × %d###image", "%d × %d###image"},
       {"Overhead view###overhead", "Vue de dessus###overhead"},
+      {"Overhead###overhead", "Dessus###overhead"},
       {"Observer: the camera among the spheres###observer",
        "Observateur : la caméra parmi les sphères###observer"},
       {"Observer###observer", "Observateur###observer"},
@@ -124,6 +125,7 @@ const std::vector<Translation>& translation_table() {
 
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
       {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
+      {"MISTAKE ON", "ERREUR ACTIVE"},
       {"Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer gives a "
        "symmetric "
        "image.",
@@ -332,11 +334,9 @@ const std::vector<Translation>& translation_table() {
       {"Check my camera###check", "Vérifier ma caméra###check"},
       {"Check###check", "Vérifier###check"},
       {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
-       "whenever "
-       "they change (README, \"Check your own camera\").",
+       "whenever they change (docs/check.md).",
        "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
-       "vérifié "
-       "à chaque changement (README, \"Check your own camera\")."},
+       "vérifié à chaque changement (docs/check.md)."},
       {"program###check_command", "programme###check_command"},
       {"an answer file, not a program###check_is_file",
        "un fichier de réponse, pas un programme###check_is_file"},

@@ -1,6 +1,7 @@
 // Section index: the panel section · the overlay.
 #include "check_panel.h"
 
+#include <cfloat>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -15,16 +16,18 @@ namespace raycam::ui {
 void check_section(CameraCheck& check, double now) {
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  ImGui::TextWrapped("%s",
-                     tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
-                        "it is checked whenever they change (README, \"Check your own camera\")."));
+  wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
+                           "it is checked whenever they change (docs/check.md)."));
   ImGui::PopStyleColor();
 #ifdef __EMSCRIPTEN__  // the web page runs no program and has no worker thread for the check
   ImGui::TextWrapped("%s", tr("Running your program needs the desktop app (docs/web.md)."));
   return;
 #endif
   CheckRequest& request = check.request();
-  ImGui::InputText(tr("program###check_command"), &request.command);
+  const std::string label = tr("program###check_command");  // above its box, which takes the whole width
+  wrapped_between_words(label.substr(0, label.find("##")));
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  ImGui::InputText("###check_command", &request.command);
   checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
   checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
   if (button(tr("Check now###check_now"))) request.check_now = true;

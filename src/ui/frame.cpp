@@ -15,6 +15,8 @@
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <string>
+#include <vector>
 
 #include "camera_ranges.h"
 #include "construction_view.h"
@@ -36,11 +38,18 @@ const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header whi
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
-// The long title if it fits the window's width, else the short one: a title is never cut.
-std::string fitting_title(const std::string& full, const std::string& brief, float width) {
-  const std::string shown = full.substr(0, full.find("##"));
+// The first of `candidates` (longest first) whose shown part fits a title bar `width` wide; the last one
+// whatever: a title is never cut.
+std::string first_fitting(const std::vector<std::string>& candidates, float width) {
   const float room = width - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().WindowPadding.x;
-  return ImGui::CalcTextSize(shown.c_str()).x <= room ? full : brief;
+  for (const std::string& c : candidates)
+    if (ImGui::CalcTextSize(c.substr(0, c.find("##")).c_str()).x <= room) return c;
+  return candidates.back();
+}
+
+// The long title if it fits the window's width, else the short one.
+std::string fitting_title(const std::string& full, const std::string& brief, float width) {
+  return first_fitting({full, brief}, width);
 }
 
 bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra = 0) {
@@ -267,19 +276,26 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_2d = state.dimension == 2;
-  std::string title = fitting_title(
-      is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-            : trf("Image: %d × %d###image", state.map.width, state.map.height),
-      is_2d ? trf("Colour bar: n = %d###image", state.map.width)
-            : trf("%d × %d###image", state.map.width, state.map.height),
-      area.w);
-  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not; first,
-  // because a narrow header clips the end.
+  const std::string full = is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+                                  : trf("Image: %d × %d###image", state.map.width, state.map.height);
+  const std::string brief = is_2d ? trf("Colour bar: n = %d###image", state.map.width)
+                                  : trf("%d × %d###image", state.map.width, state.map.height);
+  // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not, and so
+  // does a failing check: where the eye is. Where the header is too narrow for the name (lecture sizes), it
+  // says "MISTAKE ON" and the name goes on a red line above the image.
   const std::string mistakes = mistakes_on(state);
-  if (!mistakes.empty()) title = trf("MISTAKE ON: %s", mistakes.c_str()) + "  |  " + title;
-  // A failing check names itself the same way, where the eye is.
   const std::string check = check_header(check_.progress());
-  if (!check.empty()) title = check + "  |  " + title;
+  const std::string lead = check.empty() ? "" : check + "  |  ";
+  std::vector<std::string> candidates;
+  if (mistakes.empty()) {
+    candidates = {lead + full, lead + brief, check.empty() ? brief : check + "###image"};
+  } else {
+    const std::string named = trf("MISTAKE ON: %s", mistakes.c_str());
+    candidates = {lead + named + "  |  " + full, lead + named + "  |  " + brief, lead + named + "###image",
+                  lead + tr("MISTAKE ON") + "###image", std::string(tr("MISTAKE ON")) + "###image"};
+  }
+  const std::string title = first_fitting(candidates, area.w);
+  const bool mistake_named = mistakes.empty() || title.find(mistakes) != std::string::npos;
   const int header_colours = mistakes.empty() && check.empty() ? 0 : 2;
   if (header_colours) {
     ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
@@ -289,6 +305,11 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   ImGui::PopStyleColor(header_colours);
   layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
   if (open) {
+    if (!mistake_named) {
+      ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
+      wrapped_between_words(trf("MISTAKE ON: %s", mistakes.c_str()));
+      ImGui::PopStyleColor();
+    }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
     const ImVec2 size = is_2d ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
@@ -312,10 +333,10 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const std::string title =
-      fitting_title(state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                                         : tr("Overhead view: looking down the z axis###overhead"),
-                    tr("Overhead view###overhead"), area.w);
+  const std::string title = first_fitting({state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
+                                                                : tr("Overhead view: looking down the z axis###overhead"),
+                                            tr("Overhead view###overhead"), tr("Overhead###overhead")},
+                                           area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const char* fit = tr("Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
     if (ImGui::CalcTextSize(fit).x + 2 * ImGui::GetStyle().FramePadding.x > ImGui::GetContentRegionAvail().x)

@@ -1,8 +1,9 @@
 // Layouts that fit a lecture hall's projector: at 1×, 2× and 3× fonts on 1024×768, 1280×800 and 1920×1080, in
-// both languages and both views, with the sections a lecture opens (a mistake shown, a ray pinned, a message),
-// no window of the frame has content wider than what it shows without a horizontal scroll bar: a text, a
-// button or a box that extends past its window's clip rectangle is cut. ImGui measures every item it lays
-// out into its window's content size, so this reads what the frame itself measured, item by item.
+// both languages and both views, with every section of the panel open, a mistake shown and a ray pinned, no
+// window of the frame has content wider than what it shows without a horizontal scroll bar (a text, a button
+// or a box that extends past its window's clip rectangle is cut) and no window title is wider than its
+// window. ImGui measures every item it lays out into its window's content size, so this reads what the frame
+// itself measured, item by item.
 #include <imgui.h>
 #include <imgui_internal.h>
 
@@ -24,6 +25,28 @@ ui::AppState lecture_state(const char* view, const char* language) {
   ui::AppOptions options;
   return ui::make_app_state(
       flags::parse_app_options({"--view", view, "--lang", language, "--inspect", "3,0"}, options));
+}
+
+// Opens every section of the panel, as an instructor preparing a lecture would (ImGui keeps a header's
+// open state in its window's storage, under the header's id).
+void open_every_section() {
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  for (const char* id : {"###camera", "###mistakes", "###caster", "###files", "###lecture", "###construction",
+                         "###inspector", "###check"})
+    panel->StateStorage.SetInt(panel->GetID(id), 1);
+}
+
+// Window titles cut: a title wider than its window's title bar.
+std::vector<std::string> cut_titles() {
+  std::vector<std::string> cut;
+  for (ImGuiWindow* window : GImGui->Windows) {
+    if (!window->WasActive || window->Hidden || (window->Flags & ImGuiWindowFlags_NoTitleBar)) continue;
+    const char* end = ImGui::FindRenderedTextEnd(window->Name);
+    const float title = ImGui::CalcTextSize(window->Name, end).x + 2 * GImGui->Style.FramePadding.x;
+    if (title > window->Size.x + 1.0f) cut.push_back("title '" + std::string(window->Name, std::size_t(end - window->Name)) + "'");
+  }
+  return cut;
 }
 
 // Every visible window whose laid-out content is wider than its inner width while it has no horizontal
@@ -58,8 +81,11 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           state.font_scale = scale;
           ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
           headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.run_frame(state);
+          open_every_section();
           renderer.render_settled(state, 4);
-          const std::vector<std::string> cut = cut_windows();
+          std::vector<std::string> cut = cut_windows();
+          for (const std::string& title : cut_titles()) cut.push_back(title);
           std::string all;
           for (const std::string& c : cut) all += "\n  " + c;
           INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":"
