@@ -198,19 +198,19 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camer
     }
   const ImVec2 first = at(camera.canonical_pixel(0).x);
   draw->AddCircleFilled(first, 5.0f, kFirstPixelColour);
+  std::vector<std::pair<ImVec2, ImVec2>> placed;  // the labels never print over each other (3× fonts)
   auto label = [&](ImVec2 end, double outward, const char* text) {
     const ImVec2 size = ImGui::CalcTextSize(text);
     const float x = end.x + float(outward * along.x * 12.0) - (outward * along.x < 0 ? size.x : 0.0f);
     const float y = end.y + float(outward * along.y * 12.0) - 0.5f * size.y;
-    const ImVec2 clip_min = draw->GetClipRectMin(),
-                 clip_max = draw->GetClipRectMax();  // never cut (3× fonts)
-    draw->AddText({std::clamp(x, clip_min.x + 2, std::max(clip_min.x + 2, clip_max.x - size.x - 2)),
-                   std::clamp(y, clip_min.y + 2, std::max(clip_min.y + 2, clip_max.y - size.y - 2))},
-                  kFirstPixelColour, text);
+    const ImVec2 at = place_label({x, y}, size, draw->GetClipRectMin(), draw->GetClipRectMax(), placed);
+    draw->AddText(at, kFirstPixelColour, text);
+    placed.push_back({at, size});
   };
   label(minus, -1.0, tr("k = 0"));
   label(plus, 1.0, tr("eye's left (column 0)"));
 }
+
 
 // Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
 // the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
@@ -252,6 +252,28 @@ void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
   }
 }
 }  // namespace
+
+ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
+                   const std::vector<std::pair<ImVec2, ImVec2>>& placed) {
+  // Inside the view, never cut.
+  const auto inside = [&](ImVec2 p) {
+    return ImVec2{std::clamp(p.x, low.x + 2, std::max(low.x + 2, high.x - size.x - 2)),
+                  std::clamp(p.y, low.y + 2, std::max(low.y + 2, high.y - size.y - 2))};
+  };
+  const auto overlaps = [&](ImVec2 p) {
+    for (const auto& [q, s] : placed)
+      if (p.x < q.x + s.x && q.x < p.x + size.x && p.y < q.y + s.y && q.y < p.y + size.y) return true;
+    return false;
+  };
+  const ImVec2 start = inside(wanted);
+  const int lines = int((high.y - low.y) / (size.y + 2)) + 1;  // every line of the view, both ways
+  for (int step = 0; step <= 2 * lines; ++step) {
+    const float shift = float((step + 1) / 2) * (size.y + 2) * (step % 2 ? 1.0f : -1.0f);  // 0, +1, -1, +2…
+    const ImVec2 p = inside({start.x, start.y + shift});
+    if (!overlaps(p)) return p;
+  }
+  return start;  // nowhere free: where it was wanted
+}
 
 std::vector<gl::Disc> overhead_discs(const AppState& state) {
   std::vector<gl::Disc> discs;

@@ -7,6 +7,7 @@
 
 #include <glm/vec2.hpp>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "app_state.h"
@@ -41,6 +42,11 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const AppSt
 
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const AppState& state, ImVec2 screen_point);
+
+// Where a label of `size` goes at `wanted` (its top-left) so that it stays inside [low, high] and off the
+// labels already placed (top-left, size pairs): moved down, then up, a line at a time, past each it meets.
+ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
+                   const std::vector<std::pair<ImVec2, ImVec2>>& placed);
 
 // Marker colours, shared with the tests that look for them.
 inline constexpr ImU32 kEyeColour = IM_COL32(255, 255, 255, 255);

@@ -16,6 +16,7 @@
 #include "app_options.h"
 #include "headless_renderer.h"
 #include "mistake_lessons.h"
+#include "overhead_view.h"
 #include "panels.h"
 
 using namespace raycam;
@@ -94,4 +95,19 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           ++checked;
         }
   CHECK(checked == 36);
+}
+
+// The overhead view's landmark labels never print over each other, however big the font and however close
+// their anchors ("k = 0" over "eye's left (column 0)" at 3× in a narrow view), and stay inside the view.
+TEST_CASE("a label placed beside others moves off them and stays in the view", "[render][lecture][layout]") {
+  const ImVec2 low{0, 0}, high{400, 300}, size{180, 45};
+  std::vector<std::pair<ImVec2, ImVec2>> placed = {{{100, 100}, {200, 45}}};
+  for (const ImVec2 wanted : {ImVec2{110, 100}, ImVec2{250, 120}, ImVec2{390, 290}, ImVec2{-50, -50}}) {
+    const ImVec2 at = ui::place_label(wanted, size, low, high, placed);
+    INFO(wanted.x << "," << wanted.y << " -> " << at.x << "," << at.y);
+    for (const auto& [q, s] : placed)
+      CHECK_FALSE((at.x < q.x + s.x && q.x < at.x + size.x && at.y < q.y + s.y && q.y < at.y + size.y));
+    CHECK((at.x >= low.x && at.y >= low.y && at.x + size.x <= high.x && at.y + size.y <= high.y));
+    placed.push_back({at, size});
+  }
 }
