@@ -29,15 +29,16 @@ const MistakeInfo kClassicMistakes[kClassicMistakeCount] = {
      "Ex. 2 (dernière étape) : le pixel k va à l'indice k, depuis x = -1 (2D) ; en 3D la colonne 0 est x "
      "canonique proche de -1."},
     {"upside_down", &ClassicMistakes::upside_down, false, true, "roll -pi/2 as printed",
-     "roulis -pi/2 imprimé",
+     "roulis −π/2 imprimé",
      "Ex. 3 step 2: the roll psi0 = -pi/2 as printed turns the image upside down; +pi/2 keeps world up (+z) "
      "at the top.",
-     "Ex. 3 étape 2 : le roulis psi0 = -pi/2 imprimé retourne l'image ; +pi/2 garde le haut du monde (+z) en "
+     "Ex. 3 étape 2 : le roulis ψ0 = −π/2 imprimé retourne l'image ; +π/2 garde le haut du monde (+z) en "
      "haut."},
     {"rows_flipped", &ClassicMistakes::rows_flipped, false, true, "rows from the bottom",
      "lignes depuis le bas",
      "Ex. 3 (colmap): row 0 is the top of the image, canonical y near +1; storing from y = -1 flips it.",
-     "Ex. 3 (colmap) : la ligne 0 est le haut de l'image, y canonique proche de +1 ; partir de y = -1 la "
+     "Ex. 3 (carte des couleurs) : la ligne 0 est le haut de l'image, y canonique proche de +1 ; partir "
+     "de y = −1 la "
      "retourne."},
     {"degrees_as_radians", &ClassicMistakes::degrees_as_radians, true, true, "degrees used as radians",
      "degrés pris pour des radians",
@@ -71,10 +72,10 @@ const MistakeInfo kClassicMistakes[kClassicMistakeCount] = {
      "Ex. 2 : un rayon est une demi-droite, seuls les impacts t >= 0 comptent ; sinon les objets derrière "
      "l'écran passent devant."},
     {"theta_phi_swapped", &ClassicMistakes::theta_phi_swapped, false, true, "theta and phi swapped",
-     "theta et phi inversés",
+     "θ et φ inversés",
      "Ex. 3 step 3: theta is the azimuth (rotation about z), phi the angle from +z (rotation about y); they "
      "were swapped.",
-     "Ex. 3 étape 3 : theta est l'azimut (rotation autour de z), phi l'angle depuis +z (rotation autour de "
+     "Ex. 3 étape 3 : θ est l'azimut (rotation autour de z), φ l'angle depuis +z (rotation autour de "
      "y) "
      "; ils sont inversés."},
     {"res_truncated", &ClassicMistakes::res_truncated, true, true, "n = floor(res N)",

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "text.h"
+
 namespace raycam::ui {
 
 namespace {
@@ -18,6 +20,8 @@ AppState make_app_state(const AppOptions& options) {
   AppState state;
   state.language = options.language.value_or(language_from_environment());
   set_language(state.language);  // the messages made below are in the window's language
+  // The colour map's default file name in the window's language too.
+  state.export_path = tr("raycam-colour-map.png");
   std::optional<ViewSetup> setup;
   try {
     setup = checked_view_setup(options.view);

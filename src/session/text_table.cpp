@@ -85,7 +85,7 @@ const std::vector<Translation>& translation_table() {
 
       // ---- panels.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
-      {"arccos route near a pole", "route arccos près d'un pôle"},
+      {"arccos route near a pole", "calcul par arccos près d'un pôle"},
       {"show me", "montre-moi"},
       {"Look: %s", "Regarder : %s"},
 
@@ -258,6 +258,7 @@ const std::vector<Translation>& translation_table() {
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
       // ---- panels.cpp: the construction's figures ----
       {"figure###figure_path", "figure###figure_path"},
+      {"raycam-colour-map.png", "raycam-carte-des-couleurs.png"},
       {"Export figure…", "Exporter la figure…"},
       {"Export every step", "Exporter toutes les étapes"},
       {"SVG, PDF or PNG, after the name's extension; the frames as in the handout (docs/figures.md).",

@@ -15,6 +15,7 @@
 
 #include "app_flags.h"
 #include "app_options.h"
+#include "mistake_lessons.h"
 #include "panels.h"
 
 using namespace raycam;
@@ -231,4 +232,42 @@ TEST_CASE("panel text wraps between words, never inside a number, and never past
     joined += (joined.empty() ? "" : " ") + line;
   }
   CHECK(joined == text);  // nothing lost, words in order
+}
+
+// The French window is French: every section open (a mistake shown, a ray pinned, a file that failed to
+// open), its text read back, and no word of a list of English-only words in it. The list holds words a
+// translation left behind would show (not words French shares: image, pixel, distance, rotation…).
+TEST_CASE("the French window shows no English word", "[ui][text]") {
+  TextCapture text;
+  for (const char* view : {"2d", "3d"}) {
+    ui::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0"});
+    ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
+    ui::open_scene(state, "/inexistant/fichier.json");  // a red message, in French
+    ui::recast_if_needed(state);
+    const std::string shown = text.capture([&] {
+      ImGuiWindow* window = ImGui::GetCurrentWindow();
+      for (const char* id : {"###camera", "###mistakes", "###caster", "###files", "###lecture", "###construction",
+                             "###inspector"})
+        window->StateStorage.SetInt(window->GetID(id), 1);
+      ui::camera_section(state);
+      ui::mistakes_section(state);
+      ui::caster_section(state);
+      ui::files_section(state);
+      ui::lecture_section(state);
+      ui::construction_section(state);
+      ui::inspector_section(state);
+      ui::status_line(state);
+    });
+    INFO(view << ":\n" << shown);
+    CHECK(shown.find("Caméra") != std::string::npos);  // it is the French window
+    for (const char* word : {"the", "and", "of", "with", "from", "cannot", "error", "mistake", "show", "step",
+                             "expected", "colour", "color", "field", "view", "open", "save", "check", "rows",
+                             "columns", "file", "wheel", "drag", "focal", "scene", "preset", "export", "help",
+                             "fullscreen", "screenshot", "caster", "frame", "cast", "hit", "nothing", "object",
+                             "background", "route", "psi0", "theta", "phi", "colmap", "oeil"}) {
+      const std::regex english(std::string("(^|[^A-Za-zÀ-ÿ_])") + word + "($|[^A-Za-zÀ-ÿ_])", std::regex::icase);
+      INFO("English word: " << word);
+      CHECK_FALSE(std::regex_search(shown, english));
+    }
+  }
 }
