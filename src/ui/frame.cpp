@@ -352,8 +352,8 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##overhead_input", size);
       layout.overhead = {top_left.x, top_left.y, size.x, size.y};
-      if (state.overhead_fit_pending)
-        fit_overhead(state);  // on load, reset or "fit" only: the view holds still
+      // On load, reset, "fit", or when the camera or the target would leave the view: else it holds still.
+      if (state.overhead_fit_pending || !camera_and_target_in_view(state, top_left, size)) fit_overhead(state);
       layout.overhead_mapping = overhead_mapping(state, top_left, size);
       ImDrawList* draw = ImGui::GetWindowDrawList();
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);

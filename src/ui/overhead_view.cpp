@@ -62,6 +62,21 @@ void fit_overhead(AppState& state) {
   state.overhead_fit_pending = false;
 }
 
+bool camera_and_target_in_view(const AppState& state, ImVec2 top_left, ImVec2 size) {
+  const OverheadMapping m = overhead_mapping(state, top_left, size);
+  glm::dvec2 eye;
+  std::vector<glm::dvec2> points = state.dimension == 2 ? camera_outline(state.camera2d.world_from_camera(), &eye)
+                                                        : camera_outline(state.camera3d.world_from_camera(), &eye);
+  points.push_back(eye);
+  points.push_back(active_target_xy(state));
+  for (const glm::dvec2& p : points) {
+    const ImVec2 s = m.to_screen(p);
+    if (!(s.x >= top_left.x && s.y >= top_left.y && s.x <= top_left.x + size.x && s.y <= top_left.y + size.y))
+      return false;
+  }
+  return true;
+}
+
 OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size) {
   const glm::dvec2 low = state.overhead_low, high = state.overhead_high;
   const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));

@@ -25,11 +25,14 @@ struct OverheadMapping {
 };
 
 // Fits the world rectangle of the view (state.overhead_low/high) to the scene's objects near the target,
-// the target and the camera (eye and screen). Called when a scene is loaded, the camera reset, or on "fit";
-// never every frame, so that the view holds still while the camera moves.
+// the target and the camera (eye and screen). Called when a scene is loaded, the camera reset, on "fit",
+// and when the camera or the target would leave the view; never every frame, so that the view holds still
+// while the camera moves inside it.
 void fit_overhead(AppState& state);
 // The mapping that shows the state's world rectangle centred in the screen rectangle, with a margin.
 OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size);
+// Whether the camera (eye and screen) and the target are inside the view as it is now mapped.
+bool camera_and_target_in_view(const AppState& state, ImVec2 top_left, ImVec2 size);
 
 // Every object's disc seen from above, in drawing order (3D: from the lowest sphere top up, so the highest
 // hides the others). Give it to a DiscLayer when the scene changes.

@@ -232,32 +232,37 @@ TEST_CASE("the screenshot comparison fails on one changed digit and ignores only
   CHECK(test::compare_screenshot(noisy, shot.image, rules).ok);
 }
 
-TEST_CASE("the overhead view holds still while the camera moves, and fits again on F", "[render][views]") {
+TEST_CASE("the overhead view holds still while the camera moves inside it, and fits again when it would leave",
+          "[render][views]") {
   ui::AppOptions options;
   ui::AppState state = ui::make_app_state(options);
   headless::HeadlessRenderer renderer(1280, 800);
   renderer.render_settled(state);
   const ui::OverheadMapping before = renderer.layout().overhead_mapping;
-  state.orbit3d.theta += 1.0;  // the camera orbits, and goes much farther away
-  state.orbit3d.d = 40.0;
-  state.cameras_dirty = true;
-  renderer.render_settled(state);
-  const ui::OverheadMapping during = renderer.layout().overhead_mapping;
-  CHECK(during.scale == before.scale);  // the objects neither slide nor change size
-  CHECK(during.origin.x == before.origin.x);
-  CHECK(during.origin.y == before.origin.y);
-  const glm::dvec3 eye = state.camera3d.eye();
   const ui::Rect& view = renderer.layout().overhead;
   auto inside = [&](ImVec2 p) {
     return p.x >= view.x && p.x <= view.x + view.w && p.y >= view.y && p.y <= view.y + view.h;
   };
-  CHECK_FALSE(inside(during.to_screen({eye.x, eye.y})));  // the far camera has left the view...
-  ImGui::GetIO().AddInputCharacter('f');                  // ...until the F key fits it again
-  renderer.run_frame(state);
-  renderer.run_frame(state);
+  state.orbit3d.theta += 0.1;  // a small orbit: the camera stays in view, the objects neither slide nor scale
+  state.cameras_dirty = true;
+  renderer.render_settled(state);
+  const ui::OverheadMapping during = renderer.layout().overhead_mapping;
+  CHECK(during.scale == before.scale);
+  CHECK(during.origin.x == before.origin.x);
+  CHECK(during.origin.y == before.origin.y);
+  state.orbit3d.theta = glm::radians(90.0);  // the demo's camera used to leave the top of the view here…
+  state.orbit3d.d = 40.0;                    // …and a far camera its sides
+  state.cameras_dirty = true;
+  renderer.render_settled(state);
   const ui::OverheadMapping after = renderer.layout().overhead_mapping;
-  CHECK(after.scale < before.scale);
+  const glm::dvec3 eye = state.camera3d.eye(), target = state.orbit3d.target;
+  CHECK(after.scale < before.scale);  // fitted again, by itself
   CHECK(inside(after.to_screen({eye.x, eye.y})));
+  CHECK(inside(after.to_screen({target.x, target.y})));
+  ImGui::GetIO().AddInputCharacter('f');  // F still fits on demand
+  renderer.run_frame(state);
+  renderer.run_frame(state);
+  CHECK(inside(renderer.layout().overhead_mapping.to_screen({eye.x, eye.y})));
 }
 
 TEST_CASE("each step of the 3D construction looks different from above and in the observer view",
