@@ -97,6 +97,7 @@ mutant words-broken-anywhere src/ui/panels.cpp 's/  for (const std::string\& lin
 mutant labels-printed-over-each-other src/ui/overhead_view.cpp 's/    if (!overlaps(p)) return p;/    return p;/' "raycam_render_tests" "^render: ?a label placed beside"
 mutant french-label-left-in-english src/core/classic_mistakes.cpp 's/     "θ et φ inversés",/     "theta et phi inversés",/' "raycam_ui_tests" "^ui: ?the French window shows no English"
 mutant overhead-never-refits src/ui/frame.cpp 's/      if (state.overhead_fit_pending || !camera_and_target_in_view(state, top_left, size)) fit_overhead(state);/      if (state.overhead_fit_pending) fit_overhead(state);/' "raycam_render_tests" "^render: ?the overhead view holds still"
+mutant message-below-the-fold-counts-as-shown src/ui/panels.cpp 's/  if (in_view) state.message_shown_frame = state.frame_count;/  state.message_shown_frame = state.frame_count;/' "raycam_render_tests" "^render: ?a message stays on screen"
 mutant idle-loop-polls src/app/glfw_host.cpp 's/      glfwWaitEventsTimeout(kIdleWaitSeconds);/      glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"

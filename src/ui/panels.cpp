@@ -515,8 +515,9 @@ void caster_section(AppState& state) {
 
 // ---- files ---------------------------------------------------------------------------------------------
 void files_section(AppState& state) {
-  const bool has_message = !state.message.empty() && state.message_source == MessageSource::files;
-  if (has_message || !state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
+  // The question "replace?" opens the section; a message does not (it shows above the status line while
+  // the section is closed), so the section can be closed while a message shows.
+  if (!state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
   if (!section(tr("Scene file###files"), tr("Files###files"))) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
   const auto path_box = [&](const char* label, std::string& path) {
@@ -585,8 +586,12 @@ bool show_message(AppState& state, MessageSource source) {
   ImGui::PushStyleColor(ImGuiCol_Text, state.message_is_error ? theme.error : theme.confirmation);
   ImGui::TextWrapped("%s", state.message.c_str());  // wrapped: never clipped
   ImGui::PopStyleColor();
+  // Shown here only if in view: below the panel's fold (lecture sizes), the line above the status line
+  // shows it instead, where the eye is.
+  const bool in_view = ImGui::IsItemVisible() && ImGui::GetItemRectMax().y <= ImGui::GetWindowPos().y +
+                                                                              ImGui::GetWindowHeight();
   if (ImGui::SmallButton(tr("Dismiss###dismiss_message"))) state.message.clear();
-  state.message_shown_frame = state.frame_count;
+  if (in_view) state.message_shown_frame = state.frame_count;
   return true;
 }
 

@@ -1,6 +1,9 @@
 // The window driven through its own input path (mouse and keys sent to ImGui's IO, as the GLFW backend
 // sends them), checked in the very frame that follows: same-frame truth, the keyboard, the window title,
 // messages that stay visible, lecture mode's layout.
+#include <imgui.h>
+#include <imgui_internal.h>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -206,8 +209,20 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   const ui::FrameLayout& layout = renderer.layout();
   REQUIRE(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("no/such/scene_file_for_the_test.json"));
-  // Shown in the Scene file section (opened for it): the panel, not the status line.
-  CHECK(layout.message.w == 0);
+  // The Scene file section is closed: the message has its own line above the status line, in view.
+  CHECK(layout.message.w > 0);
+  // Opened, the section shows it, in view: no line above the status line.
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  panel->StateStorage.SetInt(panel->GetID("###files"), 1);
+  for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
+  CHECK(renderer.layout().message.w == 0);
+  // At 3× the section's message is below the panel's fold: the line above the status line shows it again
+  // (a screenshot's confirmation used to land there, out of sight).
+  state.font_scale = 3.0f;
+  for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
+  CHECK(renderer.layout().message.w > 0);
+  state.font_scale = 1.0f;
   // A message whose section is closed (here: none) gets its own line above the status line, tall enough
   // for its wrapped text at 3× font, inside the window.
   state.font_scale = 3.0f;
