@@ -41,12 +41,16 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
     state.request_quit = true;
 }
 
-// Installed over ImGui's backend's key callback (which chains to key_callback): a key's changes reach ImGui
-// one per frame (KeyEventQueue).
+// Installed over ImGui's backend's key and character callbacks (which chain to ours): a key's changes reach
+// ImGui one per frame, characters in order with them (KeyEventQueue).
 void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   note(window);
   if (action == GLFW_REPEAT || callbacks_of(window).host->keys().arrive(key, action == GLFW_PRESS))
     ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+void queued_char_callback(GLFWwindow* window, unsigned int character) {
+  note(window);
+  if (callbacks_of(window).host->keys().arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
 }
 
 void drop_callback(GLFWwindow* window, int count, const char** paths) {
@@ -88,8 +92,10 @@ bool GlfwHost::should_close() const { return quit_signal || glfwWindowShouldClos
 
 ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
   // A key's changes held since the last frame, before this frame's events (key_queue.h).
-  for (const ui::KeyEventQueue::Event& e : keys_.start_frame())
-    ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
+  for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
+    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
+    else ImGui_ImplGlfw_CharCallback(window_, e.character);
+  }
   if (scripted_) {
     glfwPollEvents();
   } else {
@@ -147,7 +153,8 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-  glfwSetKeyCallback(window, queued_key_callback);  // over the backend's, which it calls
+  glfwSetKeyCallback(window, queued_key_callback);  // over the backend's, which they call
+  glfwSetCharCallback(window, queued_char_callback);
   ImGui_ImplOpenGL3_Init("#version 330 core");
   int exit_code = 0;
   {

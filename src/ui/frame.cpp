@@ -260,8 +260,12 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
                     2 * ImGui::GetStyle().WindowPadding.y + ImGui::GetStyle().ItemSpacing.y;
     layout.message = {status_area.x, status_area.y - h, status_area.w, h};
     if (begin_fixed_window("##message", layout.message,
-                           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar))
+                           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+      // In front of the views (a view that appeared after it, the 3D observer, would hide it), without
+      // taking the keyboard from a text being edited.
+      ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
       show_message(state, state.message_source);
+    }
     ImGui::End();
   }
   if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state);

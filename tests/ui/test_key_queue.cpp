@@ -26,9 +26,10 @@ void frame(std::string& text) {
   ImGui::Render();
 }
 
-// Taps BackSpace `taps` times, each press and release between the same two frames, forwarded to ImGui as the
-// host does (through the queue, or straight), and returns what the field holds after.
-std::string tap_backspace(int taps, bool queued) {
+// Sends `events` (key changes and characters) all between the same two frames, forwarded to ImGui as the
+// host does (through the queue, or straight), then runs frames until the queue is empty, and returns what a
+// focused text field that held "scene.json" (the cursor at its end) holds after.
+std::string type_into_field(const std::vector<ui::KeyEventQueue::Event>& events, bool queued) {
   ImGuiContext* context = ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = {800, 600};
@@ -47,24 +48,45 @@ std::string tap_backspace(int taps, bool queued) {
   frame(text);
   io.KeysDown[kEnd] = false;
   frame(text);
-  const auto forward = [&](int key, bool press) { io.KeysDown[key] = press; };
-  // All the taps between two frames (a fast typist, a slow frame), then frames until the queue is empty.
-  for (int tap = 0; tap < taps; ++tap)
-    for (bool press : {true, false})
-      if (!queued || queue.arrive(kBackspace, press)) forward(kBackspace, press);
-  for (int frames = 0; frames < 4 * taps + 2; ++frames) {
+  const auto forward = [&](const ui::KeyEventQueue::Event& e) {
+    if (e.key >= 0) io.KeysDown[e.key] = e.press;
+    else io.AddInputCharacter(e.character);
+  };
+  for (const ui::KeyEventQueue::Event& e : events) {
+    const bool now = !queued || (e.key >= 0 ? queue.arrive(e.key, e.press) : queue.arrive_character(e.character));
+    if (now) forward(e);
+  }
+  for (int frames = 0; frames < 4 * int(events.size()) + 2; ++frames) {
     frame(text);
-    for (const ui::KeyEventQueue::Event& e : queue.start_frame()) forward(e.key, e.press);  // the host, before its events
+    for (const ui::KeyEventQueue::Event& e : queue.start_frame()) forward(e);  // the host, before its events
   }
   ImGui::DestroyContext(context);
   return text;
 }
+
+std::vector<ui::KeyEventQueue::Event> backspace_taps(int taps) {
+  std::vector<ui::KeyEventQueue::Event> events;
+  for (int tap = 0; tap < taps; ++tap) {
+    events.push_back({kBackspace, true, 0});
+    events.push_back({kBackspace, false, 0});
+  }
+  return events;
+}
 }  // namespace
 
 TEST_CASE("a key pressed and released between two frames reaches the text field", "[ui][keys]") {
-  CHECK(tap_backspace(5, true) == "scene");
+  CHECK(type_into_field(backspace_taps(5), true) == "scene");
   // Forwarded straight, the press and release cancel out before the frame reads the keys: the bug it fixes.
-  CHECK(tap_backspace(5, false) == "scene.json");
+  CHECK(type_into_field(backspace_taps(5), false) == "scene.json");
+}
+
+TEST_CASE("characters typed after quick keys do not overtake them", "[ui][keys]") {
+  // "12", BackSpace, BackSpace, "5", all between two frames: the field ends in "5" (a character let through
+  // at once would be typed before the BackSpaces run, which would then delete it: "scene.json1").
+  std::vector<ui::KeyEventQueue::Event> events = {{-1, false, '1'}, {-1, false, '2'}};
+  for (const ui::KeyEventQueue::Event& e : backspace_taps(2)) events.push_back(e);
+  events.push_back({-1, false, '5'});
+  CHECK(type_into_field(events, true) == "scene.json5");
 }
 
 TEST_CASE("the key queue lets each key change once a frame, in order", "[ui][keys]") {
