@@ -93,6 +93,7 @@ mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state)
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
 mutant key-changes-not-spread src/ui/key_queue.h 's/    if (held_.empty() \&\& (e.key < 0 || !changed(e.key))) {/    if (true) {/' "raycam_ui_tests" "^ui:"
 mutant characters-overtake-keys src/ui/key_queue.h 's/  bool arrive_character(unsigned int character) { return arrive(Event{-1, false, character}); }/  bool arrive_character(unsigned int) { return true; }/' "raycam_ui_tests" "^ui:"
+mutant inspector-row-plus-one src/ui/panels.cpp 's/    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));/    wrapped_between_words(trf("row %d, column %d", pixel->row + 1, pixel->column));/' "raycam_ui_tests" "^ui: ?the ray inspector"
 mutant checkbox-label-not-wrapped src/ui/panels.cpp 's/  if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)/  if (true)/' "raycam_render_tests" "^render: ?at 1x to 3x"
 mutant words-broken-anywhere src/ui/panels.cpp 's/  for (const std::string\& line : lines_between_words(text, width)) {/  for (const std::string\& line : {text}) {/' "raycam_ui_tests" "^ui: ?panel text wraps"
 mutant labels-printed-over-each-other src/ui/overhead_view.cpp 's/    if (!overlaps(p)) return p;/    return p;/' "raycam_render_tests" "^render: ?a label placed beside"

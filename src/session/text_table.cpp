@@ -176,7 +176,7 @@ const std::vector<Translation>& translation_table() {
       {"d_f = 1: the axis ray has |u| = 1 and is right; the error grows towards the edges of the image",
        "d_f = 1 : le rayon de l'axe a |u| = 1 et il est juste ; l'erreur grandit vers les bords de l'image"},
       {"res·N = 12.75: floor gives 12 pixels, round 13; count them",
-       "res·N = 12,75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
+       "res·N = 12.75 : la partie entière donne 12 pixels, l'arrondi 13 ; comptez-les"},
       {"the image is now twice as wide as tall: the square screen gives it pixels twice as tall as wide, the "
        "stretched screen sees twice the field across",
        "l'image est maintenant deux fois plus large que haute : l'écran carré lui donne des pixels deux fois "

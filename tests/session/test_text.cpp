@@ -96,6 +96,13 @@ TEST_CASE("every string of the table has both languages, with the same conversio
       INFO(t.en);
       CHECK(std::string(t.en) != std::string(t.fr));
     }
+  // One decimal separator in each language: the point, as the sliders and tables print numbers (printf in
+  // the C locale); a French "0,05" beside a slider's "0.5000" read as two conventions.
+  const std::regex decimal_comma(R"(\d,\d)");
+  for (const ui::Translation& t : table) {
+    INFO(t.fr);
+    CHECK_FALSE(std::regex_search(std::string(t.fr), decimal_comma));
+  }
   // The handout's words are there (a French table that kept the English would pass the checks above).
   std::string all_french;
   for (const ui::Translation& t : table) all_french += std::string(t.fr) + "\n";

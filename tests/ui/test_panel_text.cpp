@@ -175,6 +175,11 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
     const glm::dmat4& m = camera.world_from_camera();
     const glm::dvec3 p = glm::dvec3(m * glm::dvec4(p0, 1.0)),
                      u = glm::normalize(glm::dvec3(m * glm::dvec4(u0, 0.0)));
+    // The pixel it names is the one inspected (rows and columns from 0, as the image's).
+    REQUIRE(number_after(shown, "(?:row|ligne)"));
+    CHECK(*number_after(shown, "(?:row|ligne)") == row);
+    REQUIRE(number_after(shown, "(?:column|colonne)"));
+    CHECK(*number_after(shown, "(?:column|colonne)") == column);
     const auto tuples = numeric_tuples(shown);
     REQUIRE(tuples.size() == 4);
     check_tuple(tuples[0], p0, 3);
