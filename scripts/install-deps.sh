@@ -14,7 +14,7 @@ packages=(
   bubblewrap python3                         # `check`: sandbox and the Python example student
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
-  emscripten chromium chromium-driver python3-selenium  # the web page (scripts/web.sh) and its browser tests
+  emscripten chromium chromium-driver python3-selenium python3-pil  # the web page (scripts/web.sh) and its browser tests (PIL reads its screenshots)
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -53,10 +53,13 @@ void install_wake_callbacks(GLFWwindow* window) {
   glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
 }
 
+ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
+
 void tick() {
   if (!page.host->wants_frame(*page.state)) return;  // asleep until note_event()
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
+  last_layout = result.layout;
   page.downloads->offer_new_files();  // Save as, PNGs, screenshots become downloads
   static std::string applied_title;
   if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
@@ -67,6 +70,7 @@ void tick() {
 }  // namespace
 
 ui::AppState& page_state() { return *page.state; }
+const ui::FrameLayout& page_layout() { return last_layout; }
 void wake_page() { page.host->note_event(); }
 
 void WebHost::note_event() {

@@ -4,6 +4,7 @@
 // so an idle page casts and draws nothing, like the desktop window asleep in glfwWaitEvents.
 #pragma once
 
+#include "frame.h"
 #include "frame_host.h"
 
 struct GLFWwindow;
@@ -37,6 +38,7 @@ void run_page(ui::AppState& state);
 
 // The page's state, for the functions JavaScript calls (web_main.cpp).
 ui::AppState& page_state();
+const ui::FrameLayout& page_layout();  // the last frame drawn: where things were, what the tables showed
 void wake_page();
 
 }  // namespace raycam::web

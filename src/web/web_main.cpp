@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <map>
 #include <cstdio>
 #include <vector>
 #include <cstdlib>
@@ -104,6 +105,68 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_last_error() { return last_error.c_str()
 EMSCRIPTEN_KEEPALIVE double raycam_frames_drawn() { return double(raycam::web::page_state().frame_count); }
 
 EMSCRIPTEN_KEEPALIVE const char* raycam_status_message() { return raycam::web::page_state().message.c_str(); }
+
+// What the last frame showed, as JSON, for the browser tests: the 3D camera's parameters, the M_d its table
+// showed (column-major), whether the image it drew is the colour map of the camera now (the map's version
+// and a fresh cast of that camera), where the image was and the θ slider.
+EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
+  static std::string json;
+  const raycam::ui::AppState& state = raycam::web::page_state();
+  const raycam::ui::FrameLayout& layout = raycam::web::page_layout();
+  const raycam::Orbit3D& o = state.orbit3d;
+  char number[64];
+  const auto add = [&](const char* key, double value) {
+    std::snprintf(number, sizeof number, "%.17g", value);
+    json += std::string("\"") + key + "\": " + number + ", ";
+  };
+  json = "{";
+  add("dimension", state.dimension);
+  add("theta", o.theta);
+  add("phi", o.phi);
+  add("d", o.d);
+  add("df", o.df);
+  json += "\"target\": [";
+  for (int i = 0; i < 3; ++i) {
+    std::snprintf(number, sizeof number, "%.17g", o.target[i]);
+    json += std::string(i ? ", " : "") + number;
+  }
+  json += "], \"placement\": [";
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) {
+      std::snprintf(number, sizeof number, "%.17g", layout.shown.placement[c][r]);
+      json += std::string(c || r ? ", " : "") + number;
+    }
+  json += "], ";
+  add("shown_map_version", double(layout.shown.map_version));
+  add("map_version", double(state.map_version));
+  const raycam::ColourMap fresh =
+      state.dimension == 2 ? raycam::cast_primary_rays(state.camera2d, state.file.scene2d)
+                           : raycam::cast_primary_rays(state.camera3d, state.file.scene3d);
+  add("map_is_the_camera_s", fresh.ids == state.map.ids ? 1 : 0);
+  add("map_width", state.map.width);
+  add("map_height", state.map.height);
+  const auto rect = [&](const char* key, float x, float y, float w, float h) {
+    std::snprintf(number, sizeof number, "[%.3f, %.3f, %.3f, %.3f]", x, y, w, h);
+    json += std::string("\"") + key + "\": " + number + ", ";
+  };
+  rect("image", layout.image.x, layout.image.y, layout.image.w, layout.image.h);
+  if (state.widget_rects) {
+    const auto theta = state.widget_rects->find("###theta");
+    if (theta != state.widget_rects->end()) {
+      const raycam::ui::WidgetRect& r = theta->second;
+      rect("theta_slider", r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    }
+  }
+  json += "\"end\": 0}";
+  return json.c_str();
+}
+
+// Save as, as the panel's button does (the file then becomes a download): for the browser tests.
+EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
+  const bool saved = raycam::ui::save_preset_as(raycam::web::page_state(), path, true);
+  raycam::web::wake_page();
+  return saved ? 1 : 0;
+}
 }
 
 int main() {
@@ -118,6 +181,8 @@ int main() {
     const std::string scene = query_value("scene");
     if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
     state = raycam::ui::make_app_state(options);
+    static std::map<std::string, raycam::ui::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
+    state.widget_rects = &widget_rects;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "raycam: error: %s\n", error.what());
     options.language.reset();

@@ -1,9 +1,11 @@
 """Browser tests of the web page (build-web/, scripts/web.sh) in headless Chromium: the page starts with a
 clean console; its ids equal `raycam-cli render --ids` for every scene of scenes/ and stress cases; Tab
-switches 2D/3D; a picked scene file opens; ?lang=fr gives French; bad files give the desktop's errors and
-keep the scene. Usage: test_page.py WEB_FOLDER RAYCAM_CLI SCENES_FOLDER. Exit code 0 when all pass."""
+switches 2D/3D; the screenshot's colour map is `raycam-cli shot`'s; a θ drag shows, in each frame, the M_d of
+that θ (the handout's formula, computed here) and that camera's image; Save as downloads the desktop's JSON;
+a picked scene file opens; ?lang=fr gives French; bad files give the desktop's errors and keep the scene. Usage: test_page.py WEB_FOLDER RAYCAM_CLI SCENES_FOLDER. Exit code 0 when all pass."""
 import glob
 import json
+import math
 import os
 import subprocess
 import sys
@@ -86,6 +88,34 @@ def page_ids(page, scene):
         return FS.readFile('/test/ids.txt', {encoding: 'utf8'});""", os.path.basename(scene), content)
 
 
+def shown_frame(page):
+    return json.loads(page.call("return Module.ccall('raycam_shown_frame', 'string', [], [])"))
+
+
+def placement_from_formula(theta, phi, d, df, target):
+    """M_d = T(OP) Rz(theta) Ry(phi) Rz(+pi/2) H(1, 1, d_f), P = C + d (cos t sin p, sin t sin p, cos p), computed
+    here from the handout's formula (raycam's roll sign), column-major as GLM stores it."""
+    def mul(a, b):
+        return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+    ct, st, cp, sp = math.cos(theta), math.sin(theta), math.cos(phi), math.sin(phi)
+    rz_t = [[ct, -st, 0, 0], [st, ct, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+    ry_p = [[cp, 0, sp, 0], [0, 1, 0, 0], [-sp, 0, cp, 0], [0, 0, 0, 1]]
+    roll = [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]
+    h = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, df, 0], [0, 0, 0, 1]]
+    p = [target[0] + d * ct * sp, target[1] + d * st * sp, target[2] + d * cp]
+    t = [[1, 0, 0, p[0]], [0, 1, 0, p[1]], [0, 0, 1, p[2]], [0, 0, 0, 1]]
+    m = mul(mul(mul(mul(t, rz_t), ry_p), roll), h)
+    return [m[r][c] for c in range(4) for r in range(4)]
+
+
+def wait_for_file(path, seconds=10):
+    deadline = time.time() + seconds
+    while time.time() < deadline and not os.path.exists(path):
+        time.sleep(0.1)
+    time.sleep(0.2)  # written whole
+    return os.path.exists(path)
+
+
 def open_in_page(page, name, content):
     """The file picker's route: the file written into the page, then opened by the app."""
     page.call("""const [name, content] = arguments; FS.mkdirTree('/picked');
@@ -148,6 +178,80 @@ with tempfile.TemporaryDirectory() as scratch:
         canvas_size = tuple(page.call("return [Module.canvas.width, Module.canvas.height]"))
         check(header[:8] == b"\x89PNG\r\n\x1a\n" and size == canvas_size,
               "F12: the screenshot is a download, a PNG of the canvas's size (%s, canvas %s)" % (size, canvas_size))
+
+        # The colour map in the page's screenshot is raycam-cli shot's at the same size, cell for cell: each
+        # map cell sampled at its centre in both pictures, at the rectangle where the page drew the image. At
+        # about a pixel a cell, the two GL rasterisers may round a cell's edge to either side, so the cells
+        # compared are those whose four neighbours have their colour in the native picture (inside a region).
+        from PIL import Image  # Debian's python3-pil
+        # A second screenshot with the mouse off the image (hovering a pixel outlines it, on purpose).
+        ActionChains(page.driver).move_to_element_with_offset(
+            page.driver.find_element("id", "canvas"), -canvas_size[0] // 2 + 5, -canvas_size[1] // 2 + 5).perform()
+        ActionChains(page.driver).key_down(Keys.F12).pause(0.2).key_up(Keys.F12).perform()
+        shot = os.path.join(downloads, "raycam-screenshot-002.png")
+        wait_for_file(shot)
+        shown = shown_frame(page)
+        native_shot = os.path.join(scratch, "native_shot.png")
+        run = subprocess.run([cli, "shot", "--width", str(canvas_size[0]), "--height", str(canvas_size[1]), "--lang",
+                              "en", "--out", native_shot], capture_output=True, text=True)
+        x, y, w, h = shown["image"]
+        cells = int(shown["map_width"]) * int(shown["map_height"])
+        differing = -1
+        if run.returncode == 0 and os.path.exists(shot) and cells > 0:
+            ours, theirs = Image.open(shot).convert("RGB"), Image.open(native_shot).convert("RGB")
+            columns, rows = int(shown["map_width"]), int(shown["map_height"])
+
+            def cell(picture, row, column):
+                return picture.getpixel((int(x + (column + 0.5) * w / columns), int(y + (row + 0.5) * h / rows)))
+            differing, compared = 0, 0
+            for row in range(1, rows - 1):
+                for column in range(1, columns - 1):
+                    colour = cell(theirs, row, column)
+                    if any(cell(theirs, row + dr, column + dc) != colour for dr, dc in ((0, 1), (0, -1), (1, 0), (-1, 0))):
+                        continue
+                    compared += 1
+                    differing += cell(ours, row, column) != colour
+            cells = compared
+        check(differing == 0 and cells > 1000,
+              "the screenshot's colour map equals raycam-cli shot's, cell for cell (%d of %d differ)" % (differing, cells))
+
+        # θ dragged on its slider with the mouse: in each frame the M_d table shows the matrix of the θ the
+        # state holds (computed here from the handout's formula), and the image is that camera's colour map.
+        canvas = page.driver.find_element("id", "canvas")
+        sx, sy, sw, sh = shown["theta_slider"]
+        start = (sx + sw / 2 - canvas_size[0] / 2, sy + sh / 2 - canvas_size[1] / 2)  # offsets from the centre
+        ActionChains(page.driver).move_to_element_with_offset(canvas, *start).click_and_hold().perform()
+        thetas, agree, same_map = [], 0, 0
+        for step in range(1, 5):
+            ActionChains(page.driver).move_to_element_with_offset(canvas, start[0] + 25 * step, start[1]).perform()
+            time.sleep(0.3)
+            frame = shown_frame(page)
+            thetas.append(frame["theta"])
+            expected = placement_from_formula(frame["theta"], frame["phi"], frame["d"], frame["df"], frame["target"])
+            agree += all(abs(a - b) <= 1e-12 * (1 + abs(b)) for a, b in zip(frame["placement"], expected))
+            same_map += frame["map_is_the_camera_s"] == 1 and frame["shown_map_version"] == frame["map_version"]
+        ActionChains(page.driver).release().perform()
+        check(len(set(thetas)) == 4, "a drag on the θ slider moves θ at each step (%s)" % ["%.3f" % t for t in thetas])
+        check(agree == 4, "  ... and the M_d table shows the matrix of that θ in each frame (%d of 4)" % agree)
+        check(same_map == 4, "  ... and the image is that camera's colour map in the same frame (%d of 4)" % same_map)
+
+        # Save as: the file is a download, the JSON the desktop writes (save_preset_as): the angles as set
+        # (φ untouched: 60 exactly, not 59.99999999999999), and it opens again on the same image.
+        frame = shown_frame(page)
+        live_ids = os.path.join(scratch, "live.json")
+        saved = page.call("return Module.ccall('raycam_save_as', 'number', ['string'], ['saved-camera.json'])")
+        path = os.path.join(downloads, "saved-camera.json")
+        check(saved == 1 and wait_for_file(path), "Save as: the file arrives as a download")
+        with open(path) if os.path.exists(path) else open(os.devnull) as text:
+            content = text.read()
+        preset = json.loads(content).get("camera", {}) if content else {}
+        check(preset.get("phi") == 60 and preset.get("d") == 8 and preset.get("df") == 2 and
+              abs(preset.get("theta", 1e9) - math.degrees(frame["theta"])) < 1e-9,
+              "  ... holding the camera as set (%s)" % preset)
+        with open(live_ids, "w") as out:
+            out.write(content)
+        check(content != "" and native_ids(live_ids, scratch) == page_ids(page, live_ids),
+              "  ... which raycam-cli and the page read to the same ids")
 
         with open(os.path.join(scenes_folder, "symmetric3d.json")) as text:
             open_in_page(page, "picked3d.json", text.read())
