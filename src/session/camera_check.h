@@ -23,6 +23,9 @@ struct CheckRequest {
   bool is_file = false;
   bool automatic = true;   // check when the camera changes
   bool check_now = false;  // once, at the next update()
+  // The page (no program runs there): the host writes the camera's case as a download, or asks the browser
+  // for the answer file; each is reset by the host once done.
+  bool download_case = false, pick_answer = false;
 };
 
 // A verdict and the case (and command) it was made for.
@@ -38,6 +41,10 @@ struct CheckProgress {
   std::shared_ptr<const KeyedVerdict> latest;  // null while none
   bool current = false;                        // `latest` is for the case seen at the last update()
 };
+
+// The case of the camera on screen, as the student's program reads it: the scene and the camera's parameters
+// (the page offers it as a download: it runs no program, and grades the answer file given back).
+SceneFile camera_case(const AppState& state);
 
 // What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
 // wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty

@@ -339,6 +339,13 @@ const std::vector<Translation>& translation_table() {
        "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
        "vérifié à chaque changement (docs/check.md)."},
       {"program###check_command", "programme###check_command"},
+      {"A page cannot run your program: download this camera's case, run your program on it (python3 "
+       "my_camera.py < case.json > answer.json), then give the answer file.",
+       "Une page ne peut pas lancer votre programme : téléchargez le cas de cette caméra, lancez votre "
+       "programme dessus (python3 ma_camera.py < case.json > answer.json), puis donnez le fichier de réponse."},
+      {"Download this camera's case###check_case", "Télécharger le cas de cette caméra###check_case"},
+      {"Give the answer file…###check_answer", "Donner le fichier de réponse…###check_answer"},
+      {"answer file: %s", "fichier de réponse : %s"},
       {"an answer file, not a program###check_is_file",
        "un fichier de réponse, pas un programme###check_is_file"},
       {"check when the camera changes###check_auto", "vérifier quand la caméra change###check_auto"},

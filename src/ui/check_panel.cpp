@@ -19,11 +19,14 @@ void check_section(CameraCheck& check, double now) {
   wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                            "it is checked whenever they change (docs/check.md)."));
   ImGui::PopStyleColor();
-#ifdef __EMSCRIPTEN__  // the web page runs no program and has no worker thread for the check
-  ImGui::TextWrapped("%s", tr("Running your program needs the desktop app (docs/web.md)."));
-  return;
-#endif
   CheckRequest& request = check.request();
+#ifdef __EMSCRIPTEN__  // a page runs no program: the case goes out as a download, the answer file comes back
+  wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
+                           "it (python3 my_camera.py < case.json > answer.json), then give the answer file."));
+  if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
+  if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
+  if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
+#else
   const std::string label = tr("program###check_command");  // above its box, which takes the whole width
   wrapped_between_words(label.substr(0, label.find("##")));
   ImGui::SetNextItemWidth(-FLT_MIN);
@@ -31,6 +34,7 @@ void check_section(CameraCheck& check, double now) {
   checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
   checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
   if (button(tr("Check now###check_now"))) request.check_now = true;
+#endif
 
   const CheckProgress progress = check.progress();
   if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));

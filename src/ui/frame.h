@@ -57,6 +57,7 @@ class FrameRenderer {
   FrameRenderer();  // needs a current GL 3.3 context and an ImGui context
   ~FrameRenderer();
   FrameLayout build(AppState& state, int width, int height);
+  CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
 
  private:
   enum class Drag { none, overhead, observer };

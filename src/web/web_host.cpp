@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <string>
 
+#include "camera_check.h"
 #include "downloads.h"
+#include "raycam/scene_file.h"
+#include "text.h"
 #include "gl.h"
 
 namespace raycam::web {
@@ -60,7 +63,21 @@ void tick() {
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
   last_layout = result.layout;
-  page.downloads->offer_new_files();  // Save as, PNGs, screenshots become downloads
+  // Check my camera in the page: its case out as a download, its answer file asked of the browser.
+  ui::CheckRequest& request = page.frame->check().request();
+  if (request.download_case) {
+    request.download_case = false;
+    try {
+      save_scene_file(ui::camera_case(*page.state), "raycam-case.json");
+    } catch (const std::exception& error) {
+      ui::set_message(*page.state, ui::MessageSource::general, true, ui::tr_reason(error.what()));
+    }
+  }
+  if (request.pick_answer) {
+    request.pick_answer = false;
+    EM_ASM(document.getElementById('answer-picker').click(););  // within the click's user activation
+  }
+  page.downloads->offer_new_files();  // Save as, PNGs, screenshots, the check's case become downloads
   static std::string applied_title;
   if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
     glfwSetWindowTitle(page.window, page.state->window_title.c_str());
@@ -71,6 +88,7 @@ void tick() {
 
 ui::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
+ui::CameraCheck& page_check() { return page.frame->check(); }
 void wake_page() { page.host->note_event(); }
 
 void WebHost::note_event() {

@@ -157,8 +157,26 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
       rect("theta_slider", r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
     }
   }
+  const raycam::ui::CameraCheck& check = raycam::web::page_check();
+  json += "\"check_status\": \"" + check.status() + "\", ";
+  add("check_wrong_pixels", double(check.wrong_pixels()));
   json += "\"end\": 0}";
   return json.c_str();
+}
+
+// Check my camera's answer file (the page's answer picker wrote it here): graded at once against the camera
+// on screen, as the desktop grades an answer file.
+EMSCRIPTEN_KEEPALIVE void raycam_check_answer(const char* path) {
+  raycam::ui::CameraCheck& check = raycam::web::page_check();
+  check.set_command(path, true);
+  check.request().check_now = true;
+  raycam::web::wake_page();
+}
+
+// The check's "Download this camera's case" button, for the browser tests.
+EMSCRIPTEN_KEEPALIVE void raycam_download_case() {
+  raycam::web::page_check().request().download_case = true;
+  raycam::web::wake_page();
 }
 
 // Save as, as the panel's button does (the file then becomes a download): for the browser tests.

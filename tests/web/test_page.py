@@ -253,6 +253,35 @@ with tempfile.TemporaryDirectory() as scratch:
         check(content != "" and native_ids(live_ids, scratch) == page_ids(page, live_ids),
               "  ... which raycam-cli and the page read to the same ids")
 
+        # Check my camera, the page's answers route: the camera's case is a download; the answer file made
+        # from it by raycam-cli's own renderer passes; the same with one pixel changed fails on that pixel.
+        page.call("Module.ccall('raycam_download_case', null, [], [])")
+        case_path = os.path.join(downloads, "raycam-case.json")
+        check(wait_for_file(case_path), "Check my camera: the camera's case arrives as a download")
+        reference_ids = native_ids(case_path, scratch) if os.path.exists(case_path) else "error"
+        rows = [[int(v) for v in line.split()] for line in reference_ids.splitlines() if line.strip()]
+
+        def graded(answer_rows, name):
+            page.call("""const [name, content] = arguments; FS.mkdirTree('/answers');
+                         FS.writeFile('/answers/' + name, content);
+                         Module.ccall('raycam_check_answer', null, ['string'], ['/answers/' + name]);""",
+                      name, json.dumps({"ids": answer_rows}))
+            deadline = time.time() + 10
+            frame = shown_frame(page)
+            while time.time() < deadline and frame["check_status"] == "":
+                time.sleep(0.1)
+                frame = shown_frame(page)
+            return frame
+        frame = graded(rows, "answer_right.json")
+        check(not reference_ids.startswith("error") and frame["check_status"] == "pass",
+              "  ... an answer file made from it by raycam-cli passes (%s)" % frame["check_status"])
+        if rows:
+            rows[len(rows) // 2][len(rows[0]) // 2] = 4 if rows[len(rows) // 2][len(rows[0]) // 2] != 4 else 3
+        frame = graded(rows, "answer_one_wrong.json")
+        check(frame["check_status"] == "fail" and frame["check_wrong_pixels"] == 1,
+              "  ... and with one pixel changed fails on that one pixel (%s, %s wrong)"
+              % (frame["check_status"], frame["check_wrong_pixels"]))
+
         with open(os.path.join(scenes_folder, "symmetric3d.json")) as text:
             open_in_page(page, "picked3d.json", text.read())
         title = wait_for(page, "return document.title", lambda t: "picked3d.json" in t)
