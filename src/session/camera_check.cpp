@@ -44,6 +44,7 @@ std::shared_ptr<const KeyedVerdict> crashed(const std::string& key, const std::s
   return verdict;
 }
 
+#ifndef __EMSCRIPTEN__  // the page grades at once, on its one thread (update())
 void work(std::shared_ptr<CheckShared> shared) {
   for (;;) {
     CheckJob job;
@@ -67,6 +68,7 @@ void work(std::shared_ptr<CheckShared> shared) {
     shared->running = false;
   }
 }
+#endif
 
 }  // namespace
 
