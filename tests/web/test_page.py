@@ -2,7 +2,8 @@
 clean console; its ids equal `raycam-cli render --ids` for every scene of scenes/ and stress cases; Tab
 switches 2D/3D; the screenshot's colour map is `raycam-cli shot`'s; a θ drag shows, in each frame, the M_d of
 that θ (the handout's formula, computed here) and that camera's image; Save as downloads the desktop's JSON;
-a picked scene file opens; ?lang=fr gives French; bad files give the desktop's errors and keep the scene. Usage: test_page.py WEB_FOLDER RAYCAM_CLI SCENES_FOLDER. Exit code 0 when all pass."""
+a picked scene file opens; ?lang=fr gives French; bad files give the desktop's errors and keep the scene (a file over the size limit
+raycam-cli's words, unread). Usage: test_page.py WEB_FOLDER RAYCAM_CLI SCENES_FOLDER. Exit code 0 when all pass."""
 import glob
 import json
 import math
@@ -266,6 +267,10 @@ with tempfile.TemporaryDirectory() as scratch:
                          FS.writeFile('/answers/' + name, content);
                          Module.ccall('raycam_check_answer', null, ['string'], ['/answers/' + name]);""",
                       name, json.dumps({"ids": answer_rows}))
+            # Graded in the next frame: the status read before then is the previous answer's (a second
+            # answer read at once showed the first one's "pass"), so two frames are awaited first.
+            asked_at = page.call(frames)
+            wait_for(page, frames, lambda n: n >= asked_at + 2)
             deadline = time.time() + 10
             frame = shown_frame(page)
             while time.time() < deadline and frame["check_status"] == "":
@@ -297,6 +302,22 @@ with tempfile.TemporaryDirectory() as scratch:
         message = wait_for(page, status, lambda m: "big.json" in m)
         check("big.json" in message and "picked3d.json" in page.call("return document.title"),
               "a 50 MB file: an error naming it, the scene kept (%r)" % message)
+        # A file over the desktop's size limit: the page refuses it on its size, before reading, with the words
+        # raycam-cli uses for a file of the same size (both files are sparse: truncate reads and writes nothing).
+        huge_size = (256 << 20) + 1
+        huge = os.path.join(scratch, "huge.json")
+        with open(huge, "wb") as out:
+            out.truncate(huge_size)
+        run = subprocess.run([cli, "render", "--scene", huge, "--ids", os.path.join(scratch, "huge_ids.txt")],
+                             capture_output=True, text=True)
+        native_reason = run.stderr.strip().split(huge, 1)[-1]  # the words after the path
+        page.call("""const size = arguments[0]; FS.writeFile('/picked/huge.json', '');
+                     FS.truncate('/picked/huge.json', size);
+                     Module.ccall('raycam_open_file', null, ['string'], ['/picked/huge.json']);""", huge_size)
+        message = wait_for(page, status, lambda m: "huge.json" in m)
+        check(run.returncode != 0 and "limit" in native_reason and "huge.json" + native_reason in message and
+              "picked3d.json" in page.call("return document.title"),
+              "a file over the size limit: raycam-cli's words (%r), the scene kept (%r)" % (native_reason, message))
         over = {"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "color": [1, 2, 3]}],
                 "camera": {"size": [100000, 100000]}}
         open_in_page(page, "over.json", json.dumps(over))
