@@ -53,6 +53,15 @@ struct Projection {
   std::vector<Candidate> projected;  // one slot per object
   std::vector<int> kept_in_chunk;
   int visible_count = 0;
+  // Gathered while projecting (no pass of its own): the survivors' total box area, the tests a cast runs with
+  // no skipping; and the range of their nearest_t, which the near-to-far order spreads into buckets.
+  long long box_area = 0;
+  double lowest_t = kNoHit<double>, highest_t = -kNoHit<double>;
+  struct ChunkSums {
+    long long area = 0;
+    double lowest = kNoHit<double>, highest = -kNoHit<double>;
+  };
+  std::vector<ChunkSums> chunk_sums;
   std::vector<Candidate> visible;  // filled by join() or sort_near_to_far()
   std::vector<int> bucket_of, bucket_start;
 
@@ -62,12 +71,6 @@ struct Projection {
       const Candidate* first = &projected[chunk * kObjectsPerChunk];
       for (const Candidate* c = first; c != first + kept_in_chunk[chunk]; ++c) use(*c);
     }
-  }
-  // The candidates' total box area: the tests a cast runs with no skipping.
-  long long box_area() const {
-    long long area = 0;
-    for_each_visible([&](const Candidate& c) { area += c.box.pixel_count(); });
-    return area;
   }
   // Into `visible` in object order (the footprint and culled methods read them there).
   void join() {
@@ -80,11 +83,7 @@ struct Projection {
   // two passes, where a full sort of 10⁵ would cost more than the cast it speeds up. Returns false, with
   // nothing done, when there is no bound to sort by.
   bool sort_near_to_far() {
-    double lowest = kNoHit<double>, highest = -kNoHit<double>;
-    for_each_visible([&](const Candidate& c) {
-      lowest = std::min(lowest, c.nearest_t);
-      highest = std::max(highest, c.nearest_t);
-    });
+    const double lowest = lowest_t, highest = highest_t;
     if (visible_count < 2 || !(highest > lowest) || !std::isfinite(highest - lowest)) return false;
     const int buckets = std::clamp(visible_count / 8, 2, kMaxDepthBuckets);
     const double per_unit = (buckets - 1) / (highest - lowest);
@@ -136,10 +135,12 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
   w.projected.resize(std::size_t(count));
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
+  w.chunk_sums.assign(std::size_t(chunks), {});
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
     PixelBox boxes[kBatch];
     int kept = 0;
+    Projection::ChunkSums sums;
     for (int batch = begin; batch < end; batch += kBatch) {
       const int size = std::min(kBatch, end - batch);
       const std::size_t at = std::size_t(batch);
@@ -158,13 +159,26 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
         c.nearest_t = nearest_t(c.centre, c.radius);
         c.box = boxes[k];
         c.object = int(i);
-        kept += !boxes[k].empty();
+        const bool survives = !boxes[k].empty();
+        kept += survives;
+        sums.area += boxes[k].pixel_count();  // 0 for a culled sphere
+        sums.lowest = std::min(sums.lowest, survives ? c.nearest_t : kNoHit<double>);
+        sums.highest = std::max(sums.highest, survives ? c.nearest_t : -kNoHit<double>);
       }
     }
     w.kept_in_chunk[std::size_t(chunk)] = kept;
+    w.chunk_sums[std::size_t(chunk)] = sums;
   });
   w.visible_count = 0;
-  for (int kept : w.kept_in_chunk) w.visible_count += kept;
+  w.box_area = 0;
+  w.lowest_t = kNoHit<double>;
+  w.highest_t = -kNoHit<double>;
+  for (std::size_t chunk = 0; chunk < w.kept_in_chunk.size(); ++chunk) {
+    w.visible_count += w.kept_in_chunk[chunk];
+    w.box_area += w.chunk_sums[chunk].area;
+    w.lowest_t = std::min(w.lowest_t, w.chunk_sums[chunk].lowest);
+    w.highest_t = std::max(w.highest_t, w.chunk_sums[chunk].highest);
+  }
 }
 
 // Candidate lists per band, each in the order `for_each` gives the candidates.
@@ -288,7 +302,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   // The tests with no skipping. Sorting costs a pass over the candidates; it pays where they cover each pixel
   // at least kNearToFarDepth times on average (else few tests could be skipped) and each candidate's box holds
   // at least kNearToFarBoxPixels pixels (else the sort costs about what the tests it skips would).
-  const long long box_area = method == CastMethod::culled ? pixels * visible_count : projection.box_area();
+  const long long box_area = method == CastMethod::culled ? pixels * visible_count : projection.box_area;
   const bool near_to_far = options.near_to_far && method != CastMethod::culled &&
                            double(box_area) >= kNearToFarDepth * double(pixels) &&
                            double(box_area) >= kNearToFarBoxPixels * double(visible_count) &&

@@ -44,6 +44,15 @@ std::shared_ptr<const KeyedVerdict> crashed(const std::string& key, const std::s
   return verdict;
 }
 
+// The job's verdict; a camera the core refuses is a crash with its reason.
+std::shared_ptr<const KeyedVerdict> graded(const CheckJob& job) {
+  try {
+    return std::make_shared<const KeyedVerdict>(KeyedVerdict{job.key, check::grade_case(job.checked, job.source)});
+  } catch (const std::exception& error) {
+    return crashed(job.key, error.what());
+  }
+}
+
 #ifndef __EMSCRIPTEN__  // the page grades at once, on its one thread (update())
 void work(std::shared_ptr<CheckShared> shared) {
   for (;;) {
@@ -56,13 +65,7 @@ void work(std::shared_ptr<CheckShared> shared) {
       shared->pending.reset();
       shared->running = true;
     }
-    std::shared_ptr<const KeyedVerdict> verdict;
-    try {
-      verdict = std::make_shared<const KeyedVerdict>(
-          KeyedVerdict{job.key, check::grade_case(job.checked, job.source)});
-    } catch (const std::exception& error) {
-      verdict = crashed(job.key, error.what());
-    }
+    std::shared_ptr<const KeyedVerdict> verdict = graded(job);
     std::lock_guard<std::mutex> lock(shared->mutex);
     shared->latest = std::move(verdict);
     shared->running = false;
@@ -141,12 +144,7 @@ void CameraCheck::update(const AppState& state, double now) {
   submitted_key_ = key;
 #ifdef __EMSCRIPTEN__
   // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
-  std::shared_ptr<const KeyedVerdict> verdict;
-  try {
-    verdict = std::make_shared<const KeyedVerdict>(KeyedVerdict{key, check::grade_case(job.checked, job.source)});
-  } catch (const std::exception& error) {
-    verdict = crashed(key, error.what());
-  }
+  std::shared_ptr<const KeyedVerdict> verdict = graded(job);
   std::lock_guard<std::mutex> lock(shared_->mutex);
   shared_->latest = std::move(verdict);
 #else

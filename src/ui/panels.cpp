@@ -31,6 +31,17 @@
 namespace raycam::ui {
 
 namespace {
+// A label's shown text and the id ImGui sees: "Save###save" gives "Save" and "###save"; a label with no id
+// gives itself and "###" + itself, so the id stays the same whatever text a widget shows for it.
+struct LabelParts {
+  std::string shown, id;
+};
+LabelParts label_parts(const char* label) {
+  const std::string text = label;
+  const std::size_t hidden = text.find("##"), id = text.find("###");
+  return {text.substr(0, hidden), id != std::string::npos ? text.substr(id) : "###" + text.substr(0, hidden)};
+}
+
 // `text` in lines no wider than `width`, broken between words only (at spaces and newlines): ImGui's own
 // wrapping also breaks after '.' and ',', inside numbers ("67." / "4°"). A word wider than a whole line
 // keeps a line of its own.
@@ -68,18 +79,15 @@ int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take
 // never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
 template <class Widget>
 bool labelled(const AppState& state, const char* label, Widget widget) {
-  const std::string text = label;
-  const std::size_t hidden = text.find("##");
-  const std::string shown = text.substr(0, hidden);
-  const std::string id = hidden == std::string::npos
-                             ? "##" + text
-                             : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
+  const LabelParts parts = label_parts(label);
+  const std::string& shown = parts.shown;
+  const std::string& id = parts.id;
   const float avail = ImGui::GetContentRegionAvail().x;
   const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
   bool changed = false;
   if (label_width <= avail * 0.45f) {
     ImGui::SetNextItemWidth(avail - label_width);
-    changed = widget(label);
+    changed = widget((shown + id).c_str());  // the same id as above its widget
   } else {
     wrapped_between_words(shown);
     ImGui::SetNextItemWidth(avail);
@@ -187,8 +195,9 @@ bool checkbox(const char* label, bool* value) {
   bool changed = ImGui::Checkbox("##box", value);
   ImGui::PopID();
   ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
-  const std::string text = label;
-  ImGui::TextWrapped("%s", text.substr(0, text.find("##")).c_str());
+  ImGui::BeginGroup();  // the label's lines start beside the box, not under it
+  wrapped_between_words(label_parts(label).shown);
+  ImGui::EndGroup();
   if (ImGui::IsItemClicked()) {
     *value = !*value;
     changed = true;
@@ -199,22 +208,17 @@ bool checkbox(const char* label, bool* value) {
 // A button whose label goes over several lines when it does not fit the panel's width (lecture sizes): a
 // button's text is never cut. Its id stays the one of the label as given.
 bool button(const char* label) {
-  const std::string text = label;
-  const std::size_t hidden = text.find("##");
-  const std::string shown = text.substr(0, hidden);
+  const LabelParts parts = label_parts(label);
   const float room = ImGui::GetContentRegionAvail().x - 2 * ImGui::GetStyle().FramePadding.x;
-  if (ImGui::CalcTextSize(shown.c_str()).x <= room) return ImGui::Button(label);
   std::string lines;
-  for (const std::string& line : lines_between_words(shown, room)) lines += (lines.empty() ? "" : "\n") + line;
-  const std::string id = hidden == std::string::npos ? "###" + text : text.substr(text.find("###") != std::string::npos ? text.find("###") : hidden);
-  return ImGui::Button((lines + id).c_str());
+  for (const std::string& line : lines_between_words(parts.shown, room)) lines += (lines.empty() ? "" : "\n") + line;
+  return ImGui::Button((lines + parts.id).c_str());
 }
 
 
 // A section header: the full title if it fits the panel's width, else the brief one (a header never wraps).
 bool section(const char* full, const char* brief, int flags) {
-  const std::string text = full;
-  const std::string shown = text.substr(0, text.find("##"));
+  const std::string shown = label_parts(full).shown;
   const float room = ImGui::GetContentRegionAvail().x - ImGui::GetTreeNodeToLabelSpacing() -
                      ImGui::GetStyle().FramePadding.x;
   return ImGui::CollapsingHeader(ImGui::CalcTextSize(shown.c_str()).x <= room ? full : brief, flags);
