@@ -74,7 +74,8 @@ with tempfile.TemporaryDirectory() as scratch:
             with open(path) as text:
                 content = text.read()
             page_time = page.call("""const [content] = arguments; FS.writeFile('/bench.json', content);
-                return Module.ccall('raycam_time_cast', 'number', ['string', 'number'], ['/bench.json', 5]);""",
+                return Module.ccall('raycam_time_cast', 'number', ['string', 'number', 'number'],
+                                                    ['/bench.json', 256, 21]);""",
                                   content)
             native = native_ms(path)
             print("| %s | %.2f ms | %.2f ms | %.2f× |" % (label, native, page_time, page_time / native))

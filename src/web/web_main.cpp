@@ -76,19 +76,29 @@ EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* i
     return 1;
   }
 }
-// The median time in milliseconds of `repeats` casts of a 3D scene file's camera (the automatic caster, the
-// page's one thread), for scripts/bench_web.py; -1 when the file does not open.
-EMSCRIPTEN_KEEPALIVE double raycam_time_cast(const char* scene_path, int repeats) {
+// The median time in milliseconds of a cast (`repeats` samples, after half a second of casts) of a 3D scene
+// file's camera at side×side pixels, as `raycam-cli bench speed --scene FILE --size side` times it (the
+// automatic caster, the page's one thread), for scripts/bench_web.py; -1 when the file does not open.
+EMSCRIPTEN_KEEPALIVE double raycam_time_cast(const char* scene_path, int side, int repeats) {
   try {
     raycam::ViewFlags flags;
     flags.scene_path = std::string(scene_path);
+    flags.camera.size = std::vector<int>{side};
     const raycam::ViewSetup setup = raycam::make_view_setup(flags);
+    raycam::ColourMap map;  // reused, as the bench reuses its map
+    // Casts for half a second first: the browser compiles WebAssembly quickly first and optimises the code
+    // that runs often later, as the native bench warms up before it measures.
+    for (const double start = emscripten_get_now(); emscripten_get_now() - start < 500.0;)
+      raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d, map);
+    // Each sample times casts for at least 20 ms: the browser's clock counts in steps of 0.1 ms.
     std::vector<double> times;
     for (int i = 0; i < std::max(1, repeats); ++i) {
       const double start = emscripten_get_now();
-      const raycam::ColourMap map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d);
-      times.push_back(emscripten_get_now() - start);
-      if (map.ids.empty()) break;  // (uses the result)
+      int casts = 0;
+      double elapsed = 0.0;
+      for (; elapsed < 20.0; elapsed = emscripten_get_now() - start, ++casts)
+        raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d, map);
+      times.push_back(elapsed / casts);
     }
     std::sort(times.begin(), times.end());
     return times[times.size() / 2];

@@ -142,6 +142,13 @@ with tempfile.TemporaryDirectory() as scratch:
         idle_end = page.call(frames)
         check(idle_start > 0 and idle_end == idle_start,
               "the idle page draws nothing (%s frames, then %s 1.5 s later)" % (idle_start, idle_end))
+        # A page that listens for gamepads makes Chromium poll them on a thread forever: the idle page's
+        # main cost before the page stopped listening (docs/web.md). The window's listeners, from DevTools.
+        window = page.driver.execute_cdp_cmd("Runtime.evaluate", {"expression": "window"})["result"]["objectId"]
+        listened = [entry["type"] for entry in
+                    page.driver.execute_cdp_cmd("DOMDebugger.getEventListeners", {"objectId": window})["listeners"]]
+        check("keydown" in listened and not [kind for kind in listened if "gamepad" in kind],
+              "the idle page does not listen for gamepads (the window listens for %s)" % sorted(set(listened)))
         ActionChains(page.driver).move_to_element_with_offset(
             page.driver.find_element("id", "canvas"), 10, 10).perform()
         woken = wait_for(page, frames, lambda n: n > idle_end, 5)
