@@ -56,7 +56,7 @@ mutant cli-error-exits-0 src/flags/flag_values.cpp 's/return fail(usage_error_me
 mutant tangent-at-origin-dropped include/raycam/intersect.h 's/  t = tangent_at_origin ? T(0) : t;//' "$CORE" "$CORE_TESTS"
 mutant band-rays-not-renormalised src/core/band_kernels.cpp 's/column_x\[i\], true, origin, direction/column_x[i], false, origin, direction/' "$CORE" "$CORE_TESTS"
 mutant band-rays-missing-past-a-box-first-block src/core/footprint_caster.cpp 's/std::size_t(c.box.columns.last \/ kRayBlock)\] + 1, 1);/std::size_t(c.box.columns.first \/ kRayBlock)] + 1, 1);/' "$CORE" "$CORE_TESTS"
-mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/kept += !boxes\[k\].empty();/kept += 1;/' "$CORE" "$CORE_TESTS"
+mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/kept += survives;/kept += 1;/' "$CORE" "$CORE_TESTS"
 UI="raycam_ui_tests raycam_render_tests"
 mutant inspector-prints-1.5t src/ui/panels.cpp 's/ray.hit.id, name.c_str(), ray.hit.t);/ray.hit.id, name.c_str(), 1.5 * ray.hit.t);/' "$UI" "^(ui|render):"
 mutant packed-scene-not-repacked src/session/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "raycam_session_tests raycam_render_tests" "^(session|render):"
@@ -108,6 +108,7 @@ mutant show-me-object-centred src/session/mistake_lessons.cpp 's/  const Vector 
 mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/return distance - radius - corner_distance - 1e-6/return distance - radius - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant pending-tests-left-in-the-queue src/core/footprint_caster.cpp 's/^    run_pending_tests(options.formula, s.pixels);/    (void)0;/' "$CORE" "$CORE_TESTS"
+mutant band-sort-reads-one-candidate src/core/footprint_caster.cpp 's/for (const Candidate\& c : s.sorted) use(c);/for (const Candidate\& c : s.sorted) { use(c); break; }/' "$CORE" "$CORE_TESTS"
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 # --- one language for error reasons ---
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"

@@ -54,16 +54,10 @@ struct Projection {
   std::vector<int> kept_in_chunk;
   int visible_count = 0;
   // Gathered while projecting (no pass of its own): the survivors' total box area, the tests a cast runs with
-  // no skipping; and the range of their nearest_t, which the near-to-far order spreads into buckets.
+  // no skipping.
   long long box_area = 0;
-  double lowest_t = kNoHit<double>, highest_t = -kNoHit<double>;
-  struct ChunkSums {
-    long long area = 0;
-    double lowest = kNoHit<double>, highest = -kNoHit<double>;
-  };
-  std::vector<ChunkSums> chunk_sums;
-  std::vector<Candidate> visible;  // filled by join() or sort_near_to_far()
-  std::vector<int> bucket_of, bucket_start;
+  std::vector<long long> chunk_area;
+  std::vector<Candidate> visible;  // filled by join() or, near to far, by a NearToFarSort
 
   template <class Use>
   void for_each_visible(Use&& use) const {
@@ -78,27 +72,39 @@ struct Projection {
     std::size_t at = 0;
     for_each_visible([&](const Candidate& c) { visible[at++] = c; });
   }
-  // Into `visible` near to far by nearest_t. The order is only for speed: any order gives the same ids
-  // (nearer_hit's tie rule), so a counting sort into buckets of nearest_t (object order within one) does:
-  // two passes, where a full sort of 10⁵ would cost more than the cast it speeds up. Returns false, with
-  // nothing done, when there is no bound to sort by.
-  bool sort_near_to_far() {
-    const double lowest = lowest_t, highest = highest_t;
-    if (visible_count < 2 || !(highest > lowest) || !std::isfinite(highest - lowest)) return false;
-    const int buckets = std::clamp(visible_count / 8, 2, kMaxDepthBuckets);
+};
+
+// Candidates near to far by nearest_t. The order is only for speed: any order gives the same ids (nearer_hit's
+// tie rule), so a counting sort into buckets of nearest_t over [lowest, highest] (object order within one)
+// does: two passes, where a full sort would cost more than the cast it speeds up. The bands sort their own
+// candidates, each on its thread: a few thousand, in cache (one sort of 10⁵ candidates scattered them across
+// megabytes, on one thread: 13 % of a cast).
+struct NearToFarSort {
+  std::vector<int> bucket_of, bucket_start;
+
+  // Returns false, with nothing done, when the candidates' nearest_t span no range to sort by.
+  template <class ForEach>
+  bool operator()(ForEach&& for_each, int count, std::vector<Candidate>& out) {
+    double lowest = kNoHit<double>, highest = -kNoHit<double>;
+    for_each([&](const Candidate& c) {
+      lowest = std::min(lowest, c.nearest_t);
+      highest = std::max(highest, c.nearest_t);
+    });
+    if (count < 2 || !(highest > lowest) || !std::isfinite(highest - lowest)) return false;
+    const int buckets = std::clamp(count / 8, 2, kMaxDepthBuckets);
     const double per_unit = (buckets - 1) / (highest - lowest);
-    bucket_of.resize(std::size_t(visible_count));
+    bucket_of.resize(std::size_t(count));
     bucket_start.assign(std::size_t(buckets) + 1, 0);
     std::size_t at = 0;
-    for_each_visible([&](const Candidate& c) {
+    for_each([&](const Candidate& c) {
       const int bucket = int((c.nearest_t - lowest) * per_unit);
       bucket_of[at++] = bucket;
       ++bucket_start[std::size_t(bucket) + 1];
     });
     for (int b = 0; b < buckets; ++b) bucket_start[std::size_t(b) + 1] += bucket_start[std::size_t(b)];
-    visible.resize(std::size_t(visible_count));
+    out.resize(std::size_t(count));
     at = 0;
-    for_each_visible([&](const Candidate& c) { visible[std::size_t(bucket_start[std::size_t(bucket_of[at++])]++)] = c; });
+    for_each([&](const Candidate& c) { out[std::size_t(bucket_start[std::size_t(bucket_of[at++])]++)] = c; });
     return true;
   }
 };
@@ -135,12 +141,12 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
   w.projected.resize(std::size_t(count));
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
-  w.chunk_sums.assign(std::size_t(chunks), {});
+  w.chunk_area.assign(std::size_t(chunks), 0);
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
     PixelBox boxes[kBatch];
     int kept = 0;
-    Projection::ChunkSums sums;
+    long long area = 0;
     for (int batch = begin; batch < end; batch += kBatch) {
       const int size = std::min(kBatch, end - batch);
       const std::size_t at = std::size_t(batch);
@@ -161,23 +167,17 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
         c.object = int(i);
         const bool survives = !boxes[k].empty();
         kept += survives;
-        sums.area += boxes[k].pixel_count();  // 0 for a culled sphere
-        sums.lowest = std::min(sums.lowest, survives ? c.nearest_t : kNoHit<double>);
-        sums.highest = std::max(sums.highest, survives ? c.nearest_t : -kNoHit<double>);
+        area += boxes[k].pixel_count();  // 0 for a culled sphere
       }
     }
     w.kept_in_chunk[std::size_t(chunk)] = kept;
-    w.chunk_sums[std::size_t(chunk)] = sums;
+    w.chunk_area[std::size_t(chunk)] = area;
   });
   w.visible_count = 0;
   w.box_area = 0;
-  w.lowest_t = kNoHit<double>;
-  w.highest_t = -kNoHit<double>;
   for (std::size_t chunk = 0; chunk < w.kept_in_chunk.size(); ++chunk) {
     w.visible_count += w.kept_in_chunk[chunk];
-    w.box_area += w.chunk_sums[chunk].area;
-    w.lowest_t = std::min(w.lowest_t, w.chunk_sums[chunk].lowest);
-    w.highest_t = std::max(w.highest_t, w.chunk_sums[chunk].highest);
+    w.box_area += w.chunk_area[chunk];
   }
 }
 
@@ -234,6 +234,8 @@ struct DepthBuffer {
 struct alignas(64) BandScratch {
   BandPixels pixels;
   std::vector<unsigned char> ray_blocks;  // per row, which blocks of kRayBlock columns need rays
+  NearToFarSort sort;
+  std::vector<Candidate> sorted;          // the band's candidates near to far
   long long tests = 0, covered_pixels = 0;
 };
 
@@ -245,6 +247,7 @@ struct Workspace {
   Bands bands;
   std::vector<BandScratch> scratch;  // one per worker
   std::vector<double> column_x;
+  NearToFarSort sort;                // the footprint method's, over all candidates
 };
 
 // The calling thread's: its helpers write into it, each their own part.
@@ -305,13 +308,11 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const long long box_area = method == CastMethod::culled ? pixels * visible_count : projection.box_area;
   const bool near_to_far = options.near_to_far && method != CastMethod::culled &&
                            double(box_area) >= kNearToFarDepth * double(pixels) &&
-                           double(box_area) >= kNearToFarBoxPixels * double(visible_count) &&
-                           projection.sort_near_to_far();
-  if (method == CastMethod::binned && near_to_far)
-    bin_by_band([&](auto&& use) { for (const Candidate& c : visible) use(c); }, bands, workspace.bands);
-  else if (method == CastMethod::binned)
+                           double(box_area) >= kNearToFarBoxPixels * double(visible_count);
+  if (method == CastMethod::binned)  // in object order; each band sorts its own near to far
     bin_by_band([&](auto&& use) { projection.for_each_visible(use); }, bands, workspace.bands);
-  else if (!near_to_far)
+  else if (!near_to_far ||
+           !workspace.sort([&](auto&& use) { projection.for_each_visible(use); }, int(visible_count), projection.visible))
     projection.join();
   work += box_area;
   const int workers = work >= kThreadedWork ? threads : 1;
@@ -333,11 +334,20 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
         s.tests += test_sphere(c.centre, c.radius, c.nearest_t, c.object, options.formula,
                                PixelRun{0, columns, band_rows, columns}, s.pixels);
     } else {
-      // The band's candidates, near to far: its bin, or every visible object whose rows meet the band.
+      // The band's candidates, near to far: its bin (sorted here), or every visible object whose rows meet the
+      // band.
+      const auto for_each_in_bin = [&](auto&& use) {
+        for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
+          use(binned.entries[std::size_t(e)]);
+      };
+      const bool sort_bin =
+          method == CastMethod::binned && near_to_far &&
+          s.sort(for_each_in_bin, binned.start[std::size_t(band) + 1] - binned.start[std::size_t(band)], s.sorted);
       const auto for_each_candidate = [&](auto&& use) {
-        if (method == CastMethod::binned) {
-          for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
-            use(binned.entries[std::size_t(e)]);
+        if (sort_bin) {
+          for (const Candidate& c : s.sorted) use(c);
+        } else if (method == CastMethod::binned) {
+          for_each_in_bin(use);
         } else {
           for (const Candidate& c : visible)
             if (c.box.rows.last >= row_begin && c.box.rows.first < row_end) use(c);
