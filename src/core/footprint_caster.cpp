@@ -170,8 +170,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
         c.nearest_t = nearest_t(c.centre, c.radius);
         c.box = boxes[k];
         c.object = int(i);
-        const bool survives = !boxes[k].empty();
-        kept += survives;
+        kept += !boxes[k].empty();
         area += boxes[k].pixel_count();  // 0 for a culled sphere
       }
     }
@@ -341,13 +340,12 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
     } else {
       // The band's candidates, near to far: its bin (sorted here), or every visible object whose rows meet the
       // band.
+      const int bin_begin = method == CastMethod::binned ? binned.start[std::size_t(band)] : 0;
+      const int bin_size = method == CastMethod::binned ? binned.start[std::size_t(band) + 1] - bin_begin : 0;
       const auto for_each_in_bin = [&](auto&& use) {
-        for (int e = binned.start[std::size_t(band)]; e < binned.start[std::size_t(band) + 1]; ++e)
-          use(binned.entries[std::size_t(e)]);
+        for (int e = bin_begin; e < bin_begin + bin_size; ++e) use(binned.entries[std::size_t(e)]);
       };
-      const bool sort_bin =
-          method == CastMethod::binned && near_to_far &&
-          s.sort(for_each_in_bin, binned.start[std::size_t(band) + 1] - binned.start[std::size_t(band)], s.sorted);
+      const bool sort_bin = method == CastMethod::binned && near_to_far && s.sort(for_each_in_bin, bin_size, s.sorted);
       const auto for_each_candidate = [&](auto&& use) {
         if (sort_bin) {
           for (const Candidate& c : s.sorted) use(c);
@@ -358,14 +356,11 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
             if (c.box.rows.last >= row_begin && c.box.rows.first < row_end) use(c);
         }
       };
-
       // Rays only where a box needs them (unless the band is dense: kCandidatesPerRayMarking): blocks of
       // kRayBlock columns are marked, then each run of marked blocks gets its rays in one vectorised call (a few
       // calls a row, not one per object and row).
       const int blocks = (columns + kRayBlock - 1) / kRayBlock;
-      const long long band_candidates = method == CastMethod::binned
-                                            ? binned.start[std::size_t(band) + 1] - binned.start[std::size_t(band)]
-                                            : visible_count;
+      const long long band_candidates = method == CastMethod::binned ? bin_size : visible_count;
       const bool every_ray = band_candidates * kCandidatesPerRayMarking >= static_cast<long long>(band_rows) * columns;
       s.ray_blocks.assign(std::size_t(band_rows) * std::size_t(blocks), every_ray ? 1 : 0);
       if (!every_ray) for_each_candidate([&](const Candidate& c) {
