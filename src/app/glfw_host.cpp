@@ -14,6 +14,7 @@
 #include <string>
 
 #include "gl.h"
+#include "renderer_backend.h"
 
 namespace raycam::app {
 
@@ -155,7 +156,7 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetKeyCallback(window, queued_key_callback);  // over the backend's, which they call
   glfwSetCharCallback(window, queued_char_callback);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ui::start_renderer_backend();
   int exit_code = 0;
   {
     ui::FrameRenderer frame;

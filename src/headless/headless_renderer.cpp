@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gl.h"
+#include "renderer_backend.h"
 
 namespace raycam::headless {
 
@@ -32,7 +33,7 @@ HeadlessRenderer::HeadlessRenderer(int width, int height) : context_(std::make_u
   io.DisplaySize = ImVec2(float(width), float(height));
   for (int key = 0; key < ImGuiKey_COUNT; ++key) io.KeyMap[key] = key;  // our key indices are ImGui's own
   mouse_x_ = mouse_y_ = -FLT_MAX;                                       // no mouse: nothing hovered
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ui::start_renderer_backend();
   frame_ = std::make_unique<ui::FrameRenderer>();
 }
 

@@ -1,7 +1,6 @@
 #include "fonts.h"
 
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
 #include <cmath>
 #include <fstream>
@@ -10,6 +9,7 @@
 #include <fontconfig/fontconfig.h>
 #endif
 
+#include "renderer_backend.h"
 #include "text.h"
 
 namespace raycam::ui {
@@ -86,7 +86,7 @@ bool update_fonts(float font_scale) {
   io.Fonts->Build();
   io.FontGlobalScale = 1.0f;
   // The backend's next NewFrame re-creates its device objects, the font texture from the new atlas included.
-  ImGui_ImplOpenGL3_DestroyDeviceObjects();
+  restart_renderer_backend();
   g_built_scale = font_scale;
   g_built_for = ImGui::GetCurrentContext();
   return true;

@@ -77,6 +77,13 @@ int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take
 
 // The label beside the widget when both fit, else on its own line above a full-width widget: a label is
 // never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
+// Where the last item is, for the browser tests (state.widget_rects is set only in the page).
+void record_item_rect(const AppState& state, const std::string& id) {
+  if (!state.widget_rects) return;
+  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+  (*state.widget_rects)[id] = {low.x, low.y, high.x, high.y};
+}
+
 template <class Widget>
 bool labelled(const AppState& state, const char* label, Widget widget) {
   const LabelParts parts = label_parts(label);
@@ -93,10 +100,7 @@ bool labelled(const AppState& state, const char* label, Widget widget) {
     ImGui::SetNextItemWidth(avail);
     changed = widget(id.c_str());
   }
-  if (state.widget_rects) {
-    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
-    (*state.widget_rects)[id] = {low.x, low.y, high.x, high.y};
-  }
+  record_item_rect(state, id);
   return changed;
 }
 
@@ -561,7 +565,9 @@ void files_section(AppState& state) {
 
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
-  if (!section(tr("Lecture mode###lecture"), tr("Lecture###lecture"))) return;
+  const bool open = section(tr("Lecture mode###lecture"), tr("Lecture###lecture"));
+  record_item_rect(state, "###lecture");
+  if (!open) return;
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
   float& editing = state.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;

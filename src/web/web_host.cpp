@@ -15,6 +15,7 @@
 #include "raycam/scene_file.h"
 #include "text.h"
 #include "gl.h"
+#include "renderer_backend.h"
 
 namespace raycam::web {
 
@@ -146,7 +147,7 @@ void run_page(ui::AppState& state) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 300 es");
+  ui::start_renderer_backend();
   static ui::FrameRenderer frame;
   page.frame = &frame;
   emscripten_set_main_loop(tick, 0, false);

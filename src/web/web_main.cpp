@@ -135,6 +135,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   add("phi", o.phi);
   add("d", o.d);
   add("df", o.df);
+  add("font_scale", state.font_scale);
   json += "\"target\": [";
   for (int i = 0; i < 3; ++i) {
     std::snprintf(number, sizeof number, "%.17g", o.target[i]);
@@ -161,11 +162,9 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   };
   rect("image", layout.image.x, layout.image.y, layout.image.w, layout.image.h);
   if (state.widget_rects) {
-    const auto theta = state.widget_rects->find("###theta");
-    if (theta != state.widget_rects->end()) {
-      const raycam::ui::WidgetRect& r = theta->second;
-      rect("theta_slider", r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
-    }
+    json += "\"widgets\": {";
+    for (const auto& [id, r] : *state.widget_rects) rect(id.c_str(), r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    json += "\"end\": 0}, ";
   }
   const raycam::ui::CameraCheck& check = raycam::web::page_check();
   json += "\"check_status\": \"" + check.status() + "\", ";

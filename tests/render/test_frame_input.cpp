@@ -16,6 +16,7 @@
 
 #include "app_flags.h"
 #include "app_options.h"
+#include "gl.h"
 #include "headless_renderer.h"
 #include "panels.h"
 #include "raycam/ray_caster.h"
@@ -275,4 +276,36 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
           CHECK(rect->second.x <= layout.panel.x + layout.panel.w);
         }
       }
+}
+
+TEST_CASE("lecture mode: a font scale changed in a running window draws what a window started at it draws",
+          "[render][lecture]") {
+  // The fonts are rebuilt in the running window (the backend restarted): the frame at 3× must be the frame of
+  // a window that started at 3×, pixel for pixel, with no GL error on the way (Dear ImGui 1.86's
+  // DestroyDeviceObjects left buffers without storage: in the page a blank frame, under Mesa GL errors).
+  gl::RgbaImage after_change;
+  GLenum error_after_change = GL_NO_ERROR;
+  {
+    ui::AppState changed = state_for({"--view", "3d"});
+    headless::HeadlessRenderer renderer(1024, 768);
+    renderer.render_settled(changed);
+    changed.font_scale = 3.0f;
+    after_change = renderer.render_settled(changed);
+    error_after_change = glGetError();
+  }
+  ui::AppState started = state_for({"--view", "3d", "--font-scale", "3"});
+  headless::HeadlessRenderer fresh(1024, 768);
+  const gl::RgbaImage from_start = fresh.render_settled(started);
+  const ui::Rect status = fresh.layout().status;  // the frame and cast times there are measured: they differ
+  CHECK(error_after_change == GL_NO_ERROR);
+  REQUIRE(after_change.pixels.size() == from_start.pixels.size());
+  int differing = 0, compared = 0;
+  for (int y = 0; y < from_start.height; ++y)
+    for (int x = 0; x < from_start.width; ++x) {
+      if (y >= status.y && y < status.y + status.h) continue;
+      ++compared;
+      differing += !std::equal(from_start.at(x, y), from_start.at(x, y) + 4, after_change.at(x, y));
+    }
+  CHECK(compared > 0.8 * from_start.width * from_start.height);
+  CHECK(differing == 0);
 }

@@ -69,6 +69,62 @@ def stress_scenes(folder):
     return paths
 
 
+def distinct_colours(picture, box):
+    return len(set(picture.crop(box).getdata()))
+
+
+def lecture_at_three(page):
+    """The instructor's step: Lecture mode, font scale typed to 3 (ctrl+click on the slider, as ImGui offers).
+    The fonts are rebuilt in the running page: the console stays free of WebGL warnings, the page goes on
+    drawing frames, and the panel shows text (a blank or black panel has a few colours, text has hundreds)."""
+    from PIL import Image  # Debian's python3-pil
+    canvas = page.driver.find_element("id", "canvas")
+    size = page.call("return [Module.canvas.width, Module.canvas.height]")
+
+    def at(rect):  # the middle of a widget's rectangle, as an offset from the canvas's centre
+        x, y, w, h = rect
+        return ActionChains(page.driver).move_to_element_with_offset(canvas, x + w / 2 - size[0] / 2,
+                                                                     y + h / 2 - size[1] / 2)
+
+    def panel_colours(name):
+        path = os.path.join(tempfile.gettempdir(), "raycam-web-%d-%s.png" % (os.getpid(), name))
+        page.driver.save_screenshot(path)
+        shown = shown_frame(page)
+        picture = Image.open(path).convert("RGB")
+        os.remove(path)
+        x, y, w, h = shown["image"]
+        return distinct_colours(picture, (0, 0, int(x), picture.height))
+
+    page.console()  # the log so far is read; what follows is the change's
+    header = shown_frame(page)["widgets"].get("###lecture")
+    check(header is not None, "the Lecture mode header is in the panel")
+    if header is None:
+        return
+    at(header).click().perform()
+    slider = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).widgets",
+                      lambda w: "###font_scale" in w)["###font_scale"]
+    before = panel_colours("before")
+    at(slider).key_down(Keys.CONTROL).pause(0.2).click().pause(0.2).key_up(Keys.CONTROL).perform()
+    time.sleep(0.3)
+    ActionChains(page.driver).key_down(Keys.CONTROL).send_keys("a").key_up(Keys.CONTROL).perform()
+    for key in ("3", Keys.ENTER):  # held 0.1 s each: ImGui 1.86 misses a key released within its frame
+        ActionChains(page.driver).key_down(key).pause(0.1).key_up(key).perform()
+    scale = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).font_scale",
+                     3.0)
+    check(scale == 3.0, "Lecture mode: the font scale typed to 3 is taken (%s)" % scale)
+    frames = "return Module.ccall('raycam_frames_drawn', 'number', [], [])"
+    drawn = page.call(frames)
+    ActionChains(page.driver).move_to_element_with_offset(canvas, 0, 0).perform()
+    check(wait_for(page, frames, lambda n: n > drawn, 5) > drawn, "  ... and the page goes on drawing frames")
+    time.sleep(0.5)
+    after = panel_colours("after")
+    check(after > 0.5 * before, "  ... and its panel shows text (%d colours; %d at 1x)" % (after, before))
+    console = page.console()
+    gl = [entry["message"] for entry in console if "WebGL" in entry["message"] or "GL_" in entry["message"]]
+    check(gl == [] and errors_in(console) == [],
+          "  ... with no WebGL warning nor error in the console (%d: %s)" % (len(gl), gl[:2]))
+
+
 def native_ids(scene, folder):
     out = os.path.join(folder, "native_ids.txt")
     run = subprocess.run([cli, "render", "--scene", scene, "--ids", out], capture_output=True, text=True)
@@ -226,7 +282,7 @@ with tempfile.TemporaryDirectory() as scratch:
         # θ dragged on its slider with the mouse: in each frame the M_d table shows the matrix of the θ the
         # state holds (computed here from the handout's formula), and the image is that camera's colour map.
         canvas = page.driver.find_element("id", "canvas")
-        sx, sy, sw, sh = shown["theta_slider"]
+        sx, sy, sw, sh = shown["widgets"]["###theta"]
         start = (sx + sw / 2 - canvas_size[0] / 2, sy + sh / 2 - canvas_size[1] / 2)  # offsets from the centre
         ActionChains(page.driver).move_to_element_with_offset(canvas, *start).click_and_hold().perform()
         thetas, agree, same_map = [], 0, 0
@@ -336,11 +392,12 @@ with tempfile.TemporaryDirectory() as scratch:
     finally:
         page.close()
 
-    french = Page(web_folder)
+    french = Page(web_folder, width=1024, height=768)  # a lecture hall's projector
     try:
         french.open("?lang=fr")
         title = wait_for(french, "return document.title", lambda t: "raycam" in t)
         check("démonstration" in title, "?lang=fr: French texts (title %r)" % title)
+        lecture_at_three(french)
     finally:
         french.close()
 
