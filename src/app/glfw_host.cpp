@@ -136,7 +136,17 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "raycam", nullptr, nullptr);
+  // A window larger than the screen is cut at its edge (the default 1280×720 on a 1024×768 projector): the
+  // size asked for is fitted into the primary monitor's work area, and the layout follows the window's size.
+  int width = options.width, height = options.height;
+  int area_x = 0, area_y = 0, area_width = 0, area_height = 0;
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor())
+    glfwGetMonitorWorkarea(monitor, &area_x, &area_y, &area_width, &area_height);
+  if (area_width > 0 && area_height > 0) {
+    width = std::min(width, area_width);
+    height = std::min(height, area_height);
+  }
+  GLFWwindow* window = glfwCreateWindow(width, height, "raycam", nullptr, nullptr);
   if (!window) {
     glfwTerminate();
     std::fprintf(stderr, "raycam: cannot create a GL 3.3 core window\n");

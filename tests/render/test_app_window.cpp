@@ -57,6 +57,22 @@ TEST_CASE("the GLFW window's screenshot equals the headless shot", "[app][xvfb]"
   }
 }
 
+TEST_CASE("the window fits a screen smaller than the size asked for", "[app][xvfb]") {
+  // A 1024×768 projector: the default 1280×720 window would be cut at the right-hand edge.
+  const std::string shot = scratch("app_small_screen.png");
+  REQUIRE(run(std::string(XVFB_RUN) + " -a -s '-screen 0 1024x768x24' " + RAYCAM_APP + " --frames 3 --screenshot " +
+              shot) == 0);
+  const gl::RgbaImage app = test::load_png(shot);
+  CHECK(app.width == 1024);
+  CHECK(app.height == 720);
+  // Asked for more than the screen on both sides: the screen's size.
+  REQUIRE(run(std::string(XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + RAYCAM_APP +
+              " --width 1600 --height 1200 --frames 3 --screenshot " + shot) == 0);
+  const gl::RgbaImage small = test::load_png(shot);
+  CHECK(small.width == 800);
+  CHECK(small.height == 600);
+}
+
 namespace {
 struct WindowRun {
   int exit_code = -1;

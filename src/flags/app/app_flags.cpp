@@ -35,9 +35,9 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
   add_view_options(command, options.view);
   add_caster_options(command, options.cast_options, options.accuracy);
   CLI::Option_group* group = command.add_option_group("App", "The window, the inspector and lecture mode");
-  add_checked_option<int>(*group, "--width", "W", "window width in pixels (default 1280)",
+  add_checked_option<int>(*group, "--width", "W", "window width in pixels (default 1280; at most the screen's)",
                           integer_in(320, 7680), [&options](int w) { options.width = w; });
-  add_checked_option<int>(*group, "--height", "H", "window height in pixels (default 720)",
+  add_checked_option<int>(*group, "--height", "H", "window height in pixels (default 720; at most the screen's)",
                           integer_in(240, 4320), [&options](int h) { options.height = h; });
   add_checked_option<ui::PixelIndex>(
       *group, "--inspect", "COL,ROW", "pin the ray inspector on a pixel (2D: COL is the bar column)",
