@@ -51,11 +51,18 @@ void run_pending_tests(IntersectFormula formula, BandPixels& band) {
   PendingTests& q = band.pending;
   if (formula == IntersectFormula::naive) pending_hits<IntersectFormula::naive>(q);
   else pending_hits<IntersectFormula::stable>(q);
-  for (int i = 0; i < q.count; ++i) {  // in order: two tests of one pixel must not race
+  // In order: two tests of one pixel must not race. Locals, and selects without a branch: whether a test
+  // wins is a coin toss (a branch on it was mispredicted, the loop a sixth of a cast at K = 10⁵, 1024²).
+  double* __restrict depth = band.depth.data();
+  int* __restrict id = band.id.data();
+  const int count = q.count;
+  for (int i = 0; i < count; ++i) {
     const std::size_t p = std::size_t(q.pixel[i]);
-    const bool nearer = nearer_hit(q.t[i], q.object[i], band.depth[p], band.id[p]);
-    band.depth[p] = nearer ? q.t[i] : band.depth[p];
-    band.id[p] = nearer ? q.object[i] : band.id[p];
+    const double t = q.t[i], held = depth[p];
+    const int object = q.object[i], held_id = id[p];
+    const bool nearer = (t < held) | ((t == held) & (object < held_id));  // nearer_hit, both sides evaluated
+    depth[p] = nearer ? t : held;
+    id[p] = nearer ? object : held_id;
   }
   q.count = 0;
 }

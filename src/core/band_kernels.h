@@ -77,24 +77,30 @@ inline int queue_row_tests(const glm::dvec3& centre, double radius, double neare
   PendingTests& q = band.pending;
   if (q.count + count > PendingTests::kCapacity) run_pending_tests(formula, band);
   const int before = q.count;
+  // Locals: the byte stores to `covered` may alias anything, and made the compiler reload every column's
+  // address and the count at each pixel.
+  const double *ox = band.ox.data(), *oy = band.oy.data(), *oz = band.oz.data(), *dx = band.dx.data(),
+               *dy = band.dy.data(), *dz = band.dz.data(), *depth = band.depth.data();
+  unsigned char* covered = band.covered.data();
+  int i = before;
   for (std::size_t p = at; p < at + std::size_t(count); ++p) {
-    const int i = q.count;
-    q.ox[i] = band.ox[p];
-    q.oy[i] = band.oy[p];
-    q.oz[i] = band.oz[p];
-    q.dx[i] = band.dx[p];
-    q.dy[i] = band.dy[p];
-    q.dz[i] = band.dz[p];
+    q.ox[i] = ox[p];
+    q.oy[i] = oy[p];
+    q.oz[i] = oz[p];
+    q.dx[i] = dx[p];
+    q.dy[i] = dy[p];
+    q.dz[i] = dz[p];
     q.cx[i] = centre.x;
     q.cy[i] = centre.y;
     q.cz[i] = centre.z;
     q.radius[i] = radius;
     q.pixel[i] = int(p);
     q.object[i] = object;
-    q.count += band.depth[p] >= nearest_t;  // written always, kept only if the pixel could change
-    band.covered[p] = 1;
+    i += depth[p] >= nearest_t;  // written always, kept only if the pixel could change
+    covered[p] = 1;
   }
-  return q.count - before;
+  q.count = i;
+  return i - before;
 }
 
 // Runs of at least kVectorRun pixels a row: each row's tests vectorised in place (as many pixels at once as a
