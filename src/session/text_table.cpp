@@ -340,11 +340,13 @@ const std::vector<Translation>& translation_table() {
        "vérifié à chaque changement (docs/check.md)."},
       {"program###check_command", "programme###check_command"},
       {"A page cannot run your program: download this camera's case, run your program on it (python3 "
-       "my_camera.py < case.json > answer.json), then give the answer file.",
+       "my_camera.py < raycam-case.json > answer.json), then give the answer file.",
        "Une page ne peut pas lancer votre programme : téléchargez le cas de cette caméra, lancez votre "
-       "programme dessus (python3 ma_camera.py < case.json > answer.json), puis donnez le fichier de réponse."},
+       "programme dessus (python3 ma_camera.py < raycam-case.json > answer.json), puis donnez le fichier de réponse."},
       {"Download this camera's case###check_case", "Télécharger le cas de cette caméra###check_case"},
       {"Give the answer file…###check_answer", "Donner le fichier de réponse…###check_answer"},
+      {"Open a scene file…###open_scene_file", "Ouvrir un fichier de scène…###open_scene_file"},
+      {"Open…###open_scene_file", "Ouvrir…###open_scene_file"},
       {"answer file: %s", "fichier de réponse : %s"},
       {"an answer file, not a program###check_is_file",
        "un fichier de réponse, pas un programme###check_is_file"},

@@ -22,7 +22,7 @@ void check_section(CameraCheck& check, double now) {
   CheckRequest& request = check.request();
 #ifdef __EMSCRIPTEN__  // a page runs no program: the case goes out as a download, the answer file comes back
   wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
-                           "it (python3 my_camera.py < case.json > answer.json), then give the answer file."));
+                           "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
   if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
   if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
   if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));

@@ -29,7 +29,7 @@ void mistakes_section(AppState& state);
 void caster_section(AppState& state);
 void files_section(AppState& state);
 void lecture_section(AppState& state);
-void status_line(const AppState& state);
+void status_line(AppState& state);
 // The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
 void status_counters(const AppState& state);
 // Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).

@@ -57,6 +57,30 @@ void install_wake_callbacks(GLFWwindow* window) {
   glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
 }
 
+// emscripten 3.1.6's GLFW hands the scroll callback the browser's raw deltaX and deltaY: pixels (or lines, or
+// pages), positive downwards, where the desktop's GLFW gives notches, positive upwards. One notch of a mouse
+// (100 pixels in Chromium) took d from 8 to its limit, the wrong way. The page listens for the wheel itself:
+// notches (100 pixels, 3 lines or a page each), the desktop's signs, and shift+wheel kept vertical (Chromium
+// turns it into a horizontal scroll, where the desktop's shift+wheel changes d_f); then ImGui's callback, as
+// GLFW would call it (it chains to the wake callback).
+void listen_for_the_wheel() {
+  EM_ASM({
+    const canvas = Module.canvas;
+    canvas.removeEventListener('wheel', GLFW.onMouseWheel, true);
+    canvas.removeEventListener('mousewheel', GLFW.onMouseWheel, true);
+    canvas.addEventListener('wheel', function(event) {
+      const per_notch = [100, 3, 1][event.deltaMode] || 100;
+      let x = -event.deltaX / per_notch, y = -event.deltaY / per_notch;
+      if (event.shiftKey && y === 0) {
+        y = x;
+        x = 0;
+      }
+      Module.ccall('raycam_page_wheel', null, ['number', 'number'], [x, y]);
+      event.preventDefault();  // the page itself does not scroll
+    }, {capture: true, passive: false});
+  });
+}
+
 ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
 
 void tick() {
@@ -73,6 +97,10 @@ void tick() {
     } catch (const std::exception& error) {
       ui::set_message(*page.state, ui::MessageSource::general, true, ui::tr_reason(error.what()));
     }
+  }
+  if (page.state->pick_scene_file) {  // the status line's button
+    page.state->pick_scene_file = false;
+    EM_ASM(document.getElementById('picker').click(););  // within the click's user activation
   }
   if (request.pick_answer) {
     request.pick_answer = false;
@@ -147,6 +175,7 @@ void run_page(ui::AppState& state) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  listen_for_the_wheel();
   ui::start_renderer_backend();
   static ui::FrameRenderer frame;
   page.frame = &frame;
@@ -154,3 +183,8 @@ void run_page(ui::AppState& state) {
 }
 
 }  // namespace raycam::web
+
+// The page's wheel listener (listen_for_the_wheel), in notches with the desktop's signs.
+extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_wheel(double x, double y) {
+  ImGui_ImplGlfw_ScrollCallback(raycam::web::page.window, x, y);
+}

@@ -2,6 +2,7 @@
 // and the browser's language, the frame is the desktop's (web_host.cpp), and a few functions are callable
 // from JavaScript (the file picker, the browser tests).
 #include <emscripten.h>
+#include <imgui_internal.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -116,6 +117,12 @@ EMSCRIPTEN_KEEPALIVE double raycam_frames_drawn() { return double(raycam::web::p
 
 EMSCRIPTEN_KEEPALIVE const char* raycam_status_message() { return raycam::web::page_state().message.c_str(); }
 
+// 1 when the status line's window shows a scrollbar (what it holds is taller than the line).
+EMSCRIPTEN_KEEPALIVE int raycam_status_line_scrolls() {
+  const ImGuiWindow* status = ImGui::FindWindowByName("##status");
+  return status && (status->ScrollbarY || status->ScrollMax.y > 0.0f) ? 1 : 0;
+}
+
 // What the last frame showed, as JSON, for the browser tests: the 3D camera's parameters, the M_d its table
 // showed (column-major), whether the image it drew is the colour map of the camera now (the map's version
 // and a fresh cast of that camera), where the image was and the θ slider.
@@ -161,6 +168,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
     json += std::string("\"") + key + "\": " + number + ", ";
   };
   rect("image", layout.image.x, layout.image.y, layout.image.w, layout.image.h);
+  rect("overhead", layout.overhead.x, layout.overhead.y, layout.overhead.w, layout.overhead.h);
   if (state.widget_rects) {
     json += "\"widgets\": {";
     for (const auto& [id, r] : *state.widget_rects) rect(id.c_str(), r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);

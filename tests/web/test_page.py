@@ -17,6 +17,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_driver import Page  # noqa: E402
 
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
+from selenium.webdriver.common.actions.wheel_input import ScrollOrigin  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
 
 web_folder, cli, scenes_folder = sys.argv[1:4]
@@ -119,10 +120,33 @@ def lecture_at_three(page):
     time.sleep(0.5)
     after = panel_colours("after")
     check(after > 0.5 * before, "  ... and its panel shows text (%d colours; %d at 1x)" % (after, before))
+    open_button_works(page, "1024×768, 3×")
     console = page.console()
     gl = [entry["message"] for entry in console if "WebGL" in entry["message"] or "GL_" in entry["message"]]
     check(gl == [] and errors_in(console) == [],
           "  ... with no WebGL warning nor error in the console (%d: %s)" % (len(gl), gl[:2]))
+
+
+def open_button_works(page, where):
+    """The status line's Open a scene file… button: beside the line's text, not over it, inside the canvas;
+    a click asks the browser for a file (the picker's click(), recorded here: a real file dialog cannot be
+    driven headless)."""
+    widgets = shown_frame(page)["widgets"]
+    button, text = widgets.get("###open_scene_file"), widgets.get("###status_text")
+    size = page.call("return [Module.canvas.width, Module.canvas.height]")
+    check(button is not None and text is not None and text[0] + text[2] <= button[0] and
+          button[0] + button[2] <= size[0] and button[1] + button[3] <= size[1] and
+          page.call("return Module.ccall('raycam_status_line_scrolls', 'number', [], [])") == 0,
+          "%s: the Open a scene file button is beside the status line's text, in the canvas, the line"
+          " with no scrollbar (%s, text %s)"
+          % (where, button, text))
+    if button is None:
+        return
+    page.call("window.picker_clicks = 0; document.getElementById('picker').click = () => ++window.picker_clicks;")
+    canvas = page.driver.find_element("id", "canvas")
+    ActionChains(page.driver).move_to_element_with_offset(
+        canvas, int(button[0] + button[2] / 2 - size[0] / 2), int(button[1] + button[3] / 2 - size[1] / 2)).click().perform()
+    check(wait_for(page, "return window.picker_clicks", 1, 5) == 1, "  ... and a click on it opens the file picker")
 
 
 def native_ids(scene, folder):
@@ -350,6 +374,25 @@ with tempfile.TemporaryDirectory() as scratch:
               "  ... and with one pixel changed fails on that one pixel (%s, %s wrong)"
               % (frame["check_status"], frame["check_wrong_pixels"]))
 
+        # The wheel over the overhead view, as a mouse's notches come from Chromium (100 pixels each): each notch
+        # multiplies d by 0.9 (up) or 1/0.9 (down), the desktop's step; the page does not scroll.
+        ox, oy, ow, oh = shown["overhead"]
+        over_view = ScrollOrigin.from_element(canvas, int(ox + ow / 2 - canvas_size[0] / 2), int(oy + oh / 2 - canvas_size[1] / 2))
+        ActionChains(page.driver).move_to_element_with_offset(canvas, ox + ow / 2 - canvas_size[0] / 2,
+                                                              oy + oh / 2 - canvas_size[1] / 2).perform()
+        ratios = []
+        for notch in (100, 100, -100):
+            before = shown_frame(page)["d"]
+            drawn = page.call(frames)
+            ActionChains(page.driver).scroll_from_origin(over_view, 0, notch).perform()
+            wait_for(page, frames, lambda n: n > drawn + 1, 5)
+            ratios.append(shown_frame(page)["d"] / before)
+        check(all(abs(r - e) < 1e-9 for r, e in zip(ratios, (1 / 0.9, 1 / 0.9, 0.9))),
+              "the wheel over the overhead view: a notch down multiplies d by 1/0.9, up by 0.9 (%s)"
+              % ["%.4f" % r for r in ratios])
+        check(page.call("return window.scrollY") == 0, "  ... and the page itself does not scroll")
+
+        open_button_works(page, "1280×800, 1×")
         with open(os.path.join(scenes_folder, "symmetric3d.json")) as text:
             open_in_page(page, "picked3d.json", text.read())
         title = wait_for(page, "return document.title", lambda t: "picked3d.json" in t)
