@@ -39,6 +39,9 @@ ImGuiStyle make_style(bool high_contrast, float scale) {
     c[ImGuiCol_TextDisabled] = {0.62f, 0.62f, 0.66f, 1};
     style.FrameBorderSize = 0.0f;
   }
+  // Opaque: the help window and the drop-down lists lie over the panel, whose text showed through them.
+  c[ImGuiCol_WindowBg].w = 1.0f;
+  c[ImGuiCol_PopupBg].w = 1.0f;
   // A slider's grab a few pixels wide, under its value's digits: ImGui's 10 px (30 at 3×) covered one.
   style.GrabMinSize = 4.0f;
   // Paddings grow slower than the text: at 3× the text needs the room, not the margins around it.

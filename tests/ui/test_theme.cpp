@@ -56,3 +56,13 @@ TEST_CASE("every text colour of both themes has a contrast of at least 4.5:1 on 
       }
   }
 }
+
+TEST_CASE("windows and popups are opaque: what lies under the help window or a drop-down list never shows through",
+          "[ui][theme]") {
+  for (const bool high_contrast : {false, true}) {
+    const ImGuiStyle style = make_style(high_contrast, 1.0f);
+    INFO((high_contrast ? "high contrast" : "dark"));
+    CHECK(style.Colors[ImGuiCol_WindowBg].w == 1.0f);
+    CHECK(style.Colors[ImGuiCol_PopupBg].w == 1.0f);
+  }
+}
