@@ -13,6 +13,9 @@
 
 namespace raycam::ui {
 
+// The font scale a start-up option accepts (--font-scale, the page's ?scale=); the slider spans 0.75–3.
+inline constexpr double kFontScaleOptionMin = 0.5, kFontScaleOptionMax = 4.0;
+
 struct AppOptions {
   ViewFlags view;  // --scene --mode/--view --target --d --theta --phi --df --res --size
   int width = 1280, height = 720;

@@ -208,22 +208,53 @@ int main() {
   chdir("/home/web_user");  // the app writes relative paths here: web_host.cpp offers them as downloads
   raycam::ui::AppOptions options;
   options.demo_on_bad_scene = true;
-  static raycam::ui::AppState state;
-  try {
+  // A bad part of the address is shown in the page, the first one's reason; the other parts still apply.
+  std::string error;
+  const auto apply = [&error](auto&& part) {
+    try {
+      part();
+    } catch (const std::exception& reason) {
+      if (error.empty()) error = reason.what();
+    }
+  };
+  apply([&] {
     const std::string lang = query_value("lang");
-    options.language = lang.empty() ? raycam::language_from_code(browser_language()).value_or(raycam::Language::en)
-                                    : raycam::parse_language_flag(lang, "?lang");
-    const std::string scene = query_value("scene");
-    if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
+    if (!lang.empty()) options.language = raycam::parse_language_flag(lang, "?lang");
+  });
+  if (!options.language)
+    options.language = raycam::language_from_code(browser_language()).value_or(raycam::Language::en);
+  apply([&] {
+    const std::string scale = query_value("scale");  // as --font-scale: the projector's size in a bookmark
+    if (scale.empty()) return;
+    char* end = nullptr;
+    const double value = std::strtod(scale.c_str(), &end);
+    if (end == scale.c_str() || *end != '\0' || !(value >= raycam::ui::kFontScaleOptionMin) ||
+        !(value <= raycam::ui::kFontScaleOptionMax)) {
+      char reason[160];  // the words of --font-scale's error (tr_reason translates them)
+      std::snprintf(reason, sizeof reason, "?scale: expected a number in [%g, %g], got '%s'",
+                    raycam::ui::kFontScaleOptionMin, raycam::ui::kFontScaleOptionMax, scale.substr(0, 40).c_str());
+      throw std::invalid_argument(reason);
+    }
+    options.font_scale = float(value);
+  });
+  const std::string scene = query_value("scene");
+  if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
+  static raycam::ui::AppState state;
+  bool made = false;
+  apply([&] {
     state = raycam::ui::make_app_state(options);
-    static std::map<std::string, raycam::ui::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
-    state.widget_rects = &widget_rects;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "raycam: error: %s\n", error.what());
-    options.language.reset();
+    made = true;
+  });
+  if (!made) {  // the demo scene then
     options.view.scene_path.reset();
     state = raycam::ui::make_app_state(options);
-    state.message = raycam::ui::tr_reason(error.what());
+  }
+  static std::map<std::string, raycam::ui::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
+  state.widget_rects = &widget_rects;
+  if (!error.empty()) {
+    std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
+    state.message = raycam::ui::tr_reason(error);
+    state.message_is_error = true;
   }
   raycam::web::run_page(state);
 }

@@ -441,6 +441,20 @@ with tempfile.TemporaryDirectory() as scratch:
         title = wait_for(french, "return document.title", lambda t: "raycam" in t)
         check("démonstration" in title, "?lang=fr: French texts (title %r)" % title)
         lecture_at_three(french)
+        # The projector's size in a bookmark: ?scale= as --font-scale, with its range and words.
+        french.open("?lang=fr&scale=2")
+        frame = json.loads(wait_for(french, "return Module.ccall('raycam_shown_frame', 'string', [], [])",
+                                    lambda f: f and '"font_scale": 2,' in f))
+        check(frame["font_scale"] == 2 and "démonstration" in french.call("return document.title"),
+              "?lang=fr&scale=2: French at font scale 2 (%s)" % frame["font_scale"])
+        french.open("?lang=fr&scale=9")
+        message = wait_for(french, "return Module.ccall('raycam_status_message', 'string', [], [])",
+                           lambda m: "?scale" in m)
+        frame = shown_frame(french)
+        check("?scale" in message and "[0.5, 4]" in message and "9" in message and frame["font_scale"] == 1 and
+              "démonstration" in french.call("return document.title"),
+              "?scale=9: an error naming ?scale and its range, font scale 1, the rest of the address applied (%r)"
+              % message)
     finally:
         french.close()
 

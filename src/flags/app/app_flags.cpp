@@ -68,7 +68,7 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
       ->type_name("NAME")
       ->check(checked(mistake));
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",
-                             number_in({0.5, 4.0}),
+                             number_in({ui::kFontScaleOptionMin, ui::kFontScaleOptionMax}),
                              [&options](double scale) { options.font_scale = float(scale); });
   add_checked_option<int>(
       *group, "--lang", "fr|en", "language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)",
