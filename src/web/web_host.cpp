@@ -26,6 +26,7 @@ struct Page {
   WebHost* host = nullptr;
   ui::FrameRenderer* frame = nullptr;
   Downloads* downloads = nullptr;
+  std::string downloaded_case;  // the JSON of Check my camera's last case download
 };
 Page page;
 
@@ -93,7 +94,9 @@ void tick() {
   if (request.download_case) {
     request.download_case = false;
     try {
-      save_scene_file(ui::camera_case(*page.state), "raycam-case.json");
+      const SceneFile downloaded = ui::camera_case(*page.state);
+      save_scene_file(downloaded, "raycam-case.json");
+      page.downloaded_case = scene_to_json(downloaded);
     } catch (const std::exception& error) {
       ui::set_message(*page.state, ui::MessageSource::general, true, ui::tr_reason(error.what()));
     }
@@ -118,6 +121,9 @@ void tick() {
 ui::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
 ui::CameraCheck& page_check() { return page.frame->check(); }
+bool camera_changed_since_case_download() {
+  return !page.downloaded_case.empty() && scene_to_json(ui::camera_case(*page.state)) != page.downloaded_case;
+}
 void wake_page() { page.host->note_event(); }
 
 void WebHost::note_event() {

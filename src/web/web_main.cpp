@@ -185,6 +185,13 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
 // on screen, as the desktop grades an answer file.
 EMSCRIPTEN_KEEPALIVE void raycam_check_answer(const char* path) {
   raycam::ui::CameraCheck& check = raycam::web::page_check();
+  // An answer is graded against the camera on screen (as on the desktop): if that is no longer the case the
+  // student downloaded, the verdict would blame the program for the move. Said at once, beside the verdict.
+  if (raycam::web::camera_changed_since_case_download())
+    raycam::ui::set_message(raycam::web::page_state(), raycam::ui::MessageSource::general, true,
+                            raycam::ui::tr("The camera or the scene changed since the case was downloaded: this "
+                                           "answer is graded against the camera on screen. Download this camera's "
+                                           "case again and run your program on it."));
   check.set_command(path, true);
   check.request().check_now = true;
   raycam::web::wake_page();

@@ -56,7 +56,7 @@ std::string unescape(const std::string& s) {
 
 std::vector<std::filesystem::path> ui_sources() {
   std::vector<std::filesystem::path> files;
-  for (const char* dir : {"src/session", "src/ui", "src/app"})
+  for (const char* dir : {"src/session", "src/ui", "src/app", "src/web"})
     for (const auto& entry :
          std::filesystem::directory_iterator(std::filesystem::path(RAYCAM_SOURCE_DIR) / dir))
       if (entry.path().extension() == ".cpp" && entry.path().filename() != "text_table.cpp")
