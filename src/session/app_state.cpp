@@ -161,6 +161,10 @@ std::string cannot_open_message(const std::string& path, const std::string& reas
 }
 
 bool open_scene(AppState& state, const std::string& path) {
+  if (path.empty()) {  // Open with an empty box: what to do, not "cannot open: : ..."
+    set_message(state, MessageSource::files, true, tr("type a scene file's path in the box, then Open"));
+    return false;
+  }
   try {
     ViewFlags flags;
     flags.scene_path = path;

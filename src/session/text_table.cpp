@@ -347,6 +347,8 @@ const std::vector<Translation>& translation_table() {
       {"Give the answer file…###check_answer", "Donner le fichier de réponse…###check_answer"},
       {"Open a scene file…###open_scene_file", "Ouvrir un fichier de scène…###open_scene_file"},
       {"Open…###open_scene_file", "Ouvrir…###open_scene_file"},
+      {"type a scene file's path in the box, then Open",
+       "tapez le chemin d'un fichier de scène dans la case, puis Ouvrir"},
       {"The camera or the scene changed since the case was downloaded: this answer is graded against the camera "
        "on screen. Download this camera's case again and run your program on it.",
        "La caméra ou la scène a changé depuis le téléchargement du cas : cette réponse est notée avec la caméra "

@@ -32,6 +32,18 @@ struct Scratch : test::ScratchDir {
 };
 }  // namespace
 
+TEST_CASE("Open with an empty box says what to type, and changes nothing else", "[ui][files]") {
+  ui::AppState state = state_for({"--theta", "40"});
+  const double theta = state.orbit3d.theta;
+  const std::string title = state.window_title;
+  CHECK_FALSE(ui::open_scene(state, ""));
+  CHECK(state.message_is_error);
+  CHECK(state.message.find("path") != std::string::npos);
+  CHECK(state.message.find(": :") == std::string::npos);
+  CHECK(state.orbit3d.theta == theta);
+  CHECK(state.window_title == title);
+}
+
 TEST_CASE("a failed open leaves the scene, the camera and the Open box as they were, and says why",
           "[ui][files]") {
   Scratch scratch;
