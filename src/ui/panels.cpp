@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/constants.hpp>
@@ -75,24 +76,25 @@ std::vector<std::string> lines_between_words(const std::string& text, float widt
 
 int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take_tab_key)
 
-// The label beside the widget when both fit, else on its own line above a full-width widget: a label is
-// never cut, in any language at any font scale. `label` may carry an ImGui "###id" (kept either way).
-// Where the last item is, for the browser tests (state.widget_rects is set only in the page).
+// Where the last item is, for the tests (state.widget_rects is null in the app).
 void record_item_rect(const AppState& state, const std::string& id) {
   if (!state.widget_rects) return;
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   (*state.widget_rects)[id] = {low.x, low.y, high.x, high.y};
 }
 
+// The label beside the widget when both fit (the widget keeps at least `widget_min_width`), else on its own
+// line above a full-width widget: a label is never cut, in any language at any font scale. `label` may carry
+// an ImGui "###id" (kept either way).
 template <class Widget>
-bool labelled(const AppState& state, const char* label, Widget widget) {
+bool labelled(const AppState& state, const char* label, Widget widget, float widget_min_width = 0.0f) {
   const LabelParts parts = label_parts(label);
   const std::string& shown = parts.shown;
   const std::string& id = parts.id;
   const float avail = ImGui::GetContentRegionAvail().x;
   const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
   bool changed = false;
-  if (label_width <= avail * 0.45f) {
+  if (label_width <= avail * 0.45f && avail - label_width >= widget_min_width) {
     ImGui::SetNextItemWidth(avail - label_width);
     changed = widget((shown + id).c_str());  // the same id as above its widget
   } else {
@@ -114,11 +116,36 @@ bool slider_double(const AppState& state, const char* label, double& value, doub
 }
 
 // radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
+// The width drag_doubles' `count` fields need to show a coordinate such as -10.00 whole.
+float drag_doubles_width(int count) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  return count * (ImGui::CalcTextSize("-10.00").x + 2 * style.FramePadding.x) + (count - 1) * style.ItemInnerSpacing.x;
+}
+
 // `count` doubles dragged in one widget, clamped to ±1000 (the target C).
 bool drag_doubles(const char* label, double* values, int count) {
   static const double lo = -1000.0, hi = 1000.0;
   return ImGui::DragScalarN(label, ImGuiDataType_Double, values, count, 0.05f, &lo, &hi, "%.2f",
                             ImGuiSliderFlags_AlwaysClamp);
+}
+
+// The target C's coordinates: side by side where each shows -10.00 whole, else (1024 px at 3×) the label
+// above and one full-width field a line ("###target0", "###target1", ...).
+bool target_fields(const AppState& state, double* values, int count) {
+  const char* label = tr("target C###target");
+  if (ImGui::GetContentRegionAvail().x >= drag_doubles_width(count))
+    return labelled(state, label, [&](const char* l) { return drag_doubles(l, values, count); },
+                    drag_doubles_width(count));
+  wrapped_between_words(label_parts(label).shown);
+  bool changed = false;
+  for (int i = 0; i < count; ++i) {
+    const std::string id = "###target" + std::to_string(i);
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    changed |= drag_doubles(id.c_str(), values + i, 1);
+    record_item_rect(state, id);
+    if (i == 0) record_item_rect(state, "###target");
+  }
+  return changed;
 }
 
 bool slider_degrees(const AppState& state, const char* label, double& radians, double lo_deg, double hi_deg) {
@@ -252,9 +279,7 @@ void camera_section(AppState& state) {
   changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   if (is_2d) {
     // The target's coordinates are doubles in the widget too, as the sliders'.
-    if (labelled(state, tr("target C###target"),
-                 [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit2d.target), 2); }))
-      changed = true;
+    if (target_fields(state, glm::value_ptr(state.orbit2d.target), 2)) changed = true;
     int n = state.max_pixels_2d;
     if (labelled(state, tr("N max pixels###N"),
                  [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
@@ -262,9 +287,7 @@ void camera_section(AppState& state) {
       changed = true;
     }
   } else {
-    if (labelled(state, tr("target C###target"),
-                 [&](const char* l) { return drag_doubles(l, glm::value_ptr(state.orbit3d.target), 3); }))
-      changed = true;
+    if (target_fields(state, glm::value_ptr(state.orbit3d.target), 3)) changed = true;
     int size[2] = {state.max_columns_3d, state.max_rows_3d};
     if (labelled(state, tr("max size W, H###size"),
                  [&](const char* l) { return ImGui::InputInt2(l, size); })) {
