@@ -117,6 +117,8 @@ struct AppState {
   // ---- what the panels showed (read by the frame after them) ----
   glm::dmat4 shown_matrix{1.0};      // the last product the construction table showed (2D: its 3×3 top-left)
   float font_scale_editing = -1.0f;  // the font scale slider's value while dragged (applied on release)
+  float font_scale_seen = -1.0f;     // by the Lecture mode section: a change scrolls its slider into view
+  int font_scale_scroll_frames = 0;
   bool pick_scene_file = false;  // the page: the status line's button asks the browser for a scene file
   // A test hook, null in the app: where each labelled widget "###id" was last drawn (screen corners).
   std::map<std::string, WidgetRect>* widget_rects = nullptr;

@@ -590,13 +590,22 @@ void files_section(AppState& state) {
 void lecture_section(AppState& state) {
   const bool open = section(tr("Lecture mode###lecture"), tr("Lecture###lecture"));
   record_item_rect(state, "###lecture");
+  const bool scale_changed = state.font_scale != state.font_scale_seen;
+  state.font_scale_seen = state.font_scale;
   if (!open) return;
+  // Everything above the slider grows or shrinks with the text: kept at the panel's middle for the two frames
+  // the new size takes to lay out, the slider stays where the instructor's pointer is (it left the view).
+  if (scale_changed) state.font_scale_scroll_frames = 2;
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
   float& editing = state.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;
   labelled(state, tr("font scale###font_scale"), [&](const char* l) {
     return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   });
+  if (state.font_scale_scroll_frames > 0) {
+    ImGui::SetScrollHereY(0.5f);
+    --state.font_scale_scroll_frames;
+  }
   if (ImGui::IsItemActive()) {
     editing = scale;
   } else {

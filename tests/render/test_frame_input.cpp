@@ -296,6 +296,32 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
         }
 }
 
+TEST_CASE("lecture mode: after a change of font scale its slider is still in view", "[render][lecture]") {
+  ui::AppState state = state_for({"--view", "3d", "--lang", "fr"});
+  std::map<std::string, ui::WidgetRect> rects;
+  state.widget_rects = &rects;
+  headless::HeadlessRenderer renderer(1024, 768);
+  renderer.render_settled(state);
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  panel->StateStorage.SetInt(panel->GetID("###lecture"), 1);  // Lecture mode opened
+  renderer.render_settled(state);
+  const auto in_view = [&] {
+    const auto slider = widget_rect(state, "###font_scale");
+    REQUIRE(slider);
+    INFO("slider from y = " << slider->first.y << " to " << slider->second.y << ", panel " << panel->InnerRect.Min.y
+                            << " to " << panel->InnerRect.Max.y);
+    return slider->first.y >= panel->InnerRect.Min.y && slider->second.y <= panel->InnerRect.Max.y;
+  };
+  REQUIRE(in_view());
+  for (const float scale : {3.0f, 2.0f, 1.5f, 1.0f}) {
+    state.font_scale = scale;  // as the slider sets it when released
+    renderer.render_settled(state);
+    INFO("at " << scale << "×");
+    CHECK(in_view());
+  }
+}
+
 TEST_CASE("lecture mode: a font scale changed in a running window draws what a window started at it draws",
           "[render][lecture]") {
   // The fonts are rebuilt in the running window (the backend restarted): the frame at 3× must be the frame of
