@@ -111,7 +111,7 @@ mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_sc
 mutant show-me-object-centred src/session/mistake_lessons.cpp 's/  const Vector screen_centre = nearest->centre + view \* depth - side \* r;/  const Vector screen_centre = nearest->centre + view * depth;/' "$SESSION" "^session:"
 # --- fast on scenes it has never seen ---
 mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
-mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/return distance - radius - corner_distance - 1e-6/return distance - radius - 1e-6/' "$CORE" "$CORE_TESTS"
+mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/out\[i\] = distance - radius\[i\] - corner_distance - 1e-6/out[i] = distance - radius[i] - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant pending-tests-left-in-the-queue src/core/footprint_caster.cpp 's/^    run_pending_tests(options.formula, s.pixels);/    (void)0;/' "$CORE" "$CORE_TESTS"
 mutant band-sort-reads-one-candidate src/core/footprint_caster.cpp 's/for (const Candidate\& c : s.sorted) use(c);/for (const Candidate\& c : s.sorted) { use(c); break; }/' "$CORE" "$CORE_TESTS"
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"

@@ -7,6 +7,7 @@
 #include "band_kernels.h"
 #include "raycam/parallel.h"
 #include "screen_footprint.h"
+#include "vector_loops.h"
 
 namespace raycam::detail {
 
@@ -130,10 +131,22 @@ struct NearestTBound {
       corner_distance = std::max(corner_distance, glm::length(corner - eye));
     scale = corner_distance + glm::length(eye);
   }
-  double operator()(const glm::dvec3& centre, double radius) const {
-    if (!bounded) return -kNoHit<double>;
-    const double distance = glm::length(centre - eye);
-    return distance - radius - corner_distance - 1e-6 * (distance + radius + scale);
+  // The bounds of `count` spheres given as columns, into `out`: one loop that vectorises (a scalar square root a
+  // sphere, in the projection's loop, was 40 % of its time).
+  void operator()(const SphereColumns& spheres, int count, double* out) const {
+    if (bounded) bounds_of(eye, corner_distance, scale, spheres.x, spheres.y, spheres.z, spheres.radius, count, out);
+    else std::fill(out, out + count, -kNoHit<double>);
+  }
+
+ private:
+  RAYCAM_VECTOR_LOOP static void bounds_of(glm::dvec3 eye, double corner_distance, double scale,
+                                           const double* __restrict x, const double* __restrict y,
+                                           const double* __restrict z, const double* __restrict radius, int count,
+                                           double* __restrict out) {
+    for (int i = 0; i < count; ++i) {
+      const double distance = glm::length(glm::dvec3(x[i], y[i], z[i]) - eye);
+      out[i] = distance - radius[i] - corner_distance - 1e-6 * (distance + radius[i] + scale);
+    }
   }
 };
 
@@ -150,13 +163,15 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
     PixelBox boxes[kBatch];
+    double nearest[kBatch];
     int kept = 0;
     long long area = 0;
     for (int batch = begin; batch < end; batch += kBatch) {
       const int size = std::min(kBatch, end - batch);
       const std::size_t at = std::size_t(batch);
-      footprint.sphere_boxes(SphereColumns{&scene.x[at], &scene.y[at], &scene.z[at], &scene.radius[at]}, size,
-                             camera.rows(), camera.columns(), boxes);
+      const SphereColumns columns{&scene.x[at], &scene.y[at], &scene.z[at], &scene.radius[at]};
+      footprint.sphere_boxes(columns, size, camera.rows(), camera.columns(), boxes);
+      nearest_t(columns, size, nearest);
       // Compacted without a branch: every sphere is written at the next free slot, which only a survivor
       // then keeps. Whether a sphere survives is a coin toss when many fall between pixel centres, and a
       // branch on it was mispredicted about half the time (measured: a third of the projection's time).
@@ -167,7 +182,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
         Candidate& c = slot[kept];
         c.centre = glm::dvec3(scene.x[i], scene.y[i], scene.z[i]);
         c.radius = scene.radius[i];
-        c.nearest_t = nearest_t(c.centre, c.radius);
+        c.nearest_t = nearest[k];
         c.box = boxes[k];
         c.object = int(i);
         kept += !boxes[k].empty();
