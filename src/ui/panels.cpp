@@ -346,7 +346,8 @@ void construction_section(AppState& state) {
     state.construction_step = step == steps ? -1 : step;
   explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
   if (state.dimension == 3) {
-    explain(tr(
+    if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
+      explain(tr(
         "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
         "(red), image up (green), view (blue)."));
     if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
