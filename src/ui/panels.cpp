@@ -115,7 +115,6 @@ bool slider_double(const AppState& state, const char* label, double& value, doub
   });
 }
 
-// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 // The width drag_doubles' `count` fields need to show a coordinate such as -10.00 whole.
 float drag_doubles_width(int count) {
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -133,9 +132,9 @@ bool drag_doubles(const char* label, double* values, int count) {
 // above and one full-width field a line ("###target0", "###target1", ...).
 bool target_fields(const AppState& state, double* values, int count) {
   const char* label = tr("target C###target");
-  if (ImGui::GetContentRegionAvail().x >= drag_doubles_width(count))
-    return labelled(state, label, [&](const char* l) { return drag_doubles(l, values, count); },
-                    drag_doubles_width(count));
+  const float needed = drag_doubles_width(count);
+  if (ImGui::GetContentRegionAvail().x >= needed)
+    return labelled(state, label, [&](const char* l) { return drag_doubles(l, values, count); }, needed);
   wrapped_between_words(label_parts(label).shown);
   bool changed = false;
   for (int i = 0; i < count; ++i) {
@@ -148,6 +147,7 @@ bool target_fields(const AppState& state, double* values, int count) {
   return changed;
 }
 
+// radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
 bool slider_degrees(const AppState& state, const char* label, double& radians, double lo_deg, double hi_deg) {
   double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]

@@ -15,6 +15,7 @@
 
 #include "app_options.h"
 #include "app_state.h"
+#include "flag_values.h"
 #include "raycam/ray_caster.h"
 #include "raycam/image_files.h"
 #include "raycam/language.h"
@@ -231,18 +232,11 @@ int main() {
   if (!options.language)
     options.language = raycam::language_from_code(browser_language()).value_or(raycam::Language::en);
   apply([&] {
-    const std::string scale = query_value("scale");  // as --font-scale: the projector's size in a bookmark
+    // As --font-scale, with its rule and its words: the projector's size in a bookmark.
+    const std::string scale = query_value("scale");
     if (scale.empty()) return;
-    char* end = nullptr;
-    const double value = std::strtod(scale.c_str(), &end);
-    if (end == scale.c_str() || *end != '\0' || !(value >= raycam::ui::kFontScaleOptionMin) ||
-        !(value <= raycam::ui::kFontScaleOptionMax)) {
-      char reason[160];  // the words of --font-scale's error (tr_reason translates them)
-      std::snprintf(reason, sizeof reason, "?scale: expected a number in [%g, %g], got '%s'",
-                    raycam::ui::kFontScaleOptionMin, raycam::ui::kFontScaleOptionMax, scale.substr(0, 40).c_str());
-      throw std::invalid_argument(reason);
-    }
-    options.font_scale = float(value);
+    const auto rule = raycam::flags::number_in({raycam::ui::kFontScaleOptionMin, raycam::ui::kFontScaleOptionMax});
+    options.font_scale = float(raycam::flags::checked_value(rule, scale, "?scale"));
   });
   const std::string scene = query_value("scene");
   if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
