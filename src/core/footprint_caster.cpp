@@ -47,6 +47,9 @@ struct Candidate {
 // Candidate lists per band of rows (compressed: band b owns entries[start[b] .. start[b+1])), each in
 // object order because candidates are appended in order. Copies, not indices: a band then reads its
 // candidates in a row, where indices into 10⁵ candidates cost a cache miss each (measured: 15 % of a cast).
+// One per chunk of objects, binned by the chunk's projection, on its thread and while its candidates are in
+// cache (one binning of all candidates after the projection was a tenth of a cast of the grazing layer at
+// 256², and on one thread); a band reads its list from each chunk in turn, so still in object order.
 struct Bands {
   std::vector<int> start, fill;
   std::vector<Candidate> entries;
@@ -64,6 +67,7 @@ struct Projection {
   long long box_area = 0;
   std::vector<long long> chunk_area;
   std::vector<Candidate> visible;  // filled by join() or, near to far, by a NearToFarSort
+  std::vector<Bands> chunk_bands;  // when binned: each chunk's candidates per band
 
   template <class Use>
   void for_each_visible(Use&& use) const {
@@ -150,8 +154,25 @@ struct NearestTBound {
   }
 };
 
+// Candidate lists per band, each in the order `for_each` gives the candidates.
+template <class ForEach>
+void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
+  binned.start.assign(std::size_t(bands) + 1, 0);
+  for_each([&](const Candidate& c) {
+    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
+  });
+  for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
+  binned.entries.resize(std::size_t(binned.start.back()));
+  binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
+  for_each([&](const Candidate& c) {
+    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b)
+      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = c;
+  });
+}
+
+// Culls and projects the spheres into w; with bands > 0, also bins each chunk's candidates by band.
 void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options, int workers,
-                     Projection& w) {
+                     int bands, Projection& w) {
   const IntersectFormula formula = options.formula;
   const Footprint footprint(camera, formula);
   const NearestTBound nearest_t(camera, formula, options.near_to_far);
@@ -160,6 +181,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   w.projected.resize(std::size_t(count));
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
   w.chunk_area.assign(std::size_t(chunks), 0);
+  w.chunk_bands.resize(std::size_t(bands > 0 ? chunks : 0));
   parallel_items(chunks, count > 2 * kObjectsPerChunk ? workers : 1, [&](int, int chunk) {
     const int begin = chunk * kObjectsPerChunk, end = std::min(count, begin + kObjectsPerChunk);
     PixelBox boxes[kBatch];
@@ -203,6 +225,9 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
     }
     w.kept_in_chunk[std::size_t(chunk)] = kept;
     w.chunk_area[std::size_t(chunk)] = area;
+    const Candidate* first = &w.projected[std::size_t(begin)];
+    if (bands > 0)
+      bin_by_band([&](auto&& use) { std::for_each(first, first + kept, use); }, bands, w.chunk_bands[std::size_t(chunk)]);
   });
   w.visible_count = 0;
   w.box_area = 0;
@@ -210,22 +235,6 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
     w.visible_count += w.kept_in_chunk[chunk];
     w.box_area += w.chunk_area[chunk];
   }
-}
-
-// Candidate lists per band, each in the order `for_each` gives the candidates.
-template <class ForEach>
-void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
-  binned.start.assign(std::size_t(bands) + 1, 0);
-  for_each([&](const Candidate& c) {
-    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
-  });
-  for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
-  binned.entries.resize(std::size_t(binned.start.back()));
-  binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
-  for_each([&](const Candidate& c) {
-    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b)
-      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = c;
-  });
 }
 
 // The 2D bar's depth buffer, with a line of rays made by the camera's primary_rays.
@@ -275,7 +284,6 @@ struct alignas(64) BandScratch {
 // threads as on one).
 struct Workspace {
   Projection projection;
-  Bands bands;
   std::vector<BandScratch> scratch;  // one per worker
   std::vector<double> column_x;
   NearToFarSort sort;                // the footprint method's, over all candidates
@@ -321,7 +329,10 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const long long pixels = static_cast<long long>(rows) * columns;
   const int threads = resolve_threads(options.threads);
   Workspace& workspace = calling_thread_workspace();
-  project_spheres(camera, scene, options, threads, workspace.projection);
+  const int bands = (rows + kBandRows - 1) / kBandRows;
+  // Binned while projecting whenever the method may be binned: for automatic, that is known only after.
+  const bool may_bin = options.method == CastMethod::binned || options.method == CastMethod::automatic;
+  project_spheres(camera, scene, options, threads, may_bin ? bands : 0, workspace.projection);
   Projection& projection = workspace.projection;
   const std::vector<Candidate>& visible = projection.visible;
   const long long visible_count = projection.visible_count;
@@ -329,8 +340,6 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   CastMethod method = options.method;
   if (method == CastMethod::automatic)
     method = visible_count <= kBinnedCrossover ? CastMethod::footprint : CastMethod::binned;
-  const int bands = (rows + kBandRows - 1) / kBandRows;
-  const Bands& binned = workspace.bands;
   // Each candidate costs a few tests' worth besides its tests (its rows of rays, its bands).
   long long work = pixels / 4 + 4 * visible_count;
   // The tests with no skipping. Sorting costs a pass over the candidates; it pays where they cover each pixel
@@ -340,10 +349,10 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const bool near_to_far = options.near_to_far && method != CastMethod::culled &&
                            double(box_area) >= kNearToFarDepth * double(pixels) &&
                            double(box_area) >= kNearToFarBoxPixels * double(visible_count);
-  if (method == CastMethod::binned)  // in object order; each band sorts its own near to far
-    bin_by_band([&](auto&& use) { projection.for_each_visible(use); }, bands, workspace.bands);
-  else if (!near_to_far ||
-           !workspace.sort([&](auto&& use) { projection.for_each_visible(use); }, int(visible_count), projection.visible))
+  // Binned: each band sorts its own near to far.
+  if (method != CastMethod::binned &&
+      (!near_to_far ||
+           !workspace.sort([&](auto&& use) { projection.for_each_visible(use); }, int(visible_count), projection.visible)))
     projection.join();
   work += box_area;
   const int workers = work >= kThreadedWork ? threads : 1;
@@ -367,10 +376,14 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
     } else {
       // The band's candidates, near to far: its bin (sorted here), or every visible object whose rows meet the
       // band.
-      const int bin_begin = method == CastMethod::binned ? binned.start[std::size_t(band)] : 0;
-      const int bin_size = method == CastMethod::binned ? binned.start[std::size_t(band) + 1] - bin_begin : 0;
+      int bin_size = 0;
+      if (method == CastMethod::binned)
+        for (const Bands& chunk : projection.chunk_bands)
+          bin_size += chunk.start[std::size_t(band) + 1] - chunk.start[std::size_t(band)];
       const auto for_each_in_bin = [&](auto&& use) {
-        for (int e = bin_begin; e < bin_begin + bin_size; ++e) use(binned.entries[std::size_t(e)]);
+        for (const Bands& chunk : projection.chunk_bands)
+          std::for_each(chunk.entries.data() + chunk.start[std::size_t(band)],
+                        chunk.entries.data() + chunk.start[std::size_t(band) + 1], use);
       };
       const bool sort_bin = method == CastMethod::binned && near_to_far && s.sort(for_each_in_bin, bin_size, s.sorted);
       const auto for_each_candidate = [&](auto&& use) {
@@ -428,7 +441,7 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
 
 int project_visible(const Camera3D& camera, const PackedScene3D& scene, const CastOptions& options) {
   Workspace& workspace = calling_thread_workspace();
-  project_spheres(camera, scene, options, resolve_threads(options.threads), workspace.projection);
+  project_spheres(camera, scene, options, resolve_threads(options.threads), 0, workspace.projection);
   return workspace.projection.visible_count;
 }
 
