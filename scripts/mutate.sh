@@ -114,6 +114,7 @@ mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/out\[i\] = distance - radius\[i\] - corner_distance - 1e-6/out[i] = distance - radius[i] - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant pending-tests-left-in-the-queue src/core/footprint_caster.cpp 's/^    run_pending_tests(options.formula, s.pixels);/    (void)0;/' "$CORE" "$CORE_TESTS"
 mutant band-sort-reads-one-candidate src/core/footprint_caster.cpp 's/for (const Candidate\& c : s.sorted) use(c);/for (const Candidate\& c : s.sorted) { use(c); break; }/' "$CORE" "$CORE_TESTS"
+mutant bound-float-rounded-to-nearest src/core/band_kernels.h 's/return float(d - std::abs(d) \* 0x1p-22 - 0x1p-126);/return float(d);/' "$CORE" "$CORE_TESTS"
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 # --- one language for error reasons ---
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"

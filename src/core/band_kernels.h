@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -110,6 +111,11 @@ inline int queue_row_tests(const glm::dvec3& centre, double radius, double neare
 inline constexpr int kVectorRun = 16;
 void test_sphere_vectorised(const glm::dvec3& centre, double radius, int object, IntersectFormula formula,
                             const PixelRun& run, BandPixels& band);
+
+// A lower bound kept as a float (half the bytes): at or below d, never above. d less 2⁻²² of itself (four
+// times a float's rounding) and a float's least normal (for d near 0), then rounded to the nearest float;
+// -∞ stays -∞. For |d| up to 10³⁰, far beyond any bound of a scene (kMaxCoordinate).
+inline float float_below(double d) { return float(d - std::abs(d) * 0x1p-22 - 0x1p-126); }
 
 // Whether any of a row's `count` pixels has its hit so far at nearest_t or beyond: only those can take an
 // object no ray reaches before nearest_t (a tie at nearest_t may still win on its index).

@@ -2,6 +2,7 @@
 // against the textbook early-return form, bit for bit; the vectorised projection against the pixels whose
 // rays actually hit; a band's ray columns against the camera's own primary rays, bit for bit.
 #include <catch2/catch.hpp>
+#include <random>
 
 
 #include "band_kernels.h"
@@ -226,4 +227,26 @@ TEST_CASE("a band's depth test keeps the lower index on a tie in any order, and 
     detail::run_pending_tests(IntersectFormula::stable, band);
     for (int p = 0; p < count; ++p) CHECK(band.id[std::size_t(p)] == 3);
   }
+}
+
+// The candidates keep their near bound as a float: rounded to the nearest, it would land above the double
+// half the time, and a pixel whose hit is just nearer than the bound but not than the float would skip a
+// sphere that wins it.
+TEST_CASE("a bound kept as a float is never above the double it came from, and close to it", "[caster][vector]") {
+  std::mt19937_64 random(24);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-140, 120);
+  int below = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double d = std::ldexp(mantissa(random), exponent(random));
+    const double kept = detail::float_below(d);
+    INFO(d);
+    REQUIRE(kept <= d);
+    REQUIRE(d - kept <= std::abs(d) * 0x1p-20 + 0x1p-125);
+    below += kept < double(float(d));  // where rounding to the nearest would have gone above
+  }
+  CHECK(below > 1000);
+  CHECK(detail::float_below(-kNoHit<double>) == -kNoHit<float>);
+  CHECK(detail::float_below(0.0) <= 0.0);
+  CHECK(detail::float_below(1e13) <= 1e13);
 }
