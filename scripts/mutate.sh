@@ -57,7 +57,7 @@ mutant tangent-at-origin-dropped include/raycam/intersect.h 's/  t = tangent_at_
 mutant band-rays-not-renormalised src/core/band_kernels.cpp 's/column_x\[i\], true, origin, direction/column_x[i], false, origin, direction/' "$CORE" "$CORE_TESTS"
 mutant band-rays-missing-past-a-box-first-block src/core/footprint_caster.cpp 's/std::size_t(c.box.columns.last \/ kRayBlock)\] + 1, 1);/std::size_t(c.box.columns.first \/ kRayBlock)] + 1, 1);/' "$CORE" "$CORE_TESTS"
 mutant dense-band-without-rays src/core/footprint_caster.cpp 's/every_ray ? 1 : 0);/0);/' "$CORE" "$CORE_TESTS"
-mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/kept += !boxes\[k\].empty();/kept += 1;/' "$CORE" "$CORE_TESTS"
+mutant compaction-keeps-culled src/core/footprint_caster.cpp 's/survivors += (box_rows > 0) & (box_columns > 0);/survivors += 1;/' "$CORE" "$CORE_TESTS"
 UI="raycam_ui_tests raycam_render_tests"
 mutant inspector-prints-1.5t src/ui/panels.cpp 's/ray.hit.id, name.c_str(), ray.hit.t);/ray.hit.id, name.c_str(), 1.5 * ray.hit.t);/' "$UI" "^(ui|render):"
 mutant packed-scene-not-repacked src/session/app_state.cpp 's/^  ++state.scene_version;  \/\/ new objects/  \/\/ new objects/' "raycam_session_tests raycam_render_tests" "^(session|render):"
