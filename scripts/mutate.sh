@@ -114,6 +114,11 @@ mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/out\[i\] = distance - radius\[i\] - corner_distance - 1e-6/out[i] = distance - radius[i] - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant pending-tests-left-in-the-queue src/core/footprint_caster.cpp 's/^    run_pending_tests(options.formula, s.pixels);/    (void)0;/' "$CORE" "$CORE_TESTS"
 mutant band-sort-reads-one-candidate src/core/footprint_caster.cpp 's/for (const Candidate\& c : s.sorted) use(c);/for (const Candidate\& c : s.sorted) { use(c); break; }/' "$CORE" "$CORE_TESTS"
+mutant cluster-culled-by-half-its-radius src/core/screen_footprint.cpp 's/const double grown = r \* (1.0 + 1e-3)/const double grown = 0.5 * r * (1.0 + 1e-3)/' "$CORE" "$CORE_TESTS"
+mutant cluster-side-plane-sign-lost src/core/screen_footprint.cpp 's/(-df \* a - c > beyond)/(-df * a + c > beyond)/' "$CORE" "$CORE_TESTS"
+mutant clusters-far-to-near src/core/sphere_clusters.cpp 's/const bool first_nearer = eye\[s.axis\] < s.at;/const bool first_nearer = eye[s.axis] >= s.at;/' "$CORE" "$CORE_TESTS"
+mutant clusters-split-along-x-only src/core/sphere_clusters.cpp 's/if (high\[a\] - low\[a\] > high\[axis\] - low\[axis\]) axis = a;/(void)a;/' "$CORE" "$CORE_TESTS"
+mutant cluster-bound-without-member-radius src/core/sphere_clusters.cpp 's/std::sqrt(d.x \* d.x + d.y \* d.y + d.z \* d.z) + radius\[j\]/std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z)/' "$CORE" "$CORE_TESTS"
 mutant bound-float-rounded-to-nearest src/core/band_kernels.h 's/return float(d - std::abs(d) \* 0x1p-22 - 0x1p-126);/return float(d);/' "$CORE" "$CORE_TESTS"
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 # --- one language for error reasons ---

@@ -1,6 +1,6 @@
 // The accelerated casters (CastMethod culled, footprint, binned). Same ids as the plain loop: each pixel
-// runs the camera's own primary_ray and the same nearest_hit_t, in object order with a strict '<' depth
-// test, over a superset of the objects that can hit it.
+// runs the camera's own primary_ray and the same nearest_hit_t over a superset of the objects that can hit
+// it, in any order, with the plain loop's answer on a tie (nearer_hit: the lower index).
 #pragma once
 
 #include "raycam/ray_caster.h"

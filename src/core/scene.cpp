@@ -50,6 +50,7 @@ void PackedScene3D::pack(const Scene3D& scene) {
     colour[i] = sphere.colour;
   }
   background = scene.background;
+  clusters.build(x, y, z, radius);
 }
 
 void validate(const Scene2D& scene) { validate_objects(scene.circles); }

@@ -137,6 +137,23 @@ Footprint::Footprint(const Camera3D& camera, IntersectFormula intersect) : formu
   coordinate_scale = glm::length(eye) + df;
 }
 
+bool Footprint::culls_clusters() const { return formula == IntersectFormula::stable && df >= 1e-2; }
+
+void Footprint::clusters_out_of_view(const SphereColumns& bounds, int count, unsigned char* out) const {
+  const double edge = std::sqrt(df * df + 1.0);  // |(d_f, -1)|: the side planes' normals unnormalised
+  for (int k = 0; k < count; ++k) {
+    const double qx = bounds.x[k] - eye.x, qy = bounds.y[k] - eye.y, qz = bounds.z[k] - eye.z;
+    const double a = qx * right.x + qy * right.y + qz * right.z, b = qx * up.x + qy * up.y + qz * up.z;
+    const double c = qx * forward.x + qy * forward.y + qz * forward.z;
+    const double r = bounds.radius[k];
+    const double grown = r * (1.0 + 1e-3) + 1e-6 * (std::abs(qx) + std::abs(qy) + std::abs(qz) + r + coordinate_scale);
+    // The screen is |a|, |b| ≤ c/d_f at depth c ≥ d_f: outside a side plane by more than the grown radius.
+    const double beyond = grown * edge;
+    out[k] = (c + grown < df) | (df * a - c > beyond) | (-df * a - c > beyond) | (df * b - c > beyond) |
+             (-df * b - c > beyond);
+  }
+}
+
 PixelRange Footprint::circle_pixels(const Circle& circle, int pixel_count) const {
   const double qx = circle.centre.x - eye.x, qy = circle.centre.y - eye.y;
   const Depth d = formula == IntersectFormula::naive ? depth_of<true>(*this, qx, qy, 0.0, circle.radius)
