@@ -171,13 +171,15 @@ struct NearestTBound {
   }
 };
 
-// Candidate lists per band, each in the order `for_each` gives the candidates.
+// Counts a candidate in the bands its rows meet: count[b + 1] for band b.
+inline void count_in_bands(const Candidate& c, int* count) {
+  for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++count[b + 1];
+}
+
+// Candidate lists per band, each in the order `for_each` gives the candidates, from their counts per band
+// (binned.start[b + 1] for band b, by count_in_bands: counted as they were projected, a pass saved).
 template <class ForEach>
 void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
-  binned.start.assign(std::size_t(bands) + 1, 0);
-  for_each([&](const Candidate& c) {
-    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++binned.start[std::size_t(b) + 1];
-  });
   for (int b = 0; b < bands; ++b) binned.start[std::size_t(b) + 1] += binned.start[std::size_t(b)];
   binned.entries.resize(std::size_t(binned.start.back()));
   binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
@@ -196,7 +198,7 @@ void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
 // each cluster of the run, where its survivors start.
 Candidate* project_run(const Camera3D& camera, const Footprint& footprint, const NearestTBound& nearest_t,
                        const SphereClusters& spheres, int first, int size, Candidate* out, long long& area,
-                       Candidate** cluster_start) {
+                       Candidate** cluster_start, int* band_count) {
   PixelBox boxes[kMaxRun];
   double nearest[kMaxRun];
   const std::size_t at = std::size_t(first);
@@ -229,6 +231,7 @@ Candidate* project_run(const Camera3D& camera, const Footprint& footprint, const
     c.box = {{std::int16_t(boxes[k].rows.first), std::int16_t(boxes[k].rows.last)},
              {std::int16_t(boxes[k].columns.first), std::int16_t(boxes[k].columns.last)}};
     c.object = spheres.object[i];
+    if (band_count) count_in_bands(c, band_count);
   }
   return out + survivors;
 }
@@ -281,6 +284,12 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
     }
     Candidate* const begin = &w.projected[std::size_t(first_cluster) * kBatch];
     Candidate* out = begin;
+    int* band_count = nullptr;  // the chunk's candidates per band, counted as they are projected
+    if (bands > 0) {
+      std::vector<int>& start = w.chunk_bands[std::size_t(chunk)].start;
+      start.assign(std::size_t(bands) + 1, 0);
+      band_count = start.data();
+    }
     for (int k = 0; k < clusters;) {
       const int cluster = first_cluster + k;
       if (out_of_view[k]) {
@@ -292,7 +301,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
       while (k + run < clusters && run * kBatch < kMaxRun && !out_of_view[k + run]) ++run;
       const int first = cluster * kBatch, size = std::min(run * kBatch, count - first);
       Candidate* starts[kMaxRun / kBatch];
-      out = project_run(camera, footprint, nearest_t, spheres, first, size, out, area, starts);
+      out = project_run(camera, footprint, nearest_t, spheres, first, size, out, area, starts, band_count);
       for (int r = 0; r < run; ++r)
         w.cluster_kept[std::size_t(cluster + r)] = int((r + 1 < run ? starts[r + 1] : out) - starts[r]);
       for (int r = 0; r < run; ++r) w.cluster_start[std::size_t(cluster + r)] = int(starts[r] - w.projected.data());
