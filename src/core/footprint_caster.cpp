@@ -85,6 +85,7 @@ struct Projection {
   // Clusters: where each one's survivors start in `projected`, and how many; the clusters near to far, and
   // grouped by chunk (chunk c's: near_clusters[chunk_clusters[c] …]); the chunks near to far.
   std::vector<int> cluster_start, cluster_kept, cluster_order, near_clusters, chunk_clusters, chunk_order;
+  std::vector<int> chunk_fill;  // scratch for grouping the clusters by chunk
 
   template <class Use>
   void for_each_visible(Use&& use) const {
@@ -171,9 +172,15 @@ struct NearestTBound {
   }
 };
 
+// The bands a candidate's rows meet: first / kBandRows … last / kBandRows.
+template <class Use>
+inline void for_each_band_of(const Candidate& c, Use&& use) {
+  for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) use(std::size_t(b));
+}
+
 // Counts a candidate in the bands its rows meet: count[b + 1] for band b.
 inline void count_in_bands(const Candidate& c, int* count) {
-  for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b) ++count[b + 1];
+  for_each_band_of(c, [count](std::size_t b) { ++count[b + 1]; });
 }
 
 // Candidate lists per band, each in the order `for_each` gives the candidates, from their counts per band
@@ -184,8 +191,7 @@ void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
   binned.entries.resize(std::size_t(binned.start.back()));
   binned.fill.assign(binned.start.begin(), binned.start.end() - 1);
   for_each([&](const Candidate& c) {
-    for (int b = c.box.rows.first / kBandRows; b <= c.box.rows.last / kBandRows; ++b)
-      binned.entries[std::size_t(binned.fill[std::size_t(b)]++)] = c;
+    for_each_band_of(c, [&](std::size_t b) { binned.entries[std::size_t(binned.fill[b]++)] = c; });
   });
 }
 
@@ -255,7 +261,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
   w.chunk_area.assign(std::size_t(chunks), 0);
   w.chunk_bands.resize(std::size_t(bands > 0 ? chunks : 0));
-  w.cluster_start.resize(std::size_t(cluster_count) + 1);
+  w.cluster_start.resize(std::size_t(cluster_count));
   w.cluster_kept.resize(std::size_t(cluster_count));
   if (bands > 0) {  // each chunk's clusters near to far, and the chunks by their nearest cluster
     spheres.near_to_far(camera.eye(), w.cluster_order);
@@ -264,7 +270,8 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
     for (int chunk = 0; chunk < chunks; ++chunk) w.chunk_clusters[std::size_t(chunk) + 1] += w.chunk_clusters[std::size_t(chunk)];
     w.chunk_order.clear();
     w.near_clusters.resize(std::size_t(cluster_count));
-    std::vector<int> fill(w.chunk_clusters.begin(), w.chunk_clusters.end() - 1);
+    std::vector<int>& fill = w.chunk_fill;
+    fill.assign(w.chunk_clusters.begin(), w.chunk_clusters.end() - 1);
     for (int cluster : w.cluster_order) {
       const int chunk = cluster / kClustersPerChunk;
       if (fill[std::size_t(chunk)] == w.chunk_clusters[std::size_t(chunk)]) w.chunk_order.push_back(chunk);
@@ -292,8 +299,9 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
     }
     for (int k = 0; k < clusters;) {
       const int cluster = first_cluster + k;
-      if (out_of_view[k]) {
+      if (out_of_view[k]) {  // no survivors, at the current place (a place from an earlier cast may be past the end)
         w.cluster_kept[std::size_t(cluster)] = 0;
+        w.cluster_start[std::size_t(cluster)] = int(out - w.projected.data());
         ++k;
         continue;
       }
@@ -441,10 +449,10 @@ void cast_accelerated(const Camera3D& camera, const PackedScene3D& scene, Colour
   const bool near_to_far = options.near_to_far && method != CastMethod::culled &&
                            double(box_area) >= kNearToFarDepth * double(pixels) &&
                            double(box_area) >= kNearToFarBoxPixels * double(visible_count);
-  // Binned: each band sorts its own near to far.
+  // Binned while projecting, each band sorting its own near to far; otherwise all visible at once.
+  const auto for_each_visible = [&](auto&& use) { projection.for_each_visible(use); };
   if (method != CastMethod::binned &&
-      (!near_to_far ||
-           !workspace.sort([&](auto&& use) { projection.for_each_visible(use); }, int(visible_count), projection.visible)))
+      !(near_to_far && workspace.sort(for_each_visible, int(visible_count), projection.visible)))
     projection.join();
   work += box_area;
   const int workers = work >= kThreadedWork ? threads : 1;

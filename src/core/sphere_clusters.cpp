@@ -1,5 +1,6 @@
 // SphereClusters (raycam/scene.h): spheres in clusters of neighbours, with bounding spheres.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <glm/common.hpp>
@@ -106,19 +107,22 @@ void SphereClusters::near_to_far(const glm::dvec3& eye, std::vector<int>& out) c
     out.push_back(0);
     return;
   }
-  // Depth first, the eye's side of each split first.
-  std::vector<int> pending{0};
-  while (!pending.empty()) {
-    const int at = pending.back();
-    pending.pop_back();
+  // Depth first, the eye's side of each split first. The splits halve, so the tree is at most
+  // log2(kMaxObjects / kSize) + 1 deep and the stack holds at most one more entry than that: no allocation.
+  int pending[64];
+  int top = 0;
+  pending[top++] = 0;
+  while (top > 0) {
+    const int at = pending[--top];
     if (at < 0) {
       out.push_back(-1 - at);
       continue;
     }
     const Split& s = splits[std::size_t(at)];
     const bool first_nearer = eye[s.axis] < s.at;
-    pending.push_back(first_nearer ? s.second : s.first);
-    pending.push_back(first_nearer ? s.first : s.second);
+    assert(top + 2 <= 64);
+    pending[top++] = first_nearer ? s.second : s.first;
+    pending[top++] = first_nearer ? s.first : s.second;
   }
 }
 
