@@ -125,6 +125,18 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+# --- tests that catch what they claim ---
+# Nine bugs the suite once let through (issue 38), each caught by the test written for its class of hole.
+mutant sandbox-shown-folders-writable src/check/student_process.cpp 's/{"--ro-bind", dir, dir}/{"--bind", dir, dir}/' "raycam-cli" "^check: ?the sandbox shows a student's folders"
+mutant deadline-whole-seconds src/check/student_process.cpp 's/  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.timeout_seconds));/  const auto deadline = start + std::chrono::seconds(int(limits.timeout_seconds));/' "$CHECK" "^check: ?deadlines"
+mutant timeout-flag-rounded src/cli/check_command.cpp 's/\[\&\](double t) { flags.timeout = t; }/[\&](double t) { flags.timeout = double(long(t + 0.5)); }/' "$CHECK" "^check: ?deadlines"
+mutant depth-map-skips-row-0 src/check/grading.cpp 's/for (int r = rows - 1; r >= 0; --r)/for (int r = rows - 1; r > 0; --r)/' "$CHECK" "^check: ?the worst pixel"
+mutant battery-keeps-last-draw src/check/battery.cpp 's/^    if (all) break;$/    (void)all;/' "$CHECK" "^check: ?a seed's designed cases"
+mutant cluster-split-at-wrong-centre src/core/sphere_clusters.cpp 's/splits.push_back({axis, centres\[std::size_t(middle)\].at\[axis\], 0, 0});/splits.push_back({axis, centres[std::size_t(middle - 1)].at[axis], 0, 0});/' "$CORE" "^core: ?every split keeps"
+mutant figure-ray-hit-from-the-eye src/figure/construction_figure.cpp 's/nearest_hit_t<2, double>(pixel, u,/nearest_hit_t<2, double>(eye, u,/' "$FIGURE" "^figure: ?every 2D frame's rays"
+mutant figure-png-red-blue-swapped src/figure/figure_files.cpp 's/row\[std::size_t(x) \* 3 + 0\] = (pixel\[x\] >> 16) \& 0xff;/row[std::size_t(x) * 3 + 0] = pixel[x] \& 0xff;/; s/row\[std::size_t(x) \* 3 + 2\] = pixel\[x\] \& 0xff;/row[std::size_t(x) * 3 + 2] = (pixel[x] >> 16) \& 0xff;/' "$FIGURE" "^figure: ?a PNG figure fills"
+mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"reçu : {got} ; attendu : {wanted}"/"reçu : {wanted} ; attendu : {got}"/' "$SESSION" "^session: ?error reasons: a sample"
+mutant open-keeps-save-as-path src/session/app_state.cpp 's/^    state.save_path.clear();  \/\/ Save as starts empty.*$/    \/\/ (Save as kept)/' "$SESSION" "^session: ?Open resets every field"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
@@ -151,6 +163,12 @@ echo "mutate.sh: building the unmutated tree in $BUILD${launcher:+ (ccache)}"
 cmake --build "$BUILD" -j"$JOBS" > "$SCRATCH/build.log" 2>&1 || { echo "mutate.sh: the unmutated tree does not build, see $SCRATCH/build.log" >&2; exit 2; }
 
 caught=0 missed=0 broken=0 skipped=0
+# Each mutant's block: the "# --- NAME ---" header above it in this file (the score is given per block).
+declare -A block_of block_caught block_total
+blocks=()
+while IFS=$'\t' read -r mutant_name block_name; do
+  block_of[$mutant_name]=$block_name
+done < <(awk '/^# --- .* ---$/ { sub(/^# --- /, ""); sub(/ ---$/, ""); block = $0 } /^mutant / { print $2 "\t" block }' "$0")
 known_targets=$(cmake --build "$BUILD" --target help 2>/dev/null)
 report=()
 for i in "${!names[@]}"; do
@@ -190,9 +208,14 @@ for i in "${!names[@]}"; do
   cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > /dev/null 2>&1
   printf '%-32s %s\n' "$name" "$result"
   report+=("$name: $result")
+  b=${block_of[$name]:-?}
+  [ -n "${block_total[$b]:-}" ] || blocks+=("$b")
+  block_total[$b]=$((${block_total[$b]:-0} + 1))
+  block_caught[$b]=$((${block_caught[$b]:-0} + $([ "${result%% *}" = caught ] && echo 1 || echo 0)))
 done
 # Leave the scratch build matching the unmutated tree.
 cmake --build "$BUILD" -j"$JOBS" > /dev/null 2>&1
 total=$((caught + missed + broken))
+for b in "${blocks[@]}"; do printf 'mutate.sh: %3d / %-3d caught  %s\n' "${block_caught[$b]}" "${block_total[$b]}" "$b"; done
 echo "mutate.sh: $caught caught, $missed missed, $broken not applied or not building, of $total mutants ($skipped skipped)"
 [ $missed -eq 0 ] && [ $broken -eq 0 ]

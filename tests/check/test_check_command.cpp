@@ -274,6 +274,33 @@ TEST_CASE("the sandbox shows a student only what running needs", "[check][cli][s
   if (geteuid() == 0) CHECK_THAT(err, !Catch::Contains("uid 0\n"));  // never root's rights in the sandbox
 }
 
+TEST_CASE("deadlines hold to fractions of a second: a program inside its limit passes, one past it times out",
+          "[check][cli][timeout]") {
+  // The example student behind a sleep: `sh -c 'sleep S; exec STUDENT' STUDENT`. No sandbox: the limit is
+  // the same with it, and the run starts faster (0.3 s is the margin on each side).
+  auto run = [](const char* limit, const char* sleep) {
+    const std::string student = std::string("--student \"sh -c 'sleep ") + sleep + "; exec \\$0' " +
+                                EXAMPLE_STUDENT_CPP + "\"";
+    return check(student + " --mode 2d --cases 1 --no-sandbox --timeout " + limit,
+                 std::string("deadline_") + limit + "_" + sleep);
+  };
+  for (const auto& [limit, sleep, status] : {std::tuple<const char*, const char*, const char*>{"0.5", "0.2", "pass"},
+                                             {"1.5", "1.2", "pass"},
+                                             {"0.5", "0.8", "timeout"},
+                                             {"1.5", "1.8", "timeout"}}) {
+    INFO("--timeout " << limit << ", a program of " << sleep << " s");
+    const Checked c = run(limit, sleep);
+    INFO(c.output);
+    REQUIRE(c.report["results"].size() == 1);
+    const json& result = c.report["results"][0];
+    CHECK(result["status"] == status);
+    if (std::string(status) == "timeout") {  // stopped at its limit, not before
+      CHECK(result["seconds"].get<double>() >= std::stod(limit) - 0.01);
+      CHECK(result["seconds"].get<double>() < std::stod(sleep));
+    }
+  }
+}
+
 TEST_CASE("write-cases then answers: answer files made by hand are graded", "[check][cli]") {
   const std::string dir = scratch("answers");
   const Checked written = check("--write-cases " + dir, "write_cases");

@@ -3,6 +3,8 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <cstdlib>
+#include <random>
 #include <string>
 
 #include "answer.h"
@@ -229,6 +231,86 @@ TEST_CASE("the worst pixel of an image is the wrong one farthest from any edge (
   CHECK(result.worst->row == 4);
   CHECK(result.worst->column == 6);
   CHECK(result.worst->depth == 4);
+}
+
+namespace {
+// The depth the grader must report for pixel (r, c), by brute force from its definition: the Chebyshev
+// distance to the nearest pixel whose reference id differs or that is ambiguous (0 on an ambiguous pixel),
+// at most max(rows, columns) when the image holds no such pixel (the border is not an edge).
+int brute_force_depth(const CaseImage& image, int r, int c) {
+  const auto at = [&](int row, int column) { return std::size_t(row) * std::size_t(image.columns) + std::size_t(column); };
+  int best = std::max(image.rows, image.columns);
+  for (int rr = 0; rr < image.rows; ++rr)
+    for (int cc = 0; cc < image.columns; ++cc)
+      if (image.ambiguous[at(rr, cc)] || image.ids[at(rr, cc)] != image.ids[at(r, c)])
+        best = std::min(best, std::max(std::abs(rr - r), std::abs(cc - c)));
+  return best;
+}
+
+// A random reference: a few rectangles of ids painted over a background (regions several pixels deep),
+// a few ambiguous pixels; 2D bars (one row) one time in three.
+CaseImage random_reference(std::mt19937& random) {
+  std::uniform_int_distribution<int> side(1, 14), id(-1, 3), percent(0, 99);
+  CaseImage image;
+  image.rows = percent(random) < 33 ? 1 : side(random);
+  image.dimension = image.rows == 1 ? 2 : 3;
+  image.columns = side(random) + (image.rows == 1 ? 10 : 0);
+  image.ids.assign(std::size_t(image.rows * image.columns), id(random));
+  for (int k = std::uniform_int_distribution<int>(0, 4)(random); k > 0; --k) {
+    const int r0 = std::uniform_int_distribution<int>(0, image.rows - 1)(random);
+    const int c0 = std::uniform_int_distribution<int>(0, image.columns - 1)(random);
+    const int r1 = std::uniform_int_distribution<int>(r0, image.rows - 1)(random);
+    const int c1 = std::uniform_int_distribution<int>(c0, image.columns - 1)(random);
+    const int value = id(random);
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c) image.ids[std::size_t(r * image.columns + c)] = value;
+  }
+  for (std::size_t i = 0; i < image.ids.size(); ++i) image.ambiguous.push_back(percent(random) < 3);
+  return image;
+}
+}  // namespace
+
+TEST_CASE("the worst pixel's depth is the brute-force distance to the nearest edge, on random images",
+          "[check][grading]") {
+  std::mt19937 random(38);
+  for (int trial = 0; trial < 300; ++trial) {
+    const CaseImage reference = random_reference(random);
+    INFO("trial " << trial << ": " << reference.rows << " x " << reference.columns);
+    std::vector<int> depth;
+    for (int r = 0; r < reference.rows; ++r)
+      for (int c = 0; c < reference.columns; ++c) depth.push_back(brute_force_depth(reference, r, c));
+    // Each pixel wrong alone: the grader's depth map read back pixel by pixel (row 0 and the last row too).
+    for (std::size_t i = 0; i < reference.pixels(); ++i) {
+      if (reference.ambiguous[i]) continue;  // forgiven: never wrong
+      ParsedAnswer parsed;
+      parsed.answer = Answer{reference.rows, reference.columns, reference.ids, std::nullopt};
+      parsed.answer->ids[i] = reference.ids[i] + 7;
+      const CaseResult result = grade_answer(reference, parsed);
+      INFO("pixel " << i);
+      REQUIRE(result.worst);
+      CHECK(result.worst->row * reference.columns + result.worst->column == int(i));
+      CHECK(result.worst->depth == depth[i]);
+    }
+    // A few wrong pixels at once: the worst is one of them, as deep as the deepest.
+    ParsedAnswer parsed;
+    parsed.answer = Answer{reference.rows, reference.columns, reference.ids, std::nullopt};
+    int deepest = -1;
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = std::uniform_int_distribution<std::size_t>(0, reference.pixels() - 1)(random);
+      parsed.answer->ids[i] = reference.ids[i] + 7;
+      if (!reference.ambiguous[i]) deepest = std::max(deepest, depth[i]);
+    }
+    const CaseResult result = grade_answer(reference, parsed);
+    if (deepest < 0) {
+      CHECK_FALSE(result.worst);
+      continue;
+    }
+    REQUIRE(result.worst);
+    const std::size_t worst = std::size_t(result.worst->row * reference.columns + result.worst->column);
+    CHECK(result.worst->depth == deepest);
+    CHECK(depth[worst] == deepest);
+    CHECK(parsed.answer->ids[worst] != reference.ids[worst]);
+  }
 }
 
 TEST_CASE("a run's processes are capped, and a sandbox that cannot start is the checker's failure",

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "raycam/ray_caster.h"
@@ -95,6 +96,59 @@ TEST_CASE("the clusters' near-to-far order visits each cluster once, the eye's s
     CHECK(inversions == 0);
     const double first = std::abs(c.bound_x[std::size_t(order.front())] - eye_x);
     for (int k = 0; k < c.cluster_count(); ++k) CHECK(first <= std::abs(c.bound_x[std::size_t(k)] - eye_x) + 64.0);
+  }
+}
+
+namespace {
+// The clusters a part of the split tree holds (a child >= 0 is a split, -1 - k is cluster k).
+void clusters_under(const SphereClusters& c, int part, std::vector<int>& out) {
+  if (part < 0) {
+    out.push_back(-1 - part);
+    return;
+  }
+  clusters_under(c, c.splits[std::size_t(part)].first, out);
+  clusters_under(c, c.splits[std::size_t(part)].second, out);
+}
+}  // namespace
+
+TEST_CASE("every split keeps its first part's centres at or below it and its second part's at or above",
+          "[scene][clusters]") {
+  // The documented rule (raycam/scene.h) that near_to_far relies on: a centre up to `at` went to `first`,
+  // from `at` on to `second`. Random cubes, flat and lined-up scenes (ties on every axis), many sizes.
+  test::Random random(3832);
+  for (int trial = 0; trial < 24; ++trial) {
+    const int count = trial < 8 ? 65 + trial * 37 : random.integer(65, 6000);
+    Scene3D scene = spheres_in_a_cube(random, count, trial % 3 == 0 ? 1.0 : 50.0, 0.01, 0.5);
+    for (Sphere& s : scene.spheres) {
+      if (trial % 4 == 1) s.centre.z = 0.0;                                 // flat
+      if (trial % 4 == 2) s.centre = {std::round(s.centre.x), 0.0, 0.0};  // on a line, many equal centres
+    }
+    INFO("trial " << trial << ", " << count << " spheres");
+    const PackedScene3D packed(scene);
+    const SphereClusters& c = packed.clusters;
+    REQUIRE(!c.splits.empty());
+    std::vector<int> seen(std::size_t(c.cluster_count()), 0);
+    for (std::size_t n = 0; n < c.splits.size(); ++n) {
+      const SphereClusters::Split& split = c.splits[n];
+      REQUIRE(split.axis >= 0);
+      REQUIRE(split.axis < 3);
+      int wrong = 0;
+      for (const int side : {0, 1}) {
+        std::vector<int> clusters;
+        clusters_under(c, side == 0 ? split.first : split.second, clusters);
+        for (int k : clusters) {
+          if (n == 0) ++seen[std::size_t(k)];
+          const int end = std::min(c.size(), (k + 1) * SphereClusters::kSize);
+          for (int j = k * SphereClusters::kSize; j < end; ++j) {
+            const double centre = member_centre(c, j)[split.axis];
+            wrong += side == 0 ? centre > split.at : centre < split.at;
+          }
+        }
+      }
+      INFO("split " << n << " along axis " << split.axis << " at " << split.at);
+      CHECK(wrong == 0);
+    }
+    CHECK(std::count(seen.begin(), seen.end(), 1) == c.cluster_count());  // the root's parts hold every cluster once
   }
 }
 

@@ -18,6 +18,7 @@
 #include "../scratch_dir.h"
 #include "construction_figure.h"
 #include "figure_files.h"
+#include "raycam/ray_caster.h"
 #include "raycam/transform.h"
 
 using namespace raycam;
@@ -167,6 +168,156 @@ TEST_CASE("the 2D SVG draws E, the screen's ends, Ω or P and C where the core p
       }
       require_svg_points(figure, f, expected, output, scratch);
     }
+  }
+}
+
+namespace {
+// The figure's numbers against the core's: a plane point to 1e-9 of the frame's size.
+bool near(glm::dvec2 a, glm::dvec2 b, double size) { return glm::length(a - b) <= 1e-9 * (1.0 + size); }
+
+// The ray paths of an SVG (the ray stroke's colour, figure_files.cpp), as "M x0 y0 L x1 y1" page points.
+std::vector<std::pair<glm::dvec2, glm::dvec2>> rays_in_svg(const std::string& svg) {
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> rays;
+  const std::regex path(R"(<path [^>]*stroke:rgb\(80%,30%,5%\)[^>]*d=\"M ([-0-9.e]+) ([-0-9.e]+) L ([-0-9.e]+) ([-0-9.e]+) )");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it)
+    rays.push_back({{std::stod((*it)[1]), std::stod((*it)[2])}, {std::stod((*it)[3]), std::stod((*it)[4])}});
+  return rays;
+}
+}  // namespace
+
+TEST_CASE("every 2D frame's rays leave the core's pixels along its rays and stop at its hits, ticks at its pixels",
+          "[figure]") {
+  const test::ScratchDir scratch("figure-rays");
+  std::mt19937 random(38);
+  const auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
+  const auto integer = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(random); };
+  for (int trial = 0; trial < 60; ++trial) {
+    Orbit2D orbit;
+    orbit.target = {uniform(-5.0, 5.0), uniform(-5.0, 5.0)};
+    orbit.d = uniform(2.0, 10.0);
+    orbit.theta = uniform(-glm::pi<double>(), glm::pi<double>());
+    orbit.df = uniform(0.3, 3.0);
+    const int n = integer(2, 140);
+    const Camera2D camera(n, orbit);
+    Scene2D scene;  // circles around the target: some rays hit, some miss
+    for (int i = 0, count = integer(1, 6); i < count; ++i)
+      scene.circles.push_back({orbit.target + glm::dvec2(uniform(-2.5, 2.5), uniform(-2.5, 2.5)), uniform(0.2, 1.5),
+                               {200, 80, 40}, ""});
+    FigureOptions options;
+    options.rays = integer(2, std::min(n, 9));
+    const Figure figure = construction_figure_2d(scene, camera, options);
+    INFO("trial " << trial << ": " << n << " pixels, " << options.rays << " rays");
+    for (int f = 0; f < kFrames2D; ++f) {
+      INFO("frame " << f);
+      const Frame& frame = figure.frames[std::size_t(f)];
+      const glm::dmat3 m = frame_matrix_2d(camera, f);
+      const double size = glm::length(orbit.target) + orbit.d + orbit.df;
+      const auto ends = screen_corners_of(m);
+      std::vector<Segment> rays, ticks;
+      for (const Segment& s : frame.segments) {
+        if (s.stroke == Stroke::ray) rays.push_back(s);
+        if (s.stroke == Stroke::camera && !(near(s.from, ends[0], size) && near(s.to, ends[1], size))) ticks.push_back(s);
+      }
+      // The rays: evenly spread over the pixels, both ends included, each from P_k along u_k.
+      REQUIRE(int(rays.size()) == options.rays);
+      for (int i = 0; i < options.rays; ++i) {
+        const int k = int(std::lround(double(i) * (n - 1) / (options.rays - 1)));
+        const Ray2D ray = camera.primary_ray(k);
+        const glm::dvec2 from = f == 3 ? ray.origin : transform_point(m, camera.canonical_pixel(k));
+        const glm::dvec2 along =
+            f == 3 ? ray.direction : glm::normalize(transform_vector(m, camera.canonical_pixel(k) - kCanonicalEye2D));
+        const Segment& drawn = rays[std::size_t(i)];
+        INFO("ray " << i << ", pixel " << k);
+        CHECK(near(drawn.from, from, size));
+        CHECK(glm::length(glm::normalize(drawn.to - drawn.from) - along) < 1e-9);
+        if (f != 3) continue;
+        // Placed: the ray stops where the core's caster says this pixel's ray hits, or goes past every object.
+        const Hit hit = nearest_hit(scene.circles, ray, IntersectFormula::stable);
+        if (hit.id >= 0) {
+          CHECK(near(drawn.to, ray.origin + hit.t * ray.direction, size));
+        } else {
+          for (const Circle& circle : scene.circles)
+            CHECK(glm::length(drawn.to - drawn.from) > glm::length(circle.centre - from) + circle.radius);
+        }
+      }
+      // The ticks: each at a pixel centre, across the screen; the first and last pixels ticked; every pixel
+      // up to 64.
+      std::vector<int> ticked;
+      for (const Segment& tick : ticks) {
+        const glm::dvec2 middle = 0.5 * (tick.from + tick.to);
+        int k = 0;
+        while (k < n && !near(middle, transform_point(m, camera.canonical_pixel(k)), size)) ++k;
+        CHECK(k < n);
+        ticked.push_back(k);
+        CHECK(std::abs(glm::dot(glm::normalize(tick.to - tick.from), glm::normalize(ends[1] - ends[0]))) < 1e-9);
+      }
+      CHECK(std::count(ticked.begin(), ticked.end(), 0) == 1);
+      CHECK(std::count(ticked.begin(), ticked.end(), n - 1) == 1);
+      if (n <= 64) CHECK(int(ticked.size()) == n);
+    }
+    // The placed frame's SVG draws those rays where its page transform puts them.
+    FigureOutput output;
+    const std::string file = scratch.path("rays.svg");
+    write_figure(figure, {3}, output, file);
+    const auto drawn = rays_in_svg(read_text(file));
+    const Frame& placed = figure.frames[3];
+    const PageTransform to_page = page_transform(placed, output.page, output.matrix);
+    std::vector<Segment> rays;
+    for (const Segment& s : placed.segments)
+      if (s.stroke == Stroke::ray) rays.push_back(s);
+    REQUIRE(drawn.size() == rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      for (const auto& [page, plane] : {std::pair{drawn[i].first, rays[i].from}, std::pair{drawn[i].second, rays[i].to}}) {
+        CHECK(page.x == Approx(to_page.x(plane.x)).margin(0.01));
+        CHECK(page.y == Approx(to_page.y(plane.y)).margin(0.01));
+      }
+    }
+  }
+}
+
+TEST_CASE("a PNG figure fills each object in the scene's colour (red, green and blue in their places)", "[figure]") {
+  const test::ScratchDir scratch("figure-png-colours");
+  Scene2D scene;  // apart from each other, around the target of cameras_2d()
+  scene.circles = {{{1.0, -2.5}, 0.7, {230, 40, 30}, ""}, {{3.0, -0.5}, 0.6, {40, 200, 60}, ""},
+                   {{2.2, 1.5}, 0.6, {30, 60, 235}, ""}};
+  for (const Camera2D& camera : cameras_2d()) {
+    const Figure figure = construction_figure_2d(scene, camera, {});
+    const Frame& placed = figure.frames[3];  // the placed camera: objects in their colours
+    REQUIRE_FALSE(placed.objects_faded);
+    FigureOutput output;
+    output.format = Format::png;
+    output.page = page_in_px(900, 700);
+    const std::string file = scratch.path("colours.png");
+    write_figure(figure, {3}, output, file);
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(file.c_str(), &width, &height, &channels, 3);
+    REQUIRE(pixels);
+    const PageTransform to_page = page_transform(placed, output.page, output.matrix);
+    const double px_per_pt = double(output.page.width_px()) / output.page.width_pt;
+    auto at = [&](double x, double y) {
+      const std::size_t i = (std::size_t(std::lround(y)) * std::size_t(width) + std::size_t(std::lround(x))) * 3;
+      return glm::ivec3(pixels[i], pixels[i + 1], pixels[i + 2]);
+    };
+    CHECK(at(2, 2) == glm::ivec3(255));  // the page is white
+    for (const Disc& disc : placed.objects) {
+      // Filled at 80 % opacity over white; sampled on a grid inside half its radius (a ray or a line drawn
+      // over it changes a few samples, never most).
+      const glm::ivec3 expected = glm::ivec3(glm::round(0.8 * glm::dvec3(disc.colour.r, disc.colour.g, disc.colour.b) + 0.2 * 255.0));
+      const double cx = to_page.x(disc.centre.x) * px_per_pt, cy = to_page.y(disc.centre.y) * px_per_pt;
+      const double r = to_page.scale * disc.radius * px_per_pt;
+      REQUIRE(r > 8.0);
+      int samples = 0, matching = 0;
+      for (int i = -4; i <= 4; ++i)
+        for (int j = -4; j <= 4; ++j) {
+          if (i * i + j * j > 16) continue;
+          const glm::ivec3 got = at(cx + 0.125 * r * i, cy + 0.125 * r * j);
+          ++samples;
+          matching += glm::all(glm::lessThanEqual(glm::abs(got - expected), glm::ivec3(3)));
+        }
+      INFO("object coloured " << int(disc.colour.r) << ", " << int(disc.colour.g) << ", " << int(disc.colour.b));
+      CHECK(matching >= samples * 3 / 4);
+    }
+    stbi_image_free(pixels);
   }
 }
 

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -415,6 +416,88 @@ TEST_CASE("error reasons: an unknown reason stays in English, whole, and a known
   // A part that looks like a placeholder is shown as it is, never filled in turn.
   CHECK(translate_reason(Language::fr, "{path}: cannot open scene file") ==
         "{path} : impossible d'ouvrir le fichier de scène");
+}
+
+namespace {
+// The French of the JSON library's phrases, written for this test from their meaning (not read from the
+// table): the expected reasons below are assembled from it, each part placed where French puts it.
+const std::map<std::string, std::string> kFrenchPhrases = {
+    {"value", "une valeur"},
+    {"object key", "une clé d'objet"},
+    {"object separator", "un séparateur d'objet"},
+    {"object", "un objet"},
+    {"array", "un tableau"},
+    {"number literal", "nombre"},
+    {"string literal", "chaîne"},
+    {"end of input", "fin du texte"},
+    {"'[', '{', or a literal", "« [ », « { » ou un littéral"},
+};
+std::string phrase(const std::string& english) {
+  const auto found = kFrenchPhrases.find(english);
+  return found == kFrenchPhrases.end() ? english : found->second;  // a token such as ':' stays as it is
+}
+
+// "SOURCE: JSON syntax error at line L, column C: syntax error while parsing CONTEXT - unexpected GOT;
+// expected WANTED", in French.
+std::string french_syntax_error(int line, int column, const std::string& context, const std::string& got,
+                                const std::string& wanted) {
+  return "lesson.json : erreur de syntaxe JSON à la ligne " + std::to_string(line) + ", colonne " +
+         std::to_string(column) + " : erreur de syntaxe dans " + phrase(context) + " : reçu : " + phrase(got) +
+         " ; attendu : " + phrase(wanted);
+}
+}  // namespace
+
+TEST_CASE("error reasons: a sample of real reasons reads exactly as French writes it, each part in its place",
+          "[session][language][reasons]") {
+  test::ScratchDir scratch("reasons-exact");
+  const std::string scene3d = scratch.path("three.json");
+  std::ofstream(scene3d) << R"({"dimension": 3, "objects": []})";
+  Scene2D crowded;
+  crowded.circles.resize(kMaxExactBarCircles + 1);
+  const std::string broken = scratch.path("broken.sh");
+  std::ofstream(broken) << "#!/raycam-no-such-interpreter\n";
+  ::chmod(broken.c_str(), 0755);
+  const std::string cannot_run = check::run_student({broken}, "", {}, std::nullopt).error;
+  const std::string c_library_reason = cannot_run.substr(cannot_run.rfind(": ") + 2);
+  using End = check::RunResult::End;
+  const std::pair<std::string, std::string> sample[] = {
+      // The JSON library's reasons, got and wanted told apart (its wording: "unexpected GOT; expected WANTED").
+      {scene_error("{\"a\" 1}"), french_syntax_error(1, 6, "object separator", "number literal", "':'")},
+      {scene_error("{1: 2}"), french_syntax_error(1, 2, "object key", "number literal", "string literal")},
+      {scene_error("{\"a\": 1 \"b\": 2}"), french_syntax_error(1, 11, "object", "string literal", "'}'")},
+      {scene_error("[1 2]"), french_syntax_error(1, 4, "array", "number literal", "']'")},
+      {scene_error(""), french_syntax_error(1, 1, "value", "end of input", "'[', '{', or a literal")},
+      // A field, what it expects, what it got.
+      {scene_error(R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": -1}]})"),
+       "lesson.json : objects[0].radius : on attend un nombre dans ]0, 1e12] ; reçu : -1"},
+      {scene_error(R"({"dimension": "3", "objects": []})"),
+       "lesson.json : dimension : on attend un entier dans [2, 3] ; reçu : \"3\""},
+      // The flags against the file: the flag's value first, the file's kind last.
+      {thrown_by([&] {
+         ViewFlags flags;
+         flags.scene_path = scene3d;
+         flags.dimension = 2;
+         make_view_setup(flags);
+       }),
+       "--mode : 2d ne correspond pas au fichier de scène " + scene3d + ", qui est en 3D"},
+      // The exact bar: its maximum, then the count it got.
+      {thrown_by([&] { exact_footprint(Camera2D(64), crowded); }),
+       "circles : la barre exacte prend au plus " + std::to_string(kMaxExactBarCircles) +
+           " cercles (son coût est quadratique) ; reçu : " + std::to_string(kMaxExactBarCircles + 1)},
+      // How a run ended: the exit status, then the signal it stands for.
+      {detail_of(ended(End::exited, 137)), "code de sortie 137 (tué par le signal 9 (SIGKILL) ?)"},
+      {detail_of(ended(End::signalled, 11)), "tué par le signal 11 (SIGSEGV)"},
+      {cannot_run, "impossible de lancer « " + broken + " » : " + c_library_reason},
+      // Answers: what was expected, then what came.
+      {answer_error(R"({"ids": [0, 0]})"), "on attend 4 identifiants ; reçu : 2"},
+      {answer_error(R"({"ids": [0, 0, 0, 7]})"), "ids[3] = 7 : on attend un identifiant dans [-1, 1]"},
+      {answer_error(R"({"ids": [[0, 0], [0]]})", 3), "ids[1] : 1 colonnes alors que la ligne 0 en a 2"},
+      {answer_error(R"({"ids": [[0, 0], [0, 0], [0, 0]]})", 3), "on attend 2 lignes de 2 identifiants ; davantage reçues"},
+  };
+  for (const auto& [english, french] : sample) {
+    INFO(english);
+    CHECK(translate_reason(Language::fr, english) == french);
+  }
 }
 
 TEST_CASE("error reasons: the window's messages and the check report show them in the window's language",

@@ -91,6 +91,51 @@ TEST_CASE("Save as never writes over a file without a yes, and never defaults to
   CHECK(state.message_is_error);
 }
 
+TEST_CASE("Open resets every field that belonged to the scene on screen before", "[ui][files]") {
+  Scratch scratch;
+  const std::string first = (scratch.dir / "first.json").string(), second = (scratch.dir / "second.json").string();
+  ui::AppState state = state_for({"--theta", "40", "--phi", "70"});
+  REQUIRE(ui::save_preset(state, second));  // the camera the second file holds
+  const Orbit3D saved = state.orbit3d;
+  REQUIRE(ui::save_preset(state, first));
+  REQUIRE(ui::open_scene(state, first));
+  // Everything a user can have left behind on the first scene.
+  state.save_path = (scratch.dir / "typed-for-first.json").string();  // typed in Save as, not saved yet
+  state.overwrite_pending = first;                                     // a Replace question not answered
+  state.path_input = (scratch.dir / "half-typed").string();
+  state.pinned_pixel = ui::PixelIndex{3, 4};
+  state.construction_step = 2;
+  state.other_scene_path = first;
+  state.orbit3d.theta = 0.25;
+  state.orbit3d.d = 2.5;
+  state.res = 0.5;
+  state.overhead_fit_pending = false;
+  state.cameras_dirty = false;
+  ui::set_message(state, ui::MessageSource::camera, true, "an old error");
+  const std::uint64_t version = state.scene_version;
+
+  REQUIRE(ui::open_scene(state, second));
+  CHECK(state.save_path.empty());          // Save as never offers the old scene's path
+  CHECK(state.overwrite_pending.empty());  // nor its pending Replace
+  CHECK(state.path_input == second);
+  CHECK(state.scene_path == second);
+  CHECK(state.other_scene_path.empty());  // the other kind's scene is the demo again
+  CHECK_FALSE(state.pinned_pixel);
+  CHECK(state.construction_step == -1);
+  CHECK(state.orbit3d.theta == Approx(saved.theta));  // the file's camera, not the one moved
+  CHECK(state.orbit3d.d == Approx(saved.d));
+  CHECK(state.preset_orbit3d.theta == state.orbit3d.theta);  // Reset camera returns to the file's camera
+  CHECK(state.res == 1.0);
+  CHECK(state.preset_res == 1.0);
+  CHECK(state.overhead_fit_pending);
+  CHECK(state.cameras_dirty);
+  CHECK(state.scene_version > version);
+  CHECK_FALSE(state.message_is_error);
+  CHECK(state.message_source == ui::MessageSource::files);
+  ui::recast_if_needed(state);
+  CHECK_FALSE(state.pinned_pixel);  // no pin comes back on the new image
+}
+
 TEST_CASE("Replace writes the file the prompt names, as the panel's button calls it", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "lesson.json").string();

@@ -11,6 +11,8 @@
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
   close-sleep        closes its stdout and stderr at once, then sleeps far past any timeout
   forks N            starts N children that sleep, says on stderr how many it could start
+  write PATH...      tries to write each PATH (appending), says on stderr which it could ("wrote PATH")
+                     and which not ("stopped PATH"), then answers nonsense
   snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
                      ("read PATH") and which not ("stopped PATH")
 """
@@ -76,6 +78,16 @@ if mode == "snoop":
         except OSError as error:
             print("stopped", path, type(error).__name__, file=sys.stderr)
     print("uid", os.getuid(), file=sys.stderr)
+    sys.exit(0)
+if mode == "write":
+    for path in sys.argv[2:]:
+        try:
+            with open(path, "a") as out:
+                out.write("written by the student")
+            print("wrote", path, file=sys.stderr)
+        except OSError as error:
+            print("stopped", path, type(error).__name__, file=sys.stderr)
+    print('{"ids": []}')
     sys.exit(0)
 if mode == "escape":
     port, path = int(sys.argv[2]), sys.argv[3]
