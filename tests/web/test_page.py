@@ -13,6 +13,18 @@ import sys
 import tempfile
 import time
 
+# What scripts/web.sh --build-only writes. A native build alone has none of it (a fresh clone's first
+# `ctest`): one line says what to run, and the exit code is CTest's skip code (SKIP_RETURN_CODE 77 in
+# tests/web/CMakeLists.txt), not a failure of the page. scripts/test.sh and CI build the page first.
+PAGE_FILES = ("index.html", "index.js", "index.wasm", "index.data")
+SKIPPED = 77
+if len(sys.argv) == 4:
+    missing = [name for name in PAGE_FILES if not os.path.isfile(os.path.join(sys.argv[1], name))]
+    if missing:
+        print("skipped: %s has no built page (%s missing): run ./scripts/web.sh --build-only first"
+              % (sys.argv[1], ", ".join(missing)), flush=True)
+        sys.exit(SKIPPED)
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_driver import Page  # noqa: E402
 
