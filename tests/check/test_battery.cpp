@@ -126,15 +126,14 @@ int offset_in_stream(const std::vector<double>& stream, const DesignedTarget& de
 
 TEST_CASE("a seed's designed cases are the first draw of its documented jitter that reveals their mistakes",
           "[check][battery]") {
-  // For these seeds every design reveals its mistakes at its first draw, as the designs mean to: the
-  // battery keeps that draw, its target the stream's first numbers. At the default seed a case may be drawn
-  // again once or twice (one is), never pushed far down the stream.
-  const std::uint64_t first_draw_seeds[] = {1, 77, 914273, 31337};
+  // For the seeds other than the default every design reveals its mistakes at its first draw, as the
+  // designs mean to: the battery keeps that draw, its target the stream's first numbers. At the default seed
+  // a case may be drawn again once or twice (one is), never pushed far down the stream.
   for (const BatteryMode mode : {BatteryMode::two_d, BatteryMode::three_d}) {
     const std::vector<DesignedTarget>& targets = mode == BatteryMode::two_d ? kTargets2D : kTargets3D;
     REQUIRE(designed_case_count(mode) == int(targets.size()));
-    for (const std::uint64_t seed : {kDefaultSeed, first_draw_seeds[0], first_draw_seeds[1], first_draw_seeds[2],
-                                     first_draw_seeds[3]}) {
+    for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(1), std::uint64_t(77), std::uint64_t(914273),
+                                     std::uint64_t(31337)}) {
       const std::vector<CheckCase> battery = make_battery(mode, int(targets.size()), seed);
       for (std::size_t i = 0; i < targets.size(); ++i) {
         INFO("seed " << seed << ", " << battery[i].purpose);
