@@ -22,6 +22,9 @@ struct ReportHeader {
 // The terminal text: one line per case, the score, the diagnosis, then the stderr of failing runs.
 std::string text_report(const ReportHeader& header, const std::vector<CheckCase>& cases, const StudentReport& report);
 
+// A case's "worst pixel or reason" in the table: the worst pixel of a failing case, else the run's detail.
+std::string case_reason(const std::string& lang, const CaseResult& r);
+
 // --report: {"cases": N, "passed": P, "diagnosis": [{"mistake": ID, "explains": K, "text": ...}...],
 //            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.
 std::string json_report(const ReportHeader& header, const StudentReport& report);
@@ -29,6 +32,8 @@ std::string json_report(const ReportHeader& header, const StudentReport& report)
 // --batch --csv: the header line, and one row per student.
 std::string csv_header();
 std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed);
+// The student's field as csv_row writes it (the key `check merge` joins rows by).
+std::string csv_student_field(const std::string& student);
 
 // --diff-dir: DIR/case_NN.png for every failing case with an answer: reference | student | difference (wrong
 // pixels red, ambiguous ones yellow, agreeing ones dimmed); 2D bars in image order, drawn tall. Returns the
@@ -36,6 +41,8 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
 // Writes `path` through `write_to(temporary)`: a new file beside it (mkstemp, so never a link a program left),
 // then renamed over it: a link at `path` is replaced, not followed, and a failed write leaves `path` as it was.
 void write_replacing(const std::string& path, const std::function<void(const std::string& temporary)>& write_to);
+// write_replacing with `text` as the file's bytes.
+void write_text_file(const std::string& path, const std::string& text);
 
 std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
                                                  const std::vector<CaseImage>& references,

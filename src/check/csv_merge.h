@@ -1,0 +1,29 @@
+// `check merge`: the shards' CSVs joined into the CSV one --batch run over every student would have written,
+// byte for byte. Rows are opaque lines keyed by their first field (the student), so whatever columns a row
+// holds are carried over as they are; only the header lines must be equal.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "batch_record.h"
+
+namespace raycam::check {
+
+struct MergedCsv {
+  std::string text;    // the header line, then every student's row in the batch's (sorted) order
+  BatchRecord record;  // the shards' record as shard 1/1: what a single run writes beside its CSV
+};
+
+// Reads each CSV and its battery sidecar. Throws std::invalid_argument listing every problem: a different
+// battery, header or batch, a student in two shards (or twice in one), a student in no shard (with the shards
+// not given), a row for a student not in the batch or in another slice, a row cut off.
+MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths);
+
+// CSV records (lines, except that a newline inside double quotes stays in its record), each with its "\n";
+// a last record without its "\n" (a write cut off) is returned without it.
+std::vector<std::string> csv_records(const std::string& text);
+// A record's first field as written (still quoted when it was).
+std::string csv_first_field(const std::string& record);
+
+}  // namespace raycam::check
