@@ -21,7 +21,8 @@ std::string with_last_field(const std::string& line, const std::string& field);
 // Gradescope's visibility values, as its autograder specification lists them.
 const std::vector<std::string>& gradescope_visibilities();
 
-// Gradescope's results.json: "score" out of "max_score" (= scale), "output" (the text report), "visibility",
+// Gradescope's results.json: "score" (out of scale, the sum of the tests' max_score), "output" (the text
+// report), "visibility",
 // and one test per case: "name" (number, dimension, what the case exercises), "number", "score",
 // "max_score" (scale / cases), "status" ("passed" or "failed"), "output" (the case's line of the table and
 // the mistakes that reproduce it), "visibility".

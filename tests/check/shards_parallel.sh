@@ -44,6 +44,10 @@ battery="--cases 4 --seed 914273 --threads 1"
 "$cli" check --batch class --student-cmd "{dir}/run.sh" $battery --csv single.csv > single.log 2>&1
 status=$?
 [ "$status" -eq 1 ] || { cat single.log; fail "the single run exited $status (1 expected: some students fail)"; }
+# Real grading, not a class of crashes: the example passes, a mistaken student is diagnosed.
+grep -q '^ada,4,4,100.0,' single.csv || { cat single.csv; fail "ada (the example) does not pass"; }
+grep -q '^gus,0,4,0.0,mirrored,' single.csv || { cat single.csv; fail "gus is not diagnosed 'mirrored'"; }
+grep -q '^fay,4,4,100.0,' single.csv || { cat single.csv; fail "fay (the Python example) does not pass"; }
 
 # The recipe, as docs/check.md gives it (-q: the template's space stays inside one argument).
 # shellcheck disable=SC2086
