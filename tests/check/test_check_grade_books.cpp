@@ -84,7 +84,7 @@ json read_json(const std::string& path) {
 }
 }  // namespace
 
-TEST_CASE("--gradescope writes a results.json with Gradescope's documented fields", "[check][gradescope]") {
+TEST_CASE("the flag --gradescope writes a results.json with Gradescope's documented fields", "[check][gradescope]") {
   const std::string file = scratch().path("results.json");
   SECTION("a passing camera: every test passed, the score out of 20") {
     const auto [status, output] = run_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 4 --gradescope " + file);

@@ -39,7 +39,7 @@ TEST_CASE("every student is in exactly one slice, the slices are even, and a new
   CHECK(shard_of("alice", 3) == int(fnv1a_64("alice") % 3) + 1);  // the documented rule
 }
 
-TEST_CASE("--shard accepts i/N with 1 <= i <= N and refuses the rest, naming the flag", "[check][shards]") {
+TEST_CASE("the flag --shard accepts i/N with 1 <= i <= N and refuses the rest, naming the flag", "[check][shards]") {
   CHECK(parse_shard("1/1", "--shard").count == 1);
   CHECK(parse_shard("3/3", "--shard").index == 3);
   CHECK(parse_shard("10000/10000", "--shard").index == 10000);
