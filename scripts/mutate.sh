@@ -125,6 +125,18 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+# --- a large course: shards, merge, grade books ---
+SHARDS="^check:.*(slice|shard|--shard|csv records|merge|Gradescope|gradescope|CSV's last column)|^check: (GNU parallel|Gradescope)"
+mutant shard-hash-not-fnv src/check/shards.cpp 's/    hash \*= 1099511628211ull;/    hash *= 1099511628213ull;/' "$CHECK" "$SHARDS"
+mutant shard-keeps-every-student src/cli/check_command.cpp 's/\[\&\](const Submission\& s) { return shard_of(s.name, shard.count) != shard.index; }/[\&](const Submission\&) { return false; }/' "$CHECK" "$SHARDS"
+mutant shard-exit-1-when-a-student-fails src/cli/check_command.cpp 's/    if (report.count(CaseStatus::checker_error) > 0) return 1;/    if (report.passed() < int(report.results.size())) return 1;/' "$CHECK" "$SHARDS"
+mutant merge-key-ignores-quotes src/check/csv_merge.cpp "s/    if (record\[i\] == '\"') quoted = !quoted;/    if (false) quoted = !quoted;/" "$CHECK" "$SHARDS"
+mutant merge-ignores-the-seed src/check/batch_record.cpp 's/differs("seed", seed, other.seed)/differs("seed", seed, seed)/' "$CHECK" "$SHARDS"
+mutant merge-allows-overlaps src/check/csv_merge.cpp 's/} else if (const auto seen = file_of_key.find(key); seen != file_of_key.end()) {/} else if (const auto seen = file_of_key.find(key); false \&\& seen != file_of_key.end()) {/' "$CHECK" "$SHARDS"
+mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/    if (row == row_of_key.end()) missing.push_back(student);/    if (row == row_of_key.end()) continue;/' "$CHECK" "$SHARDS"
+mutant gradescope-status-pass-fail src/check/lms_grades.cpp 's/{"status", passed ? "passed" : "failed"}/{"status", passed ? "pass" : "fail"}/' "$CHECK" "$SHARDS"
+mutant grade-out-of-100-whatever-the-scale src/check/lms_grades.cpp 's/  return n ? scale \* report.passed() \/ double(n) : 0.0;/  return n ? 100.0 * report.passed() \/ double(n) : 0.0;/' "$CHECK" "$SHARDS"
+mutant autograder-runs-a-path-lookup examples/gradescope/run_autograder 's/  what=(--student .\/camera)/  what=(--student camera)/' "$CHECK" "$SHARDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
