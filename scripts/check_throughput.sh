@@ -46,22 +46,24 @@ for i in $(seq 1 "$students"); do
   esac
 done
 
-# seconds COMMAND...: the wall time of one run, in seconds.
+# seconds COMMAND...: the wall time of one run, and the CPU time (user + system) of the processes it waited
+# for, in seconds. The CPU time is kept only where every process is a direct child (python3's start-up, the
+# answer files): check's runs are grandchildren reparented away from it, whose time no parent collects.
 seconds() {
-  local start end
-  start=$(date +%s.%N)
-  "$@" > /dev/null 2>&1 || true  # check exits 1 when a student fails: that is the point here
-  end=$(date +%s.%N)
-  calc "$end - $start"
+  local TIMEFORMAT='%R %U %S' times
+  times=$( { time "$@" > /dev/null 2>&1; } 2>&1 ) || true  # check exits 1 when a student fails: the point here
+  awk '{print $1, $2 + $3}' <<< "$times"
 }
 calc() { awk "BEGIN {print $1}"; }
 median() { sort -n | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
-# timed NAME COMMAND...: the median of REPEATS runs.
+# timed COMMAND...: "WALL CPU", each the median of REPEATS runs.
 timed() {
-  local name=$1
-  shift
-  for _ in $(seq 1 "$repeats"); do seconds "$@"; done | median
+  local runs
+  runs=$(for _ in $(seq 1 "$repeats"); do seconds "$@"; done)
+  echo "$(cut -d' ' -f1 <<< "$runs" | median) $(cut -d' ' -f2 <<< "$runs" | median)"
 }
+wall() { echo "${1% *}"; }
+cpu() { echo "${1#* }"; }
 
 batch=(check --batch class --student-cmd "{dir}/run.sh")
 one_shard() { "$cli" "${batch[@]}" --csv one.csv; }
@@ -69,29 +71,36 @@ two_shards() {
   parallel --will-cite -q -j2 "$cli" "${batch[@]}" --threads "$1" --shard {}/2 --csv two{}.csv ::: 1 2
   "$cli" check merge --csv two.csv two1.csv two2.csv
 }
-one=$(timed one one_shard)
-two_half=$(timed two two_shards "$half")
-two_full=$(timed two two_shards "$cores")
+one=$(timed one_shard)
+two_half=$(timed two_shards "$half")
+two_full=$(timed two_shards "$cores")
 cmp one.csv two.csv  # the same grades either way
+cp one.csv "${THROUGHPUT_CSV:-/dev/null}"
 
 cpp_count=$(find cpp -mindepth 1 -maxdepth 1 -type d | wc -l)
-sandboxed=$(timed cpp "$cli" check --batch cpp --student-cmd "{dir}/run.sh" --csv cpp.csv)
-bare=$(timed cpp "$cli" check --batch cpp --student-cmd "{dir}/run.sh" --csv cpp.csv --no-sandbox)
-python_start=$(timed python bash -c 'for _ in $(seq 20); do python3 -c pass; done')
+sandboxed=$(timed "$cli" check --batch cpp --student-cmd "{dir}/run.sh" --csv cpp.csv)
+bare=$(timed "$cli" check --batch cpp --student-cmd "{dir}/run.sh" --csv cpp.csv --no-sandbox)
+python_start=$(timed bash -c 'for _ in $(seq 20); do python3 -c pass; done')
 "$cli" check --write-cases cases > /dev/null
 for k in $(seq -w 1 12); do "$mistaken" --mistake mirrored < "cases/case_$k.json" > "cases/answer_$k.json"; done
-answers=$(timed answers "$cli" check --answers cases)
+answers=$(timed "$cli" check --answers cases)
 
 per_minute() { awk "BEGIN {printf \"%.0f\", 60 * $students / $1}"; }
 printf '%s students (default battery: 12 cases), %s cores, median of %s runs; load average at the end: %s\n' \
   "$students" "$cores" "$repeats" "$(cut -d" " -f1-3 /proc/loadavg)"
 printf '| way | seconds | students per minute |\n|---|---|---|\n'
-printf '| one shard, --threads %s | %.1f | %s |\n' "$cores" "$one" "$(per_minute "$one")"
-printf '| two shards at once, --threads %s each | %.1f | %s |\n' "$half" "$two_half" "$(per_minute "$two_half")"
-printf '| two shards at once, --threads %s each | %.1f | %s |\n' "$cores" "$two_full" "$(per_minute "$two_full")"
-printf 'where the time goes, per run (%s C++ students x 12 cases = %s runs):\n' "$cpp_count" "$((cpp_count * 12))"
-printf '  sandbox start: %.1f ms (%.2f s sandboxed - %.2f s without, over the runs, %s cores)\n' \
-  "$(calc "1000 * ($sandboxed - $bare) * $cores / ($cpp_count * 12)")" "$sandboxed" "$bare" "$cores"
-printf '  python3 start-up: %.1f ms\n' "$(calc "1000 * $python_start / 20")"
-printf '  grading 12 answer files of a mirrored camera, diagnosis included, no program: %.2f s (%.0f ms per case)\n' \
-  "$answers" "$(calc "1000 * $answers / 12")"
+row() { printf '| %s | %.1f | %s |\n' "$1" "$(wall "$2")" "$(per_minute "$(wall "$2")")"; }
+row "one shard, --threads $cores" "$one"
+row "two shards at once, --threads $half each" "$two_half"
+row "two shards at once, --threads $cores each" "$two_full"
+runs=$((cpp_count * 12))
+printf 'where the time goes, per run:\n'
+printf '  the C++ example (%s runs, %s at once): %.1f ms sandboxed, %.1f ms without: the sandbox costs %.1f ms\n' \
+  "$runs" "$cores" "$(calc "1000 * $(wall "$sandboxed") * $cores / $runs")" \
+  "$(calc "1000 * $(wall "$bare") * $cores / $runs")" "$(calc "1000 * ($(wall "$sandboxed") - $(wall "$bare")) * $cores / $runs")"
+printf '  python3 start-up alone: %.1f ms CPU, %.1f ms wall\n' "$(calc "1000 * $(cpu "$python_start") / 20")" \
+  "$(calc "1000 * $(wall "$python_start") / 20")"
+printf '  grading an answer of a mirrored camera, diagnosis included, no program: %.0f ms CPU per case\n' \
+  "$(calc "1000 * $(cpu "$answers") / 12")"
+printf '16 cores, if the runs scale as the independent processes they are: about %s students per minute\n' \
+  "$(calc "int(16 / $cores * $(per_minute "$(wall "$one")"))")"

@@ -137,6 +137,11 @@ mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/    if (row == 
 mutant gradescope-status-pass-fail src/check/lms_grades.cpp 's/{"status", passed ? "passed" : "failed"}/{"status", passed ? "pass" : "fail"}/' "$CHECK" "$SHARDS"
 mutant grade-out-of-100-whatever-the-scale src/check/lms_grades.cpp 's/  return n ? scale \* report.passed() \/ double(n) : 0.0;/  return n ? 100.0 * report.passed() \/ double(n) : 0.0;/' "$CHECK" "$SHARDS"
 mutant autograder-runs-a-path-lookup examples/gradescope/run_autograder 's/  what=(--student .\/camera)/  what=(--student camera)/' "$CHECK" "$SHARDS"
+mutant shard-slices-from-zero src/check/shards.cpp 's/return int(fnv1a_64(name) % std::uint64_t(count)) + 1; }/return int(fnv1a_64(name) % std::uint64_t(count)); }/' "$CHECK" "$SHARDS"
+mutant shard-index-above-count-accepted src/check/shards.cpp 's/ || shard.index > shard.count)/)/' "$CHECK" "$SHARDS"
+mutant shard-without-batch-accepted src/cli/check_command.cpp 's/  if (!flags.shard.empty() \&\& !batch) throw/  if (false) throw/' "$CHECK" "$SHARDS"
+mutant csv-record-split-inside-quotes src/check/csv_merge.cpp 's/    if (text\[i\] == .".) quoted = !quoted;  \/\/ "" inside/    if (false) quoted = !quoted;  \/\/ "" inside/' "$CHECK" "$SHARDS"
+mutant merged-record-keeps-the-shard src/check/csv_merge.cpp 's/  merged.record.shard = Shard{1, 1};/  (void)0;/' "$CHECK" "$SHARDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

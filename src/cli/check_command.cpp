@@ -284,10 +284,12 @@ int run_check(const Args& args) {
   add_checked_option<int>(app, "--lang", "fr|en", "language of the report (default: from LANG)",
                           flags::one_of(languages), [&](int i) { flags.lang = languages[std::size_t(i)]; });
   app.add_option("--shard", flags.shard,
-                 "--batch: grade only slice i of N (i/N; a student's slice is a hash of its folder name)");
+                 "--batch: grade only slice i of N (a student's slice is a hash of its folder name)")
+      ->type_name("i/N");
   add_checked_option<double>(app, "--scale", "MAX", "the CSV's last column and Gradescope's score: out of MAX (default 20)",
                              flags::number_in({0.01, 1e6}), [&](double scale) { flags.scale = scale; });
-  app.add_option("--gradescope", flags.gradescope, "--student or --answers: write Gradescope's results.json to FILE");
+  app.add_option("--gradescope", flags.gradescope, "--student or --answers: write Gradescope's results.json to FILE")
+      ->type_name("FILE");
   add_checked_option<int>(app, "--visibility", "visible|hidden|after_due_date|after_published",
                           "--gradescope: when students see the tests (default visible)",
                           flags::one_of(gradescope_visibilities()),

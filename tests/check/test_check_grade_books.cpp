@@ -1,8 +1,10 @@
 // Grades where a course keeps them: Gradescope's results.json checked against the fields Gradescope's
 // autograder specification documents (names, types, statuses, visibilities, scores adding up), and the --batch
-// CSV's last column, the grade out of --scale (20 by default) that Moodle's grade import reads.
+// CSV's last column, the grade out of --scale (20 by default) that Moodle's grade import reads. And the
+// command line of a large course's shards (bad usage, an empty slice, merge's usage).
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -159,4 +161,49 @@ TEST_CASE("the batch CSV's last column is the grade out of --scale, for Moodle's
     CHECK(rows == 2);
     CHECK(partly == 1);  // bob: a grade strictly between 0 and the scale
   }
+}
+
+TEST_CASE("shards on the command line: bad usage before any run, an empty slice, merge's own usage",
+          "[check][shards][cli]") {
+  const std::string root = scratch().path("lone");
+  fs::create_directories(root + "/ann");
+  fs::copy_file(EXAMPLE_STUDENT_CPP, root + "/ann/camera", fs::copy_options::overwrite_existing);
+  const std::string batch = "--batch " + root + " --student-cmd \"{dir}/camera\" --cases 1 ";
+  auto [status, output] = run_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --shard 1/2");
+  CHECK(status == 2);
+  CHECK_THAT(output, Catch::Contains("--shard: only with --batch"));
+  std::tie(status, output) = run_check(batch + "--csv " + scratch().path("bad.csv") + " --shard 3/2");
+  CHECK(status == 2);
+  CHECK_THAT(output, Catch::Contains("--shard: expected i/N with 1 <= i <= N"));
+  CHECK_FALSE(fs::exists(scratch().path("bad.csv")));  // nothing ran, nothing written
+
+  // One student in two slices: one slice is empty (its CSV is the header line) and still exits 0.
+  std::vector<std::string> csvs;
+  for (int i = 1; i <= 2; ++i) {
+    csvs.push_back(scratch().path("lone" + std::to_string(i) + ".csv"));
+    std::tie(status, output) = run_check(batch + "--csv " + csvs.back() + " --shard " + std::to_string(i) + "/2");
+    INFO(output);
+    CHECK(status == 0);
+  }
+  std::tie(status, output) = run_check(batch + "--csv " + scratch().path("lone.csv"));
+  CHECK(status == 0);
+  std::tie(status, output) = run_check("merge --csv " + scratch().path("merged.csv") + " " + csvs[0] + " " + csvs[1]);
+  INFO(output);
+  CHECK(status == 0);
+  auto text = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  };
+  CHECK(text(scratch().path("merged.csv")) == text(scratch().path("lone.csv")));
+  const std::string both = text(csvs[0]) + text(csvs[1]);
+  CHECK(std::count(both.begin(), both.end(), '\n') == 3);  // two header lines, one row
+
+  std::tie(status, output) = run_check("merge " + csvs[0]);
+  CHECK(status == 2);
+  CHECK_THAT(output, Catch::Contains("--csv"));
+  std::tie(status, output) = run_check("merge --csv " + scratch().path("m.csv") + " " + scratch().path("none.csv"));
+  CHECK(status == 2);
+  CHECK_THAT(output, Catch::Contains("none.csv.battery.json: cannot read"));
 }
