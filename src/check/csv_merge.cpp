@@ -54,7 +54,7 @@ std::string csv_first_field(const std::string& record) {
 }
 
 MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
-  if (csv_paths.empty()) throw std::invalid_argument("check merge: expected the shards' CSV files");
+  if (csv_paths.empty()) throw std::invalid_argument("merge: expected the shards' CSV files");
   std::vector<std::string> problems;
   std::string header;
   BatchRecord first;
@@ -115,7 +115,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
                        (not_given.empty() ? "" : " (shards not given: " + not_given + ")"));
   }
   if (!problems.empty()) {
-    std::string message = "check merge: refused (nothing written): ";
+    std::string message = "merge refused (nothing written): ";
     for (std::size_t i = 0; i < problems.size(); ++i) message += (i ? "; " : "") + problems[i];
     throw std::invalid_argument(message);
   }
