@@ -25,8 +25,8 @@ struct BatchRecord {
   Shard shard;
   std::vector<std::string> students;  // every folder of the batch, sorted, not only this shard's
 
-  // The fields that must agree for two CSVs to be one grading (all but the shard), named when they do not.
-  // Empty when they agree.
+  // The fields that must agree for two CSVs to be one grading (all but the shard and the students: a student
+  // added after one shard ran is the merge's business), named when they do not. Empty when they agree.
   std::string difference_from(const BatchRecord& other) const;
 };
 

@@ -60,6 +60,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
   BatchRecord first;
   std::map<std::string, std::string> row_of_key, file_of_key;  // key: the student's field as the row writes it
   std::set<int> shards_given;
+  std::set<std::string> batch;  // every student any shard saw: one added after a shard ran is in later ones only
   for (std::size_t f = 0; f < csv_paths.size(); ++f) {
     const std::string& path = csv_paths[f];
     const BatchRecord record = read_battery_record(battery_sidecar_path(path));
@@ -77,6 +78,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
     }
     if (!shards_given.insert(record.shard.index).second)
       problems.push_back(path + ": shard " + shard_text(record.shard) + " given twice");
+    batch.insert(record.students.begin(), record.students.end());
     std::map<std::string, const std::string*> student_of_key;
     for (const std::string& student : record.students) student_of_key[csv_student_field(student)] = &student;
     for (std::size_t r = 1; r < records.size(); ++r) {
@@ -86,7 +88,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
       if (row.back() != '\n') {
         problems.push_back(path + ": its last row (" + key + ") is cut off: grade that shard again");
       } else if (student == student_of_key.end()) {
-        problems.push_back(path + ": a row for " + key + ", who is not in the batch");
+        problems.push_back(path + ": a row for " + key + ", who is not in the batch it saw");
       } else if (shard_of(*student->second, record.shard.count) != record.shard.index) {
         problems.push_back(path + ": a row for " + key + ", who is in shard " +
                            std::to_string(shard_of(*student->second, record.shard.count)) + ", not " +
@@ -101,10 +103,12 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
   }
   MergedCsv merged{header, first};
   merged.record.shard = Shard{1, 1};
-  std::vector<std::string> missing;
-  for (const std::string& student : first.students) {
+  merged.record.students.assign(batch.begin(), batch.end());  // sorted as a single run sorts its folders
+  std::vector<std::string> missing;  // "name (i/N)": the slice to grade again
+  for (const std::string& student : merged.record.students) {
     const auto row = row_of_key.find(csv_student_field(student));
-    if (row == row_of_key.end()) missing.push_back(student);
+    if (row == row_of_key.end())
+      missing.push_back(student + " (" + shard_text(Shard{shard_of(student, first.shard.count), first.shard.count}) + ")");
     else merged.text += row->second;
   }
   if (!missing.empty()) {

@@ -15,9 +15,11 @@ struct MergedCsv {
   BatchRecord record;  // the shards' record as shard 1/1: what a single run writes beside its CSV
 };
 
-// Reads each CSV and its battery sidecar. Throws std::invalid_argument listing every problem: a different
-// battery, header or batch, a student in two shards (or twice in one), a student in no shard (with the shards
-// not given), a row for a student not in the batch or in another slice, a row cut off.
+// Reads each CSV and its battery sidecar. The batch is every student any shard saw (a student added after
+// a shard ran is missing until that student's slice is graded again; the others need not be). Throws
+// std::invalid_argument listing every problem: a different battery or header, a student in two shards (or
+// twice in one), a student in no shard (with its slice, and the shards not given), a row for a student its
+// shard did not see or in another slice, a row cut off.
 MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths);
 
 // CSV records (lines, except that a newline inside double quotes stays in its record), each with its "\n";

@@ -1,6 +1,7 @@
 // A large course (docs/check.md): the shards' split (a published hash of the folder name, stable when
 // students are added, balanced), and `check merge` on hand-written shards: rows joined whatever their
 // columns, and every refusal naming what is wrong.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <map>
@@ -170,5 +171,41 @@ TEST_CASE("merge refuses missing students, overlaps, another battery or header, 
   SECTION("a CSV without its battery record") {
     std::ofstream(hand.dir.path("bare.csv")) << hand.header;
     CHECK_THAT(refusal({one, hand.dir.path("bare.csv")}), Catch::Contains("bare.csv.battery.json: cannot read"));
+  }
+}
+
+TEST_CASE("a student added after some shards ran: only that student's slice is graded again",
+          "[check][shards][merge]") {
+  HandShards hand;
+  const std::vector<std::string> before = hand.students;
+  const std::string late = "latecomer";  // sorts between the others
+  const int slice = shard_of(late, 2), other = 3 - slice;
+  std::vector<std::string> after = before;
+  after.push_back(late);
+  std::sort(after.begin(), after.end());
+
+  hand.students = after;  // every slice's rows, the newcomer's included
+  const auto rows = hand.slices(2);
+  hand.students = before;  // the other slice ran before the newcomer arrived
+  const std::string earlier = hand.write("other.csv", other, 2, rows[std::size_t(other)]);
+
+  SECTION("its slice graded after it arrived: merged, the newcomer in its place") {
+    hand.students = after;
+    const std::string graded = hand.write("late.csv", slice, 2, rows[std::size_t(slice)]);
+    const MergedCsv merged = merge_shard_csvs({earlier, graded});
+    std::string expected = hand.header;
+    for (const std::string& s : after) expected += HandShards::row(s);
+    CHECK(merged.text == expected);
+    CHECK(merged.record.students == after);
+  }
+  SECTION("its slice graded before it arrived: the newcomer is missing, with its slice") {
+    std::vector<std::string> without;
+    for (const std::string& row : rows[std::size_t(slice)])
+      if (row.rfind(late + ",", 0) != 0) without.push_back(row);
+    const std::string stale = hand.write("stale.csv", slice, 2, without);
+    hand.students = after;
+    const std::string newer = hand.write("newer.csv", other, 2, rows[std::size_t(other)]);
+    CHECK_THAT(refusal({stale, newer}),
+               Catch::Contains("missing students: " + late + " (" + std::to_string(slice) + "/2)"));
   }
 }
