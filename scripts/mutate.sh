@@ -144,6 +144,7 @@ mutant shard-without-batch-accepted src/cli/check_command.cpp 's/  if (!flags.sh
 mutant csv-record-split-inside-quotes src/check/csv_merge.cpp 's/    if (text\[i\] == .".) quoted = !quoted;  \/\/ "" inside/    if (false) quoted = !quoted;  \/\/ "" inside/' "$CHECK" "$SHARDS"
 mutant merged-record-keeps-the-shard src/check/csv_merge.cpp 's/  merged.record.shard = Shard{1, 1};/  (void)0;/' "$CHECK" "$SHARDS"
 mutant merge-batch-of-the-first-shard src/check/csv_merge.cpp 's/  merged.record.students.assign(batch.begin(), batch.end());/  merged.record.students = first.students;/' "$CHECK" "$SHARDS"
+mutant autograder-no-fallback-without-sandbox examples/gradescope/run_autograder 's/^  "\${grade\[@\]}" --no-sandbox$/  true/' "$CHECK" "$SHARDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
