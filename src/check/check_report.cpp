@@ -177,8 +177,6 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
          "," + (sandboxed ? "yes" : "no") + "," + std::to_string(report.count(CaseStatus::checker_error)) + "\n";
 }
 
-std::string csv_student_field(const std::string& student) { return csv_field(student); }
-
 // ---- difference images -------------------------------------------------------------------------------------
 namespace {
 constexpr Rgb8 kGap{255, 255, 255};

@@ -32,8 +32,6 @@ std::string json_report(const ReportHeader& header, const StudentReport& report)
 // --batch --csv: the header line, and one row per student.
 std::string csv_header();
 std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed);
-// The student's field as csv_row writes it (the key `check merge` joins rows by).
-std::string csv_student_field(const std::string& student);
 
 // --diff-dir: DIR/case_NN.png for every failing case with an answer: reference | student | difference (wrong
 // pixels red, ambiguous ones yellow, agreeing ones dimmed); 2D bars in image order, drawn tall. Returns the

@@ -53,6 +53,10 @@ std::string csv_first_field(const std::string& record) {
   return record;
 }
 
+std::string csv_student_field(const std::string& student) {
+  return csv_first_field(csv_row(student, StudentReport{}, false));
+}
+
 MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
   if (csv_paths.empty()) throw std::invalid_argument("merge: expected the shards' CSV files");
   std::vector<std::string> problems;

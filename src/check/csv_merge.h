@@ -27,5 +27,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths);
 std::vector<std::string> csv_records(const std::string& text);
 // A record's first field as written (still quoted when it was).
 std::string csv_first_field(const std::string& record);
+// The student's field as csv_row writes it (quoted, escaped, whatever csv_row does): the key rows join by.
+std::string csv_student_field(const std::string& student);
 
 }  // namespace raycam::check
