@@ -133,7 +133,7 @@ mutant shard-exit-1-when-a-student-fails src/cli/check_command.cpp 's/    if (re
 mutant merge-key-ignores-quotes src/check/csv_merge.cpp "s/    if (record\[i\] == '\"') quoted = !quoted;/    if (false) quoted = !quoted;/" "$CHECK" "$SHARDS"
 mutant merge-ignores-the-seed src/check/batch_record.cpp 's/differs("seed", seed, other.seed)/differs("seed", seed, seed)/' "$CHECK" "$SHARDS"
 mutant merge-allows-overlaps src/check/csv_merge.cpp 's/} else if (const auto seen = file_of_key.find(key); seen != file_of_key.end()) {/} else if (const auto seen = file_of_key.find(key); false \&\& seen != file_of_key.end()) {/' "$CHECK" "$SHARDS"
-mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/    if (row == row_of_key.end()) missing.push_back(student);/    if (row == row_of_key.end()) continue;/' "$CHECK" "$SHARDS"
+mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/      missing.push_back(student + " (" +/      (void)(student + " (" +/' "$CHECK" "$SHARDS"
 mutant gradescope-status-pass-fail src/check/lms_grades.cpp 's/{"status", passed ? "passed" : "failed"}/{"status", passed ? "pass" : "fail"}/' "$CHECK" "$SHARDS"
 mutant grade-out-of-100-whatever-the-scale src/check/lms_grades.cpp 's/  return n ? scale \* report.passed() \/ double(n) : 0.0;/  return n ? 100.0 * report.passed() \/ double(n) : 0.0;/' "$CHECK" "$SHARDS"
 mutant autograder-ignores-the-points examples/gradescope/run_autograder 's/ --scale "\$scale"//' "$CHECK" "$SHARDS"
