@@ -22,7 +22,7 @@ TEST_CASE("the shard hash is FNV-1a 64 (its published test vectors)", "[check][s
   CHECK(fnv1a_64("foobar") == 0x85944171f73967e8ull);
 }
 
-TEST_CASE("every student is in exactly one slice, the slices are even, and a newcomer moves nobody",
+TEST_CASE("every student is in exactly one slice, the slices are even, a slice is the name's hash alone",
           "[check][shards]") {
   for (int count : {1, 2, 3, 7, 16}) {
     std::vector<int> sizes(std::size_t(count) + 1, 0);
