@@ -12,6 +12,7 @@ packages=(
   libcli11-dev                               # command lines
   libcairo2-dev libpng-dev poppler-utils     # course figures (SVG, PDF, PNG) and their tests (pdftotext)
   bubblewrap python3                         # `check`: sandbox and the Python example student
+  parallel                                   # `check`: the large course recipe's test (GNU parallel, 3 shards)
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
   emscripten chromium chromium-driver python3-selenium python3-pil  # the web page (scripts/web.sh) and its browser tests (PIL reads its screenshots)

@@ -137,6 +137,26 @@ mutant figure-ray-hit-from-the-eye src/figure/construction_figure.cpp 's/nearest
 mutant figure-png-red-blue-swapped src/figure/figure_files.cpp 's/row\[std::size_t(x) \* 3 + 0\] = (pixel\[x\] >> 16) \& 0xff;/row[std::size_t(x) * 3 + 0] = pixel[x] \& 0xff;/; s/row\[std::size_t(x) \* 3 + 2\] = pixel\[x\] \& 0xff;/row[std::size_t(x) * 3 + 2] = (pixel[x] >> 16) \& 0xff;/' "$FIGURE" "^figure: ?a PNG figure fills"
 mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"reçu : {got} ; attendu : {wanted}"/"reçu : {wanted} ; attendu : {got}"/' "$SESSION" "^session: ?error reasons: a sample"
 mutant open-keeps-save-as-path src/session/app_state.cpp 's/^    state.save_path.clear();  \/\/ Save as starts empty.*$/    \/\/ (Save as kept)/' "$SESSION" "^session: ?Open resets every field"
+# --- a large course: shards, merge, grade books ---
+SHARDS="^check:.*(slice|shard|--shard|csv records|merge|Gradescope|gradescope|CSV's last column)|^check: (GNU parallel|Gradescope)"
+mutant shard-hash-not-fnv src/check/shards.cpp 's/    hash \*= 1099511628211ull;/    hash *= 1099511628213ull;/' "$CHECK" "$SHARDS"
+mutant shard-keeps-every-student src/cli/check_command.cpp 's/\[\&\](const Submission\& s) { return shard_of(s.name, shard.count) != shard.index; }/[\&](const Submission\&) { return false; }/' "$CHECK" "$SHARDS"
+mutant shard-exit-1-when-a-student-fails src/cli/check_command.cpp 's/    if (report.count(CaseStatus::checker_error) > 0) return 1;/    if (report.passed() < int(report.results.size())) return 1;/' "$CHECK" "$SHARDS"
+mutant merge-key-ignores-quotes src/check/csv_merge.cpp "s/    if (record\[i\] == '\"') quoted = !quoted;/    if (false) quoted = !quoted;/" "$CHECK" "$SHARDS"
+mutant merge-ignores-the-seed src/check/batch_record.cpp 's/differs("seed", seed, other.seed)/differs("seed", seed, seed)/' "$CHECK" "$SHARDS"
+mutant merge-allows-overlaps src/check/csv_merge.cpp 's/} else if (const auto seen = file_of_key.find(key); seen != file_of_key.end()) {/} else if (const auto seen = file_of_key.find(key); false \&\& seen != file_of_key.end()) {/' "$CHECK" "$SHARDS"
+mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/      missing.push_back(student + " (" +/      (void)(student + " (" +/' "$CHECK" "$SHARDS"
+mutant gradescope-status-pass-fail src/check/lms_grades.cpp 's/{"status", passed ? "passed" : "failed"}/{"status", passed ? "pass" : "fail"}/' "$CHECK" "$SHARDS"
+mutant grade-out-of-100-whatever-the-scale src/check/lms_grades.cpp 's/  return n ? scale \* report.passed() \/ double(n) : 0.0;/  return n ? 100.0 * report.passed() \/ double(n) : 0.0;/' "$CHECK" "$SHARDS"
+mutant autograder-ignores-the-points examples/gradescope/run_autograder 's/ --scale "\$scale"//' "$CHECK" "$SHARDS"
+mutant autograder-build-failure-graded examples/gradescope/run_autograder 's/ 2> build.log ||$/ 2> build.log; true ||/' "$CHECK" "$SHARDS"
+mutant shard-slices-from-zero src/check/shards.cpp 's/return int(fnv1a_64(name) % std::uint64_t(count)) + 1; }/return int(fnv1a_64(name) % std::uint64_t(count)); }/' "$CHECK" "$SHARDS"
+mutant shard-index-above-count-accepted src/check/shards.cpp 's/ || shard.index > shard.count)/)/' "$CHECK" "$SHARDS"
+mutant shard-without-batch-accepted src/cli/check_command.cpp 's/  if (!flags.shard.empty() \&\& !batch) throw/  if (false) throw/' "$CHECK" "$SHARDS"
+mutant csv-record-split-inside-quotes src/check/csv_merge.cpp 's/    if (text\[i\] == .".) quoted = !quoted;  \/\/ "" inside/    if (false) quoted = !quoted;  \/\/ "" inside/' "$CHECK" "$SHARDS"
+mutant merged-record-keeps-the-shard src/check/csv_merge.cpp 's/  merged.record.shard = Shard{1, 1};/  (void)0;/' "$CHECK" "$SHARDS"
+mutant merge-batch-of-the-first-shard src/check/csv_merge.cpp 's/  merged.record.students.assign(batch.begin(), batch.end());/  merged.record.students = first.students;/' "$CHECK" "$SHARDS"
+mutant autograder-no-fallback-without-sandbox examples/gradescope/run_autograder 's/^  "\${grade\[@\]}" --no-sandbox$/  true/' "$CHECK" "$SHARDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

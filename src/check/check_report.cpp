@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "check_texts.h"
@@ -60,6 +61,10 @@ std::string detail_text(const std::string& lang, const std::string& detail) {
 }
 }  // namespace
 
+std::string case_reason(const std::string& lang, const CaseResult& r) {
+  return r.status == CaseStatus::fail ? pixel_text(lang, r) : detail_text(lang, r.detail);
+}
+
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
   const std::string& lang = h.lang;
   std::string out = textf(lang,
@@ -74,7 +79,7 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
     const std::string wrong = r.status == CaseStatus::pass || r.status == CaseStatus::fail
                                   ? std::to_string(r.wrong_pixels) + " / " + std::to_string(r.pixels)
                                   : std::string();
-    const std::string why = r.status == CaseStatus::fail ? pixel_text(lang, r) : detail_text(lang, r.detail);
+    const std::string why = case_reason(lang, r);
     out += textf(lang, "%5d  %dD   %-10s  %15s  %s%s\n", r.number, r.dimension, text(lang, status_name(r.status)),
                  wrong.c_str(), why.c_str(), r.md == "differs" ? text(lang, " (md differs)") : "");
   }
@@ -205,6 +210,13 @@ void write_replacing(const std::string& path, const std::function<void(const std
     std::remove(temporary.c_str());
     throw std::runtime_error(path + ": cannot write");
   }
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  write_replacing(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!(out << text) || !out.flush()) throw std::runtime_error(path + ": cannot write");
+  });
 }
 
 std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,

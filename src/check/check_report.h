@@ -22,6 +22,9 @@ struct ReportHeader {
 // The terminal text: one line per case, the score, the diagnosis, then the stderr of failing runs.
 std::string text_report(const ReportHeader& header, const std::vector<CheckCase>& cases, const StudentReport& report);
 
+// A case's "worst pixel or reason" in the table: the worst pixel of a failing case, else the run's detail.
+std::string case_reason(const std::string& lang, const CaseResult& r);
+
 // --report: {"cases": N, "passed": P, "diagnosis": [{"mistake": ID, "explains": K, "text": ...}...],
 //            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.
 std::string json_report(const ReportHeader& header, const StudentReport& report);
@@ -36,6 +39,8 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
 // Writes `path` through `write_to(temporary)`: a new file beside it (mkstemp, so never a link a program left),
 // then renamed over it: a link at `path` is replaced, not followed, and a failed write leaves `path` as it was.
 void write_replacing(const std::string& path, const std::function<void(const std::string& temporary)>& write_to);
+// write_replacing with `text` as the file's bytes.
+void write_text_file(const std::string& path, const std::string& text);
 
 std::vector<std::string> write_difference_images(const std::string& dir, const std::vector<CheckCase>& cases,
                                                  const std::vector<CaseImage>& references,

@@ -23,6 +23,8 @@ const std::vector<Translation>& table() {
       {"status", "statut"},
       {"wrong pixels", "pixels faux"},
       {"worst pixel or reason", "pire pixel ou raison"},
+      {"case %d (%dD)", "cas %d (%dD)"},  // a Gradescope test's name
+      {": %lld / %lld wrong pixels", " : %lld / %lld pixels faux"},
       {"pass", "réussi"},
       {"fail", "échec"},
       {"crash", "plantage"},

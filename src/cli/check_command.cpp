@@ -14,8 +14,10 @@
 #include <pthread.h>
 #include <thread>
 
+#include "batch_record.h"
 #include "check_report.h"
 #include "check_texts.h"
+#include "lms_grades.h"
 #include "commands.h"
 #include "flag_values.h"
 #include "raycam/parallel.h"
@@ -35,14 +37,9 @@ struct CheckFlags {
   int memory_mb = 2048;
   int threads = 0;
   bool require_sandbox = false, no_sandbox = false;
+  std::string shard, gradescope, visibility = "visible";  // a large course (shards) and grade books
+  double scale = kDefaultGradeScale;
 };
-
-void write_text_file(const std::string& path, const std::string& text) {
-  write_replacing(path, [&](const std::string& temporary) {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!(out << text) || !out.flush()) throw std::runtime_error(path + ": cannot write");
-  });
-}
 
 // Every output named on the command line is checked before the first run: a mistyped folder is bad usage
 // (exit 2) at once, not a failure after a class's programs have run.
@@ -95,6 +92,8 @@ int finish(const CheckFlags& flags, const ReportHeader& header, const std::vecto
            const std::vector<CaseImage>& references, const StudentReport& report) {
   std::fputs(text_report(header, cases, report).c_str(), stdout);
   if (!flags.report.empty()) write_text_file(flags.report, json_report(header, report));
+  if (!flags.gradescope.empty())
+    write_text_file(flags.gradescope, gradescope_results_json(header, cases, report, flags.scale, flags.visibility));
   if (!flags.diff_dir.empty()) {
     const std::vector<std::string> written = write_difference_images(flags.diff_dir, cases, references, report);
     std::printf("%s", textf(header.lang, "wrote %zu difference images to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
@@ -107,6 +106,36 @@ std::string substituted(std::string word, const std::string& dir, const std::str
   for (const auto& [key, value] : {std::pair<std::string, std::string>{"{dir}", dir}, {"{name}", name}})
     for (std::size_t at; (at = word.find(key)) != std::string::npos;) word.replace(at, key.size(), value);
   return word;
+}
+
+// What the CSV is graded with, and every student of the batch (not only the shard's): written beside the CSV.
+BatchRecord batch_record_of(const CheckFlags& flags, const std::vector<Submission>& submissions) {
+  BatchRecord record;
+  record.seed = flags.seed;
+  record.cases = flags.cases > 0 ? flags.cases : designed_case_count(parse_battery_mode(flags.mode, "--mode"));
+  record.mode = flags.mode;
+  record.timeout_seconds = flags.timeout;
+  record.memory_mb = flags.memory_mb;
+  record.student_cmd = flags.student_cmd;
+  if (!flags.shard.empty()) record.shard = parse_shard(flags.shard, "--shard");
+  for (const Submission& s : submissions) record.students.push_back(s.name);
+  return record;
+}
+
+void keep_shard(std::vector<Submission>& submissions, const Shard& shard) {
+  submissions.erase(std::remove_if(submissions.begin(), submissions.end(),
+                                   [&](const Submission& s) { return shard_of(s.name, shard.count) != shard.index; }),
+                    submissions.end());
+  std::fprintf(stderr, "shard %s: %zu students\n", shard_text(shard).c_str(), submissions.size());
+}
+
+// A shard's exit status says whether it must be graded again (GNU parallel's --resume-failed, a Slurm
+// requeue): 1 when a run failed on the checker's side (a checker-error case), 0 once every student of the
+// slice has a trustworthy row, whatever the students scored.
+int shard_exit_status(const std::vector<StudentReport>& reports) {
+  for (const StudentReport& report : reports)
+    if (report.count(CaseStatus::checker_error) > 0) return 1;
+  return 0;
 }
 
 int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<CheckCase>& cases,
@@ -129,11 +158,15 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     }
   std::sort(submissions.begin(), submissions.end(), [](auto& a, auto& b) { return a.name < b.name; });
   if (submissions.empty()) throw std::invalid_argument("--batch: no submission folder in '" + flags.batch + "'");
+  const BatchRecord record = batch_record_of(flags, submissions);
+  if (!flags.shard.empty()) keep_shard(submissions, record.shard);
+  write_text_file(battery_sidecar_path(flags.csv), battery_record_json(record));
 
   // Rows are appended as students finish (nothing is lost if the run is interrupted), then sorted at the end.
   std::ofstream csv(flags.csv, std::ios::trunc);
   if (!csv) throw std::runtime_error(flags.csv + ": cannot write");
-  csv << csv_header() << std::flush;
+  const std::string header_line = with_last_field(csv_header(), grade_column_name(flags.scale));
+  csv << header_line << std::flush;
   const int threads = detail::resolve_threads(flags.threads);
   std::fprintf(stderr, "%s", textf(header.lang, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
                                    cases.size(), threads).c_str());
@@ -161,7 +194,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   // The bookkeeping for one student (called from the workers, one student at a time).
   record_student = [&](std::size_t s, const StudentReport& report) {
     ++students_done;
-    rows[s] = csv_row(submissions[s].name, report, bool(sandbox));
+    rows[s] = with_last_field(csv_row(submissions[s].name, report, bool(sandbox)), scaled_grade(report, flags.scale));
     csv << rows[s] << std::flush;
     if (!terminal)
       std::fprintf(stderr, "%zu/%zu %s: %d/%zu\n", students_done, submissions.size(), submissions[s].name.c_str(),
@@ -174,19 +207,21 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
       write_difference_images(flags.diff_dir + "/" + submissions[s].name, cases, references, report);
   };
   const std::vector<StudentReport> reports =
-      check_submissions(submissions, cases, references, limits_of(flags), threads, on_run, on_student);
-  if (terminal) {
+      submissions.empty() ? std::vector<StudentReport>()  // a slice with no student in it: a CSV of its header
+                          : check_submissions(submissions, cases, references, limits_of(flags), threads, on_run, on_student);
+  if (terminal && !submissions.empty()) {
     const std::size_t runs = submissions.size() * cases.size();
     on_run(runs, runs);  // the bar ends at N/N students, whatever order the last callbacks came in
     std::fprintf(stderr, "\n");
   }
   for (const std::string& error : output_errors) std::fprintf(stderr, "raycam-cli check: %s\n", error.c_str());
   csv.close();
-  std::string sorted = csv_header();
+  std::string sorted = header_line;
   for (const std::string& row : rows) sorted += row;
   write_text_file(flags.csv, sorted);
   std::printf("%s", textf(header.lang, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
   if (!output_errors.empty()) return 1;
+  if (!flags.shard.empty()) return shard_exit_status(reports);
   for (const StudentReport& report : reports)
     if (report.passed() != int(cases.size())) return 1;
   return 0;
@@ -212,11 +247,14 @@ void clean_up_on_interrupt() {
 }  // namespace
 
 int run_check(const Args& args) {
+  if (!args.empty() && args[0] == "merge") return run_check_merge(Args(args.begin() + 1, args.end()));
   CheckFlags flags;
   CLI::App app{"Grades a student's camera program on a battery of cases and names the classic mistakes that "
                "reproduce its output. The program reads one case (a scene file, JSON) on stdin and prints "
                "{\"ids\": ..., \"md\": ...} (README, \"Check your own camera\").",
                "raycam-cli check"};
+  app.footer("A large course: --batch DIR --shard i/N on each machine or job, then `raycam-cli check merge --csv "
+             "OUT SHARD.csv...` (docs/check.md, \"A large course\"; `check merge --help`).");
   auto* source = app.add_option_group("what to grade");
   source->add_option("--student", flags.student, "the program: \"COMMAND ARGS\" (split like a shell, run without one)");
   source->add_option("--write-cases", flags.write_cases, "write the cases as case_NN.json into DIR and stop");
@@ -245,6 +283,17 @@ int run_check(const Args& args) {
   app.add_option("--diff-dir", flags.diff_dir, "PNG per failing case: reference | student | difference");
   add_checked_option<int>(app, "--lang", "fr|en", "language of the report (default: from LANG)",
                           flags::one_of(languages), [&](int i) { flags.lang = languages[std::size_t(i)]; });
+  app.add_option("--shard", flags.shard,
+                 "--batch: grade only slice i of N (a student's slice is a hash of its folder name)")
+      ->type_name("i/N");
+  add_checked_option<double>(app, "--scale", "MAX", "the CSV's last column and Gradescope's score: out of MAX (default 20)",
+                             flags::number_in({0.01, 1e6}), [&](double scale) { flags.scale = scale; });
+  app.add_option("--gradescope", flags.gradescope, "--student or --answers: write Gradescope's results.json to FILE")
+      ->type_name("FILE");
+  add_checked_option<int>(app, "--visibility", "visible|hidden|after_due_date|after_published",
+                          "--gradescope: when students see the tests (default visible)",
+                          flags::one_of(gradescope_visibilities()),
+                          [&](int i) { flags.visibility = gradescope_visibilities()[std::size_t(i)]; });
   app.add_flag("--require-sandbox", flags.require_sandbox, "refuse to run programs when bubblewrap cannot start");
   app.add_flag("--no-sandbox", flags.no_sandbox, "run programs without bubblewrap (a warning is printed)");
   try {
@@ -260,6 +309,11 @@ int run_check(const Args& args) {
     throw std::invalid_argument("--require-sandbox and --no-sandbox contradict each other");
 
   const bool batch = !flags.batch.empty();
+  if (!flags.shard.empty() && !batch) throw std::invalid_argument("--shard: only with --batch");
+  if (!flags.shard.empty()) parse_shard(flags.shard, "--shard");  // bad usage before any run
+  if (!flags.gradescope.empty() && (batch || !flags.write_cases.empty()))
+    throw std::invalid_argument("--gradescope: one submission's results, with --student or --answers");
+  require_output("--gradescope", flags.gradescope, false);
   require_output("--report", flags.report, batch);  // --batch: a folder of reports
   require_output("--csv", flags.csv, false);
   require_output("--diff-dir", flags.diff_dir, true);

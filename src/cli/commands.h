@@ -32,6 +32,7 @@ void add_bench_accuracy_command(CLI::App& bench, int& exit_code);
 // `check` (check_command.cpp, on the raycam_check library) parses its own arguments with CLI11.
 void add_check_command(CLI::App& cli, int& exit_code);  // passes its arguments to run_check
 int run_check(const Args& args);
+int run_check_merge(const Args& args);  // `check merge` (check_merge_command.cpp)
 int run_bench_speed(const Args& args);
 
 }  // namespace raycam::cli

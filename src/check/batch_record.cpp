@@ -1,0 +1,64 @@
+#include "batch_record.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace raycam::check {
+
+namespace {
+using json = nlohmann::json;
+}
+
+std::string raycam_version() { return RAYCAM_VERSION; }
+
+std::string BatchRecord::difference_from(const BatchRecord& other) const {
+  auto differs = [](const std::string& field, const auto& mine, const auto& theirs) {
+    return mine == theirs ? std::string() : field + " " + json(mine).dump() + " vs " + json(theirs).dump();
+  };
+  for (const std::string& difference :
+       {differs("raycam", raycam, other.raycam), differs("seed", seed, other.seed), differs("cases", cases, other.cases),
+        differs("mode", mode, other.mode), differs("timeout", timeout_seconds, other.timeout_seconds),
+        differs("memory", memory_mb, other.memory_mb), differs("student_cmd", student_cmd, other.student_cmd),
+        differs("shard count", shard.count, other.shard.count)})
+    if (!difference.empty()) return difference;
+  return {};
+}
+
+std::string battery_sidecar_path(const std::string& csv_path) { return csv_path + ".battery.json"; }
+
+std::string battery_record_json(const BatchRecord& r) {
+  const json root = {{"raycam", r.raycam},           {"seed", r.seed},
+                     {"cases", r.cases},             {"mode", r.mode},
+                     {"timeout", r.timeout_seconds}, {"memory_mb", r.memory_mb},
+                     {"student_cmd", r.student_cmd}, {"shard", shard_text(r.shard)},
+                     {"students", r.students}};
+  return root.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
+}
+
+BatchRecord read_battery_record(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw std::invalid_argument(path + ": cannot read (each shard's CSV needs the .battery.json that check wrote "
+                                       "beside it)");
+  BatchRecord r;
+  std::string field;
+  try {
+    const json root = json::parse(in);
+    field = "raycam", r.raycam = root.at(field).get<std::string>();
+    field = "seed", r.seed = root.at(field).get<unsigned long long>();
+    field = "cases", r.cases = root.at(field).get<int>();
+    field = "mode", r.mode = root.at(field).get<std::string>();
+    field = "timeout", r.timeout_seconds = root.at(field).get<double>();
+    field = "memory_mb", r.memory_mb = root.at(field).get<int>();
+    field = "student_cmd", r.student_cmd = root.at(field).get<std::string>();
+    field = "students", r.students = root.at(field).get<std::vector<std::string>>();
+    field = "shard", r.shard = parse_shard(root.at(field).get<std::string>(), path + ": shard");
+  } catch (const json::exception& error) {
+    throw std::invalid_argument(path + ": not a battery record" + (field.empty() ? "" : " (field '" + field + "')") +
+                                ": " + error.what());
+  }
+  return r;
+}
+
+}  // namespace raycam::check
