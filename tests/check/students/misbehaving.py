@@ -7,7 +7,7 @@
   huge       prints far more than the output cap
   no-read    answers without reading its input, after closing stdin
   bad-ids    valid JSON, an id out of range
-  memory     allocates 300 MiB, then answers nonsense
+  memory     allocates 300 MiB (and touches it), then answers nonsense
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
   close-sleep        closes its stdout and stderr at once, then sleeps far past any timeout
   forks N            starts N children that sleep, says on stderr how many it could start
@@ -45,7 +45,7 @@ if mode == "bad-ids":
     print(json.dumps({"ids": [99] * 3}))
     sys.exit(0)
 if mode == "memory":
-    block = bytearray(300 << 20)
+    block = bytearray(b"\1") * (300 << 20)  # written to: untouched pages would not count
     print('{"ids": "allocated"}')
     sys.exit(0)
 if mode == "close-sleep":
