@@ -564,9 +564,8 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       const GroupUsage counted = group->usage();
       result.cpu_seconds = counted.cpu_seconds;
       result.peak_memory_bytes = counted.peak_memory_bytes;
-      const bool failed = !(result.end == RunResult::End::exited && result.exit_code == 0);
       if (result.limit.empty() && counted.memory_limit_hit) result.limit = kMemoryLimit;
-      else if (result.limit.empty() && counted.process_limit_hit && failed) result.limit = kProcessLimit;
+      else if (result.limit.empty() && counted.process_limit_hit) result.limit = kProcessLimit;
     } else {
       result.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
                            1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
@@ -576,6 +575,14 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
         result.limit = kTimeLimit;
     }
     if (result.limit.empty() && sandbox && (disk_full(disk) || says_disk_full(result.err))) result.limit = kDiskLimit;
+    // The sandbox is up but the program cannot start (bwrap says "execvp"): the submission's, with a hint.
+    if (sandbox && !result.infrastructure_failure && result.err.rfind("bwrap: execvp ", 0) == 0) {
+      const std::string hint = launch_hint(argv);
+      result.end = RunResult::End::could_not_start;
+      result.error = hint.empty() ? "cannot run '" + argv[0] + "': " + result.err.substr(result.err.rfind(": ") + 2)
+                                  : hint;
+      if (!result.error.empty() && result.error.back() == '\n') result.error.pop_back();
+    }
   } catch (const std::exception& error) {  // fork or pipe failed: the machine, not the program
     result.end = RunResult::End::could_not_start;
     result.error = error.what();

@@ -349,8 +349,11 @@ int run_check(const Args& args) {
   if (fs::is_directory(submission.argv[0], not_a_folder))
     throw std::invalid_argument(flags::bad_value_message("--student", "a program (\"COMMAND ARGS\")",
                                                          flags.student) + " (a folder)");
-  if (find_program(submission.argv[0]).empty())
-    throw std::invalid_argument("--student: cannot find an executable program '" + submission.argv[0] + "'");
+  if (find_program(submission.argv[0]).empty()) {
+    const std::string hint = launch_hint(submission.argv);  // no run bit, Windows line ends
+    throw std::invalid_argument("--student: " +
+                                (hint.empty() ? "cannot find an executable program '" + submission.argv[0] + "'" : hint));
+  }
   submission.sandbox = choose_sandbox(flags, header);
   choose_limits(flags, header);
   if (submission.sandbox) {

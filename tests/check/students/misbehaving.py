@@ -11,6 +11,10 @@
   escape PORT PATH   tries to connect to 127.0.0.1:PORT and to write PATH (outside its folder), then answers
   close-sleep        closes its stdout and stderr at once, then sleeps far past any timeout
   forks N            starts N children that sleep, says on stderr how many it could start
+  hog P MB           P processes (itself and P-1 children) each holding MB MiB written to, for 2 s
+  disk MB            writes MB MiB into a file of its folder, says on stderr how far it got
+  bomb SEC           starts processes until it cannot, holds them SEC seconds
+  terminal           prints a screen-clearing escape sequence and a fake score on stderr, then fails
   snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
                      ("read PATH") and which not ("stopped PATH")
 """
@@ -65,6 +69,52 @@ if mode == "forks":
             break
     print("started", started, file=sys.stderr)
     sys.exit(0)
+if mode == "hog":
+    processes, mib = int(sys.argv[2]), int(sys.argv[3])
+    children = []
+    for _ in range(processes - 1):
+        pid = os.fork()
+        if pid == 0:
+            block = bytearray(b"\1") * (mib << 20)
+            time.sleep(2)
+            os._exit(0)
+        children.append(pid)
+    block = bytearray(b"\1") * (mib << 20)
+    time.sleep(2)
+    for pid in children:
+        os.waitpid(pid, 0)
+    print("held", processes * mib, "MiB", file=sys.stderr)
+    print('{"ids": "held"}')
+    sys.exit(0)
+if mode == "disk":
+    written = 0
+    try:
+        with open("filler.bin", "wb") as out:
+            for _ in range(int(sys.argv[2])):
+                out.write(b"\0" * (1 << 20))
+                out.flush()
+                written += 1
+        print("wrote", written, "MiB", file=sys.stderr)
+    except OSError as error:
+        sys.exit("disk stopped after %d MiB: %s" % (written, error))
+    print('{"ids": "written"}')
+    sys.exit(0)
+if mode == "bomb":
+    started = 0
+    while True:
+        try:
+            if os.fork() == 0:
+                time.sleep(float(sys.argv[2]))
+                os._exit(0)
+            started += 1
+        except OSError:
+            break
+    print("bomb started", started, file=sys.stderr)
+    time.sleep(float(sys.argv[2]))
+    sys.exit(0)
+if mode == "terminal":
+    sys.stderr.write("\x1b[2J\x1b[Hscore: 12 / 12 cases passed (100 %)\n")
+    sys.exit(1)
 if mode == "snoop":
     with open(sys.argv[2]) as names:
         paths = names.read().split()
