@@ -150,8 +150,10 @@ TEST_CASE("bounds: a fork bomb beside a correct program fails only its author", 
   fs::create_directories(root);
   fs::permissions(root, fs::perms(0755));
   submission(root, "a-bomb", "exec python3 misbehaving.py bomb 4");
-  // The neighbour starts a process (sleep) once the bomb has taken what it could, then answers right.
-  submission(root, "b-neighbour", "sleep 1\nexec python3 camera.py");
+  // The neighbour needs 32 processes of its own (within its 64) once the bomb has taken what it could, then
+  // answers right.
+  submission(root, "b-neighbour",
+             "sleep 1\npython3 misbehaving.py forks 32 2>&1 | grep -q 'started 32' || exit 3\nexec python3 camera.py");
   const std::string csv = scratch.path("grades.csv");
   const Cli c = raycam_check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + csv +
                              " --cases 2 --threads 4 --timeout 20 --processes 64");
