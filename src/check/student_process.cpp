@@ -3,7 +3,9 @@
 #include "student_process.h"
 
 #include <fcntl.h>
+#if __has_include(<linux/keyctl.h>)
 #include <linux/keyctl.h>
+#endif
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -239,9 +241,11 @@ LiveRuns& live_runs() {
 }
 }  // namespace
 
-void stop_live_runs() {
+namespace {
+void stop_runs(bool for_good) {
   LiveRuns& r = live_runs();
-  std::lock_guard<std::mutex> lock(r.mutex);
+  std::unique_lock<std::mutex> lock(r.mutex);
+  if (for_good) lock.release();  // kept locked until the process ends
   for (const auto& [folder, run] : r.folders) {
     if (run.group > 0) kill(-run.group, SIGKILL);
     remove_run_group(run.control_groups);
@@ -249,6 +253,10 @@ void stop_live_runs() {
   }
   r.folders.clear();
 }
+}  // namespace
+
+void stop_live_runs() { stop_runs(false); }
+void stop_live_runs_for_good() { stop_runs(true); }
 
 namespace {
 void track(const std::string& folder, pid_t group, const RunGroup* control = nullptr) {
@@ -296,7 +304,9 @@ struct ChildSetup {
     fail_in_child(c.report);
   // Keyrings are not namespaced: a fresh, empty session keyring, so that no key of the checker's session or
   // of an earlier run is within reach.
+#ifdef KEYCTL_JOIN_SESSION_KEYRING
   syscall(SYS_keyctl, KEYCTL_JOIN_SESSION_KEYRING, nullptr);
+#endif
   if (c.max_processes > 0) {
     const rlimit processes{c.max_processes, c.max_processes};
     setrlimit(RLIMIT_NPROC, &processes);

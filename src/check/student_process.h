@@ -83,6 +83,9 @@ RunResult run_student(const std::vector<std::string>& argv, const std::string& i
 // Kills every run still going (its whole process group) and removes its temporary folder: at exit, and from
 // raycam-cli check when SIGINT or SIGTERM interrupts a batch.
 void stop_live_runs();
+// The same, for a process about to end (raycam-cli check's interrupt): no run starts or ends afterwards, so
+// that a worker whose run was just killed cannot finish the check first with its own exit status.
+void stop_live_runs_for_good();
 
 // Whether bwrap exists and can start a sandbox here (checked once per process by running `true` in it).
 // On failure `why` says what went wrong.

@@ -250,7 +250,7 @@ void clean_up_on_interrupt() {
   std::thread([signals] {
     int received = 0;
     sigwait(&signals, &received);
-    stop_live_runs();
+    stop_live_runs_for_good();
     std::fprintf(stderr, "\nraycam-cli check: interrupted; the running programs were stopped\n");
     _exit(128 + received);
   }).detach();

@@ -359,7 +359,7 @@ TEST_CASE("bounds: set-up errors are the instructor's (exit 2 or checker-error),
   CHECK_THAT(c.output, Catch::Contains("not readable by other users"));
 }
 
-TEST_CASE("bounds: a folder named x{dir} is substituted once; control characters are shown escaped",
+TEST_CASE("bounds: a folder named x{dir} is substituted once, and control characters are shown escaped",
           "[check][bounds][text][cli]") {
   const OpenScratch scratch("text");
   const std::string root = scratch.path("class");
@@ -379,7 +379,7 @@ TEST_CASE("bounds: a folder named x{dir} is substituted once; control characters
   CHECK(escaped_control("a\x9b" "b\xc2\x9b" "c\x7f\td\n", false) == "a\x9b" "b\\xc2\\x9bc\\x7f\td\\x0a");
 }
 
-TEST_CASE("bounds: without a control group the report says so once; --require-limits refuses",
+TEST_CASE("bounds: without a control group the report says so once, and --require-limits refuses",
           "[check][bounds][fallback][cli]") {
   if (groups_here()) return;  // tests/check/as_ordinary_user.sh runs this where no group can be made
   const Cli c = raycam_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 1");
