@@ -140,6 +140,7 @@ mutant unreadable-submission-crashes src/cli/check_command.cpp 's/        if (ge
 mutant no-sandbox-by-default src/cli/check_command.cpp 's/^    throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s)/    if (false) throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s)/' "$CHECK" "$BOUNDS"
 mutant dir-substituted-again src/cli/check_command.cpp 's/^      out += dir;/      out += word.substr(at, 5);/' "$CHECK" "$BOUNDS"
 mutant stderr-unescaped src/check/check_report.cpp 's/escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160)))/err.substr(start, std::min<std::size_t>(end - start, 160))/' "$CHECK" "$BOUNDS"
+mutant cpu-time-not-polled src/check/student_process.cpp 's/      if (group \&\& !exited \&\& group->cpu_seconds() > cpu_limit) {/      if (false) {/' "$CHECK" "$BOUNDS"
 mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.require_limits) throw/  if (false) throw/' "$CHECK" "$BOUNDS"
 MUTANTS_END=1
 

@@ -111,6 +111,21 @@ TEST_CASE("bounds: a run's memory counts all its processes together", "[check][b
   CHECK(per_process.limit.empty());
 }
 
+TEST_CASE("bounds: a run's CPU time counts all its processes and ends it like the wall clock",
+          "[check][bounds][cpu]") {
+  if (!groups_here()) return;  // per process (RLIMIT_CPU) without a group
+  RunLimits limits;
+  limits.timeout_seconds = 60;
+  limits.cpu_seconds = 0.5;
+  // Two processes spinning: the run's CPU time grows twice as fast as either's.
+  const std::string spin = "import os\nos.fork()\nwhile True: pass\n";
+  const RunResult run = run_student({"python3", "-c", spin}, "", limits, sandbox_here());
+  CHECK(run.end == RunResult::End::timed_out);
+  CHECK(run.limit == kTimeLimit);
+  CHECK(run.seconds < 30);  // the CPU bound, not the wall clock's minute
+  CHECK(run.cpu_seconds >= 0.5);
+}
+
 TEST_CASE("bounds: a run's writable folder is a tmpfs of --disk MB: a full disk is that run's failure",
           "[check][bounds][disk]") {
   const std::optional<Sandbox> sandbox = sandbox_here();
