@@ -370,10 +370,10 @@ bool says_disk_full(const std::string& err) {
 
 // A sandbox that failed after its set-up's checkpoint ("bwrap: Can't fork for pid 1"): bwrap's own message,
 // and never more than bwrap's two processes in the run's group, so the program never started (a program
-// printing "bwrap: …" itself ran as a third).
+// printing "bwrap: …" itself ran as a third). Without a group's count (peak_processes < 0), that one message.
 bool bwrap_failed_late(const RunResult& r, long long peak_processes) {
   return r.end == RunResult::End::exited && r.exit_code == 1 && r.err.rfind("bwrap: ", 0) == 0 &&
-         peak_processes >= 0 && peak_processes <= 2;
+         (peak_processes >= 0 ? peak_processes <= 2 : r.err.rfind("bwrap: Can't fork for pid 1", 0) == 0);
 }
 }  // namespace
 
@@ -568,7 +568,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       int unread = 0;  // bwrap's set-up reads the byte on its --block-fd when it is done
       ioctl(block.read, FIONREAD, &unread);
       result.infrastructure_failure = info_text.empty() || unread > 0 ||
-                                      (group && bwrap_failed_late(result, group->usage().peak_processes));
+                                      bwrap_failed_late(result, group ? group->usage().peak_processes : -1);
     }
     if (group) {
       const GroupUsage counted = group->usage();
