@@ -109,6 +109,11 @@ TEST_CASE("bounds: a run's memory counts all its processes together", "[check][b
   CHECK(per_process.end == RunResult::End::exited);
   CHECK(per_process.exit_code == 0);
   CHECK(per_process.limit.empty());
+  // Files in memory count too: 8 memory files of 64 MiB are no address space at all.
+  const std::vector<std::string> memfd = {"python3", MISBEHAVING_PY, "memfd", "8", "64"};
+  CHECK(run_student(memfd, "", limits, sandbox_here()).err == "held\n");
+  limits.use_run_groups = true;
+  CHECK(run_student(memfd, "", limits, sandbox_here()).limit == kMemoryLimit);
 }
 
 TEST_CASE("bounds: a run's CPU time counts all its processes and ends it like the wall clock",

@@ -12,6 +12,7 @@
   close-sleep        closes its stdout and stderr at once, then sleeps far past any timeout
   forks N            starts N children that sleep, says on stderr how many it could start
   hog P MB           P processes (itself and P-1 children) each holding MB MiB written to, for 2 s
+  memfd N MB         writes MB MiB into each of N memory files (memfd), says on stderr when it holds them
   disk MB            writes MB MiB into a file of its folder, says on stderr how far it got
   bomb SEC           starts processes until it cannot, holds them SEC seconds
   terminal           prints a screen-clearing escape sequence and a fake score on stderr, then fails
@@ -85,6 +86,13 @@ if mode == "hog":
         os.waitpid(pid, 0)
     print("held", processes * mib, "MiB", file=sys.stderr)
     print('{"ids": "held"}')
+    sys.exit(0)
+if mode == "memfd":
+    files = []
+    for i in range(int(sys.argv[2])):
+        files.append(os.memfd_create("file%d" % i))
+        os.write(files[-1], b"\1" * (int(sys.argv[3]) << 20))
+    print("held", file=sys.stderr)
     sys.exit(0)
 if mode == "disk":
     written = 0
