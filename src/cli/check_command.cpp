@@ -94,14 +94,13 @@ RunLimits limits_of(const CheckFlags& flags) {
   return limits;
 }
 
-// Each run bounded as a whole (a control group), or said once at the top of the report; --require-limits
-// refuses instead.
+// Each run bounded as a whole (a control group), or said once at the top of the report (--batch: on the
+// terminal, and in each JSON report); --require-limits refuses instead.
 void choose_limits(const CheckFlags& flags, ReportHeader& header) {
   std::string why;
   if (run_groups_available(why)) return;
   if (flags.require_limits) throw std::invalid_argument("--require-limits: runs cannot be bounded as a whole: " + why);
   header.limits_note = "memory not bounded per run: " + why + "; per-process limits instead";
-  std::fprintf(stderr, "raycam-cli check: %s\n", header.limits_note.c_str());
 }
 
 // What the sandbox will show of the machine (folders_named): refused (bad usage) when it holds the home, an
@@ -155,6 +154,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
                                                          flags.student_cmd));
   const std::optional<Sandbox> sandbox = choose_sandbox(flags, header);
   choose_limits(flags, header);
+  if (!header.limits_note.empty()) std::fprintf(stderr, "raycam-cli check: %s\n", header.limits_note.c_str());
 
   std::vector<Submission> submissions;
   for (const fs::directory_entry& entry : fs::directory_iterator(root))
