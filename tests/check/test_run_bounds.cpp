@@ -259,6 +259,21 @@ TEST_CASE("bounds: a run's temporary folder is removed whatever modes it set", "
   CHECK_FALSE(fs::exists(folder));
 }
 
+TEST_CASE("bounds: a run that locks folders in its own (modes 500, 000) leaves nothing in TMPDIR",
+          "[check][bounds][cleanup][cli]") {
+  const OpenScratch scratch("locked");
+  const std::string tmp = scratch.path("tmp");
+  fs::create_directories(tmp);
+  fs::permissions(tmp, fs::perms(01777));
+  // Unsandboxed (the sandbox's folder is a tmpfs, never on the host) and, under root, as nobody: root would
+  // ignore the modes.
+  const std::string as_user = geteuid() == 0 ? "/usr/bin/setpriv --reuid 65534 --regid 65534 --clear-groups" : "";
+  const Cli c = raycam_check("--no-sandbox --student \"" + kPython + " lock\" --cases 2", "TMPDIR=" + tmp + " " + as_user);
+  INFO(c.output);
+  CHECK(c.exit_code == 1);  // graded (bad output), not failed
+  CHECK(fs::is_empty(tmp));
+}
+
 TEST_CASE("bounds: a hang-up (closed ssh session) stops the programs and leaves no folder nor group",
           "[check][bounds][cleanup][cli]") {
   const OpenScratch scratch("hangup");

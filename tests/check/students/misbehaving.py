@@ -15,6 +15,7 @@
   memfd N MB         writes MB MiB into each of N memory files (memfd), says on stderr when it holds them
   disk MB            writes MB MiB into a file of its folder, says on stderr how far it got
   bomb SEC           starts processes until it cannot, holds them SEC seconds
+  lock               leaves folders of modes 500 and 000 (a file inside) in its folder, then answers nonsense
   terminal           prints a screen-clearing escape sequence and a fake score on stderr, then fails
   snoop LIST         tries to read each file named in LIST (one per line), says on stderr which it could
                      ("read PATH") and which not ("stopped PATH")
@@ -119,6 +120,16 @@ if mode == "bomb":
             break
     print("bomb started", started, file=sys.stderr)
     time.sleep(float(sys.argv[2]))
+    sys.exit(0)
+if mode == "lock":
+    os.makedirs("locked/inner")
+    with open("locked/inner/file", "w") as out:
+        out.write("x")
+    os.chmod("locked/inner", 0o500)
+    os.chmod("locked", 0o500)
+    os.makedirs("closed")
+    os.chmod("closed", 0)
+    print('{"ids": "locked"}')
     sys.exit(0)
 if mode == "terminal":
     sys.stderr.write("\x1b[2J\x1b[Hscore: 12 / 12 cases passed (100 %)\n")
