@@ -36,6 +36,26 @@ std::string case_list(const std::vector<int>& cases) {
 
 int failing(const StudentReport& report) { return int(report.results.size()) - report.passed(); }
 
+// What a student's runs used, as isolate's meta file gives it per run: summed, and the largest peak.
+struct RunTotals {
+  double wall = 0, cpu = 0;
+  long long peak = 0;
+  int peak_case = 0;
+};
+RunTotals totals_of(const StudentReport& report) {
+  RunTotals t;
+  for (const CaseResult& r : report.results) {
+    t.wall += r.seconds;
+    t.cpu += r.cpu_seconds;
+    if (r.peak_memory_bytes > t.peak) {
+      t.peak = r.peak_memory_bytes;
+      t.peak_case = r.number;
+    }
+  }
+  return t;
+}
+constexpr double kMiB = 1 << 20;
+
 // The first lines of a program's stderr, indented.
 std::string stderr_excerpt(const std::string& err) {
   std::string out;
@@ -87,6 +107,9 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
   out += textf(lang, n == 1 ? "score: %d / %d case passed (%.0f %%)\n" : "score: %d / %d cases passed (%.0f %%)\n",
                report.passed(), n,
                n ? 100.0 * report.passed() / n : 0.0);
+  if (const RunTotals t = totals_of(report); t.peak > 0)  // nothing ran for answer files
+    out += textf(lang, "runs: %.2f s, %.2f s of CPU in all; peak memory %.1f MiB (case %d)\n", t.wall, t.cpu,
+                 double(t.peak) / kMiB, t.peak_case);
   bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
   for (const CaseResult& r : report.results)
     answered = answered || (r.answer && r.status != CaseStatus::pass);
@@ -173,14 +196,9 @@ std::string run_bounds_fields(const StudentReport& report) {
     for (const CaseResult& r : report.results) runs += r.limit == limit;
     fields += "," + std::to_string(runs);
   }
-  double cpu = 0;
-  long long peak = 0;
-  for (const CaseResult& r : report.results) {
-    cpu += r.cpu_seconds;
-    peak = std::max(peak, r.peak_memory_bytes);
-  }
+  const RunTotals t = totals_of(report);
   char figures[64];
-  std::snprintf(figures, sizeof figures, ",%.3f,%.1f", cpu, double(peak) / double(1 << 20));
+  std::snprintf(figures, sizeof figures, ",%.3f,%.1f", t.cpu, double(t.peak) / kMiB);
   return fields + figures;
 }
 }  // namespace

@@ -53,6 +53,8 @@ const std::vector<Translation>& table() {
        "memory-limit : l'exécution a atteint sa borne de mémoire (--memory), tous ses processus ensemble"},
       {"process-limit: the run reached its bound on processes and threads (--processes)",
        "process-limit : l'exécution a atteint sa borne de processus et de fils (--processes)"},
+      {"runs: %.2f s, %.2f s of CPU in all; peak memory %.1f MiB (case %d)\n",
+       "exécutions : %.2f s, dont %.2f s de calcul en tout ; mémoire au plus haut %.1f Mio (cas %d)\n"},
       {"CPU time over the timeout (all its processes together)",
        "temps de calcul au-delà du délai (tous ses processus ensemble)"},
       {"disk-limit: the run filled its writable folder (--disk)",

@@ -189,6 +189,7 @@ TEST_CASE("bounds: each run's status (CPU, peak memory, the bound that ended it)
   const std::string report = scratch.path("report.json");
   Cli c = raycam_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 2 --report " + report);
   CHECK(c.exit_code == 0);
+  CHECK_THAT(c.output, Catch::Contains("s of CPU in all; peak memory"));  // the terminal's summary
   const json r = read_json(report);
   REQUIRE(r["results"].size() == 2);
   for (const json& result : r["results"]) {
