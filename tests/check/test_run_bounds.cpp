@@ -370,6 +370,14 @@ TEST_CASE("bounds: set-up errors are the instructor's (exit 2 or checker-error),
   c = raycam_check("--student " + plain + " --cases 1");
   CHECK(c.exit_code == 2);
   CHECK_THAT(c.output, Catch::Contains("no run bit"));
+  // A bound out of its range names the flag and the range, before any run.
+  for (const auto& [flag, range] : {std::pair<const char*, const char*>{"--disk 0", "--disk: expected an integer in [1, 65536]"},
+                                    {"--processes 2", "--processes: expected an integer in [8, 65536]"},
+                                    {"--memory 10", "--memory: expected an integer in [64, 65536]"}}) {
+    c = raycam_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 1 " + flag);
+    CHECK(c.exit_code == 2);
+    CHECK_THAT(c.output, Catch::Contains(range));
+  }
   // bwrap missing: refused unless --no-sandbox is given.
   const std::string empty_path = scratch.path("bin");
   fs::create_directories(empty_path);
