@@ -32,6 +32,7 @@ if [ "$status" != 77 ]; then
   sh -c 'for folder in $1; do echo $$ > "$folder/cgroup.procs"; done; shift; exec "$@"' sh "$delegated" \
     runuser -u "$user" -- env TMPDIR="$scratch/tmp" HOME="$scratch/tmp" "$tests" "[bounds]" || status=1
 fi
-for folder in $delegated; do rmdir "$folder" 2>/dev/null; done
+# Deepest first: a group a failed run left inside would keep the delegated folder.
+for folder in $delegated; do find "$folder" -depth -type d -exec rmdir {} \; 2>/dev/null; done
 rm -rf "$scratch"
 exit $status
