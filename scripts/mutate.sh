@@ -78,13 +78,13 @@ mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(la
 # --- checker safety ---
 CHECK="raycam_check_tests raycam-cli"
 mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = result.wrong_pixels == 0 ? CaseStatus::pass/result.status = result.wrong_pixels <= 1 ? CaseStatus::pass/' "$CHECK" "^check:"
-mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(words.end(), {"--bind", work, work, "--remount-ro"/  words.insert(words.end(), {"--bind", "\/var", "\/var", "--bind", work, work, "--remount-ro"/' "$CHECK" "^check:"
+mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(words.end(), {"--remount-ro", "\/tmp"/  words.insert(words.end(), {"--bind", "\/var", "\/var", "--remount-ro", "\/tmp"/' "$CHECK" "^check:"
 mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline) timed_out = true;/      if (false) timed_out = true;/' "$CHECK" "^check:"
 mutant score-line-counts-failures src/check/check_report.cpp 's/^               report.passed(), n,$/               n - report.passed(), n,/' "$CHECK" "^check:"
 mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant diff-image-written-through-links src/check/check_report.cpp 's/    write_replacing(path, \[\&\](const std::string\& temporary) { write_png(canvas, temporary, scale_x, scale_y); });/    write_png(canvas, path, scale_x, scale_y);/' "$CHECK" "^check:"
-mutant french-details-left-english src/check/check_report.cpp 's/^  return translate_reason(language_from_code(lang).value_or(Language::en), detail);/  return detail;/' "$CHECK" "^check:"
+mutant french-details-left-english src/check/check_report.cpp 's/own != detail ? own : translate_reason(language_from_code(lang).value_or(Language::en), detail)/own != detail ? own : detail/' "$CHECK" "^check:"
 mutant detached-child-holds-the-answer src/check/student_process.cpp 's/^      if (exited \&\& now >= drained_by) break;/      (void)drained_by;/' "$CHECK" "^check:"
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 # --- projector and state ---
@@ -157,6 +157,23 @@ mutant csv-record-split-inside-quotes src/check/csv_merge.cpp 's/    if (text\[i
 mutant merged-record-keeps-the-shard src/check/csv_merge.cpp 's/  merged.record.shard = Shard{1, 1};/  (void)0;/' "$CHECK" "$SHARDS"
 mutant merge-batch-of-the-first-shard src/check/csv_merge.cpp 's/  merged.record.students.assign(batch.begin(), batch.end());/  merged.record.students = first.students;/' "$CHECK" "$SHARDS"
 mutant autograder-no-fallback-without-sandbox examples/gradescope/run_autograder 's/^  "\${grade\[@\]}" --no-sandbox$/  true/' "$CHECK" "$SHARDS"
+# --- contest-grade bounds per run (issue 32) ---
+BOUNDS="^check: ?(bounds|run bounds)"
+mutant run-not-in-a-group src/check/student_process.cpp 's/  if (limits.use_run_groups \&\& run_groups_available(no_group)) {/  if (false) {/' "$CHECK" "$BOUNDS"
+mutant run-processes-unbounded src/check/run_group.cpp 's/write_text(group->folders_\[1\] + "\/pids.max", processes)/write_text(group->folders_[1] + "\/pids.max", "max")/' "$CHECK" "$BOUNDS"
+mutant run-disk-on-the-host src/check/student_process.cpp 's/{"--size", std::to_string(disk_bytes), "--tmpfs", work}/{"--bind", work, work}/' "$CHECK" "$BOUNDS"
+mutant run-status-cpu-dropped src/check/check_run.cpp '/  result.cpu_seconds = run.cpu_seconds;/d' "$CHECK" "$BOUNDS"
+mutant keyring-shared src/check/student_process.cpp '/  syscall(SYS_keyctl, KEYCTL_JOIN_SESSION_KEYRING, nullptr);/d' "$CHECK" "$BOUNDS"
+mutant home-shown src/check/shown_folders.cpp 's/else if (!home.empty() \&\& inside/else if (false \&\& inside/' "$CHECK" "$BOUNDS"
+mutant class-under-opt-shown src/check/student_process.cpp '/  for (const std::string\& dir : sandbox.hidden) words.insert/d' "$CHECK" "$BOUNDS"
+mutant modes-500-left-behind src/check/folder_removal.cpp 's/^  make_folders_ours(folder);$/  (void)make_folders_ours;/' "$CHECK" "$BOUNDS"
+mutant hangup-leaves-folders src/cli/check_command.cpp '/  sigaddset(\&signals, SIGHUP);/d' "$CHECK" "$BOUNDS"
+mutant unreadable-submission-crashes src/cli/check_command.cpp 's/        if (geteuid() == 0) s.setup_error = unreadable_by_others/        if (false) s.setup_error = unreadable_by_others/' "$CHECK" "$BOUNDS"
+mutant no-sandbox-by-default src/cli/check_command.cpp 's/^    throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s)/    if (false) throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s)/' "$CHECK" "$BOUNDS"
+mutant dir-substituted-again src/cli/check_command.cpp 's/^      out += dir;/      out += word.substr(at, 5);/' "$CHECK" "$BOUNDS"
+mutant stderr-unescaped src/check/check_report.cpp 's/escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160)))/err.substr(start, std::min<std::size_t>(end - start, 160))/' "$CHECK" "$BOUNDS"
+mutant cpu-time-not-polled src/check/student_process.cpp 's/      if (group \&\& !exited \&\& group->cpu_seconds() > cpu_limit) {/      if (false) {/' "$CHECK" "$BOUNDS"
+mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.require_limits) throw/  if (false) throw/' "$CHECK" "$BOUNDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

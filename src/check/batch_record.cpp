@@ -19,7 +19,8 @@ std::string BatchRecord::difference_from(const BatchRecord& other) const {
   for (const std::string& difference :
        {differs("raycam", raycam, other.raycam), differs("seed", seed, other.seed), differs("cases", cases, other.cases),
         differs("mode", mode, other.mode), differs("timeout", timeout_seconds, other.timeout_seconds),
-        differs("memory", memory_mb, other.memory_mb), differs("student_cmd", student_cmd, other.student_cmd),
+        differs("memory", memory_mb, other.memory_mb), differs("disk", disk_mb, other.disk_mb),
+        differs("processes", processes, other.processes), differs("student_cmd", student_cmd, other.student_cmd),
         differs("shard count", shard.count, other.shard.count)})
     if (!difference.empty()) return difference;
   return {};
@@ -31,6 +32,7 @@ std::string battery_record_json(const BatchRecord& r) {
   const json root = {{"raycam", r.raycam},           {"seed", r.seed},
                      {"cases", r.cases},             {"mode", r.mode},
                      {"timeout", r.timeout_seconds}, {"memory_mb", r.memory_mb},
+                     {"disk_mb", r.disk_mb},         {"processes", r.processes},
                      {"student_cmd", r.student_cmd}, {"shard", shard_text(r.shard)},
                      {"students", r.students}};
   return root.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
@@ -51,6 +53,8 @@ BatchRecord read_battery_record(const std::string& path) {
     field = "mode", r.mode = root.at(field).get<std::string>();
     field = "timeout", r.timeout_seconds = root.at(field).get<double>();
     field = "memory_mb", r.memory_mb = root.at(field).get<int>();
+    field = "disk_mb", r.disk_mb = root.at(field).get<int>();
+    field = "processes", r.processes = root.at(field).get<int>();
     field = "student_cmd", r.student_cmd = root.at(field).get<std::string>();
     field = "students", r.students = root.at(field).get<std::vector<std::string>>();
     field = "shard", r.shard = parse_shard(root.at(field).get<std::string>(), path + ": shard");

@@ -20,7 +20,7 @@ struct BatchRecord {
   int cases = 0;
   std::string mode;
   double timeout_seconds = 0;
-  int memory_mb = 0;
+  int memory_mb = 0, disk_mb = 0, processes = 0;  // the per-run bounds: a bound decides a run's outcome
   std::string student_cmd;
   Shard shard;
   std::vector<std::string> students;  // every folder of the batch, sorted, not only this shard's

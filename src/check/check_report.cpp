@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "check_texts.h"
+#include "escaped_text.h"
 #include "raycam/colour_map.h"
 #include "raycam/language.h"
 
@@ -36,6 +37,26 @@ std::string case_list(const std::vector<int>& cases) {
 
 int failing(const StudentReport& report) { return int(report.results.size()) - report.passed(); }
 
+// What a student's runs used, as isolate's meta file gives it per run: summed, and the largest peak.
+struct RunTotals {
+  double wall = 0, cpu = 0;
+  long long peak = 0;
+  int peak_case = 0;
+};
+RunTotals totals_of(const StudentReport& report) {
+  RunTotals t;
+  for (const CaseResult& r : report.results) {
+    t.wall += r.seconds;
+    t.cpu += r.cpu_seconds;
+    if (r.peak_memory_bytes > t.peak) {
+      t.peak = r.peak_memory_bytes;
+      t.peak_case = r.number;
+    }
+  }
+  return t;
+}
+constexpr double kMiB = 1 << 20;
+
 // The first lines of a program's stderr, indented.
 std::string stderr_excerpt(const std::string& err) {
   std::string out;
@@ -43,7 +64,7 @@ std::string stderr_excerpt(const std::string& err) {
   for (std::size_t start = 0; start < err.size() && lines < 6; ++lines) {
     std::size_t end = err.find('\n', start);
     if (end == std::string::npos) end = err.size();
-    out += "      | " + err.substr(start, std::min<std::size_t>(end - start, 160)) + "\n";
+    out += "      | " + escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160))) + "\n";
     start = end + 1;
   }
   return out;
@@ -56,8 +77,11 @@ namespace {
 // JSON report, which tools read); the French text report translates them with the module that translates
 // every error reason (raycam/language.h), numbers and names kept. A reason a program printed itself stays as
 // it is.
+// The bounds' sentences (check_run.h's limit_detail) are the check command's own texts. Escaped: a detail may
+// quote what a student named (a program, a folder).
 std::string detail_text(const std::string& lang, const std::string& detail) {
-  return translate_reason(language_from_code(lang).value_or(Language::en), detail);
+  const std::string own = text(lang, detail.c_str());
+  return escaped_control(own != detail ? own : translate_reason(language_from_code(lang).value_or(Language::en), detail));
 }
 }  // namespace
 
@@ -73,6 +97,7 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
                           cases.size(),
                           h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
   if (!h.sandboxed && !h.sandbox_note.empty()) out += textf(lang, "warning: %s\n", h.sandbox_note.c_str());
+  if (!h.limits_note.empty()) out += textf(lang, "warning: %s\n", h.limits_note.c_str());
   out += textf(lang, "%5s  %3s  %-10s  %15s  %s\n", text(lang, "case"), text(lang, "dim"), text(lang, "status"),
                text(lang, "wrong pixels"), text(lang, "worst pixel or reason"));
   for (const CaseResult& r : report.results) {
@@ -87,6 +112,9 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
   out += textf(lang, n == 1 ? "score: %d / %d case passed (%.0f %%)\n" : "score: %d / %d cases passed (%.0f %%)\n",
                report.passed(), n,
                n ? 100.0 * report.passed() / n : 0.0);
+  if (const RunTotals t = totals_of(report); t.peak > 0)  // nothing ran for answer files
+    out += textf(lang, "runs: %.2f s, %.2f s of CPU in all; peak memory %.1f MiB (case %d)\n", t.wall, t.cpu,
+                 double(t.peak) / kMiB, t.peak_case);
   bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
   for (const CaseResult& r : report.results)
     answered = answered || (r.answer && r.status != CaseStatus::pass);
@@ -118,6 +146,7 @@ std::string json_report(const ReportHeader& h, const StudentReport& report) {
   root["mode"] = h.mode;
   root["sandbox"] = h.sandboxed;
   if (!h.sandbox_note.empty()) root["sandbox_note"] = h.sandbox_note;
+  if (!h.limits_note.empty()) root["limits_note"] = h.limits_note;
   json diagnosis = json::array();
   for (const Explanation& e : report.diagnosis) {
     json mistakes = json::array();
@@ -141,6 +170,9 @@ std::string json_report(const ReportHeader& h, const StudentReport& report) {
       entry["worst_pixel"] = pixel;
     }
     if (!r.detail.empty()) entry["detail"] = r.detail;
+    entry["cpu_seconds"] = r.cpu_seconds;  // the run's status, as isolate's meta file gives it
+    entry["peak_memory_bytes"] = r.peak_memory_bytes;
+    if (!r.limit.empty()) entry["limit"] = r.limit;
     if (!r.stderr_text.empty()) entry["stderr"] = r.stderr_text;
     entry["explained_by"] = r.explained_by;
     results.push_back(entry);
@@ -160,8 +192,25 @@ std::string csv_field(const std::string& text) {
 }
 }  // namespace
 
+namespace {
+// The end of a CSV row: the runs ended by each bound, the CPU seconds of all runs, the largest peak in MiB.
+std::string run_bounds_fields(const StudentReport& report) {
+  std::string fields;
+  for (const char* limit : {kMemoryLimit, kProcessLimit, kDiskLimit, kOutputLimit}) {
+    int runs = 0;
+    for (const CaseResult& r : report.results) runs += r.limit == limit;
+    fields += "," + std::to_string(runs);
+  }
+  const RunTotals t = totals_of(report);
+  char figures[64];
+  std::snprintf(figures, sizeof figures, ",%.3f,%.1f", t.cpu, double(t.peak) / kMiB);
+  return fields + figures;
+}
+}  // namespace
+
 std::string csv_header() {
-  return "student,passed,cases,score,top_diagnosis,explains,fail,crash,timeout,bad_output,sandbox,checker_error\n";
+  return "student,passed,cases,score,top_diagnosis,explains,fail,crash,timeout,bad_output,sandbox,checker_error"
+         ",memory_limit,process_limit,disk_limit,output_limit,cpu_seconds,peak_memory_mb\n";
 }
 
 std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed) {
@@ -169,12 +218,13 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
   char score[32];
   std::snprintf(score, sizeof score, "%.1f", n ? 100.0 * report.passed() / n : 0.0);
   const bool explained = !report.diagnosis.empty();
-  return csv_field(student) + "," + std::to_string(report.passed()) + "," + std::to_string(n) + "," + score + "," +
+  return csv_field(escaped_control(student)) + "," + std::to_string(report.passed()) + "," + std::to_string(n) + "," + score + "," +
          (explained ? report.diagnosis[0].id() : std::string()) + "," +
          (explained ? std::to_string(report.diagnosis[0].cases.size()) : std::string("0")) + "," +
          std::to_string(report.count(CaseStatus::fail)) + "," + std::to_string(report.count(CaseStatus::crash)) + "," +
          std::to_string(report.count(CaseStatus::timeout)) + "," + std::to_string(report.count(CaseStatus::bad_output)) +
-         "," + (sandboxed ? "yes" : "no") + "," + std::to_string(report.count(CaseStatus::checker_error)) + "\n";
+         "," + (sandboxed ? "yes" : "no") + "," + std::to_string(report.count(CaseStatus::checker_error)) +
+         run_bounds_fields(report) + "\n";
 }
 
 // ---- difference images -------------------------------------------------------------------------------------

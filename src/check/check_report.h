@@ -16,6 +16,7 @@ struct ReportHeader {
   unsigned long long seed = kDefaultSeed;
   bool sandboxed = false;
   std::string sandbox_note;  // why not, or what it isolates
+  std::string limits_note;   // "memory not bounded per run: …" where no control group can be made
   std::string lang = "en";
 };
 
@@ -29,7 +30,8 @@ std::string case_reason(const std::string& lang, const CaseResult& r);
 //            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.
 std::string json_report(const ReportHeader& header, const StudentReport& report);
 
-// --batch --csv: the header line, and one row per student.
+// --batch --csv: the header line, and one row per student (the runs ended by each bound, the CPU seconds of
+// all runs and the largest peak memory in MiB at the end of the row).
 std::string csv_header();
 std::string csv_row(const std::string& student, const StudentReport& report, bool sandboxed);
 

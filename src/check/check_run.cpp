@@ -45,6 +45,13 @@ std::string signal_text(int signal) {
 }
 }  // namespace
 
+const char* limit_detail(const std::string& limit) {
+  if (limit == kMemoryLimit) return "memory-limit: the run reached its memory bound (--memory), all its processes together";
+  if (limit == kProcessLimit) return "process-limit: the run reached its bound on processes and threads (--processes)";
+  if (limit == kDiskLimit) return "disk-limit: the run filled its writable folder (--disk)";
+  return nullptr;
+}
+
 std::string case_file_name(int number, int count) { return numbered("case", number, count); }
 std::string answer_file_name(int number, int count) { return numbered("answer", number, count); }
 
@@ -69,7 +76,8 @@ CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& refere
       break;
     case RunResult::End::timed_out:
       result.status = CaseStatus::timeout;
-      result.detail = "no answer within the timeout";
+      result.detail = run.error == "CPU time" ? "CPU time over the timeout (all its processes together)"
+                                             : "no answer within the timeout";
       break;
     case RunResult::End::output_too_large:
       result.status = CaseStatus::bad_output;
@@ -84,6 +92,10 @@ CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& refere
     result.pixels = static_cast<long long>(reference.pixels());
     result.wrong_pixels = result.pixels;
   }
+  if (const char* bound = limit_detail(run.limit); bound && result.status != CaseStatus::pass) result.detail = bound;
+  result.limit = run.limit;
+  result.cpu_seconds = run.cpu_seconds;
+  result.peak_memory_bytes = run.peak_memory_bytes;
   result.number = number;
   result.dimension = c.file.dimension;
   result.stderr_text = run.err;
@@ -138,9 +150,15 @@ std::vector<StudentReport> check_submissions(
   auto work = [&] {
     for (std::size_t item; (item = next++) < total;) {
       const std::size_t s = item / cases.size(), i = item % cases.size();
-      RunResult run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
-      if (run.infrastructure_failure)  // once more (a process table full for a moment), then the checker's error
+      RunResult run;
+      if (!submissions[s].setup_error.empty()) {  // nothing to run: the checker's error, said per case
+        run.error = submissions[s].setup_error;
+        run.infrastructure_failure = true;
+      } else {
         run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
+        if (run.infrastructure_failure)  // once more (a process table full for a moment), then the checker's error
+          run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
+      }
       CaseResult result = result_of_run(int(i) + 1, cases[i], references[i], run);
       if (run.infrastructure_failure) {
         result.status = CaseStatus::checker_error;

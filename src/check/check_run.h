@@ -25,7 +25,8 @@ struct StudentReport {
 // The references of a battery (the right images with their ambiguous pixels), computed once.
 std::vector<CaseImage> reference_images(const std::vector<CheckCase>& cases);
 
-// What one run of the program says about case `number` (1-based).
+// What one run of the program says about case `number` (1-based), with what it used and the bound that
+// ended it.
 CaseResult result_of_run(int number, const CheckCase& c, const CaseImage& reference, const RunResult& run);
 
 // The file names of case i (1-based) in --write-cases and --answers folders: case_01.json, answer_01.json.
@@ -44,7 +45,14 @@ struct Submission {
   std::string name;               // the student (a folder name in --batch)
   std::vector<std::string> argv;  // the command, already split
   std::optional<Sandbox> sandbox;
+  // Why the checker cannot run this submission at all (a folder the sandbox's user cannot read): every case
+  // is then the checker's error, never the student's crash. "" when it can.
+  std::string setup_error;
 };
+
+// The report's sentence for a run ended by its memory, process or disk bound (`limit` as RunResult::limit),
+// nullptr for another limit or none.
+const char* limit_detail(const std::string& limit);
 
 // Runs every submission on every case, `threads` runs at once (a hanging program holds one thread for its
 // timeout; the others go on). `on_run` is called after each run (progress), `on_student` once per submission

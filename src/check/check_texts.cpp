@@ -44,12 +44,23 @@ const std::vector<Translation>& table() {
       {"wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
        "%zu fichiers de cas écrits dans %s (les réponses vont dans answer_NN.json à côté)\n"},
       {"wrote %zu difference images to %s\n", "%zu images de différences écrites dans %s\n"},
-      {"the sandbox cannot start and --require-sandbox was given: %s",
-       "le bac à sable ne démarre pas et --require-sandbox est donné : %s"},
+      {"the sandbox cannot start (%s): student programs run only in it, or without one when --no-sandbox is given",
+       "le bac à sable ne démarre pas (%s) : les programmes des étudiants ne tournent que dedans, ou sans lui "
+       "si --no-sandbox est donné"},
       {"running student programs WITHOUT a sandbox (%s): they can read and write what you can",
        "programmes des étudiants lancés SANS bac à sable (%s) : ils peuvent lire et écrire ce que vous pouvez"},
       {"%zu submissions x %zu cases on %d threads\n", "%zu rendus × %zu cas, %d exécutions à la fois\n"},
       {"wrote %s (%zu students)\n", "%s écrit (%zu étudiants)\n"},
+      {"memory-limit: the run reached its memory bound (--memory), all its processes together",
+       "memory-limit : l'exécution a atteint sa borne de mémoire (--memory), tous ses processus ensemble"},
+      {"process-limit: the run reached its bound on processes and threads (--processes)",
+       "process-limit : l'exécution a atteint sa borne de processus et de fils (--processes)"},
+      {"runs: %.2f s, %.2f s of CPU in all; peak memory %.1f MiB (case %d)\n",
+       "exécutions : %.2f s, dont %.2f s de calcul en tout ; mémoire au plus haut %.1f Mio (cas %d)\n"},
+      {"CPU time over the timeout (all its processes together)",
+       "temps de calcul au-delà du délai (tous ses processus ensemble)"},
+      {"disk-limit: the run filled its writable folder (--disk)",
+       "disk-limit : l'exécution a rempli son dossier inscriptible (--disk)"},
   };
   return entries;
 }

@@ -43,6 +43,9 @@ struct CaseResult {
   std::string detail;         // why a case crashed, timed out or gave a bad output
   std::string stderr_text;    // the program's stderr (capped)
   double seconds = 0;
+  double cpu_seconds = 0;           // the run's CPU time, all its processes (student_process.h)
+  long long peak_memory_bytes = 0;  // the run's peak memory (0: not measured)
+  std::string limit;                // the bound that ended the run ("memory-limit"…), "" if none
   std::optional<Answer> answer;           // kept for the diagnosis and the difference images
   std::vector<std::string> explained_by;  // explanation IDs reproducing this case
 };

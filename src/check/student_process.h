@@ -7,8 +7,10 @@
 // /home, /root, the rest of /etc, the report or CSV folders, other submissions. No network (a new network
 // namespace: not even the host's loopback), new user/PID/IPC/UTS namespaces (all its processes die with it).
 // Run by root, the program runs under an unprivileged uid of its own (never root's rights on what it sees);
-// a run may start at most RunLimits::max_processes processes; and an address-space cap. Without the sandbox
-// the same limits apply except the isolation and the uid.
+// its writable folder is a tmpfs of RunLimits::disk_bytes; a fresh session keyring of its own. Each run is a
+// control group of its own (run_group.h) bounding its memory, processes and CPU time as a whole; where none
+// can be made, per-process limits (address space, RLIMIT_NPROC, RLIMIT_CPU). Without the sandbox the same
+// limits apply except the isolation, the tmpfs and the uid.
 #pragma once
 
 #include <optional>
@@ -27,13 +29,25 @@ std::vector<std::string> split_command(const std::string& command, const std::st
 std::vector<std::string> absolutise_paths(std::vector<std::string> words);
 
 struct RunLimits {
-  double timeout_seconds = 10.0;
+  double timeout_seconds = 10.0;  // wall time
+  double cpu_seconds = 0;         // CPU time of all the run's processes together; 0: timeout_seconds
   std::size_t max_stdout_bytes = std::size_t(16) << 20;  // over this the program is stopped: bad output
   std::size_t max_stderr_bytes = std::size_t(16) << 10;  // kept for the report; the rest is read and dropped
-  long long memory_bytes = 2LL << 30;                     // address space (RLIMIT_AS)
-  long long file_bytes = 64LL << 20;                      // largest file it may write (RLIMIT_FSIZE)
-  int max_processes = 256;  // processes and threads a run may start (RLIMIT_NPROC, counted per run)
+  // Memory of the run as a whole (its control group: resident memory and its files in memory); without a
+  // group, each process's address space (RLIMIT_AS).
+  long long memory_bytes = 1LL << 30;
+  long long disk_bytes = 256LL << 20;   // the sandbox's writable folder (a tmpfs of this size)
+  long long file_bytes = 64LL << 20;    // largest file it may write (RLIMIT_FSIZE)
+  int max_processes = 256;  // processes and threads of the run (its control group; else RLIMIT_NPROC)
+  bool use_run_groups = true;  // false: per-process limits only (the fallback, also for tests)
 };
+
+// Which bound ended a run (isolate's meta file's "status"), as the report and the CSV name it.
+inline constexpr const char* kMemoryLimit = "memory-limit";
+inline constexpr const char* kProcessLimit = "process-limit";
+inline constexpr const char* kDiskLimit = "disk-limit";
+inline constexpr const char* kTimeLimit = "timeout";
+inline constexpr const char* kOutputLimit = "output-limit";
 
 struct Sandbox {
   std::string bwrap;  // absolute path of bwrap
@@ -53,6 +67,12 @@ struct RunResult {
   std::string out, err;
   double seconds = 0;
   std::string error;  // could_not_start: why
+  // What the run used (its control group's count; without one, the rusage of the processes waited for) and
+  // the bound that ended it (one of the k…Limit names above), "" if none.
+  double cpu_seconds = 0;
+  long long peak_memory_bytes = 0;
+  std::string limit;
+  bool bounded_per_run = false;  // memory and processes counted for the run as a whole (a control group)
 };
 
 // Runs `argv` (argv[0] looked up in PATH if it has no '/') with `input` on stdin. Never throws for what the
@@ -63,6 +83,9 @@ RunResult run_student(const std::vector<std::string>& argv, const std::string& i
 // Kills every run still going (its whole process group) and removes its temporary folder: at exit, and from
 // raycam-cli check when SIGINT or SIGTERM interrupts a batch.
 void stop_live_runs();
+// The same, for a process about to end (raycam-cli check's interrupt): no run starts or ends afterwards, so
+// that a worker whose run was just killed cannot finish the check first with its own exit status.
+void stop_live_runs_for_good();
 
 // Whether bwrap exists and can start a sandbox here (checked once per process by running `true` in it).
 // On failure `why` says what went wrong.

@@ -18,6 +18,9 @@
 #include "check_report.h"
 #include "check_texts.h"
 #include "lms_grades.h"
+#include "escaped_text.h"
+#include "run_group.h"
+#include "shown_folders.h"
 #include "commands.h"
 #include "flag_values.h"
 #include "raycam/parallel.h"
@@ -34,9 +37,9 @@ struct CheckFlags {
   int cases = 0;  // 0: the designed cases of the mode
   unsigned long long seed = kDefaultSeed;
   double timeout = 10.0;
-  int memory_mb = 2048;
+  int memory_mb = 1024, disk_mb = 256, processes = 256;
   int threads = 0;
-  bool require_sandbox = false, no_sandbox = false;
+  bool require_sandbox = false, no_sandbox = false, require_limits = false;
   std::string shard, gradescope, visibility = "visible";  // a large course (shards) and grade books
   double scale = kDefaultGradeScale;
 };
@@ -58,7 +61,7 @@ void require_output(const std::string& flag, const std::string& path, bool folde
   if (!got.empty()) throw std::invalid_argument(flags::bad_value_message(flag, expected, path) + got);
 }
 
-// The sandbox to use, or none: refuses with --require-sandbox, warns on the terminal otherwise.
+// The sandbox to use, or none when --no-sandbox says so (a warning on the terminal); refused otherwise.
 std::optional<Sandbox> choose_sandbox(const CheckFlags& flags, ReportHeader& header) {
   if (flags.no_sandbox) {
     header.sandbox_note = "--no-sandbox given";
@@ -68,10 +71,9 @@ std::optional<Sandbox> choose_sandbox(const CheckFlags& flags, ReportHeader& hea
       header.sandboxed = true;
       return sandbox;
     }
-    if (flags.require_sandbox)
-      throw std::invalid_argument(textf(header.lang, "the sandbox cannot start and --require-sandbox was given: %s",
-                                        why.c_str()));
-    header.sandbox_note = why;
+    // Never unsandboxed by accident (bwrap missing, or unable to start): only when asked by --no-sandbox.
+    throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s): student programs run only in "
+                                      "it, or without one when --no-sandbox is given", why.c_str()));
   }
   std::fprintf(stderr, "raycam-cli check: %s\n",
                textf(header.lang, "running student programs WITHOUT a sandbox (%s): they can read and write what you can",
@@ -84,7 +86,26 @@ RunLimits limits_of(const CheckFlags& flags) {
   RunLimits limits;
   limits.timeout_seconds = flags.timeout;
   limits.memory_bytes = static_cast<long long>(flags.memory_mb) << 20;
+  limits.disk_bytes = static_cast<long long>(flags.disk_mb) << 20;
+  limits.max_processes = flags.processes;
   return limits;
+}
+
+// Each run bounded as a whole (a control group), or said once at the top of the report (--batch: on the
+// terminal, and in each JSON report); --require-limits refuses instead.
+void choose_limits(const CheckFlags& flags, ReportHeader& header) {
+  std::string why;
+  if (run_groups_available(why)) return;
+  if (flags.require_limits) throw std::invalid_argument("--require-limits: runs cannot be bounded as a whole: " + why);
+  header.limits_note = "memory not bounded per run: " + why + "; per-process limits instead";
+}
+
+// What the sandbox will show of the machine (folders_named): refused (bad usage) when it holds the home, an
+// output or (in a batch) the class's folder.
+void guard_shown_folders(const CheckFlags& flags, const std::vector<std::string>& folders, const std::string& batch_root,
+                         const std::string& flag) {
+  const char* home = std::getenv("HOME");
+  refuse_exposed_folders(folders, home ? home : "", {flags.report, flags.csv, flags.diff_dir, flags.gradescope, batch_root}, flag);
 }
 
 // Table, score, diagnosis; --report and --diff-dir. Exit 0 when every case passes, 1 otherwise.
@@ -102,10 +123,21 @@ int finish(const CheckFlags& flags, const ReportHeader& header, const std::vecto
 }
 
 // ---- --batch ---------------------------------------------------------------------------------------------
-std::string substituted(std::string word, const std::string& dir, const std::string& name) {
-  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{dir}", dir}, {"{name}", name}})
-    for (std::size_t at; (at = word.find(key)) != std::string::npos;) word.replace(at, key.size(), value);
-  return word;
+// One pass over the template: a folder named "x{dir}" is put in once, never substituted again.
+std::string substituted(const std::string& word, const std::string& dir, const std::string& name) {
+  std::string out;
+  for (std::size_t at = 0; at < word.size();) {
+    if (word.compare(at, 5, "{dir}") == 0) {
+      out += dir;
+      at += 5;
+    } else if (word.compare(at, 6, "{name}") == 0) {
+      out += name;
+      at += 6;
+    } else {
+      out += word[at++];
+    }
+  }
+  return out;
 }
 
 // What the CSV is graded with, and every student of the batch (not only the shard's): written beside the CSV.
@@ -116,6 +148,8 @@ BatchRecord batch_record_of(const CheckFlags& flags, const std::vector<Submissio
   record.mode = flags.mode;
   record.timeout_seconds = flags.timeout;
   record.memory_mb = flags.memory_mb;
+  record.disk_mb = flags.disk_mb;
+  record.processes = flags.processes;
   record.student_cmd = flags.student_cmd;
   if (!flags.shard.empty()) record.shard = parse_shard(flags.shard, "--shard");
   for (const Submission& s : submissions) record.students.push_back(s.name);
@@ -145,7 +179,13 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   const fs::path root = fs::absolute(flags.batch).lexically_normal();
   if (!fs::is_directory(root)) throw std::invalid_argument("--batch: '" + flags.batch + "' is not a folder");
   const std::vector<std::string> words = split_command(flags.student_cmd, "--student-cmd");
+  if (flags.student_cmd.find("{dir}") == std::string::npos)
+    throw std::invalid_argument(flags::bad_value_message("--student-cmd", "a command naming the student's folder "
+                                                         "as {dir} (e.g. \"python3 {dir}/camera.py\")",
+                                                         flags.student_cmd));
   const std::optional<Sandbox> sandbox = choose_sandbox(flags, header);
+  choose_limits(flags, header);
+  if (!header.limits_note.empty()) std::fprintf(stderr, "raycam-cli check: %s\n", header.limits_note.c_str());
 
   std::vector<Submission> submissions;
   for (const fs::directory_entry& entry : fs::directory_iterator(root))
@@ -153,7 +193,13 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
       Submission s;
       s.name = entry.path().filename().string();
       for (const std::string& word : words) s.argv.push_back(substituted(word, entry.path().string(), s.name));
-      if (sandbox) s.sandbox = Sandbox{sandbox->bwrap, {root.string()}, {entry.path().string()}};
+      if (sandbox) {
+        s.sandbox = Sandbox{sandbox->bwrap, {root.string()}, {entry.path().string()}};
+        std::vector<std::string> shown = folders_named(s.argv);
+        shown.erase(std::remove(shown.begin(), shown.end(), entry.path().string()), shown.end());
+        guard_shown_folders(flags, shown, root.string(), "--student-cmd");
+        if (geteuid() == 0) s.setup_error = unreadable_by_others(entry.path().string());
+      }
       submissions.push_back(s);
     }
   std::sort(submissions.begin(), submissions.end(), [](auto& a, auto& b) { return a.name < b.name; });
@@ -197,7 +243,8 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     rows[s] = with_last_field(csv_row(submissions[s].name, report, bool(sandbox)), scaled_grade(report, flags.scale));
     csv << rows[s] << std::flush;
     if (!terminal)
-      std::fprintf(stderr, "%zu/%zu %s: %d/%zu\n", students_done, submissions.size(), submissions[s].name.c_str(),
+      std::fprintf(stderr, "%zu/%zu %s: %d/%zu\n", students_done, submissions.size(),
+                   escaped_control(submissions[s].name).c_str(),
                    report.passed(), cases.size());
     if (!flags.report.empty()) {
       fs::create_directories(flags.report);
@@ -235,11 +282,12 @@ void clean_up_on_interrupt() {
   sigemptyset(&signals);
   sigaddset(&signals, SIGINT);
   sigaddset(&signals, SIGTERM);
+  sigaddset(&signals, SIGHUP);  // a closed ssh session
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // inherited by every thread started after this
   std::thread([signals] {
     int received = 0;
     sigwait(&signals, &received);
-    stop_live_runs();
+    stop_live_runs_for_good();
     std::fprintf(stderr, "\nraycam-cli check: interrupted; the running programs were stopped\n");
     _exit(128 + received);
   }).detach();
@@ -275,8 +323,12 @@ int run_check(const Args& args) {
                           flags::integer_in(0, 2147483647), [&](int seed) { flags.seed = static_cast<unsigned long long>(seed); });
   add_checked_option<double>(app, "--timeout", "SEC", "seconds per case (default 10)",
                              flags::number_in({0.1, 3600}), [&](double t) { flags.timeout = t; });
-  add_checked_option<int>(app, "--memory", "MB", "address-space cap per run, MiB (default 2048)",
+  add_checked_option<int>(app, "--memory", "MB", "memory of each run, all its processes together, MiB (default 1024)",
                           flags::integer_in(64, 65536), [&](int mb) { flags.memory_mb = mb; });
+  add_checked_option<int>(app, "--processes", "N", "processes and threads of each run (default 256)",
+                          flags::integer_in(8, 65536), [&](int n) { flags.processes = n; });
+  add_checked_option<int>(app, "--disk", "MB", "size of each run's writable folder, MiB (default 256)",
+                          flags::integer_in(1, 65536), [&](int mb) { flags.disk_mb = mb; });
   add_checked_option<int>(app, "--threads", "T", "runs at once (default: every core)",
                           flags::integer_in(1, 256), [&](int t) { flags.threads = t; });
   app.add_option("--report", flags.report, "JSON report (--batch: a folder of them)");
@@ -294,8 +346,10 @@ int run_check(const Args& args) {
                           "--gradescope: when students see the tests (default visible)",
                           flags::one_of(gradescope_visibilities()),
                           [&](int i) { flags.visibility = gradescope_visibilities()[std::size_t(i)]; });
-  app.add_flag("--require-sandbox", flags.require_sandbox, "refuse to run programs when bubblewrap cannot start");
+  app.add_flag("--require-sandbox", flags.require_sandbox, "refuse to run programs when bubblewrap cannot start (the default)");
   app.add_flag("--no-sandbox", flags.no_sandbox, "run programs without bubblewrap (a warning is printed)");
+  app.add_flag("--require-limits", flags.require_limits,
+               "refuse to run programs when runs cannot be bounded as a whole (no control group)");
   try {
     std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
     app.parse(reversed);
@@ -351,9 +405,19 @@ int run_check(const Args& args) {
   if (fs::is_directory(submission.argv[0], not_a_folder))
     throw std::invalid_argument(flags::bad_value_message("--student", "a program (\"COMMAND ARGS\")",
                                                          flags.student) + " (a folder)");
-  if (find_program(submission.argv[0]).empty())
-    throw std::invalid_argument("--student: cannot find an executable program '" + submission.argv[0] + "'");
+  if (find_program(submission.argv[0]).empty()) {
+    const std::string hint = launch_hint(submission.argv);  // no run bit, Windows line ends
+    throw std::invalid_argument("--student: " +
+                                (hint.empty() ? "cannot find an executable program '" + submission.argv[0] + "'" : hint));
+  }
   submission.sandbox = choose_sandbox(flags, header);
+  choose_limits(flags, header);
+  if (submission.sandbox) {
+    guard_shown_folders(flags, folders_named(submission.argv), "", "--student");
+    for (const std::string& folder : folders_named(submission.argv))
+      if (const std::string why = geteuid() == 0 ? unreadable_by_others(folder) : ""; !why.empty())
+        throw std::invalid_argument("--student: " + why);
+  }
   const std::vector<StudentReport> reports =
       check_submissions({submission}, cases, references, limits_of(flags), detail::resolve_threads(flags.threads));
   return finish(flags, header, cases, references, reports[0]);

@@ -65,6 +65,7 @@ struct HandShards {
   raycam::test::ScratchDir dir{"shards"};
   std::vector<std::string> students = {"ann", "bo", "cy", "di", "ed", "fa", "gil", "hu", "o,brien"};
   std::string header = "student,passed,score,extra_column,grade_20\n";
+  int disk_mb = 256;  // a per-run bound: shards with other bounds graded differently
 
   std::string write(const std::string& file, int index, int count, const std::vector<std::string>& rows,
                     unsigned long long seed = 7) {
@@ -74,6 +75,8 @@ struct HandShards {
     record.mode = "both";
     record.timeout_seconds = 10;
     record.memory_mb = 2048;
+    record.disk_mb = disk_mb;
+    record.processes = 256;
     record.student_cmd = "{dir}/run.sh";
     record.shard = Shard{index, count};
     record.students = students;
@@ -150,10 +153,13 @@ TEST_CASE("merge refuses missing students, overlaps, another battery or header, 
     CHECK_THAT(message, Catch::Contains("shard 2/2 given twice"));
     CHECK_THAT(message, Catch::Contains("overlap: " + first_of_two + " is in " + two + " and "));
   }
-  SECTION("another seed, another count of slices, another header") {
+  SECTION("another seed, another bound, another count of slices, another header") {
     CHECK_THAT(refusal({one, hand.write("seed.csv", 2, 2, rows[2], 8)}),
                Catch::Contains("graded differently") && Catch::Contains("seed 8 vs 7"));
     CHECK_THAT(refusal({one, hand.write("three.csv", 2, 3, hand.slices(3)[2])}), Catch::Contains("shard count 3 vs 2"));
+    hand.disk_mb = 512;
+    CHECK_THAT(refusal({one, hand.write("disk.csv", 2, 2, rows[2])}), Catch::Contains("disk 512 vs 256"));
+    hand.disk_mb = 256;
     hand.header = "student,passed,score,grade_100\n";
     CHECK_THAT(refusal({one, hand.write("header.csv", 2, 2, rows[2])}), Catch::Contains("header line differs"));
   }
