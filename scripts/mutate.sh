@@ -125,6 +125,10 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+# --- one view model, one language, one mistake row, two resolutions, docs that cannot go stale (issue 33) ---
+STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do
+mutant doc-names-a-moved-test docs/app.md 's#`tests/session/test_files.cpp`#`tests/ui/test_files.cpp`#' "$STRUCTURE" "^structure: the README"
+mutant architecture-row-misses-a-link docs/architecture.md 's/the figure export | core, io, check, figure |/the figure export | core, io, check |/' "$STRUCTURE" "^structure: docs/architecture"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
