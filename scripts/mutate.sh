@@ -129,6 +129,11 @@ mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string
 STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do
 mutant doc-names-a-moved-test docs/app.md 's#`tests/session/test_files.cpp`#`tests/ui/test_files.cpp`#' "$STRUCTURE" "^structure: the README"
 mutant architecture-row-misses-a-link docs/architecture.md 's/the figure export | core, io, check, figure |/the figure export | core, io, check |/' "$STRUCTURE" "^structure: docs/architecture"
+mutant preset-takes-one-res src/io/view_setup.cpp 's/  if (preset.res) camera.set_res(\*preset.res, preset.res_rows.value_or(\*preset.res));/  if (preset.res) camera.set_res(*preset.res);/' "raycam_flags_tests" "^flags: ?.*(nbc|resolution)"
+mutant window-drops-the-rows-res src/session/app_state.cpp 's/    camera.set_res(state.res, state.res_rows.value_or(state.res));/    camera.set_res(state.res);/' "raycam_session_tests" "^session: ?the window's two resolutions"
+mutant preview-squares-two-res src/session/app_state.cpp 's/std::max(state.res_rows.value_or(state.res) \* factor, least)/std::max(state.res * factor, least)/' "raycam_session_tests" "^session: ?the window's two resolutions"
+mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));/fractional_res(j, 44, 25, 35));/' "raycam_check_tests" "^check: ?a 3D case has two resolutions"
+mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?the example students"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -1,5 +1,7 @@
 // The default battery reveals every classic mistake, and the diagnosis tells single mistakes apart.
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cmath>
 
 #include "battery.h"
 #include "case_image.h"
@@ -79,4 +81,27 @@ TEST_CASE("on the default battery, each single mistake is the first explanation 
       CHECK(diagnosis[0].id() == info.id);
       CHECK(int(diagnosis[0].cases.size()) == failing);
     }
+}
+
+TEST_CASE("a 3D case has two resolutions, and its image has the handout's nbl rows of nbc columns",
+          "[check][battery][res]") {
+  // The handout's useful size, from its formula: res·N rounded, at least 1.
+  const auto handout_count = [](double res, int size) { return std::max(1, int(std::floor(res * size + 0.5))); };
+  for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(914273), std::uint64_t(1)}) {
+    int two = 0;
+    for (const CheckCase& c : make_battery(BatteryMode::three_d, designed_case_count(BatteryMode::three_d), seed)) {
+      const CameraPreset& camera = c.file.camera;
+      if (!camera.res_rows) continue;
+      ++two;
+      INFO(c.purpose << " seed " << seed);
+      const int columns = (*camera.size)[0], rows = (*camera.size)[1];
+      const CaseImage image = render_case(c.file);
+      CHECK(image.columns == handout_count(*camera.res, columns));  // nbc
+      CHECK(image.rows == handout_count(*camera.res_rows, rows));   // nbl
+      // One res for both sides would give another row count: the case tells a program that reads one apart.
+      CHECK(handout_count(*camera.res, rows) != image.rows);
+      CHECK(scene_to_json(c.file).find("\"res\": [") != std::string::npos);  // the protocol's input has both
+    }
+    CHECK(two >= 1);
+  }
 }

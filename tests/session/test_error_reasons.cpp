@@ -161,6 +161,10 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": 1})"), {"lesson.json", "camera"});
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": {"theta": 1e7}})"),
       {"lesson.json", "camera.theta", "[-1e6, 1e6]", "10000000.0"});
+  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"res": [0.5]}})"),
+      {"lesson.json", "camera.res", "]0, 1]", "[0.5]"});
+  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"res": [0.5, 0]}})"),
+      {"lesson.json", "camera.res[1]", "]0, 1]"});
   add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [1]}})"),
       {"lesson.json", "camera.size"});
   add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [16384, 16384]}})"),
@@ -232,6 +236,12 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
                     f.camera.size = std::vector<int>{4, 4};
                   }),
       {"--size", "N", "2D"});
+  add(setup_error(scene2d,
+                  [](ViewFlags& f) {
+                    f.camera.res = 0.5;
+                    f.camera.res_rows = 0.25;
+                  }),
+      {"--res", "R", "RC,RL", "2D", "3D"});
   add(setup_error(scene2d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxPixels2D + 1}; }),
       {"--size", "N", std::to_string(kMaxPixels2D), "2D"});
   add(setup_error(scene3d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxSide3D + 1}; }),
