@@ -134,6 +134,8 @@ mutant window-drops-the-rows-res src/session/app_state.cpp 's/    camera.set_res
 mutant preview-squares-two-res src/session/app_state.cpp 's/std::max(state.res_rows.value_or(state.res) \* factor, least)/std::max(state.res * factor, least)/' "raycam_session_tests" "^session: ?the window's two resolutions"
 mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));/fractional_res(j, 44, 25, 35));/' "raycam_check_tests" "^check: ?a 3D case has two resolutions"
 mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?the example students"
+mutant mistake-row-wrong-hook src/core/classic_mistakes.cpp 's/MistakeHook::hit_rule, false,/MistakeHook::pixel, false,/' "$CORE" "^core: ?each mistake's row"
+mutant mirrored-claims-only-camera src/core/classic_mistakes.cpp 's/MistakeHook::pixel, false, "a scene not symmetric left to right"/MistakeHook::pixel, true, "a scene not symmetric left to right"/' "$CORE" "^core: ?(each mistake's row|accelerated casters equal)"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

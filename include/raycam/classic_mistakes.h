@@ -37,10 +37,25 @@ inline ClassicMistakes rotation_mistake_only(bool on) {
   return mistakes;
 }
 
+// Where a mistake acts: the placement M_d, a pixel's ray (which pixel, where it lies on the canonical screen,
+// the ray built from it, the pixel count n), or the caster's hit rule. tests/core/test_classic_mistakes.cpp
+// checks each row's hook against what the mistake really changes.
+enum class MistakeHook { placement, pixel, hit_rule };
+
+// One row per mistake: everything raycam knows about it, declared once. Adding a mistake takes this row, its
+// flag in ClassicMistakes, its effect where its hook is (camera2d.cpp / camera3d.cpp / ray_caster.cpp) and
+// its lesson (src/session/mistake_lessons.cpp); docs/architecture.md, "Adding a classic mistake".
 struct MistakeInfo {
   const char* id;  // stable: "printed_rotation_sign", …
   bool ClassicMistakes::*flag;
   bool in_2d, in_3d;
+  MistakeHook hook;
+  // It changes only M_d or n, so the accelerated casters, whose bounds come from the camera's own M_d and
+  // pixel count, stay exact with it on (mistakes_change_only_placement).
+  bool only_moves_camera;
+  // What a check case needs to reveal it (English, for whoever designs the battery: src/check/battery.cpp
+  // lists it in such a case's "reveals", and tests/check/test_battery.cpp names this when none does).
+  const char* battery_needs;
   const char* label_en;  // short, for a checkbox
   const char* label_fr;
   const char* explanation_en;  // one line, cites the handout's step

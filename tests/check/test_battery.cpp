@@ -31,7 +31,7 @@ TEST_CASE("the battery reveals every classic mistake (default seed and two other
     const std::vector<CheckCase> battery =
         make_battery(BatteryMode::both, designed_case_count(BatteryMode::both), seed);
     for (const MistakeInfo& info : kClassicMistakes) {
-      INFO(info.id << " seed " << seed);
+      INFO(info.id << " seed " << seed << ": no case reveals it; the battery needs " << info.battery_needs);
       int revealing = 0;
       for (const CheckCase& c : battery) {
         const CaseImage right = render_case(c.file);
