@@ -123,7 +123,7 @@ mutant bound-float-rounded-to-nearest src/core/band_kernels.h 's/return float(d 
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 # --- one language for error reasons ---
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
-mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
+mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? translated(/false ? translated(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
 # --- one view model, one language, one mistake row, two resolutions, docs that cannot go stale (issue 33) ---
 STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do
@@ -136,6 +136,8 @@ mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 2
 mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?the example students"
 mutant mistake-row-wrong-hook src/core/classic_mistakes.cpp 's/MistakeHook::hit_rule, false,/MistakeHook::pixel, false,/' "$CORE" "^core: ?each mistake's row"
 mutant mirrored-claims-only-camera src/core/classic_mistakes.cpp 's/MistakeHook::pixel, false, "a scene not symmetric left to right"/MistakeHook::pixel, true, "a scene not symmetric left to right"/' "$CORE" "^core: ?(each mistake's row|accelerated casters equal)"
+mutant check-text-without-french src/check/check_texts.cpp 's/      {"none", "aucun"},/      {"none"},/' "raycam_session_tests" "^session: ?every text of every table has every language"
+mutant mistake-label-without-french src/core/classic_mistakes.cpp 's/{"mirrored image", "image en miroir"},/{"mirrored image"},/' "raycam_session_tests" "^session: ?every text of every table has every language"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -11,6 +11,8 @@
 #include <cstddef>
 #include <string_view>
 
+#include "raycam/languages.h"
+
 namespace raycam {
 
 struct ClassicMistakes {
@@ -56,10 +58,8 @@ struct MistakeInfo {
   // What a check case needs to reveal it (English, for whoever designs the battery: src/check/battery.cpp
   // lists it in such a case's "reveals", and tests/check/test_battery.cpp names this when none does).
   const char* battery_needs;
-  const char* label_en;  // short, for a checkbox
-  const char* label_fr;
-  const char* explanation_en;  // one line, cites the handout's step
-  const char* explanation_fr;
+  LocalText label;        // short, for a checkbox
+  LocalText explanation;  // one line, cites the handout's step
 };
 
 inline constexpr std::size_t kClassicMistakeCount = 14;
@@ -71,6 +71,5 @@ const MistakeInfo* find_mistake(std::string_view id);
 bool any_mistake(const ClassicMistakes& mistakes);
 // True when every mistake that is on only changes M_d or n (the accelerated casters stay exact for them).
 bool mistakes_change_only_placement(const ClassicMistakes& mistakes);
-// The label and explanation in a language: raycam/language.h (io) picks between the _en and _fr texts.
 
 }  // namespace raycam

@@ -57,7 +57,8 @@ struct Builder2D {
   Frame2D frame;
   Builder2D(glm::dvec2 target, double d, double theta_deg, double df, int size, double res) {
     file.dimension = 2;
-    file.camera = {std::vector<double>{target.x, target.y}, d, theta_deg, std::nullopt, df, res, std::vector<int>{size}};
+    file.camera = {std::vector<double>{target.x, target.y}, d, theta_deg, std::nullopt, df, res,
+                   std::vector<int>{size}, std::nullopt};
     const Camera2D camera = camera2d_from_preset(file.camera);
     frame = {camera.screen_centre(), camera.eye(), camera.view_direction(),
              glm::normalize(glm::dvec2(camera.world_from_camera()[0]))};

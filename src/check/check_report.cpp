@@ -20,7 +20,7 @@ namespace raycam::check {
 namespace {
 using json = nlohmann::json;
 
-std::string pixel_text(const std::string& lang, const CaseResult& r) {
+std::string pixel_text(Language lang, const CaseResult& r) {
   if (!r.worst) return {};
   const WorstPixel& w = *r.worst;
   return r.dimension == 2 ? textf(lang, "pixel k = %d: expected %d, got %d", w.column, w.expected, w.got)
@@ -55,13 +55,13 @@ namespace {
 // JSON report, which tools read); the French text report translates them with the module that translates
 // every error reason (raycam/language.h), numbers and names kept. A reason a program printed itself stays as
 // it is.
-std::string detail_text(const std::string& lang, const std::string& detail) {
-  return translate_reason(language_from_code(lang).value_or(Language::en), detail);
+std::string detail_text(Language lang, const std::string& detail) {
+  return translate_reason(lang, detail);
 }
 }  // namespace
 
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
-  const std::string& lang = h.lang;
+  const Language lang = h.language;
   std::string out = textf(lang,
                           cases.size() == 1 ? "raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n"
                                             : "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
@@ -121,7 +121,7 @@ std::string json_report(const ReportHeader& h, const StudentReport& report) {
                          {"mistakes", mistakes},
                          {"explains", e.cases.size()},
                          {"cases", e.cases},
-                         {"text", e.text(h.lang)}});
+                         {"text", e.text(h.language)}});
   }
   root["diagnosis"] = diagnosis;
   json results = json::array();

@@ -16,7 +16,7 @@ struct ReportHeader {
   unsigned long long seed = kDefaultSeed;
   bool sandboxed = false;
   std::string sandbox_note;  // why not, or what it isolates
-  std::string lang = "en";
+  Language language = Language::en;
 };
 
 // The terminal text: one line per case, the score, the diagnosis, then the stderr of failing runs.

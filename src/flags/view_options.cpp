@@ -1,6 +1,7 @@
 #include "view_options.h"
 
 #include <cstddef>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,20 @@ ValueRule<std::vector<double>> res_rule() {
             return text.find(',') == std::string::npos ? res.expected
                                                        : "RC,RL (columns, rows) with each in ]0, 1]";
           }};
+}
+
+ValueRule<Language> language_rule() {
+  const ValueRule<int> code = one_of(std::vector<std::string>(std::begin(kLanguageCodes), std::end(kLanguageCodes)));
+  return {code.expected, [code](const std::string& text) -> std::optional<Language> {
+            const std::optional<int> index = code.parse(text);
+            return index ? std::optional<Language>(kLanguages[std::size_t(*index)]) : std::nullopt;
+          }};
+}
+
+std::string language_metavar() {
+  std::string metavar;
+  for (const char* code : kLanguageCodes) metavar += (metavar.empty() ? "" : "|") + std::string(code);
+  return metavar;
 }
 
 // --size N (2D, or a square 3D image) or WxH (3D).

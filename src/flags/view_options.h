@@ -23,6 +23,10 @@ ValueRule<std::vector<int>> size_rule();
 // make_view_setup checks), each in ]0, 1].
 ValueRule<std::vector<double>> res_rule();
 
+// --lang: one of the languages' codes (raycam/languages.h), its metavar "en|fr".
+ValueRule<Language> language_rule();
+std::string language_metavar();
+
 // Angles are taken in degrees (make_view_setup converts them once).
 CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view);
 

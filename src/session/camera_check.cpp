@@ -211,7 +211,7 @@ std::string check_header(const CheckProgress& progress) {
   const check::CaseResult& r = progress.latest->verdict.result;
   if (r.status == check::CaseStatus::pass) return {};
   if (r.status == check::CaseStatus::fail) return trf("CHECK: %lld pixels wrong", r.wrong_pixels);
-  return trf("CHECK: %s", check::text(language_code(current_language()), check::status_name(r.status)));
+  return trf("CHECK: %s", check::text(current_language(), check::status_name(r.status)));
 }
 
 }  // namespace raycam::ui

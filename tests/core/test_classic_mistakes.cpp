@@ -50,9 +50,11 @@ TEST_CASE("the mistake table names each ID once, the published ones all, in both
     CHECK_FALSE(all.*info.flag);  // each entry has its own flag
     all.*info.flag = true;
     CHECK(find_mistake(info.id) == &info);
-    CHECK(std::string(info.explanation_en).find("Ex. ") == 0);  // points to the handout's exercise
-    CHECK(std::string(info.explanation_fr).find("Ex. ") == 0);
-    CHECK(std::string(info.explanation_en) != info.explanation_fr);
+    for (Language language : kLanguages) {
+      INFO(kLanguageCodes[std::size_t(language)]);
+      CHECK(std::string(info.explanation[language]).find("Ex. ") == 0);  // points to the handout's exercise
+      if (language != Language::en) CHECK(std::string(info.explanation[language]) != info.explanation.english());
+    }
     CHECK((info.in_2d || info.in_3d));
     CHECK(std::string(info.battery_needs).size() > 0);
     CHECK(any_mistake(only(info.flag)));

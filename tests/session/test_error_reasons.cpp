@@ -381,12 +381,12 @@ TEST_CASE("error reasons: every pattern of the table serves a real reason (no de
   for (const Reason& reason : real_reasons(scratch)) translate_reason(Language::fr, reason.english, &used);
   const std::set<std::size_t> served(used.begin(), used.end());
   for (std::size_t i = 0; i < reason_patterns().size(); ++i) {
-    INFO(reason_patterns()[i].en);
+    INFO(reason_patterns()[i].english());
     CHECK(served.count(i) == 1);
   }
 }
 
-TEST_CASE("error reasons: each French template places every part of its English pattern once",
+TEST_CASE("error reasons: each language's template places every part of its English pattern once",
           "[session][language][reasons]") {
   auto names = [](const std::string& text) {
     std::multiset<std::string> found;
@@ -400,9 +400,9 @@ TEST_CASE("error reasons: each French template places every part of its English 
     return found;
   };
   for (const ReasonPattern& p : reason_patterns()) {
-    INFO(p.en);
-    const std::multiset<std::string> english = names(p.en);
-    CHECK(english == names(p.fr));
+    INFO(p.english());
+    const std::multiset<std::string> english = names(p.english());
+    for (Language language : kLanguages) CHECK(english == names(p[language]));
     CHECK(std::set<std::string>(english.begin(), english.end()).size() == english.size());
   }
 }
@@ -448,10 +448,10 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
   crash.detail = "exit status 2";
   report.results.push_back(crash);
   check::ReportHeader header;
-  header.lang = "fr";
+  header.language = Language::fr;
   const std::string text = check::text_report(header, {check::CheckCase{"", small_case()}}, report);
   CHECK_THAT(text, Catch::Contains("code de sortie 2"));
-  header.lang = "en";
+  header.language = Language::en;
   CHECK_THAT(check::text_report(header, {check::CheckCase{"", small_case()}}, report),
              Catch::Contains("exit status 2"));
 }
