@@ -3,9 +3,9 @@
 // on (alone and in pairs) to name the mistake a student's program made. One definition serves both.
 //
 // Each mistake has a stable ID (the names in docs/check.md and in `check --report`, never renamed), the
-// dimensions it exists in, and a one-line explanation in English and French that points to the handout's
-// step. The cameras apply the flags (camera2d.cpp, camera3d.cpp) and the plain caster the intersection one
-// (ray_caster.cpp); only mistakes that change M_d alone keep the accelerated casters.
+// dimensions it exists in, and a label and one-line explanation in every language that point to the
+// handout's step. The cameras apply the flags (camera2d.cpp, camera3d.cpp) and the plain caster the
+// intersection one (ray_caster.cpp); only the mistakes that only move the camera keep the accelerated casters.
 #pragma once
 
 #include <cstddef>

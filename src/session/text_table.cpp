@@ -1,7 +1,7 @@
 // Every visible string of the window, in English (the key) and French. French follows the handout's words
 // and notation: distance focale d_f, cible C, œil E, écran, point de visée, résolution res, carte des
 // couleurs, barre de couleurs, rayons primaires, homothétie, M_d = T·R·H. Keep printf conversions and any
-// "###id" identical in both columns (tests/ui/test_text.cpp checks). Group entries by the file that shows
+// "###id" identical in both columns (tests/session/test_text.cpp checks). Group entries by the file that shows
 // them, so that branches adding strings rarely touch the same lines.
 #include "text.h"
 
