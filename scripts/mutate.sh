@@ -123,7 +123,7 @@ mutant bound-float-rounded-to-nearest src/core/band_kernels.h 's/return float(d 
 mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < count; ++i) open |= depth\[i\] >= nearest_t;/  open = true;/' "$CORE" "$CORE_TESTS"
 # --- one language for error reasons ---
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
-mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
+mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? translated(/false ? translated(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
 # --- tests that catch what they claim ---
 # Nine bugs the suite once let through (issue 38), each caught by the test written for its class of hole.
@@ -174,6 +174,19 @@ mutant dir-substituted-again src/cli/check_command.cpp 's/^      out += dir;/   
 mutant stderr-unescaped src/check/check_report.cpp 's/escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160)))/err.substr(start, std::min<std::size_t>(end - start, 160))/' "$CHECK" "$BOUNDS"
 mutant cpu-time-not-polled src/check/student_process.cpp 's/      if (group \&\& !exited \&\& group->cpu_seconds() > cpu_limit) {/      if (false) {/' "$CHECK" "$BOUNDS"
 mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.require_limits) throw/  if (false) throw/' "$CHECK" "$BOUNDS"
+# --- one view model, one language, one mistake row, two resolutions, docs that cannot go stale (issue 33) ---
+STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do
+mutant doc-names-a-moved-test docs/app.md 's#`tests/session/test_files.cpp`#`tests/ui/test_files.cpp`#' "$STRUCTURE" "^structure: the README"
+mutant architecture-row-misses-a-link docs/architecture.md 's/the figure export | core, io, check, figure |/the figure export | core, io, check |/' "$STRUCTURE" "^structure: docs/architecture"
+mutant preset-takes-one-res src/io/view_setup.cpp 's/  if (preset.res) camera.set_res(\*preset.res, preset.res_rows.value_or(\*preset.res));/  if (preset.res) camera.set_res(*preset.res);/' "raycam_flags_tests" "^flags: ?.*(nbc|resolution)"
+mutant window-drops-the-rows-res src/session/app_state.cpp 's/    camera.set_res(state.res, state.res_rows.value_or(state.res));/    camera.set_res(state.res);/' "raycam_session_tests" "^session: ?the window's two resolutions"
+mutant preview-squares-two-res src/session/app_state.cpp 's/std::max(state.res_rows.value_or(state.res) \* factor, least)/std::max(state.res * factor, least)/' "raycam_session_tests" "^session: ?the window's two resolutions"
+mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));/fractional_res(j, 44, 25, 35));/' "raycam_check_tests" "^check: ?a 3D case has two resolutions"
+mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?the example students"
+mutant mistake-row-wrong-hook src/core/classic_mistakes.cpp 's/MistakeHook::hit_rule, false,/MistakeHook::pixel, false,/' "$CORE" "^core: ?each mistake's row"
+mutant mirrored-claims-only-camera src/core/classic_mistakes.cpp 's/MistakeHook::pixel, false, "a scene not symmetric left to right"/MistakeHook::pixel, true, "a scene not symmetric left to right"/' "$CORE" "^core: ?(each mistake's row|accelerated casters equal)"
+mutant check-text-without-french src/check/check_texts.cpp 's/      {"none", "aucun"},/      {"none"},/' "raycam_session_tests" "^session: ?every text of every table has every language"
+mutant mistake-label-without-french src/core/classic_mistakes.cpp 's/{"mirrored image", "image en miroir"},/{"mirrored image"},/' "raycam_session_tests" "^session: ?every text of every table has every language"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -146,19 +146,20 @@ int main() {
     const mini_json::Value scene = mini_json::parse(text);
     const mini_json::Value& camera = scene["camera"];
     const mini_json::Value& objects = scene["objects"];
-    const double res = camera["res"].number;
     std::printf("{\"ids\": [");
     if (scene["dimension"].number == 2) {
       const Matrix md = placement_2d(camera);
-      const int n = useful_size(res, int(camera["size"].number));
+      const int n = useful_size(camera["res"].number, int(camera["size"].number));
       for (int k = 0; k < n; ++k)
         std::printf("%s%d", k ? ", " : "", ray_id(md, {-1.0 + (2.0 * k + 1.0) / n, 0.0}, {0.0, 1.0}, objects));
       std::printf("]");
       print_matrix(md);
     } else {
       const Matrix md = placement_3d(camera);
-      const int columns = useful_size(res, int(camera["size"][0].number));
-      const int rows = useful_size(res, int(camera["size"][1].number));
+      // The handout's one or two resolution variables: res, or [columns' res, rows' res].
+      const mini_json::Value& res = camera["res"];
+      const int columns = useful_size(res.is_array() ? res[0].number : res.number, int(camera["size"][0].number));
+      const int rows = useful_size(res.is_array() ? res[1].number : res.number, int(camera["size"][1].number));
       for (int r = 0; r < rows; ++r) {  // row 0 at the top: canonical y near +1
         std::printf("%s[", r ? ", " : "");
         for (int c = 0; c < columns; ++c) {

@@ -40,6 +40,12 @@ def useful_size(res, size):
     return max(1, min(size, math.floor(res * size + 0.5)))
 
 
+def resolutions(camera):
+    """The handout's one or two resolution variables: res, or in 3D [columns' res, rows' res]."""
+    res = camera["res"]
+    return res if isinstance(res, list) else [res, res]
+
+
 # ---- exercise 1: the 2D camera, M_d = T(OP) . R(theta - pi/2) . H(1, d_f) ----------------------------------
 def placement_2d(camera):
     cx, cy = camera["target"]
@@ -104,8 +110,9 @@ def answer(case):
         ids = [ray_id(m, [-1 + (2 * k + 1) / n, 0], [0, 1], objects) for k in range(n)]
     else:
         m = placement_3d(camera)
-        columns = useful_size(camera["res"], camera["size"][0])
-        rows = useful_size(camera["res"], camera["size"][1])
+        res_columns, res_rows = resolutions(camera)
+        columns = useful_size(res_columns, camera["size"][0])
+        rows = useful_size(res_rows, camera["size"][1])
         ids = [[ray_id(m, [-1 + (2 * c + 1) / columns, 1 - (2 * r + 1) / rows, 0], [0, 0, 1], objects)
                 for c in range(columns)] for r in range(rows)]  # row 0 at the top
     return {"ids": ids, "md": m}

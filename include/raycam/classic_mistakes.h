@@ -3,13 +3,15 @@
 // on (alone and in pairs) to name the mistake a student's program made. One definition serves both.
 //
 // Each mistake has a stable ID (the names in docs/check.md and in `check --report`, never renamed), the
-// dimensions it exists in, and a one-line explanation in English and French that points to the handout's
-// step. The cameras apply the flags (camera2d.cpp, camera3d.cpp) and the plain caster the intersection one
-// (ray_caster.cpp); only mistakes that change M_d alone keep the accelerated casters.
+// dimensions it exists in, and a label and one-line explanation in every language that point to the
+// handout's step. The cameras apply the flags (camera2d.cpp, camera3d.cpp) and the plain caster the
+// intersection one (ray_caster.cpp); only the mistakes that only move the camera keep the accelerated casters.
 #pragma once
 
 #include <cstddef>
 #include <string_view>
+
+#include "raycam/languages.h"
 
 namespace raycam {
 
@@ -37,14 +39,27 @@ inline ClassicMistakes rotation_mistake_only(bool on) {
   return mistakes;
 }
 
+// Where a mistake acts: the placement M_d, a pixel's ray (which pixel, where it lies on the canonical screen,
+// the ray built from it, the pixel count n), or the caster's hit rule. tests/core/test_classic_mistakes.cpp
+// checks each row's hook against what the mistake really changes.
+enum class MistakeHook { placement, pixel, hit_rule };
+
+// One row per mistake: everything raycam knows about it, declared once. Adding a mistake takes this row, its
+// flag in ClassicMistakes, its effect where its hook is (camera2d.cpp / camera3d.cpp / ray_caster.cpp) and
+// its lesson (src/session/mistake_lessons.cpp); docs/architecture.md, "Adding a classic mistake".
 struct MistakeInfo {
   const char* id;  // stable: "printed_rotation_sign", …
   bool ClassicMistakes::*flag;
   bool in_2d, in_3d;
-  const char* label_en;  // short, for a checkbox
-  const char* label_fr;
-  const char* explanation_en;  // one line, cites the handout's step
-  const char* explanation_fr;
+  MistakeHook hook;
+  // It changes only M_d or n, so the accelerated casters, whose bounds come from the camera's own M_d and
+  // pixel count, stay exact with it on (mistakes_change_only_placement).
+  bool only_moves_camera;
+  // What a check case needs to reveal it (English, for whoever designs the battery: src/check/battery.cpp
+  // lists it in such a case's "reveals", and tests/check/test_battery.cpp names this when none does).
+  const char* battery_needs;
+  LocalText label;        // short, for a checkbox
+  LocalText explanation;  // one line, cites the handout's step
 };
 
 inline constexpr std::size_t kClassicMistakeCount = 14;
@@ -56,6 +71,5 @@ const MistakeInfo* find_mistake(std::string_view id);
 bool any_mistake(const ClassicMistakes& mistakes);
 // True when every mistake that is on only changes M_d or n (the accelerated casters stay exact for them).
 bool mistakes_change_only_placement(const ClassicMistakes& mistakes);
-// The label and explanation in a language: raycam/language.h (io) picks between the _en and _fr texts.
 
 }  // namespace raycam

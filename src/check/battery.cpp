@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <glm/geometric.hpp>
 #include <random>
 #include <stdexcept>
@@ -56,7 +57,8 @@ struct Builder2D {
   Frame2D frame;
   Builder2D(glm::dvec2 target, double d, double theta_deg, double df, int size, double res) {
     file.dimension = 2;
-    file.camera = {std::vector<double>{target.x, target.y}, d, theta_deg, std::nullopt, df, res, std::vector<int>{size}};
+    file.camera = {std::vector<double>{target.x, target.y}, d, theta_deg, std::nullopt, df, res,
+                   std::vector<int>{size}, std::nullopt};
     const Camera2D camera = camera2d_from_preset(file.camera);
     frame = {camera.screen_centre(), camera.eye(), camera.view_direction(),
              glm::normalize(glm::dvec2(camera.world_from_camera()[0]))};
@@ -72,11 +74,12 @@ struct Builder2D {
 struct Builder3D {
   SceneFile file;
   Frame3D frame;
+  // res_rows: the rows' own resolution (the case's "res" is then [columns, rows]).
   Builder3D(glm::dvec3 target, double d, double theta_deg, double phi_deg, double df, int columns, int rows,
-            double res) {
+            double res, std::optional<double> res_rows = std::nullopt) {
     file.dimension = 3;
     file.camera = {std::vector<double>{target.x, target.y, target.z}, d, theta_deg, phi_deg, df, res,
-                   std::vector<int>{columns, rows}};
+                   std::vector<int>{columns, rows}, res_rows};
     const Camera3D camera = camera3d_from_preset(file.camera);
     frame = {camera.screen_centre(), camera.eye(), camera.view_direction(), camera.image_right(),
              camera.image_up()};
@@ -222,12 +225,14 @@ std::vector<Design> designs_3d() {
          asymmetric_spheres(b, j, target);
          return b.file;
        }},
-      {"3D: res < 1 in both directions, overlapping spheres, theta in the fourth quadrant",
+      // Two resolutions, as the handout allows ("une (ou deux) variables de résolution"): a program that takes
+      // one number for res, or swaps columns and rows, fails this case (rows' res·32 < 15 < columns' res·32).
+      {"3D: res < 1 in both directions, one per side, overlapping spheres, theta in the fourth quadrant",
        {"res_truncated", "mirrored", "rows_flipped", "pixel_edges"},
        [](Jitter& j) {
          const glm::dvec3 target{j.around(0.0, 0.4), j.around(0.0, 0.4), j.around(-0.3, 0.3)};
          Builder3D b(target, j.around(6.5, 0.8), j.around(-40, 15, 1), j.around(75, 10, 1), j.around(1.6, 0.3), 44,
-                     32, fractional_res(j, 44, 25, 35));
+                     32, fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));
          const Frame3D& f = b.frame;
          b.sphere(target + j.around(-0.5, 0.1) * f.right + j.around(0.3, 0.1) * f.up, j.around(0.9, 0.1));
          b.sphere(target + j.around(0.3, 0.1) * f.right + j.around(-0.2, 0.1) * f.up + 0.5 * f.view, j.around(1.0, 0.1));

@@ -22,7 +22,7 @@ namespace raycam::check {
 namespace {
 using json = nlohmann::json;
 
-std::string pixel_text(const std::string& lang, const CaseResult& r) {
+std::string pixel_text(Language lang, const CaseResult& r) {
   if (!r.worst) return {};
   const WorstPixel& w = *r.worst;
   return r.dimension == 2 ? textf(lang, "pixel k = %d: expected %d, got %d", w.column, w.expected, w.got)
@@ -79,18 +79,18 @@ namespace {
 // it is.
 // The bounds' sentences (check_run.h's limit_detail) are the check command's own texts. Escaped: a detail may
 // quote what a student named (a program, a folder).
-std::string detail_text(const std::string& lang, const std::string& detail) {
+std::string detail_text(Language lang, const std::string& detail) {
   const std::string own = text(lang, detail.c_str());
-  return escaped_control(own != detail ? own : translate_reason(language_from_code(lang).value_or(Language::en), detail));
+  return escaped_control(own != detail ? own : translate_reason(lang, detail));
 }
 }  // namespace
 
-std::string case_reason(const std::string& lang, const CaseResult& r) {
+std::string case_reason(Language lang, const CaseResult& r) {
   return r.status == CaseStatus::fail ? pixel_text(lang, r) : detail_text(lang, r.detail);
 }
 
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
-  const std::string& lang = h.lang;
+  const Language lang = h.language;
   std::string out = textf(lang,
                           cases.size() == 1 ? "raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n"
                                             : "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
@@ -155,7 +155,7 @@ std::string json_report(const ReportHeader& h, const StudentReport& report) {
                          {"mistakes", mistakes},
                          {"explains", e.cases.size()},
                          {"cases", e.cases},
-                         {"text", e.text(h.lang)}});
+                         {"text", e.text(h.language)}});
   }
   root["diagnosis"] = diagnosis;
   json results = json::array();

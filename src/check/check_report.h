@@ -17,14 +17,14 @@ struct ReportHeader {
   bool sandboxed = false;
   std::string sandbox_note;  // why not, or what it isolates
   std::string limits_note;   // "memory not bounded per run: …" where no control group can be made
-  std::string lang = "en";
+  Language language = Language::en;
 };
 
 // The terminal text: one line per case, the score, the diagnosis, then the stderr of failing runs.
 std::string text_report(const ReportHeader& header, const std::vector<CheckCase>& cases, const StudentReport& report);
 
 // A case's "worst pixel or reason" in the table: the worst pixel of a failing case, else the run's detail.
-std::string case_reason(const std::string& lang, const CaseResult& r);
+std::string case_reason(Language lang, const CaseResult& r);
 
 // --report: {"cases": N, "passed": P, "diagnosis": [{"mistake": ID, "explains": K, "text": ...}...],
 //            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.

@@ -66,21 +66,21 @@ const std::vector<Translation>& table() {
 }
 }  // namespace
 
-const char* text(const std::string& lang, const char* english) {
-  static const TranslationTable french(table());
-  return french.lookup(lang == "fr" ? Language::fr : Language::en, english);
+const std::vector<Translation>& check_translations() { return table(); }
+
+Language check_language(std::optional<Language> flag) { return flag.value_or(language_from_environment()); }
+
+const char* text(Language language, const char* english) {
+  static const TranslationTable texts(table());
+  return texts.lookup(language, english);
 }
 
-std::string textf(const std::string& lang, const char* english_format, ...) {
+std::string textf(Language language, const char* english_format, ...) {
   va_list args;
   va_start(args, english_format);
-  std::string out = format_text(text(lang, english_format), args);
+  std::string out = format_text(text(language, english_format), args);
   va_end(args);
   return out;
-}
-
-std::string check_language(const std::string& flag_value) {
-  return language_code(flag_value.empty() ? language_from_environment() : parse_language_flag(flag_value));
 }
 
 }  // namespace raycam::check

@@ -4,21 +4,27 @@
 // core (classic_mistakes.cpp).
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "raycam/language.h"
 
 namespace raycam::check {
 
-// The French of `english` when lang is "fr" (english itself if the table lacks it); english otherwise.
-const char* text(const std::string& lang, const char* english);
+// `english` in `language` (english itself if the table lacks it).
+const char* text(Language language, const char* english);
 // text() then printf-style formatting.
-std::string textf(const std::string& lang, const char* english_format, ...)
+std::string textf(Language language, const char* english_format, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
 
-// "fr" or "en" from --lang, or from the environment (LANGUAGE, LC_ALL, LC_MESSAGES, LANG) when empty.
-// Throws std::invalid_argument naming --lang for another value.
-std::string check_language(const std::string& flag_value);
+// --lang's language, or the environment's (LANGUAGE, LC_ALL, LC_MESSAGES, LANG) when it was not given.
+Language check_language(std::optional<Language> flag);
+
+// The whole table (for the test that every text has every language).
+const std::vector<Translation>& check_translations();
 
 }  // namespace raycam::check

@@ -100,11 +100,10 @@ std::string Explanation::id() const {
   return joined;
 }
 
-std::string Explanation::text(const std::string& lang) const {
+std::string Explanation::text(Language language) const {
   std::string joined;
   for (const MistakeInfo* mistake : mistakes)
-    joined += (joined.empty() ? "" : " + ") +
-              std::string(mistake_explanation(*mistake, language_from_code(lang).value_or(Language::en)));
+    joined += (joined.empty() ? "" : " + ") + std::string(mistake->explanation[language]);
   return joined;
 }
 

@@ -61,7 +61,7 @@ struct Explanation {
   std::vector<const MistakeInfo*> mistakes;  // one or two
   std::vector<int> cases;                    // the case numbers it reproduces
   std::string id() const;                    // "mirrored" or "mirrored+rows_flipped"
-  std::string text(const std::string& lang) const;
+  std::string text(Language language) const;
 };
 
 std::vector<Explanation> diagnose(const std::vector<CheckCase>& cases, std::vector<CaseResult>& results);

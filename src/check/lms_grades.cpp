@@ -16,7 +16,7 @@ double grade_of(const StudentReport& report, double scale) {
 }
 
 // What Gradescope shows under a test: the case's line of the table, then the mistakes that reproduce it.
-std::string case_output(const std::string& lang, const CheckCase& c, const CaseResult& r,
+std::string case_output(Language lang, const CheckCase& c, const CaseResult& r,
                         const std::vector<Explanation>& diagnosis) {
   std::string out = c.purpose + "\n" + text(lang, status_name(r.status));
   if (r.status == CaseStatus::pass || r.status == CaseStatus::fail)
@@ -60,12 +60,12 @@ std::string gradescope_results_json(const ReportHeader& header, const std::vecto
   for (std::size_t i = 0; i < report.results.size() && i < cases.size(); ++i) {
     const CaseResult& r = report.results[i];
     const bool passed = r.status == CaseStatus::pass;
-    tests.push_back({{"name", textf(header.lang, "case %d (%dD)", r.number, r.dimension)},
+    tests.push_back({{"name", textf(header.language, "case %d (%dD)", r.number, r.dimension)},
                      {"number", std::to_string(r.number)},
                      {"score", passed ? per_case : 0.0},
                      {"max_score", per_case},
                      {"status", passed ? "passed" : "failed"},
-                     {"output", case_output(header.lang, cases[i], r, report.diagnosis)},
+                     {"output", case_output(header.language, cases[i], r, report.diagnosis)},
                      {"visibility", visibility}});
   }
   // The top level holds only fields Gradescope documents: the maximum is the sum of the tests' max_score.

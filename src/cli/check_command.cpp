@@ -25,6 +25,7 @@
 #include "flag_values.h"
 #include "raycam/parallel.h"
 #include "raycam/scene_file.h"
+#include "view_options.h"
 
 namespace raycam::cli {
 
@@ -33,7 +34,8 @@ namespace fs = std::filesystem;
 using namespace raycam::check;
 
 struct CheckFlags {
-  std::string student, write_cases, answers, batch, student_cmd, csv, report, diff_dir, lang, mode = "both";
+  std::string student, write_cases, answers, batch, student_cmd, csv, report, diff_dir, mode = "both";
+  std::optional<Language> lang;
   int cases = 0;  // 0: the designed cases of the mode
   unsigned long long seed = kDefaultSeed;
   double timeout = 10.0;
@@ -72,11 +74,11 @@ std::optional<Sandbox> choose_sandbox(const CheckFlags& flags, ReportHeader& hea
       return sandbox;
     }
     // Never unsandboxed by accident (bwrap missing, or unable to start): only when asked by --no-sandbox.
-    throw std::invalid_argument(textf(header.lang, "the sandbox cannot start (%s): student programs run only in "
+    throw std::invalid_argument(textf(header.language, "the sandbox cannot start (%s): student programs run only in "
                                       "it, or without one when --no-sandbox is given", why.c_str()));
   }
   std::fprintf(stderr, "raycam-cli check: %s\n",
-               textf(header.lang, "running student programs WITHOUT a sandbox (%s): they can read and write what you can",
+               textf(header.language, "running student programs WITHOUT a sandbox (%s): they can read and write what you can",
                      header.sandbox_note.c_str())
                    .c_str());
   return std::nullopt;
@@ -117,7 +119,7 @@ int finish(const CheckFlags& flags, const ReportHeader& header, const std::vecto
     write_text_file(flags.gradescope, gradescope_results_json(header, cases, report, flags.scale, flags.visibility));
   if (!flags.diff_dir.empty()) {
     const std::vector<std::string> written = write_difference_images(flags.diff_dir, cases, references, report);
-    std::printf("%s", textf(header.lang, "wrote %zu difference images to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
+    std::printf("%s", textf(header.language, "wrote %zu difference images to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
   }
   return report.passed() == int(cases.size()) ? 0 : 1;
 }
@@ -214,7 +216,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   const std::string header_line = with_last_field(csv_header(), grade_column_name(flags.scale));
   csv << header_line << std::flush;
   const int threads = detail::resolve_threads(flags.threads);
-  std::fprintf(stderr, "%s", textf(header.lang, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
+  std::fprintf(stderr, "%s", textf(header.language, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
                                    cases.size(), threads).c_str());
   const bool terminal = isatty(2);
   std::size_t students_done = 0;
@@ -266,7 +268,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   std::string sorted = header_line;
   for (const std::string& row : rows) sorted += row;
   write_text_file(flags.csv, sorted);
-  std::printf("%s", textf(header.lang, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
+  std::printf("%s", textf(header.language, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
   if (!output_errors.empty()) return 1;
   if (!flags.shard.empty()) return shard_exit_status(reports);
   for (const StudentReport& report : reports)
@@ -313,7 +315,7 @@ int run_check(const Args& args) {
                  "--batch: the command for one student; {dir} is its folder, {name} its name");
   app.add_option("--csv", flags.csv, "--batch: one row per student (score, top diagnosis, faults)");
   using flags::add_checked_option;
-  const std::vector<std::string> modes = {"2d", "3d", "both"}, languages = {"fr", "en"};
+  const std::vector<std::string> modes = {"2d", "3d", "both"};
   add_checked_option<int>(app, "--mode", "2d|3d|both", "which cameras the cases use (default both)",
                           flags::one_of(modes), [&](int i) { flags.mode = modes[std::size_t(i)]; });
   add_checked_option<int>(app, "--cases", "N",
@@ -333,8 +335,9 @@ int run_check(const Args& args) {
                           flags::integer_in(1, 256), [&](int t) { flags.threads = t; });
   app.add_option("--report", flags.report, "JSON report (--batch: a folder of them)");
   app.add_option("--diff-dir", flags.diff_dir, "PNG per failing case: reference | student | difference");
-  add_checked_option<int>(app, "--lang", "fr|en", "language of the report (default: from LANG)",
-                          flags::one_of(languages), [&](int i) { flags.lang = languages[std::size_t(i)]; });
+  add_checked_option<Language>(app, "--lang", flags::language_metavar(),
+                               "language of the report (default: from LANG)", flags::language_rule(),
+                               [&](Language language) { flags.lang = language; });
   app.add_option("--shard", flags.shard,
                  "--batch: grade only slice i of N (a student's slice is a hash of its folder name)")
       ->type_name("i/N");
@@ -374,7 +377,7 @@ int run_check(const Args& args) {
   require_output("--write-cases", flags.write_cases, true);
 
   ReportHeader header;
-  header.lang = check_language(flags.lang);
+  header.language = check_language(flags.lang);
   header.mode = flags.mode;
   header.seed = flags.seed;
   const BatteryMode mode = parse_battery_mode(flags.mode, "--mode");
@@ -386,7 +389,7 @@ int run_check(const Args& args) {
     for (std::size_t i = 0; i < cases.size(); ++i)
       write_text_file(flags.write_cases + "/" + case_file_name(int(i) + 1, int(cases.size())),
                       scene_to_json(cases[i].file));
-    std::printf("%s", textf(header.lang, "wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
+    std::printf("%s", textf(header.language, "wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
                             cases.size(), flags.write_cases.c_str()).c_str());
     return 0;
   }

@@ -62,7 +62,7 @@ struct FigureOptions {
   std::string out_path;
   figure::PageSize page = figure::page_in_mm(160.0, 120.0);
   bool pages = false, no_matrix = false;
-  figure::Language language = figure::Language::en;
+  Language language = Language::en;
   int rays = 5;
 };
 
@@ -168,9 +168,9 @@ void add_figure_command(CLI::App& cli, int& exit_code) {
       "the figure's file; with several frames, one file each: FILE-a.svg, FILE-b.svg… (default figure.svg)",
       name, [options](std::string path) { options->out_path = path; });
   command->add_flag("--pages", options->pages, "with --format pdf: one PDF, a page per frame");
-  flags::add_checked_option<int>(*command, "--lang", "fr|en", "the figures' language (default en)",
-                                 flags::one_of({"fr", "en"}),
-                                 [options](int i) { options->language = figure::Language(i); });
+  flags::add_checked_option<Language>(*command, "--lang", flags::language_metavar(),
+                                      "the figures' language (default en)", flags::language_rule(),
+                                      [options](Language language) { options->language = language; });
   flags::add_checked_option<int>(*command, "--rays", "N", "primary rays drawn per 2D frame (default 5)",
                                  flags::integer_in(0, 64), [options](int n) { options->rays = n; });
   command->add_flag("--no-matrix", options->no_matrix, "leave out each frame's matrix");

@@ -12,11 +12,12 @@
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
+#include "raycam/languages.h"
 #include "raycam/scene.h"
 
 namespace raycam::figure {
 
-enum class Language { fr, en };
+using raycam::Language;  // raycam/languages.h: the one language type
 
 enum class Stroke {
   camera,        // the screen, thick black

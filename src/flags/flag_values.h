@@ -18,7 +18,16 @@ template <class T>
 struct ValueRule {
   std::string expected;  // "a number in ]0, 1]": what the message says is accepted
   std::function<std::optional<T>(const std::string&)> parse;  // nullopt: refused
+  // When a value has more than one shape (--res R or RC,RL): what a refused text's shape expects, so that
+  // --res 0 says "a number in ]0, 1]". Empty: `expected`.
+  std::function<std::string(const std::string&)> expected_for = nullptr;
 };
+
+// What the message for a refused `text` says is expected.
+template <class T>
+std::string expected_of(const ValueRule<T>& rule, const std::string& text) {
+  return rule.expected_for ? rule.expected_for(text) : rule.expected;
+}
 
 // An interval of reals; open bounds are excluded ("]0, 1]").
 struct Interval {
@@ -53,7 +62,7 @@ std::string bad_value_message(const std::string& flag, const std::string& expect
 template <class T>
 T checked_value(const ValueRule<T>& rule, const std::string& text, const std::string& flag) {
   const std::optional<T> value = rule.parse(text);
-  if (!value) throw std::invalid_argument(bad_value_message(flag, rule.expected, text));
+  if (!value) throw std::invalid_argument(bad_value_message(flag, expected_of(rule, text), text));
   return *value;
 }
 
@@ -63,7 +72,7 @@ template <class T>
 CLI::Validator checked(const ValueRule<T>& rule) {
   return CLI::Validator(
       [rule](std::string& text) -> std::string {
-        return rule.parse(text) ? std::string() : "expected " + rule.expected + ", got '" + text + "'";
+        return rule.parse(text) ? std::string() : "expected " + expected_of(rule, text) + ", got '" + text + "'";
       },
       "", rule.expected);
 }

@@ -1,6 +1,7 @@
 #include "view_options.h"
 
 #include <cstddef>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -20,24 +21,27 @@ std::vector<std::string> split(const std::string& text, char separator) {
   }
 }
 
+// Comma-separated numbers, each accepted by `item`, between `fewest` and `most` of them.
+std::optional<std::vector<double>> numbers_of(const std::string& text, const ValueRule<double>& item,
+                                              std::size_t fewest, std::size_t most) {
+  const std::vector<std::string> parts = split(text, ',');
+  if (parts.size() < fewest || parts.size() > most) return std::nullopt;
+  std::vector<double> values;
+  for (const std::string& part : parts) {
+    const std::optional<double> x = item.parse(part);
+    if (!x) return std::nullopt;
+    values.push_back(*x);
+  }
+  return values;
+}
+
 // --target x,y or x,y,z: whether 2 or 3 fits the scene is checked by make_view_setup.
 ValueRule<std::vector<double>> target_rule() {
   const ValueRule<double> coordinate = number_in({-kMaxCoordinate, kMaxCoordinate});
   return {"x,y or x,y,z with each coordinate in [-1e12, 1e12]",
-          [coordinate](const std::string& text) -> std::optional<std::vector<double>> {
-            const std::vector<std::string> parts = split(text, ',');
-            if (parts.size() != 2 && parts.size() != 3) return std::nullopt;
-            std::vector<double> target;
-            for (const std::string& part : parts) {
-              const std::optional<double> x = coordinate.parse(part);
-              if (!x) return std::nullopt;
-              target.push_back(*x);
-            }
-            return target;
-          }};
+          [coordinate](const std::string& text) { return numbers_of(text, coordinate, 2, 3); }};
 }
 
-// --size N (2D, or a square 3D image) or WxH (3D).
 std::vector<std::string> method_names() {
   std::vector<std::string> names;
   for (CastMethod method : kCastMethods) names.push_back(cast_method_name(method));
@@ -45,6 +49,31 @@ std::vector<std::string> method_names() {
 }
 }  // namespace
 
+ValueRule<std::vector<double>> res_rule() {
+  const ValueRule<double> res = number_in({0.0, 1.0, true, false});
+  return {"R or RC,RL (columns, rows) with each in ]0, 1]",
+          [res](const std::string& text) { return numbers_of(text, res, 1, 2); },
+          [res](const std::string& text) {
+            return text.find(',') == std::string::npos ? res.expected
+                                                       : "RC,RL (columns, rows) with each in ]0, 1]";
+          }};
+}
+
+ValueRule<Language> language_rule() {
+  const ValueRule<int> code = one_of(std::vector<std::string>(std::begin(kLanguageCodes), std::end(kLanguageCodes)));
+  return {code.expected, [code](const std::string& text) -> std::optional<Language> {
+            const std::optional<int> index = code.parse(text);
+            return index ? std::optional<Language>(kLanguages[std::size_t(*index)]) : std::nullopt;
+          }};
+}
+
+std::string language_metavar() {
+  std::string metavar;
+  for (const char* code : kLanguageCodes) metavar += (metavar.empty() ? "" : "|") + std::string(code);
+  return metavar;
+}
+
+// --size N (2D, or a square 3D image) or WxH (3D).
 ValueRule<std::vector<int>> size_rule() {
   const ValueRule<int> n = integer_in(1, kMaxPixels2D), side = integer_in(1, kMaxSide3D);
   return {"N in [1, " + std::to_string(kMaxPixels2D) + "] or WxH with W, H in [1, " +
@@ -87,9 +116,13 @@ CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view) {
   add_checked_option<double>(
       *group, "--df", "F", "focal distance; field of view 2*atan(1/F) (2D default 1.5, 3D 2)",
       number_in({kMinFocalDistance, kMaxFocalDistance}), [&camera](double f) { camera.df = f; });
-  add_checked_option<double>(*group, "--res", "R",
-                             "resolution factor; n = round(R*N), at least 1 (default 1)",
-                             number_in({0.0, 1.0, true, false}), [&camera](double r) { camera.res = r; });
+  add_checked_option<std::vector<double>>(
+      *group, "--res", "R|RC,RL",
+      "resolution factor; n = round(R*N), at least 1 (default 1); 3D: RC,RL for the columns and the rows",
+      res_rule(), [&camera](std::vector<double> r) {
+        camera.res = r[0];
+        camera.res_rows = r.size() == 2 ? std::optional<double>(r[1]) : std::nullopt;
+      });
   add_checked_option<std::vector<int>>(*group, "--size", "N|WxH",
                                        "maximum pixels: N in 2D, WxH in 3D (default 256, 256x256)",
                                        size_rule(), [&camera](std::vector<int> s) { camera.size = s; });

@@ -19,6 +19,13 @@ namespace raycam::flags {
 // --size's rule: N (2D) or WxH (3D), within the size limits; make_view_setup checks the shape against the
 // scene's dimension, and N in 3D means N×N.
 ValueRule<std::vector<int>> size_rule();
+// --res's rule: R, or RC,RL (columns, rows: the handout's two resolution variables, 3D only, which
+// make_view_setup checks), each in ]0, 1].
+ValueRule<std::vector<double>> res_rule();
+
+// --lang: one of the languages' codes (raycam/languages.h), its metavar "en|fr".
+ValueRule<Language> language_rule();
+std::string language_metavar();
 
 // Angles are taken in degrees (make_view_setup converts them once).
 CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view);

@@ -7,13 +7,12 @@
 namespace raycam {
 
 TranslationTable::TranslationTable(const std::vector<Translation>& entries) {
-  for (const Translation& t : entries) french_.emplace(t.en, t.fr);
+  for (const Translation& t : entries) entries_.emplace(t.english(), &t);
 }
 
 const char* TranslationTable::lookup(Language language, const char* english) const {
-  if (language == Language::en) return english;
-  const auto found = french_.find(english);
-  return found == french_.end() ? english : found->second;
+  const auto found = entries_.find(english);
+  return found == entries_.end() ? english : (*found->second)[language];
 }
 
 std::string format_text(const char* format, va_list args) {
@@ -28,12 +27,12 @@ std::string format_text(const char* format, va_list args) {
 
 std::optional<Language> language_from_code(std::string_view code) {
   const std::string_view first = code.substr(0, code.find(':'));  // LANGUAGE is a list: fr:en
-  if (first.size() >= 2 && first.substr(0, 2) == "fr" &&
-      (first.size() == 2 || first[2] == '_' || first[2] == '.'))
-    return Language::fr;
-  if (first.size() >= 2 && first.substr(0, 2) == "en" &&
-      (first.size() == 2 || first[2] == '_' || first[2] == '.'))
-    return Language::en;
+  for (Language language : kLanguages) {
+    const std::string_view name = language_code(language);
+    if (first.substr(0, name.size()) == name &&
+        (first.size() == name.size() || first[name.size()] == '_' || first[name.size()] == '.'))
+      return language;
+  }
   return std::nullopt;
 }
 
@@ -46,19 +45,12 @@ Language language_from_environment() {
 }
 
 Language parse_language_flag(const std::string& value, const std::string& flag) {
-  if (value == "fr") return Language::fr;
-  if (value == "en") return Language::en;
-  throw std::invalid_argument(flag + ": expected fr or en, got '" + value + "'");
-}
-
-const char* language_code(Language language) { return language == Language::fr ? "fr" : "en"; }
-
-const char* mistake_label(const MistakeInfo& info, Language language) {
-  return language == Language::fr ? info.label_fr : info.label_en;
-}
-
-const char* mistake_explanation(const MistakeInfo& info, Language language) {
-  return language == Language::fr ? info.explanation_fr : info.explanation_en;
+  std::string accepted;
+  for (Language language : kLanguages) {
+    if (value == language_code(language)) return language;
+    accepted += std::string(accepted.empty() ? "" : " or ") + language_code(language);
+  }
+  throw std::invalid_argument(flag + ": expected " + accepted + ", got '" + value + "'");
 }
 
 }  // namespace raycam

@@ -1,6 +1,6 @@
 // translate_reason(): each ReasonPattern's English becomes an anchored regular expression once (literal text
-// escaped, each placeholder a lazy group), matched against the whole reason; the French template is then
-// filled with the captured parts.
+// escaped, each placeholder a lazy group), matched against the whole reason; the asked language's template is
+// then filled with the captured parts.
 #include <regex>
 
 #include "raycam/language.h"
@@ -14,7 +14,7 @@ struct CompiledPattern {
   std::regex english;
   std::vector<std::string> names;  // in capture order
   std::vector<bool> nested;        // "{name*}": translated in turn
-  std::string french;
+  const ReasonPattern* templates;  // every language's
 };
 
 std::string escaped(const std::string& literal) {
@@ -29,7 +29,7 @@ std::string escaped(const std::string& literal) {
 
 CompiledPattern compile(const ReasonPattern& pattern) {
   CompiledPattern compiled;
-  const std::string en = pattern.en;
+  const std::string en = pattern.english();
   std::string expression;
   std::size_t last = 0;
   for (auto it = std::sregex_iterator(en.begin(), en.end(), kPlaceholder); it != std::sregex_iterator();
@@ -41,7 +41,7 @@ CompiledPattern compile(const ReasonPattern& pattern) {
   }
   expression += escaped(en.substr(last));
   compiled.english = std::regex(expression);
-  compiled.french = pattern.fr;
+  compiled.templates = &pattern;
   return compiled;
 }
 
@@ -61,7 +61,7 @@ constexpr int kMaxDepth = 8;
 // by mistake, tens of kilobytes) would overflow the stack, so it is shown as it is.
 constexpr std::size_t kMaxLength = 2048;
 
-std::string french_of(const std::string& english, std::vector<std::size_t>* used, int depth) {
+std::string translated(Language language, const std::string& english, std::vector<std::size_t>* used, int depth) {
   if (depth > kMaxDepth || english.size() > kMaxLength) return english;
   const std::vector<CompiledPattern>& patterns = compiled_patterns();
   for (std::size_t i = 0; i < patterns.size(); ++i) {
@@ -71,19 +71,20 @@ std::string french_of(const std::string& english, std::vector<std::size_t>* used
     if (used) used->push_back(i);
     std::vector<std::string> parts;
     for (std::size_t k = 0; k < p.names.size(); ++k)
-      parts.push_back(p.nested[k] ? french_of(match[k + 1], used, depth + 1) : std::string(match[k + 1]));
+      parts.push_back(p.nested[k] ? translated(language, match[k + 1], used, depth + 1) : std::string(match[k + 1]));
     // One pass over the template: a captured part that looks like "{name}" is never filled in turn.
+    const std::string form = (*p.templates)[language];
     std::string text;
     std::size_t last = 0;
-    for (auto it = std::sregex_iterator(p.french.begin(), p.french.end(), kPlaceholder);
+    for (auto it = std::sregex_iterator(form.begin(), form.end(), kPlaceholder);
          it != std::sregex_iterator(); ++it) {
-      text += p.french.substr(last, std::size_t(it->position()) - last);
+      text += form.substr(last, std::size_t(it->position()) - last);
       std::size_t k = 0;
       while (k < p.names.size() && p.names[k] != (*it)[1]) ++k;
       text += k < p.names.size() ? parts[k] : it->str();
       last = std::size_t(it->position() + it->length());
     }
-    text += p.french.substr(last);
+    text += form.substr(last);
     return text;
   }
   return english;
@@ -92,7 +93,7 @@ std::string french_of(const std::string& english, std::vector<std::size_t>* used
 
 std::string translate_reason(Language language, const std::string& english, std::vector<std::size_t>* used) {
   if (language == Language::en) return english;
-  return french_of(english, used, 0);
+  return translated(language, english, used, 0);
 }
 
 }  // namespace raycam

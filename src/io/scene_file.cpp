@@ -143,8 +143,17 @@ CameraPreset read_camera(const FieldReader& reader, const json& camera, int dime
   if (camera.contains("df"))
     preset.df = reader.number_in(camera["df"], "camera.df", kMinFocalDistance, kMaxFocalDistance, false,
                                  "[1e-9, 1e9]");
-  if (camera.contains("res"))
-    preset.res = reader.number_in(camera["res"], "camera.res", 0.0, 1.0, true, "]0, 1]");
+  if (camera.contains("res")) {
+    const json& res = camera["res"];
+    if (dimension == 2 && !res.is_number()) reader.fail("camera.res", "a number in ]0, 1]", &res);  // one res
+    if (res.is_array()) {  // 3D: [columns, rows]
+      if (res.size() != 2) reader.fail("camera.res", "a number in ]0, 1] or [columns, rows], each in ]0, 1]", &res);
+      preset.res = reader.number_in(res[0], "camera.res[0]", 0.0, 1.0, true, "]0, 1]");
+      preset.res_rows = reader.number_in(res[1], "camera.res[1]", 0.0, 1.0, true, "]0, 1]");
+    } else {
+      preset.res = reader.number_in(res, "camera.res", 0.0, 1.0, true, "]0, 1]");
+    }
+  }
   if (camera.contains("size")) {
     const json& size = camera["size"];
     if (dimension == 2) {
@@ -322,7 +331,7 @@ std::string scene_to_json(const SceneFile& file) {
   if (p.theta_deg) camera["theta"] = *p.theta_deg;
   if (p.phi_deg && file.dimension == 3) camera["phi"] = *p.phi_deg;
   if (p.df) camera["df"] = *p.df;
-  if (p.res) camera["res"] = *p.res;
+  if (p.res) camera["res"] = p.res_rows && file.dimension == 3 ? json({*p.res, *p.res_rows}) : json(*p.res);
   if (p.size) camera["size"] = file.dimension == 2 ? json((*p.size)[0]) : json(*p.size);
   if (!camera.empty()) root["camera"] = camera;
   return readable_json(root, 0) + "\n";

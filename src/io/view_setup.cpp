@@ -17,7 +17,10 @@ CameraPreset merged(CameraPreset base, const CameraPreset& over) {
   if (over.theta_deg) base.theta_deg = over.theta_deg;
   if (over.phi_deg) base.phi_deg = over.phi_deg;
   if (over.df) base.df = over.df;
-  if (over.res) base.res = over.res;
+  if (over.res) {  // the flag's res replaces the file's pair: --res 0.5 makes the image square again
+    base.res = over.res;
+    base.res_rows = over.res_rows;
+  }
   if (over.size) base.size = over.size;
   return base;
 }
@@ -47,6 +50,8 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
                                 std::to_string(setup.dimension) + "D scene");
   if (is_2d && flags.camera.phi_deg)
     throw std::invalid_argument("--phi: only for 3D scenes (this one is 2D)");
+  if (is_2d && flags.camera.res_rows)
+    throw std::invalid_argument("--res: expected one number R for a 2D scene (RC,RL is for 3D)");
 
   if (is_2d) {
     if (preset.size && preset.size->size() != 1)
@@ -65,8 +70,9 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
 }
 
 Camera2D camera2d_from_preset(const CameraPreset& preset) {
-  if ((preset.target && preset.target->size() != 2) || (preset.size && preset.size->size() != 1))
-    throw std::invalid_argument("camera: expected a 2-component target and size [N] in 2D");
+  if ((preset.target && preset.target->size() != 2) || (preset.size && preset.size->size() != 1) ||
+      preset.res_rows)
+    throw std::invalid_argument("camera: expected a 2-component target, size [N] and one res in 2D");
   Camera2D camera(preset.size ? (*preset.size)[0] : kDefaultSize2D);
   Orbit2D orbit;
   if (preset.target) orbit.target = {(*preset.target)[0], (*preset.target)[1]};
@@ -95,7 +101,7 @@ Camera3D camera3d_from_preset(const CameraPreset& preset) {
   if (preset.phi_deg) orbit.phi = glm::radians(*preset.phi_deg);
   if (preset.df) orbit.df = *preset.df;
   camera.set_orbit(orbit);
-  if (preset.res) camera.set_res(*preset.res);
+  if (preset.res) camera.set_res(*preset.res, preset.res_rows.value_or(*preset.res));
   return camera;
 }
 
@@ -130,6 +136,7 @@ CameraPreset preset_of(const Camera3D& camera) {
   preset.phi_deg = degrees_for_file(orbit.phi);
   preset.df = orbit.df;
   preset.res = camera.res_columns();
+  if (camera.res_rows() != camera.res_columns()) preset.res_rows = camera.res_rows();
   preset.size = std::vector<int>{camera.max_columns(), camera.max_rows()};
   return preset;
 }

@@ -1,5 +1,5 @@
 // The app's start-up options, shared by the GLFW app (`raycam`) and the headless twin (`raycam-cli shot`):
-// the same options give the same frame. The command line fills them (src/flags/app_flags.h); the UI never
+// the same options give the same frame. The command line fills them (src/flags/app/app_flags.h); the UI never
 // sees argv.
 #pragma once
 

@@ -24,12 +24,14 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.orbit2d = setup.camera2d.orbit();
   state.orbit3d = setup.camera3d.orbit();
   state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
+  state.res_rows = setup.dimension == 3 ? setup.file.camera.res_rows : std::nullopt;
   state.max_pixels_2d = setup.camera2d.max_pixels();
   state.max_columns_3d = setup.camera3d.max_columns();
   state.max_rows_3d = setup.camera3d.max_rows();
   state.preset_orbit2d = state.orbit2d;
   state.preset_orbit3d = state.orbit3d;
   state.preset_res = state.res;
+  state.preset_res_rows = state.res_rows;
   state.overhead_fit_pending = true;
 }
 
@@ -39,6 +41,7 @@ void reset_camera(AppState& state) {
   else
     state.orbit3d = state.preset_orbit3d;
   state.res = state.preset_res;
+  state.res_rows = state.preset_res_rows;
   state.overhead_fit_pending = true;
   state.cameras_dirty = true;
 }
@@ -60,7 +63,7 @@ void place_cameras(AppState& state) {
                               ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
                               : o;
     Camera3D camera(state.max_columns_3d, state.max_rows_3d, orbit, state.mistakes);
-    camera.set_res(state.res);
+    camera.set_res(state.res, state.res_rows.value_or(state.res));
     state.camera3d = camera;
   }
 }
@@ -110,9 +113,11 @@ bool recast_if_needed(AppState& state, bool interacting) {
   state.refine_pending = interacting && predicted_ms > kInteractiveBudgetMs;
   if (state.refine_pending) {  // fewer rays in proportion: res scales both sides in 3D
     const double factor = is_2d ? kInteractiveBudgetMs / predicted_ms : std::sqrt(kInteractiveBudgetMs / predicted_ms);
-    if (is_2d) state.camera2d.set_res(std::max(state.res * factor, 1.0 / state.max_pixels_2d));
+    const double least = 1.0 / active_max_side(state);
+    if (is_2d) state.camera2d.set_res(std::max(state.res * factor, least));
     else
-      state.camera3d.set_res(std::max(state.res * factor, 1.0 / active_max_side(state)));
+      state.camera3d.set_res(std::max(state.res * factor, least),
+                             std::max(state.res_rows.value_or(state.res) * factor, least));
   }
   remember_pin_point(state);
   // A new scene is packed once, before the clock starts: packing 10⁵ spheres (14 ms, their clusters) is not a

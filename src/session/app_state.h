@@ -53,6 +53,7 @@ struct AppState {
   Orbit2D orbit2d;
   Orbit3D orbit3d;
   double res = 1.0;
+  std::optional<double> res_rows;  // 3D, "non-square" on: the rows' res (res is then the columns')
   int max_pixels_2d = 256;
   int max_columns_3d = 256, max_rows_3d = 256;
   Camera2D camera2d{256};
@@ -61,6 +62,7 @@ struct AppState {
   Orbit2D preset_orbit2d;
   Orbit3D preset_orbit3d;
   double preset_res = 1.0;
+  std::optional<double> preset_res_rows;
 
   // ---- the lesson ----
   ClassicMistakes mistakes;

@@ -102,7 +102,7 @@ std::string CameraCheck::case_key(const AppState& state) const {
   std::ostringstream key;
   key << std::hexfloat << state.dimension << '|' << state.scene_version << '|' << state.scene_path << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
-      << p.df.value_or(0) << '|' << p.res.value_or(0) << '|';
+      << p.df.value_or(0) << '|' << p.res.value_or(0) << '|' << p.res_rows.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';
   for (int s : p.size.value_or(std::vector<int>{})) key << s << ',';
   key << '|' << request_.is_file << '|' << request_.command;
@@ -211,7 +211,7 @@ std::string check_header(const CheckProgress& progress) {
   const check::CaseResult& r = progress.latest->verdict.result;
   if (r.status == check::CaseStatus::pass) return {};
   if (r.status == check::CaseStatus::fail) return trf("CHECK: %lld pixels wrong", r.wrong_pixels);
-  return trf("CHECK: %s", check::text(language_code(current_language()), check::status_name(r.status)));
+  return trf("CHECK: %s", check::text(current_language(), check::status_name(r.status)));
 }
 
 }  // namespace raycam::ui

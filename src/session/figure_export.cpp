@@ -20,8 +20,7 @@ std::vector<std::string> export_construction_figure(const AppState& state, const
   }
   if (!known) throw std::invalid_argument(trf("%s: expected a name ending in .svg, .pdf or .png", path.c_str()));
   output.pages = all_steps && output.format == figure::Format::pdf;
-  const figure::FigureOptions options{current_language() == Language::fr ? figure::Language::fr
-                                                                         : figure::Language::en};
+  const figure::FigureOptions options{current_language()};
   const figure::Figure drawn =
       state.dimension == 2 ? figure::construction_figure_2d(state.file.scene2d, state.camera2d, options)
                            : figure::construction_figure_3d(state.file.scene3d, state.camera3d, options);

@@ -181,12 +181,12 @@ bool mistake_applies(const AppState& state, const MistakeLesson& lesson) {
   return !lesson.info || (state.dimension == 2 ? lesson.info->in_2d : lesson.info->in_3d);
 }
 const char* mistake_label(const MistakeLesson& lesson) {
-  return lesson.info ? mistake_label(*lesson.info, current_language())
+  return lesson.info ? lesson.info->label[current_language()]
                      : tr("arccos route near a pole");
 }
 
 std::string mistake_text(const AppState& state, const MistakeLesson& lesson) {
-  std::string text = lesson.info ? mistake_explanation(*lesson.info, current_language()) : "";
+  std::string text = lesson.info ? lesson.info->explanation[current_language()] : "";
   if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state);
   return text;
 }

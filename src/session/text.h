@@ -1,7 +1,7 @@
 // Visible text in French or English. Every string the window shows goes through tr() (or trf() when it has
 // arguments), with the English text as the key, as gettext's _() does; the French of every key is in one
 // table, src/session/text_table.cpp. The table is compiled in: it works on a fresh machine with no locale
-// generated. tests/ui/test_text.cpp checks that every entry has both languages with the same printf
+// generated. tests/session/test_text.cpp checks that every entry has both languages with the same printf
 // conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and
 // src/app has an entry.
 //

@@ -1,7 +1,7 @@
 // Every visible string of the window, in English (the key) and French. French follows the handout's words
 // and notation: distance focale d_f, cible C, œil E, écran, point de visée, résolution res, carte des
 // couleurs, barre de couleurs, rayons primaires, homothétie, M_d = T·R·H. Keep printf conversions and any
-// "###id" identical in both columns (tests/ui/test_text.cpp checks). Group entries by the file that shows
+// "###id" identical in both columns (tests/session/test_text.cpp checks). Group entries by the file that shows
 // them, so that branches adding strings rarely touch the same lines.
 #include "text.h"
 
@@ -48,6 +48,9 @@ const std::vector<Translation>& translation_table() {
       {"θ azimuth###theta", "θ azimut###theta"},
       {"φ polar angle###phi", "φ angle polaire###phi"},
       {"res resolution###res", "res résolution###res"},
+      {"res_c columns###res", "res_c colonnes###res"},
+      {"res_l rows###res_rows", "res_l lignes###res_rows"},
+      {"non-square: res per side", "non carrée : une res par côté"},
       {"target C###target", "cible C###target"},
       {"N max pixels###N", "N pixels max###N"},
       {"max size W, H###size", "taille max L, H###size"},

@@ -49,20 +49,19 @@ void check_section(CameraCheck& check, double now) {
   else if (r.status == check::CaseStatus::fail)
     wrapped_between_words(trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
   else
-    wrapped_between_words(trf("%s: %s", check::text(language_code(current_language()), check::status_name(r.status)),
+    wrapped_between_words(trf("%s: %s", check::text(current_language(), check::status_name(r.status)),
                               tr_reason(r.detail).c_str()));
   ImGui::PopStyleColor();
   if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr("no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
     ImGui::TextWrapped("%s", tr("no classic mistake reproduces this image"));
-  const char* lang = language_code(current_language());
   for (const check::Explanation& e : v.diagnosis) {
     ImGui::Bullet();
     // The mistakes' names in the window's language, not their ids ("mirrored + rows from the bottom").
     std::string names;
-    for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(mistake_label(*m, current_language()));
-    wrapped_between_words(trf("%s: %s", names.c_str(), e.text(lang).c_str()));
+    for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(m->label[current_language()]);
+    wrapped_between_words(trf("%s: %s", names.c_str(), e.text(current_language()).c_str()));
   }
   if (!r.stderr_text.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);

@@ -30,10 +30,8 @@ const ImWchar* glyph_ranges() {
     static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x2010, 0x2027, 0x2070, 0x209F, 0x2190,
                                     0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
     builder.AddRanges(kBase);
-    for (const Translation& t : translations()) {
-      builder.AddText(t.en);
-      builder.AddText(t.fr);
-    }
+    for (const Translation& t : translations())
+      for (Language language : kLanguages) builder.AddText(t[language]);
     builder.BuildRanges(&ranges);
   }
   return ranges.Data;

@@ -276,7 +276,18 @@ void camera_section(AppState& state) {
     changed |= slider_degrees(state, tr("φ polar angle###phi"), state.orbit3d.phi,
                               glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
   const int max_size = active_max_side(state);
-  changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+  if (is_2d || !state.res_rows) {
+    changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+  } else {  // the handout's two resolution variables: nbc = round(res_c·W), nbl = round(res_l·H)
+    changed |= slider_double(state, tr("res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(state, tr("res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
+                             true);
+  }
+  bool non_square = state.res_rows.has_value();
+  if (!is_2d && checkbox(tr("non-square: res per side"), &non_square)) {
+    state.res_rows = non_square ? std::optional<double>(state.res) : std::nullopt;
+    changed = true;
+  }
   if (is_2d) {
     // The target's coordinates are doubles in the widget too, as the sliders'.
     if (target_fields(state, glm::value_ptr(state.orbit2d.target), 2)) changed = true;

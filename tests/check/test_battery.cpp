@@ -1,5 +1,6 @@
 // The default battery reveals every classic mistake, and the diagnosis tells single mistakes apart.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -31,7 +32,7 @@ TEST_CASE("the battery reveals every classic mistake (default seed and two other
     const std::vector<CheckCase> battery =
         make_battery(BatteryMode::both, designed_case_count(BatteryMode::both), seed);
     for (const MistakeInfo& info : kClassicMistakes) {
-      INFO(info.id << " seed " << seed);
+      INFO(info.id << " seed " << seed << ": no case reveals it; the battery needs " << info.battery_needs);
       int revealing = 0;
       for (const CheckCase& c : battery) {
         const CaseImage right = render_case(c.file);
@@ -148,5 +149,28 @@ TEST_CASE("a seed's designed cases are the first draw of its documented jitter t
         }
       }
     }
+  }
+}
+
+TEST_CASE("a 3D case has two resolutions, and its image has the handout's nbl rows of nbc columns",
+          "[check][battery][res]") {
+  // The handout's useful size, from its formula: res·N rounded, at least 1.
+  const auto handout_count = [](double res, int size) { return std::max(1, int(std::floor(res * size + 0.5))); };
+  for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(914273), std::uint64_t(1)}) {
+    int two = 0;
+    for (const CheckCase& c : make_battery(BatteryMode::three_d, designed_case_count(BatteryMode::three_d), seed)) {
+      const CameraPreset& camera = c.file.camera;
+      if (!camera.res_rows) continue;
+      ++two;
+      INFO(c.purpose << " seed " << seed);
+      const int columns = (*camera.size)[0], rows = (*camera.size)[1];
+      const CaseImage image = render_case(c.file);
+      CHECK(image.columns == handout_count(*camera.res, columns));  // nbc
+      CHECK(image.rows == handout_count(*camera.res_rows, rows));   // nbl
+      // One res for both sides would give another row count: the case tells a program that reads one apart.
+      CHECK(handout_count(*camera.res, rows) != image.rows);
+      CHECK(scene_to_json(c.file).find("\"res\": [") != std::string::npos);  // the protocol's input has both
+    }
+    CHECK(two >= 1);
   }
 }

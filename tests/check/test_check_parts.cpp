@@ -153,7 +153,7 @@ SceneFile bar_case(std::vector<Circle> circles, int size) {
   file.dimension = 2;
   file.scene2d.circles = std::move(circles);
   // The canonical camera itself: θ = 90°, d = 1, d_f = 1 puts the screen on y = 1, the eye at (0, 2).
-  file.camera = {std::vector<double>{0, 0}, 1.0, 90.0, std::nullopt, 1.0, 1.0, std::vector<int>{size}};
+  file.camera = {std::vector<double>{0, 0}, 1.0, 90.0, std::nullopt, 1.0, 1.0, std::vector<int>{size}, std::nullopt};
   return file;
 }
 }  // namespace

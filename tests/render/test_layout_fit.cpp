@@ -81,6 +81,7 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           ui::AppState state = lecture_state(view, language);
           state.font_scale = scale;
           ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
+          if (std::string(view) == "3d") state.res_rows = 0.5;  // non-square: the res_c and res_l sliders
           headless::HeadlessRenderer renderer(screen.width, screen.height);
           renderer.run_frame(state);
           open_every_section();

@@ -162,6 +162,10 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": 1})"), {"lesson.json", "camera"});
   add(scene_error(R"({"dimension": 2, "objects": [], "camera": {"theta": 1e7}})"),
       {"lesson.json", "camera.theta", "[-1e6, 1e6]", "10000000.0"});
+  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"res": [0.5]}})"),
+      {"lesson.json", "camera.res", "]0, 1]", "[0.5]"});
+  add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"res": [0.5, 0]}})"),
+      {"lesson.json", "camera.res[1]", "]0, 1]"});
   add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [1]}})"),
       {"lesson.json", "camera.size"});
   add(scene_error(R"({"dimension": 3, "objects": [], "camera": {"size": [16384, 16384]}})"),
@@ -233,6 +237,12 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
                     f.camera.size = std::vector<int>{4, 4};
                   }),
       {"--size", "N", "2D"});
+  add(setup_error(scene2d,
+                  [](ViewFlags& f) {
+                    f.camera.res = 0.5;
+                    f.camera.res_rows = 0.25;
+                  }),
+      {"--res", "R", "RC,RL", "2D", "3D"});
   add(setup_error(scene2d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxPixels2D + 1}; }),
       {"--size", "N", std::to_string(kMaxPixels2D), "2D"});
   add(setup_error(scene3d, [](ViewFlags& f) { f.camera.size = std::vector<int>{kMaxSide3D + 1}; }),
@@ -372,12 +382,12 @@ TEST_CASE("error reasons: every pattern of the table serves a real reason (no de
   for (const Reason& reason : real_reasons(scratch)) translate_reason(Language::fr, reason.english, &used);
   const std::set<std::size_t> served(used.begin(), used.end());
   for (std::size_t i = 0; i < reason_patterns().size(); ++i) {
-    INFO(reason_patterns()[i].en);
+    INFO(reason_patterns()[i].english());
     CHECK(served.count(i) == 1);
   }
 }
 
-TEST_CASE("error reasons: each French template places every part of its English pattern once",
+TEST_CASE("error reasons: each language's template places every part of its English pattern once",
           "[session][language][reasons]") {
   auto names = [](const std::string& text) {
     std::multiset<std::string> found;
@@ -391,9 +401,9 @@ TEST_CASE("error reasons: each French template places every part of its English 
     return found;
   };
   for (const ReasonPattern& p : reason_patterns()) {
-    INFO(p.en);
-    const std::multiset<std::string> english = names(p.en);
-    CHECK(english == names(p.fr));
+    INFO(p.english());
+    const std::multiset<std::string> english = names(p.english());
+    for (Language language : kLanguages) CHECK(english == names(p[language]));
     CHECK(std::set<std::string>(english.begin(), english.end()).size() == english.size());
   }
 }
@@ -521,10 +531,10 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
   crash.detail = "exit status 2";
   report.results.push_back(crash);
   check::ReportHeader header;
-  header.lang = "fr";
+  header.language = Language::fr;
   const std::string text = check::text_report(header, {check::CheckCase{"", small_case()}}, report);
   CHECK_THAT(text, Catch::Contains("code de sortie 2"));
-  header.lang = "en";
+  header.language = Language::en;
   CHECK_THAT(check::text_report(header, {check::CheckCase{"", small_case()}}, report),
              Catch::Contains("exit status 2"));
 }

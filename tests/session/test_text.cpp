@@ -10,6 +10,9 @@
 #include <set>
 #include <sstream>
 
+#include "check_texts.h"
+#include "raycam/classic_mistakes.h"
+#include "raycam/language.h"
 #include "raycam/ray_caster.h"
 #include "text.h"
 
@@ -76,14 +79,14 @@ TEST_CASE("every string of the table has both languages, with the same conversio
   REQUIRE(table.size() > 50);
   std::set<std::string> keys;
   for (const ui::Translation& t : table) {
-    INFO(t.en);
-    REQUIRE(t.en != nullptr);
-    REQUIRE(t.fr != nullptr);
-    CHECK(std::string(t.en).size() > 0);
-    CHECK(std::string(t.fr).size() > 0);
-    CHECK(keys.insert(t.en).second);  // no key twice
-    CHECK(conversions(t.en) == conversions(t.fr));
-    CHECK(imgui_id(t.en) == imgui_id(t.fr));
+    INFO(t.english());
+    REQUIRE(t.english() != nullptr);
+    REQUIRE(t[Language::fr] != nullptr);
+    CHECK(std::string(t.english()).size() > 0);
+    CHECK(std::string(t[Language::fr]).size() > 0);
+    CHECK(keys.insert(t.english()).second);  // no key twice
+    CHECK(conversions(t.english()) == conversions(t[Language::fr]));
+    CHECK(imgui_id(t.english()) == imgui_id(t[Language::fr]));
   }
   // Every French entry differs from its English, but for an explicit list of what reads the same in both
   // (key names, formulas, numbers, the languages' own names): a French entry left in English fails here.
@@ -92,28 +95,50 @@ TEST_CASE("every string of the table has both languages, with the same conversio
       "double", "long double", "intersection###intersection", "stable (Ray Tracing Gems)", "figure###figure_path",
       "F1", "F11", "F12", "← / →", "θ −/+ 5°", "↑ / ↓", "φ −/+ 5° (3D)", "+ / −", "[ / ]", "Tab", "2D / 3D"};
   for (const ui::Translation& t : table)
-    if (!same_in_both.count(t.en)) {
-      INFO(t.en);
-      CHECK(std::string(t.en) != std::string(t.fr));
+    if (!same_in_both.count(t.english())) {
+      INFO(t.english());
+      CHECK(std::string(t.english()) != std::string(t[Language::fr]));
     }
   // One decimal separator in each language: the point, as the sliders and tables print numbers (printf in
   // the C locale); a French "0,05" beside a slider's "0.5000" read as two conventions.
   const std::regex decimal_comma(R"(\d,\d)");
   for (const ui::Translation& t : table) {
-    INFO(t.fr);
-    CHECK_FALSE(std::regex_search(std::string(t.fr), decimal_comma));
+    INFO(t[Language::fr]);
+    CHECK_FALSE(std::regex_search(std::string(t[Language::fr]), decimal_comma));
   }
   // The handout's words are there (a French table that kept the English would pass the checks above).
   std::string all_french;
-  for (const ui::Translation& t : table) all_french += std::string(t.fr) + "\n";
+  for (const ui::Translation& t : table) all_french += std::string(t[Language::fr]) + "\n";
   for (const char* word : {"distance focale", "cible C", "œil", "écran", "résolution", "carte des couleurs",
                            "barre de couleurs", "homothétie"})
     CHECK_THAT(all_french, Catch::Contains(word));
 }
 
+// Every text raycam shows, in every table that holds one: the window's, the checker's, the error reasons'
+// patterns and the classic mistakes' labels and explanations. Adding a language to Language is then caught
+// here until each of them has its column.
+TEST_CASE("every text of every table has every language", "[ui][text][language]") {
+  std::vector<std::pair<std::string, const LocalText*>> texts;
+  for (const Translation& t : ui::translations()) texts.push_back({"window", &t});
+  for (const Translation& t : check::check_translations()) texts.push_back({"check", &t});
+  for (const ReasonPattern& p : reason_patterns()) texts.push_back({"reason", &p});
+  for (const MistakeInfo& info : kClassicMistakes) {
+    texts.push_back({std::string("mistake ") + info.id, &info.label});
+    texts.push_back({std::string("mistake ") + info.id, &info.explanation});
+  }
+  REQUIRE(texts.size() > 300);
+  for (const auto& [table, text] : texts)
+    for (Language language : kLanguages) {
+      INFO(table << ": " << (text->english() ? text->english() : "(no English)") << " in "
+                 << kLanguageCodes[std::size_t(language)]);
+      REQUIRE((*text)[language] != nullptr);
+      CHECK(std::string((*text)[language]).size() > 0);
+    }
+}
+
 TEST_CASE("every string the window shows is in the table", "[ui][text]") {
   std::set<std::string> keys;
-  for (const ui::Translation& t : ui::translations()) keys.insert(t.en);
+  for (const ui::Translation& t : ui::translations()) keys.insert(t.english());
   // tr("..."), trf("...", ...), tr_later("..."), with adjacent literals joined.
   const std::regex marked(R"re(\b(?:tr|trf|tr_later)\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+))re");
   // Widgets whose first argument is shown: a raw English literal there bypasses the table.
@@ -159,7 +184,7 @@ TEST_CASE("tr shows French when the language is French, and trf formats after tr
 TEST_CASE("the language comes from --lang, else LANGUAGE, LC_ALL, LC_MESSAGES, LANG", "[ui][text]") {
   CHECK(ui::parse_language_flag("fr") == ui::Language::fr);
   CHECK(ui::parse_language_flag("en") == ui::Language::en);
-  CHECK_THROWS_WITH(ui::parse_language_flag("de"), "--lang: expected fr or en, got 'de'");
+  CHECK_THROWS_WITH(ui::parse_language_flag("de"), "--lang: expected en or fr, got 'de'");
   CHECK(ui::language_from_code("fr_FR.UTF-8") == ui::Language::fr);
   CHECK(ui::language_from_code("fr:en") == ui::Language::fr);
   CHECK(ui::language_from_code("en_GB") == ui::Language::en);

@@ -70,10 +70,10 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",
                              number_in({ui::kFontScaleOptionMin, ui::kFontScaleOptionMax}),
                              [&options](double scale) { options.font_scale = float(scale); });
-  add_checked_option<int>(
-      *group, "--lang", "fr|en", "language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)",
-      one_of({"en", "fr"}),
-      [&options](int index) { options.language = index == 0 ? ui::Language::en : ui::Language::fr; });
+  add_checked_option<Language>(
+      *group, "--lang", language_metavar(),
+      "language of the window (default: from LANGUAGE, LC_ALL, LC_MESSAGES, LANG)", language_rule(),
+      [&options](Language language) { options.language = language; });
   add_checked_option<std::string>(*group, "--check", "\"CMD\"",
                                   "Check my camera: run your program on the camera whenever it changes",
                                   file_name(), [&options](std::string command) { options.check_command = command; });

@@ -45,8 +45,9 @@ def look_at_answer(case):
     right = unit(cross([0.0, 0.0, 1.0], w))     # a fixed up vector: z
     up = cross(w, right)
     eye = add(position, scale(w, cam["df"]))
-    columns = reference.useful_size(cam["res"], cam["size"][0])
-    rows = reference.useful_size(cam["res"], cam["size"][1])
+    res_columns, res_rows = reference.resolutions(cam)
+    columns = reference.useful_size(res_columns, cam["size"][0])
+    rows = reference.useful_size(res_rows, cam["size"][1])
     aspect = columns / rows  # the look-at habit: square pixels, the screen as wide as the image
     ids = []
     for r in range(rows):

@@ -181,8 +181,9 @@ int main(int argc, char** argv) {
     ids << "]";
   } else {
     m = camera_3d(cam);
-    const int columns = size_of(cam["res"].number, int(cam["size"][0].number));
-    const int rows = size_of(cam["res"].number, int(cam["size"][1].number));
+    const mini_json::Value& res = cam["res"];  // one number, or [columns' res, rows' res]
+    const int columns = size_of(res.is_array() ? res[0].number : res.number, int(cam["size"][0].number));
+    const int rows = size_of(res.is_array() ? res[1].number : res.number, int(cam["size"][1].number));
     std::vector<std::vector<int>> image;
     for (int r = 0; r < rows; ++r) {
       image.emplace_back();

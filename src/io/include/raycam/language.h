@@ -1,9 +1,9 @@
-// The two languages of raycam's visible text, and what every translated text needs: the language from a
-// flag or the environment, a table of French by English key, and printf-style formatting. The window's
-// table is src/session/text_table.cpp (tr(), text.h), the check command's src/check/check_texts.cpp; the
-// English text is the key in both, as gettext's msgid. Error reasons (what core, io and the checker throw or
-// report, in English, with paths, numbers and field names inside) are translated by pattern where they are
-// shown: translate_reason().
+// What every translated text needs, on top of the core's Language and LocalText (raycam/languages.h): the
+// language from a flag or the environment, a table looked up by its English key, and printf-style
+// formatting. The window's table is src/session/text_table.cpp (tr(), text.h), the check command's
+// src/check/check_texts.cpp; the English text is the key in both, as gettext's msgid. Error reasons (what
+// core, io and the checker throw or report, in English, with paths, numbers and field names inside) are
+// translated by pattern where they are shown: translate_reason().
 #pragma once
 
 #include <cstdarg>
@@ -13,26 +13,22 @@
 #include <unordered_map>
 #include <vector>
 
-#include "raycam/classic_mistakes.h"
+#include "raycam/languages.h"
 
 namespace raycam {
 
-enum class Language { en, fr };
+// An entry of a table of texts: {"English key", "Français", ...}, in Language's order.
+using Translation = LocalText;
 
-struct Translation {
-  const char* en;
-  const char* fr;
-};
-
-// French by English key, built once from a table's entries.
+// A table's texts by their English key, built once from its entries.
 class TranslationTable {
  public:
   explicit TranslationTable(const std::vector<Translation>& entries);
-  // `english` in `language`: itself in English, or when the table lacks it.
+  // `english` in `language`: the entry's text, or `english` itself when the table lacks it.
   const char* lookup(Language language, const char* english) const;
 
  private:
-  std::unordered_map<std::string_view, const char*> french_;
+  std::unordered_map<std::string_view, const Translation*> entries_;
 };
 
 // printf into a std::string (`args` is consumed).
@@ -43,29 +39,22 @@ std::optional<Language> language_from_code(std::string_view code);
 // The first of LANGUAGE, LC_ALL, LC_MESSAGES, LANG that is set and not empty decides (as gettext does);
 // French if it names French, English otherwise.
 Language language_from_environment();
-// The --lang flag: "fr" or "en"; throws std::invalid_argument naming the flag and the accepted values.
+// The --lang flag: one of kLanguageCodes; throws std::invalid_argument naming the flag and the accepted values.
 Language parse_language_flag(const std::string& value, const std::string& flag = "--lang");
-const char* language_code(Language language);  // "en", "fr"
+inline const char* language_code(Language language) { return kLanguageCodes[std::size_t(language)]; }
 
-// An error reason's English phrasing and its French. In `en`, "{name}" stands for a variable part (a path, a
-// number, a field name), kept as it is; "{name*}" for a nested reason, itself translated. `fr` places each
-// name once, as "{name}" (without the star). Any other brace is literal text.
-struct ReasonPattern {
-  const char* en;
-  const char* fr;
-};
+// An error reason's phrasing in every language, English first. In English, "{name}" stands for a variable
+// part (a path, a number, a field name), kept as it is; "{name*}" for a nested reason, itself translated.
+// Each other language places each name once, as "{name}" (without the star). Any other brace is literal.
+using ReasonPattern = LocalText;
 
 // Every reason raycam may show (src/io/reason_table.cpp); the first pattern matching the whole text wins.
 const std::vector<ReasonPattern>& reason_patterns();
 
-// `english` (an exception's what(), a checker's detail) in `language`: the French of the first pattern it
-// matches, or `english` itself (no pattern matches, Language::en, or longer than 2 KiB): no reason is lost. `used`, when
+// `english` (an exception's what(), a checker's detail) in `language`: that language's template of the first
+// pattern it matches, or `english` itself (no pattern matches, Language::en, or longer than 2 KiB): no reason is lost. `used`, when
 // given, receives the index in reason_patterns() of every pattern applied, nested ones included.
 std::string translate_reason(Language language, const std::string& english,
                              std::vector<std::size_t>* used = nullptr);
-
-// A classic mistake's checkbox label and one-line explanation (the core keeps both languages beside it).
-const char* mistake_label(const MistakeInfo& info, Language language);
-const char* mistake_explanation(const MistakeInfo& info, Language language);
 
 }  // namespace raycam

@@ -2,7 +2,8 @@
 //   { "dimension": 3, "background": [20,20,30],
 //     "objects": [ {"type": "sphere", "center": [0,0,0], "radius": 1, "color": [230,60,50], "name": "red"} ],
 //     "camera": {"target": [0,0,0], "d": 8, "theta": 30, "phi": 60, "df": 2, "res": 1, "size": [256,256]} }
-// 2D: "dimension": 2, "circle" objects with 2-component centres, "size": N.
+// 2D: "dimension": 2, "circle" objects with 2-component centres, "size": N. 3D's "res" is one number or two,
+// [columns, rows] (the handout's "une (ou deux) variables de résolution").
 #pragma once
 
 #include <optional>
@@ -18,6 +19,9 @@ struct CameraPreset {
   std::optional<std::vector<double>> target;  // 2 or 3 components
   std::optional<double> d, theta_deg, phi_deg, df, res;
   std::optional<std::vector<int>> size;  // [N] in 2D, [columns, rows] in 3D
+  // 3D, when the image's two sides have their own resolution: the rows' (res is then the columns'). Set only
+  // with res; absent, the rows take res.
+  std::optional<double> res_rows;
 };
 
 struct SceneFile {
