@@ -201,7 +201,7 @@ void add_segments(const Frame& frame, const PageTransform& to_page, PageFrame& p
   const std::size_t every = std::max<std::size_t>(1, std::size_t(std::ceil(kMinTickGap / std::max(gap, 1e-12) - 1e-9)));
   const std::size_t last = ticks.size() - 1;
   for (std::size_t i = 0; i <= last; ++i)
-    if (i == last || (i % every == 0 && (i == 0 || last - i >= (every + 1) / 2)))
+    if (i == last || (i % every == 0 && (i == 0 || last - i >= every)))
       page.segments.push_back(ticks[i]);
 }
 

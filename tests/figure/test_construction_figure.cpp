@@ -16,64 +16,16 @@
 #include <sstream>
 
 #include "../scratch_dir.h"
+#include "figure_test_support.h"
 #include "construction_figure.h"
 #include "figure_files.h"
 #include "raycam/transform.h"
 
 using namespace raycam;
 using namespace raycam::figure;
+using namespace raycam::figure_tests;
 
 namespace {
-
-const Scene2D& scene_2d() {
-  static const Scene2D scene = [] {
-    Scene2D s;
-    s.circles = {{{-1.0, -0.5}, 0.8, {230, 60, 50}, "red"}, {{1.5, 0.8}, 0.5, {60, 190, 80}, "green"}};
-    return s;
-  }();
-  return scene;
-}
-
-const Scene3D& scene_3d() {
-  static const Scene3D scene = [] {
-    Scene3D s;
-    s.spheres = {{{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"}, {{2.0, 1.0, 0.5}, 0.5, {60, 90, 230}, "blue"}};
-    return s;
-  }();
-  return scene;
-}
-
-// Cameras that exercise every quadrant of θ, a target away from the origin and d_f ≠ 1.
-std::vector<Camera2D> cameras_2d() {
-  std::vector<Camera2D> cameras;
-  for (double theta_deg : {90.0, 0.0, 200.0, -35.0}) {
-    Orbit2D orbit;
-    orbit.target = {2.0, -1.0};
-    orbit.d = 5.0;
-    orbit.theta = glm::radians(theta_deg);
-    orbit.df = 1.7;
-    cameras.emplace_back(16, orbit);
-  }
-  return cameras;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string run_output(const std::string& command) {
-  std::string out;
-  if (FILE* pipe = popen(command.c_str(), "r")) {
-    char buffer[4096];
-    std::size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    pclose(pipe);
-  }
-  return out;
-}
 
 // The crosses of the SVG by kind (figure_files.h: kind k stroked rgb(0, 0, k+1)): page position of each
 // cross's centre, the middle of its horizontal arm "M x0 y L x1 y".
@@ -101,7 +53,7 @@ void require_svg_points(const Figure& figure, int index, const std::vector<Expec
   const std::string file = scratch.path("frame.svg");
   write_figure(figure, {index}, output, file);
   const auto crosses = crosses_in_svg(read_text(file));
-  const PageTransform to_page = page_transform(figure.frames[std::size_t(index)], output.page, output.matrix);
+  const PageTransform to_page = lay_out_frame(figure, index, output).to_page;
   for (const Expected& e : expected) {
     INFO("frame " << index << ", point kind " << int(e.point));
     REQUIRE(crosses.count(int(e.point)) == 1);
@@ -120,11 +72,15 @@ TEST_CASE("each 2D frame is the handout's factors so far, (c) and (d) the core's
     INFO("theta " << glm::degrees(camera.orbit().theta));
     // (a) the identity.
     CHECK(frame_matrix_2d(camera, 0) == glm::dmat3(1.0));
-    // (b) H(1, d_f) then the first rotation: u0 = (0, -1) is scaled to length d_f and turned onto +x, the
-    // direction from which R(φ_v) measures v's angle.
+    // (b) H(1, d_f): u0 = (0, -1) is scaled to length d_f (the app's step 1, the core's construction_step(1)).
     const glm::dvec2 u_b = transform_vector(frame_matrix_2d(camera, 1), kCanonicalView2D);
-    CHECK(u_b.x == Approx(camera.orbit().df));
-    CHECK(u_b.y == Approx(0.0).margin(1e-12));
+    CHECK(u_b.x == Approx(0.0).margin(1e-12));
+    CHECK(u_b.y == Approx(-camera.orbit().df));
+    // The first rotation R(ψ0) turns u0 onto +x, the direction from which R(φ_v) measures v's angle: φ_v,
+    // printed in (c)'s caption, is v's angle θ + π.
+    const double phi_v = view_angle_phi_v(camera);
+    CHECK(std::cos(phi_v) == Approx(std::cos(camera.orbit().theta + glm::pi<double>())).margin(1e-12));
+    CHECK(std::sin(phi_v) == Approx(std::sin(camera.orbit().theta + glm::pi<double>())).margin(1e-12));
     // (c) the camera looks along v = PC/‖PC‖, and the product is the core's R(α)·H.
     const glm::dmat3 c = frame_matrix_2d(camera, 2);
     const glm::dvec2 v = glm::normalize(camera.orbit().target - camera.screen_centre());
@@ -218,15 +174,19 @@ TEST_CASE("a PDF of pages holds one page per frame, the language's titles and th
       CHECK(text.find(std::string(fr ? "frame (" : "cadre (") + letter + ")") == std::string::npos);
     }
     CHECK(text.find(fr ? "homothétie" : "scaling") != std::string::npos);
-    // Every frame's matrix, row by row, with 3 decimals and the language's decimal separator.
+    // Every frame's matrix, row by row, with 3 decimals, the language's decimal separator and the minus sign.
     for (int f = 0; f < 4; ++f) {
       const glm::dmat3 m = frame_matrix_2d(camera, f);
       for (int r = 0; r < 3; ++r) {
         // The numbers in order, any spacing between them (the layout's).
-        std::string pattern = "\\[";
-        for (int c = 0; c < 3; ++c) pattern += " +" + std::regex_replace(decimal(m[c][r], 3, language),
-                                                                          std::regex("[.]"), "\\.");
-        pattern += " +\\]";
+        std::string pattern;
+        for (int c = 0; c < 3; ++c) {
+          char number[32];
+          std::snprintf(number, sizeof number, "%.3f", std::abs(m[c][r]) < 5e-4 ? 0.0 : m[c][r]);
+          std::string expected = std::regex_replace(number, std::regex("[.]"), fr ? "," : "\\.");
+          expected = std::regex_replace(expected, std::regex("-"), "\xe2\x88\x92");  // U+2212
+          pattern += (c == 0 ? "" : " +") + expected;
+        }
         INFO("frame " << f << " row " << r << ": " << pattern);
         CHECK(std::regex_search(text, std::regex(pattern)));
       }
@@ -269,7 +229,7 @@ TEST_CASE("a scene of 2000 objects has every object drawn in every frame", "[fig
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
   for (int i = 0; i < 2000; ++i)
-    scene.circles.push_back({{coordinate(random), coordinate(random) - 25.0}, 0.2, {200, 100, 50}, ""});
+    scene.circles.push_back({{2.0 + 0.1 * coordinate(random), -1.0 + 0.1 * coordinate(random)}, 0.02, {200, 100, 50}, ""});
   const Figure figure = construction_figure_2d(scene, cameras_2d()[0], {});
   FigureOutput output;
   const auto written = write_figure(figure, {0, 3}, output, scratch.path("many.svg"));
@@ -287,4 +247,5 @@ TEST_CASE("numbers in French take the decimal comma and no minus zero", "[figure
   CHECK(decimal(1.5, 3, Language::en) == "1.500");
   CHECK(decimal(-1e-9, 3, Language::en) == "0.000");
   CHECK(decimal(-0.0, 1, Language::fr) == "0,0");
+  CHECK(decimal(-2.25, 2, Language::fr) == "\xe2\x88\x92" "2,25");  // U+2212, not the hyphen
 }
