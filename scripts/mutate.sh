@@ -69,10 +69,10 @@ mutant reference-ties-to-later-object src/core/reference_caster.cpp 's/if (t < b
 FIGURE="raycam_figure_tests raycam-cli"
 mutant figure-first-rotation-as-printed src/figure/construction_figure.cpp 's/^constexpr double kFirstRotation2D = glm::half_pi<double>();/constexpr double kFirstRotation2D = -glm::half_pi<double>();/' "$FIGURE" "^figure:"
 mutant figure-matrix-transposed src/figure/construction_figure.cpp 's/rows\[r\]\[c\] = m\[c\]\[r\];/rows[r][c] = m[r][c];/' "$FIGURE" "^figure:"
-mutant figure-3d-target-at-origin src/figure/construction_figure.cpp 's/frame.markers.push_back({Point::target, oblique_projection(orbit.target), "C"});/frame.markers.push_back({Point::target, oblique_projection(glm::dvec3(0.0)), "C"});/' "$FIGURE" "^figure:"
+mutant figure-3d-target-at-origin src/figure/construction_figure.cpp 's/frame.markers.push_back({Point::target, oblique_projection(orbit.target), "$C$"});/frame.markers.push_back({Point::target, oblique_projection(glm::dvec3(0.0)), "$C$"});/' "$FIGURE" "^figure:"
 mutant figure-eye-before-scaling src/figure/construction_figure.cpp 's/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D);/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/; s/const glm::dvec2 eye = transform_point(m, kCanonicalEye2D) - transform_vector(m, {0.0, 0.0});/const glm::dvec2 eye = transform_point(m * glm::inverse(camera.placement().scale), kCanonicalEye2D);/' "$FIGURE" "^figure:"
-mutant figure-png-pixel-size src/figure/figure_files.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
-mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const Disc& disc : frame.objects) {$/  for (const Disc\& disc : frame.objects) { if (\&disc - frame.objects.data() >= 1000) break;/' "$FIGURE" "^figure:"
+mutant figure-png-pixel-size src/figure/figure_layout.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
+mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const PageDisc\& disc : page.discs) {$/  for (const PageDisc\& disc : page.discs) { if (\&disc - page.discs.data() >= 1000) break;/' "$FIGURE" "^figure:"
 mutant figure-export-ignores-the-step src/session/figure_export.cpp 's/state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1)/count - 1/' "raycam_session_tests" "^session:.*Export figure"
 mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(lang == Language::fr ? "cadre (" : "frame (")/("frame (")/' "$FIGURE" "^figure:"
 # --- checker safety ---
@@ -125,6 +125,19 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+# --- figures an instructor pastes ---
+mutant figure-labels-not-placed src/figure/figure_layout.cpp 's/^        if (cost < best_cost) {/        if (cost < best_cost \&\& d == 0 \&\& ring == 0) {/' "$FIGURE" "^figure:"
+mutant figure-text-scales-with-page src/figure/figure_layout.cpp 's/^  b.font = output.font_size_pt;/  b.font = output.font_size_pt * output.page.height_pt \/ 340.0;/' "$FIGURE" "^figure:"
+mutant figure-png-without-dpi src/figure/figure_files.cpp 's/^  png_set_pHYs(png, info, per_metre, per_metre, PNG_RESOLUTION_METER);/  (void)per_metre;/' "$FIGURE" "^figure:"
+mutant figure-ticks-not-thinned src/figure/figure_layout.cpp 's/^constexpr double kMinTickGap = 2.0; /constexpr double kMinTickGap = 0.0; /' "$FIGURE" "^figure:"
+mutant figure-wide-entries-fixed src/figure/construction_figure.cpp 's/^  if (std::strlen(text) <= kWidest) return decimal(value, 3, language);/  return decimal(value, 3, language);/' "$FIGURE" "^figure:"
+mutant figure-written-in-place src/figure/figure_files.cpp 's/^    return temporary;/    return path;/' "$FIGURE" "^figure:"
+mutant figure-hyphen-minus src/figure/construction_figure.cpp 's/^      out += kMinus;/      out += "-";/' "$FIGURE" "^figure:"
+mutant figure-caption-hides-mistakes src/figure/construction_figure.cpp 's/caption_2d(camera, index, lang) + mistakes_said(camera.mistakes(), 2, lang);/caption_2d(camera, index, lang);/' "$FIGURE" "^figure:"
+mutant figure-tikz-y-down src/figure/tikz_file.cpp 's/p.x \* kCmPerPoint, (page_height - p.y) \* kCmPerPoint);/p.x * kCmPerPoint, p.y * kCmPerPoint);/' "$FIGURE" "^figure:"
+mutant figure-tikz-short-arrow-over-pc src/figure/math_text.cpp 's/(char_count(run.text) > 1 ? "\\\\overrightarrow{" : "\\\\vec{")/("\\\\vec{")/' "$FIGURE" "^figure:"
+mutant figure-export-five-rays src/session/figure_export.cpp 's/^                                      state.figure_rays};/                                      5};/' "$SESSION" "^session:.*Export figure"
+mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = state.figure_matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
