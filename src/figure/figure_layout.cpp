@@ -15,6 +15,7 @@ namespace {
 
 constexpr double kPointsPerMm = 72.0 / 25.4;
 constexpr double kLineSpacing = 1.25;       // a text line's height, in font sizes
+constexpr double kCaptionSpacing = 1.45;    // a caption's lines: room for the arrows over vectors and scripts
 constexpr double kTitleScale = 1.3;         // the title's size, in font sizes
 constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar; keep every k-th
 constexpr double kTickHalfLength = 2.5;     // pt
@@ -152,7 +153,7 @@ Bands bands_of(const Figure& figure, const FigureOutput& output) {
   if (output.caption)
     for (const Frame& frame : figure.frames)
       b.caption_lines = std::max(b.caption_lines, int(wrap(frame.caption, width, b.font).size()));
-  y += b.caption_lines * b.line + 0.5 * b.font;
+  y += b.caption_lines * kCaptionSpacing * b.font + 0.5 * b.font;
   int rows = 0;
   if (output.matrix)
     for (const Frame& frame : figure.frames) rows = std::max(rows, frame.matrix_size);
@@ -252,7 +253,8 @@ class Placer {
   double cost_of(const Box& box) const {
     const Box halo = grown(box, 0.8);
     double cost = 0.0;
-    for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 1.0), box);
+    // A clearance of a third of the font size: LaTeX's fonts (TikZ) set a label a little wider than DejaVu.
+    for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 0.3 * font_), box);
     for (const auto& [a, b] : lines_) cost += 4.0 * font_ * length_inside(a, b, halo);
     for (const PageDisc& disc : page_.discs) cost += disc_cover(disc, box);
     const Box& area = page_.area;
@@ -372,10 +374,10 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
     page.title = (text_at(frame.title, {bands.margin, bands.margin + kTitleScale * bands.font},
                                  kTitleScale * bands.font, true));
   if (output.caption) {
-    double y = bands.caption_top + bands.font;
+    double y = bands.caption_top + 1.1 * bands.font;
     for (const std::string& line : wrap(frame.caption, bands.area.width(), bands.font)) {
       page.caption.push_back(text_at(line, {bands.margin, y}, bands.font, false));
-      y += bands.line;
+      y += kCaptionSpacing * bands.font;
     }
   }
   if (output.matrix) lay_out_matrix(frame, bands, figure.language, page);
