@@ -136,6 +136,7 @@ mutant figure-hyphen-minus src/figure/construction_figure.cpp 's/^      out += k
 mutant figure-caption-hides-mistakes src/figure/construction_figure.cpp 's/caption_2d(camera, index, lang) + mistakes_said(camera.mistakes(), 2, lang);/caption_2d(camera, index, lang);/' "$FIGURE" "^figure:"
 mutant figure-tikz-y-down src/figure/tikz_file.cpp 's/p.x \* kCmPerPoint, (page_height - p.y) \* kCmPerPoint);/p.x * kCmPerPoint, p.y * kCmPerPoint);/' "$FIGURE" "^figure:"
 mutant figure-tikz-short-arrow-over-pc src/figure/math_text.cpp 's/(char_count(run.text) > 1 ? "\\\\overrightarrow{" : "\\\\vec{")/("\\\\vec{")/' "$FIGURE" "^figure:"
+mutant figure-huge-disc-as-circle src/figure/figure_layout.cpp 's/^  constexpr double kHugeRadius = 1e4; /  constexpr double kHugeRadius = 1e300; /' "$FIGURE" "^figure:"
 mutant figure-export-five-rays src/session/figure_export.cpp 's/^                                      state.figure_rays};/                                      5};/' "$SESSION" "^session:.*Export figure"
 mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = state.figure_matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
 MUTANTS_END=1

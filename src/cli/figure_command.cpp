@@ -159,7 +159,7 @@ int run_figure(FigureOptions options) {
 void add_figure_command(CLI::App& cli, int& exit_code) {
   CLI::App* command = add_described_subcommand(
       cli, "figure", "draw the construction of M_d as course figures (SVG, PDF, PNG, TikZ)",
-      "Draws the handout's frames (a) identity, (b) H(1, d_f) and the first rotation, (c) the rotation onto "
+      "Draws the handout's frames (a) identity, (b) H(1, d_f), (c) the rotations R(phi_v)·R(psi0) onto "
       "v = PC/|PC|, (d) the translation, for a 2D scene; the steps 0 (identity) … 5 (M_d) for a 3D scene. Each "
       "frame shows the objects, the target C, the eye, the screen and its pixels, a few primary rays and the "
       "frame's matrix. Text keeps its size in points whatever --size. Without --scene: the demo scene. See "
@@ -209,7 +209,7 @@ void add_figure_command(CLI::App& cli, int& exit_code) {
   flags::add_checked_option<int>(*command, "--lang", "fr|en", "the figures' language (default en)",
                                  flags::one_of({"fr", "en"}),
                                  [options](int i) { options->language = figure::Language(i); });
-  flags::add_checked_option<int>(*command, "--rays", "N", "primary rays drawn per 2D frame (default 5)",
+  flags::add_checked_option<int>(*command, "--rays", "N", "primary rays drawn per 2D frame, 0 … 64 (default 5)",
                                  flags::integer_in(0, 64), [options](int n) { options->rays = n; });
   command->add_flag("--no-matrix", options->no_matrix, "leave out each frame's matrix");
   command->callback([options, &exit_code] { exit_code = run_figure(*options); });

@@ -158,7 +158,12 @@ void draw_segments(cairo_t* cr, const PageFrame& page) {
 void draw_discs(cairo_t* cr, const PageFrame& page) {
   for (const PageDisc& disc : page.discs) {
     cairo_new_path(cr);
-    cairo_arc(cr, disc.centre.x, disc.centre.y, disc.radius, 0.0, 2.0 * M_PI);
+    if (disc.outline.empty()) {
+      cairo_arc(cr, disc.centre.x, disc.centre.y, disc.radius, 0.0, 2.0 * M_PI);
+    } else {
+      for (const glm::dvec2& p : disc.outline) cairo_line_to(cr, p.x, p.y);
+      cairo_close_path(cr);
+    }
     if (page.objects_faded)
       cairo_set_source_rgba(cr, 0.5, 0.5, 0.5, 0.12);
     else

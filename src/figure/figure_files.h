@@ -17,7 +17,7 @@ namespace raycam::figure {
 
 struct WrittenFigure {
   std::vector<std::string> files;
-  std::vector<int> objects_drawn;  // per frame written: every object of the scene is drawn, never culled
+  std::vector<int> objects_drawn;  // per frame written: the objects that reach the drawing area, all drawn
 };
 
 // Writes the frames listed (indices into figure.frames) to `path`: one file when there is one frame or with

@@ -206,6 +206,36 @@ void add_segments(const Frame& frame, const PageTransform& to_page, PageFrame& p
       page.segments.push_back(ticks[i]);
 }
 
+// The objects that reach the drawing area (the others would only weigh on the file and overflow TeX's
+// dimensions); a disc too big for the page's numbers becomes the polygon of its visible part.
+void add_discs(const Frame& frame, PageFrame& page) {
+  constexpr double kHugeRadius = 1e4;  // pt: beyond, the outline is a polygon
+  const Box kept = grown(page.area, 20.0);
+  const glm::dvec2 middle(0.5 * (kept.left + kept.right), 0.5 * (kept.top + kept.bottom));
+  const double half_diagonal = 0.5 * std::hypot(kept.width(), kept.height());
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const Disc& disc = frame.objects[i];
+    PageDisc d{page.to_page(disc.centre), page.to_page.scale * disc.radius, disc.colour, {}};
+    if (glm::length(nearest_point(kept, d.centre) - d.centre) > d.radius) continue;  // misses the area
+    const double distance = glm::length(d.centre - middle);
+    if (distance + half_diagonal < d.radius && d.radius > kHugeRadius) {  // covers it all
+      d.outline = {{kept.left, kept.top}, {kept.right, kept.top}, {kept.right, kept.bottom}, {kept.left, kept.bottom}};
+    } else if (d.radius > kHugeRadius) {  // its rim crosses the area: the arc there, closed inside the disc
+      const glm::dvec2 towards = (middle - d.centre) / std::max(distance, 1e-300);
+      const double angle = std::atan2(towards.y, towards.x);
+      const double span = 2.0 * half_diagonal / d.radius;
+      constexpr int kSteps = 64;
+      for (int k = 0; k <= kSteps; ++k) {
+        const double a = angle - span + 2.0 * span * k / kSteps;
+        d.outline.push_back(d.centre + d.radius * glm::dvec2(std::cos(a), std::sin(a)));
+      }
+      d.outline.push_back(d.outline.back() - 4.0 * half_diagonal * towards);
+      d.outline.insert(d.outline.begin(), d.outline.front() - 4.0 * half_diagonal * towards);
+    }
+    page.discs.push_back(std::move(d));
+  }
+}
+
 // ---- label placement ------------------------------------------------------------------------------------
 
 struct Request {
@@ -275,11 +305,10 @@ void place_labels(const Frame& frame, PageFrame& page, double font) {
     if (!m.label.empty()) requests.push_back({m.label, page.to_page(m.at), true});
   for (const Label& l : frame.labels) requests.push_back({l.text, page.to_page(l.at), false});
   if (!frame.objects_faded && frame.objects.size() <= kObjectNamesUpTo)
-    for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-      const Disc& disc = frame.objects[i];
+    for (const Disc& disc : frame.objects) {
       if (disc.name.empty()) continue;
       // An object's name is anchored at its rim towards the upper right, where the disc leaves room.
-      const glm::dvec2 rim = page.discs[i].centre + 0.7071 * page.discs[i].radius * glm::dvec2(1.0, -1.0);
+      const glm::dvec2 rim = page.to_page(disc.centre) + 0.7071 * page.to_page.scale * disc.radius * glm::dvec2(1.0, -1.0);
       requests.push_back({escape_markup(disc.name), rim, false});
     }
   for (const Request& r : requests)
@@ -364,10 +393,11 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
   page.arm = 0.35 * bands.font;
   page.to_page = transform_of(frame, bands.area);
   page.objects_faded = frame.objects_faded;
-  for (const Disc& disc : frame.objects)
-    page.discs.push_back({page.to_page(disc.centre), page.to_page.scale * disc.radius, disc.colour});
+  add_discs(frame, page);
   add_segments(frame, page.to_page, page);
-  for (const Marker& m : frame.markers) page.markers.push_back({m.point, page.to_page(m.at)});
+  const Box kept = grown(page.area, 20.0);
+  for (const Marker& m : frame.markers)  // a point far out of view is left out (its label too)
+    if (inside(kept, page.to_page(m.at))) page.markers.push_back({m.point, page.to_page(m.at)});
   place_labels(frame, page, bands.font);
 
   if (output.title)

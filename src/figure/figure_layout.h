@@ -68,6 +68,9 @@ struct PageDisc {
   glm::dvec2 centre{0.0};
   double radius = 0.0;
   Rgb8 colour;
+  // A disc far bigger than the page, as the polygon of its part near the page (cairo's fixed point and TeX's
+  // dimensions overflow on its centre and radius); empty for the others.
+  std::vector<glm::dvec2> outline;
 };
 
 struct PageMarker {
@@ -84,7 +87,7 @@ struct PageFrame {
   PageTransform to_page;
   Box area;  // the drawing area: everything of the plane is clipped to it
   bool objects_faded = false;
-  std::vector<PageDisc> discs;
+  std::vector<PageDisc> discs;  // those that reach the drawing area
   std::vector<Segment> segments;  // in page points, cut to the drawing area; a tick at its page length
   std::vector<PageMarker> markers;
   std::vector<PlacedText> labels;  // the plane's labels, placed (clipped with the drawing)

@@ -79,11 +79,18 @@ std::string frame_commands(const Figure& figure, int index, const FigureOutput& 
          "cm, " + font(page.font_size) + "] at " + at(page.caption.front().at) + " {" + latex_of(frame.caption) + "};\n";
   t += "\\begin{scope}\n\\clip " + at({page.area.left, page.area.bottom}) + " rectangle " +
        at({page.area.right, page.area.top}) + ";\n";
-  for (const PageDisc& disc : page.discs)
+  for (const PageDisc& disc : page.discs) {
     t += "\\filldraw[line width=0.5pt, " +
          std::string(page.objects_faded ? "fill=gray, fill opacity=0.12, draw opacity=0.3"
                                         : "fill=" + colour(disc.colour) + ", fill opacity=0.8") +
-         "] " + at(disc.centre) + " circle[radius=" + number(disc.radius * kCmPerPoint) + "cm];\n";
+         "] ";
+    if (disc.outline.empty()) {
+      t += at(disc.centre) + " circle[radius=" + number(disc.radius * kCmPerPoint) + "cm];\n";
+    } else {
+      for (const glm::dvec2& p : disc.outline) t += at(p) + " -- ";
+      t += "cycle;\n";
+    }
+  }
   for (const Segment& s : page.segments)
     t += "\\draw[" + std::string(style_of(s.stroke)) + "] " + at(s.from) + " -- " + at(s.to) + ";\n";
   for (const PageMarker& m : page.markers) {

@@ -331,6 +331,35 @@ TEST_CASE("with a classic mistake on, the captions say which", "[figure]") {
   }
 }
 
+TEST_CASE("TikZ of the flags' extremes compiles: far targets, huge discs, d_f 10⁹", "[figure]") {
+  const test::ScratchDir scratch("figure-tikz-extremes");
+  Orbit2D far2;
+  far2.d = 1e12;
+  far2.df = 1e9;
+  far2.target = {1e12, 1e12};
+  Orbit3D huge3;
+  huge3.target = {1e12, 1e12, 1e12};
+  huge3.df = 1e-9;
+  Scene3D big;  // a sphere far bigger than the page, around the camera
+  big.spheres = {{{1e12, 1e12, 1e12 - 3e6}, 3e6 + 1.0, {90, 90, 90}, "ground"}};
+  Scene2D big2;
+  big2.circles = {{{1e12, 1e12 - 1e7}, 1e7 - 2.0, {90, 90, 90}, "ground"}};
+  const Figure figures[] = {construction_figure_2d(big2, Camera2D(64, far2), {}),
+                            construction_figure_3d(big, Camera3D(16, 12, huge3), {})};
+  FigureOutput output;
+  output.format = Format::tikz;
+  output.standalone = true;
+  output.pages = true;
+  for (const Figure& figure : figures) {
+    std::vector<int> frames;
+    for (int f = 0; f < int(figure.frames.size()); ++f) frames.push_back(f);
+    write_figure(figure, frames, output, scratch.path("far.tex"));
+    const std::string compile =
+        "cd '" + scratch.dir.string() + "' && pdflatex -interaction=nonstopmode -halt-on-error far.tex > /dev/null 2>&1";
+    CHECK(std::system(compile.c_str()) == 0);
+  }
+}
+
 TEST_CASE("TikZ compiles with pdflatex: the words, the matrix and the points at the core's coordinates", "[figure]") {
   const test::ScratchDir scratch("figure-tikz");
   const Camera2D camera = cameras_2d()[3];
