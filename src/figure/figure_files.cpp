@@ -11,7 +11,6 @@
 #include <glm/geometric.hpp>
 #include <memory>
 #include <png.h>
-#include <zlib.h>
 #include <stdexcept>
 #include <unistd.h>
 
@@ -241,8 +240,7 @@ int paint_frame(cairo_t* cr, const Figure& figure, int index, const FigureOutput
 }
 
 // cairo_surface_write_to_png spends ~85 % of a 300 dpi frame in libpng's adaptive filters and zlib's
-// default level; a line drawing on white compresses well with the "up" filter and zlib's run-length
-// strategy at level 1, several times faster.
+// default level; a line drawing on white compresses as well with the "up" filter at a low level, ~5× faster.
 // The pHYs chunk carries the dpi, so that a word processor places the figure at its size.
 void write_png(cairo_surface_t* surface, const std::string& temporary, const std::string& path, double dpi) {
   cairo_surface_flush(surface);
@@ -264,8 +262,7 @@ void write_png(cairo_surface_t* surface, const std::string& temporary, const std
   const auto per_metre = png_uint_32(std::lround(dpi / 0.0254));
   png_set_pHYs(png, info, per_metre, per_metre, PNG_RESOLUTION_METER);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
-  png_set_compression_level(png, 1);
-  png_set_compression_strategy(png, Z_RLE);
+  png_set_compression_level(png, 3);
   png_write_info(png, info);
   for (int y = 0; y < height; ++y) {
     const auto* pixel = reinterpret_cast<const std::uint32_t*>(data + std::ptrdiff_t(y) * stride);
