@@ -139,6 +139,8 @@ mutant figure-tikz-short-arrow-over-pc src/figure/math_text.cpp 's/(char_count(r
 mutant figure-huge-disc-as-circle src/figure/figure_layout.cpp 's/^  constexpr double kHugeRadius = 1e4; /  constexpr double kHugeRadius = 1e300; /' "$FIGURE" "^figure:"
 mutant figure-export-five-rays src/session/figure_export.cpp 's/^                                      state.figure_rays};/                                      5};/' "$SESSION" "^session:.*Export figure"
 mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = state.figure_matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
+mutant figure-labels-over-objects src/figure/figure_layout.cpp 's/^constexpr double kOverObjectWeight = 20.0; /constexpr double kOverObjectWeight = 1.0; /' "$FIGURE" "^figure:"
+mutant figure-docs-slide-too-wide docs/figures.md 's/--pages --size 105x72mm --out cadres.tex/--pages --size 110x72mm --out cadres.tex/' "$FIGURE" "^figure: the docs"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

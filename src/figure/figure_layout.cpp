@@ -19,6 +19,7 @@ constexpr double kCaptionSpacing = 1.45;    // a caption's lines: room for the a
 constexpr double kTitleScale = 1.3;         // the title's size, in font sizes
 constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar; keep every k-th
 constexpr double kTickHalfLength = 2.5;     // pt
+constexpr double kOverObjectWeight = 20.0;  // a label over an object costs more than one over a ray
 constexpr std::size_t kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (all objects drawn)
 
 // One cairo context for measuring text (a 1×1 image: only the font metrics are used).
@@ -286,7 +287,10 @@ class Placer {
     // A clearance of a third of the font size: LaTeX's fonts (TikZ) set a label a little wider than DejaVu.
     for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 0.3 * font_), box);
     for (const auto& [a, b] : lines_) cost += 4.0 * font_ * length_inside(a, b, halo);
-    for (const PageDisc& disc : page_.discs) cost += disc_cover(disc, box);
+    // A label's halo over a placed object's disc erases that part of it; over the grey backdrop of the
+    // construction frames it hides nothing that matters.
+    const double disc_weight = page_.objects_faded ? 1.0 : kOverObjectWeight;
+    for (const PageDisc& disc : page_.discs) cost += disc_weight * disc_cover(disc, box);
     const Box& area = page_.area;
     cost += 1000.0 * (box.width() * box.height() - overlap_area(box, area));
     return cost;
