@@ -345,7 +345,11 @@ void figure_export_row(AppState& state) {
       set_message(state, MessageSource::construction, true, tr_reason(error.what()));
     }
   }
+  const bool just_asked = asked != 0 && state.figure_replace_pending != 0;
   if (state.figure_replace_pending != 0) {  // asked before replacing, as Save as
+    // The question replaces the last export's "wrote …": beside "… already exists. Replace it?" (here or on
+    // the line above the status at lecture sizes) it read as done.
+    if (state.message_source == MessageSource::construction) state.message.clear();
     const bool all = state.figure_replace_pending == 2;
     const std::vector<std::string> existing = existing_figure_files(state, state.figure_path, all);
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
@@ -359,6 +363,8 @@ void figure_export_row(AppState& state) {
     }
     same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
     if (button(tr("Cancel###figure_cancel"))) state.figure_replace_pending = 0;
+    // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
+    if (just_asked) ImGui::SetScrollHereY(1.0f);
   }
   show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
   explain(tr("The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
