@@ -153,14 +153,24 @@ void fit_viewport(Frame& frame) {
     }
   for (const Label& l : frame.labels)
     if (near(l.at)) view.add(l.at);
+  // C, or O once the camera is placed, far away: a pointer named after it, in place of the dashed line to it
+  // (the translation OP of a target at (5000, 3000) ran off the page unnamed).
+  std::vector<glm::dvec2> pointed;
   for (const Marker& m : frame.markers)
-    if (m.point == Point::target && !near(m.at)) {
+    if ((m.point == Point::target || m.point == Point::origin) && !near(m.at)) {
       const glm::dvec2 centre = 0.5 * (camera.lo + camera.hi);
       const glm::dvec2 tip = centre + 0.9 * size * glm::normalize(m.at - centre);
       frame.segments.push_back({centre, tip, Stroke::pointer});
-      frame.labels.push_back({tip, "$C$"});
+      frame.labels.push_back({tip, m.point == Point::target ? "$C$" : "$O$"});
       view.add(tip);
+      pointed.push_back(m.at);
     }
+  auto ends_at_pointed = [&](const Segment& s) {
+    return s.stroke == Stroke::construction &&
+           std::any_of(pointed.begin(), pointed.end(), [&](glm::dvec2 p) { return s.from == p || s.to == p; });
+  };
+  frame.segments.erase(std::remove_if(frame.segments.begin(), frame.segments.end(), ends_at_pointed),
+                       frame.segments.end());
   if (!frame.objects_faded) {  // the scene around: each object's box, cut to the neighbourhood
     const double around = 0.5 * view.size();
     const glm::dvec2 lo = view.lo - around, hi = view.hi + around;

@@ -265,3 +265,29 @@ TEST_CASE("numbers in French take the decimal comma and no minus zero", "[figure
   CHECK(decimal(-0.0, 1, Language::fr) == "0,0");
   CHECK(decimal(-2.25, 2, Language::fr) == "\xe2\x88\x92" "2,25");  // U+2212, not the hyphen
 }
+
+TEST_CASE("a far C or O is pointed at and named, never a dashed line running off the page", "[figure]") {
+  // The target at (5000, 3000): in (d) the translation OP ran from P off the page unnamed (O is 5800 away).
+  Orbit2D orbit;
+  orbit.target = {5000.0, 3000.0};
+  orbit.d = 6.0;
+  orbit.theta = glm::half_pi<double>();
+  const Figure figure = construction_figure_2d(scene_2d(), Camera2D(64, orbit), {});
+  for (const Frame& frame : figure.frames) {
+    const bool placed = frame.id == "d";
+    std::vector<std::string> named;  // the labels at a pointer's tip
+    for (const Segment& s : frame.segments) {
+      if (s.stroke == Stroke::pointer)
+        for (const Label& l : frame.labels)
+          if (l.at == s.to) named.push_back(l.text);
+      if (s.stroke != Stroke::construction) continue;
+      INFO("frame " << frame.id << ": a dashed line from (" << s.from.x << ", " << s.from.y << ") to (" << s.to.x
+                    << ", " << s.to.y << ")");
+      const glm::dvec2 far = placed ? glm::dvec2(0.0) : orbit.target;  // O in (d), C in (a)–(c)
+      CHECK((s.from != far && s.to != far));
+    }
+    INFO("frame " << frame.id);
+    if (!placed) CHECK(named == std::vector<std::string>{"$C$"});  // (d): C is 6 from P, in view
+    if (placed) CHECK(named == std::vector<std::string>{"$O$"});
+  }
+}
