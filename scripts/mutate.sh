@@ -142,7 +142,8 @@ mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.
 mutant figure-labels-over-objects src/figure/figure_layout.cpp 's/^constexpr double kOverObjectWeight = 20.0; /constexpr double kOverObjectWeight = 1.0; /' "$FIGURE" "^figure:"
 mutant figure-docs-slide-too-wide docs/figures.md 's/--pages --size 105x72mm --out cadres.tex/--pages --size 110x72mm --out cadres.tex/' "$FIGURE" "^figure: the docs"
 mutant figure-export-stale-wrote src/ui/panels.cpp 's/^    if (state.message_source == MessageSource::construction) state.message.clear();/    (void)0;/' "$UI" "^ui: ?Export figure"
-mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/    if ((m.point == Point::target || m.point == Point::origin) \&\& !near(m.at)) {/    if (m.point == Point::target \&\& !near(m.at)) {/' "$FIGURE" "^figure:"
+mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/m.point == Point::target || m.point == Point::origin || m.point == Point::eye/m.point == Point::target || m.point == Point::eye/' "$FIGURE" "^figure:"
+mutant figure-far-eye-unnamed src/figure/construction_figure.cpp 's/ || m.point == Point::eye) \&\& !near(m.at)) {/) \&\& !near(m.at)) {/' "$FIGURE" "^figure:"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -153,17 +153,20 @@ void fit_viewport(Frame& frame) {
     }
   for (const Label& l : frame.labels)
     if (near(l.at)) view.add(l.at);
-  // C, or O once the camera is placed, far away: a pointer named after it, in place of the dashed line to it
-  // (the translation OP of a target at (5000, 3000) ran off the page unnamed).
+  // C, O (once the camera is placed) or the eye (d_f = 50) far away: a pointer from the screen's centre named
+  // after it; for C and O in place of the dashed line to it (the translation OP of a target at (5000, 3000)
+  // ran off the page unnamed), the eye's lines to the pixels kept (they show where it lies).
+  glm::dvec2 centre = 0.5 * (camera.lo + camera.hi);
+  for (const Marker& m : frame.markers)
+    if (m.point == Point::screen_centre) centre = m.at;
   std::vector<glm::dvec2> pointed;
   for (const Marker& m : frame.markers)
-    if ((m.point == Point::target || m.point == Point::origin) && !near(m.at)) {
-      const glm::dvec2 centre = 0.5 * (camera.lo + camera.hi);
+    if ((m.point == Point::target || m.point == Point::origin || m.point == Point::eye) && !near(m.at)) {
       const glm::dvec2 tip = centre + 0.9 * size * glm::normalize(m.at - centre);
       frame.segments.push_back({centre, tip, Stroke::pointer});
-      frame.labels.push_back({tip, m.point == Point::target ? "$C$" : "$O$"});
+      frame.labels.push_back({tip, m.label});
       view.add(tip);
-      pointed.push_back(m.at);
+      if (m.point != Point::eye) pointed.push_back(m.at);
     }
   auto ends_at_pointed = [&](const Segment& s) {
     return s.stroke == Stroke::construction &&

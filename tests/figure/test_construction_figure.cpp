@@ -291,3 +291,35 @@ TEST_CASE("a far C or O is pointed at and named, never a dashed line running off
     if (placed) CHECK(named == std::vector<std::string>{"$O$"});
   }
 }
+
+TEST_CASE("an eye far off the page (d_f = 50) is pointed at and named, from the screen's centre", "[figure]") {
+  // (b) says "the eye moves back to E = (0, d_f)": at d_f = 50 E was neither drawn nor named.
+  Orbit2D orbit;
+  orbit.d = 6.0;
+  orbit.theta = glm::half_pi<double>();
+  orbit.df = 50.0;
+  const Figure f2 = construction_figure_2d(scene_2d(), Camera2D(64, orbit), {});
+  Orbit3D orbit3;
+  orbit3.df = 50.0;
+  const Figure f3 = construction_figure_3d(scene_3d(), Camera3D(16, 12, orbit3), {});
+  for (const Figure* figure : {&f2, &f3})
+    for (const Frame& frame : figure->frames) {
+      const bool canonical = &frame == &figure->frames.front();  // E₀ at distance 1: in view
+      glm::dvec2 screen_centre(0.0), eye(0.0);
+      for (const Marker& m : frame.markers) {
+        if (m.point == Point::screen_centre) screen_centre = m.at;
+        if (m.point == Point::eye) eye = m.at;
+      }
+      int pointers_to_eye = 0;
+      for (const Segment& s : frame.segments) {
+        if (s.stroke != Stroke::pointer) continue;
+        INFO("frame " << frame.id);
+        CHECK(s.from == screen_centre);  // not the middle of the camera's extent
+        const glm::dvec2 along = glm::normalize(s.to - s.from), towards = glm::normalize(eye - s.from);
+        for (const Label& l : frame.labels)
+          if (l.at == s.to && (l.text == "$E$") && glm::dot(along, towards) > 1.0 - 1e-9) ++pointers_to_eye;
+      }
+      INFO("frame " << frame.id << " of " << figure->frames.size());
+      CHECK(pointers_to_eye == (canonical ? 0 : 1));
+    }
+}
