@@ -144,6 +144,7 @@ mutant figure-docs-slide-too-wide docs/figures.md 's/--pages --size 105x72mm --o
 mutant figure-export-stale-wrote src/ui/panels.cpp 's/^    if (state.message_source == MessageSource::construction) state.message.clear();/    (void)0;/' "$UI" "^ui: ?Export figure"
 mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/m.point == Point::target || m.point == Point::origin || m.point == Point::eye/m.point == Point::target || m.point == Point::eye/' "$FIGURE" "^figure:"
 mutant figure-far-eye-unnamed src/figure/construction_figure.cpp 's/ || m.point == Point::eye) \&\& !near(m.at)) {/) \&\& !near(m.at)) {/' "$FIGURE" "^figure:"
+mutant figure-beamer-standalone-cut src/figure/tikz_file.cpp 's/(output.pages ? slide_of_the_picture(output.page) : "")/std::string()/' "$FIGURE" "^figure:"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -150,6 +150,21 @@ const char* coordinate_name(Point point) {
   return "";
 }
 
+namespace {
+
+// standalone's Beamer mode does not crop: its page is a 128 × 96 mm slide with 1 cm margins, which cut the
+// default 160 × 120 mm picture's right and bottom (the matrix) off. The slide takes the picture's size.
+std::string slide_of_the_picture(const PageSize& page) {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "\\geometry{paperwidth=%.4fbp, paperheight=%.4fbp}\n"
+                "\\setbeamersize{text margin left=0pt, text margin right=0pt}\n",
+                page.width_pt, page.height_pt);
+  return text;
+}
+
+}  // namespace
+
 std::string tikz_document(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output) {
   const bool fr = figure.language == Language::fr;
   std::string t =
@@ -161,12 +176,13 @@ std::string tikz_document(const Figure& figure, const std::vector<int>& frames, 
   if (output.standalone)
     t += "\\documentclass" + std::string(output.pages ? "[beamer]" : "[tikz]") +
          "{standalone}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n" +
-         (fr ? "\\usepackage[french]{babel}\n" : "") + "\\usepackage{tikz}\n\\usetikzlibrary{arrows.meta}\n\\begin{document}\n";
+         (fr ? "\\usepackage[french]{babel}\n" : "") + "\\usepackage{tikz}\n\\usetikzlibrary{arrows.meta}\n" +
+         (output.pages ? slide_of_the_picture(output.page) : "") + "\\begin{document}\n";
   if (output.pages) {
     std::string body;
     for (std::size_t i = 0; i < frames.size(); ++i)
       body += "\\only<" + std::to_string(i + 1) + ">{\n" + frame_commands(figure, frames[i], output) + "}\n";
-    t += output.standalone ? "\\begin{standaloneframe}\n" + picture(body, output) + "\\end{standaloneframe}\n"
+    t += output.standalone ? "\\begin{standaloneframe}[plain]\n" + picture(body, output) + "\\end{standaloneframe}\n"
                            : picture(body, output);
   } else {
     for (int index : frames) t += picture(frame_commands(figure, index, output), output);

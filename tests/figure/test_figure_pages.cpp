@@ -429,7 +429,15 @@ TEST_CASE("TikZ compiles with pdflatex: the words, the matrix and the points at 
   // Beamer overlays: a page per frame once compiled.
   const std::string compile = "cd '" + scratch.dir.string() + "' && pdflatex -interaction=nonstopmode -halt-on-error ";
   REQUIRE(std::system((compile + "slides.tex > /dev/null 2>&1").c_str()) == 0);
-  CHECK(run_output("pdfinfo '" + scratch.path("slides.pdf") + "'").find("Pages:           4") != std::string::npos);
+  const std::string info = run_output("pdfinfo '" + scratch.path("slides.pdf") + "'");
+  CHECK(info.find("Pages:           4") != std::string::npos);
+  // The slide is the picture's size (160 × 120 mm = 453.54 × 340.16 pt): Beamer's own 128 × 96 mm slide cut
+  // its right and its matrix off, and nothing ran over.
+  std::smatch size;
+  REQUIRE(std::regex_search(info, size, std::regex("Page size: +([0-9.]+) x ([0-9.]+) pts")));
+  CHECK(std::stod(size[1]) == Approx(output.page.width_pt).margin(0.5));
+  CHECK(std::stod(size[2]) == Approx(output.page.height_pt).margin(0.5));
+  CHECK(read_text(scratch.path("slides.log")).find("Overfull") == std::string::npos);
   // One picture per frame: the words and the matrix; the points where the layout put them.
   output.pages = false;
   for (int f = 0; f < kFrames2D; ++f) {
