@@ -145,6 +145,7 @@ mutant figure-export-stale-wrote src/ui/panels.cpp 's/^    if (state.message_sou
 mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/m.point == Point::target || m.point == Point::origin || m.point == Point::eye/m.point == Point::target || m.point == Point::eye/' "$FIGURE" "^figure:"
 mutant figure-far-eye-unnamed src/figure/construction_figure.cpp 's/ || m.point == Point::eye) \&\& !near(m.at)) {/) \&\& !near(m.at)) {/' "$FIGURE" "^figure:"
 mutant figure-beamer-standalone-cut src/figure/tikz_file.cpp 's/(output.pages ? slide_of_the_picture(output.page) : "")/std::string()/' "$FIGURE" "^figure:"
+mutant figure-page-without-room src/cli/figure_command.cpp 's/^  if (room < figure::kLeastDrawingShare \* output.page.height_pt) {/  if (false) {/' "$FIGURE" "cli rejects: figure a page with no room"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

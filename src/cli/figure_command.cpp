@@ -148,6 +148,18 @@ int run_figure(FigureOptions options) {
   const figure::Figure drawn = setup.dimension == 2
                                    ? figure::construction_figure_2d(setup.file.scene2d, setup.camera2d, drawing)
                                    : figure::construction_figure_3d(setup.file.scene3d, setup.camera3d, drawing);
+  // A page whose title, caption and matrix leave the drawing less than a fifth of its height: the text would
+  // run over the drawing and the labels over the matrix (80x60mm at --font-size 12 left it nothing).
+  const double room = figure::room_for_drawing_pt(drawn, output);
+  if (room < figure::kLeastDrawingShare * output.page.height_pt) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "--size: expected a page with room for the drawing (a fifth of its height, %.0f pt), got %.0f pt "
+                  "left by the title, the caption and the matrix at --font-size %g: a bigger --size, a smaller "
+                  "--font-size, or --no-title, --no-caption, --no-matrix",
+                  figure::kLeastDrawingShare * output.page.height_pt, std::max(room, 0.0), output.font_size_pt);
+    throw std::invalid_argument(text);
+  }
   const figure::WrittenFigure written = figure::write_figure(drawn, frames, output, options.out_path);
   for (std::size_t i = 0; i < written.files.size(); ++i)
     std::printf("wrote %s\n", written.files[i].c_str());
@@ -199,7 +211,8 @@ void add_figure_command(CLI::App& cli, int& exit_code) {
   command->add_flag("--standalone", options->standalone,
                     "with --format tikz: a standalone LaTeX document (pdflatex compiles it on its own)");
   flags::add_checked_option<double>(*command, "--font-size", "PT",
-                                    "the text's size in points, whatever --size (default 9; the title 1.3×)",
+                                    "the text's size in points, whatever --size (default 9; the title 1.3×); a page "
+                                    "whose title, caption and matrix leave the drawing under a fifth of it is refused",
                                     flags::number_in({4.0, 72.0}), [options](double pt) { options->font_size = pt; });
   flags::add_checked_option<double>(*command, "--dpi", "DPI",
                                     "a PNG's resolution for a --size in mm, recorded in the file (default 300)",

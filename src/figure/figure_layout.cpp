@@ -139,6 +139,7 @@ struct Bands {
   Box area;
   double caption_top, matrix_top;
   int caption_lines;
+  double room;  // the drawing's height before the least share is given to it
 };
 
 Bands bands_of(const Figure& figure, const FigureOutput& output) {
@@ -160,8 +161,9 @@ Bands bands_of(const Figure& figure, const FigureOutput& output) {
     for (const Frame& frame : figure.frames) rows = std::max(rows, frame.matrix_size);
   const double bottom = output.page.height_pt - b.margin - (rows > 0 ? rows * b.line + 0.5 * b.font : 0.0);
   b.matrix_top = bottom + 0.5 * b.font;
-  // A page too small for its text still gets a drawing (the text then runs over it).
-  const double min_height = 0.2 * output.page.height_pt;
+  // A page too small for its text still gets a drawing (the text then runs over it; the command refuses).
+  const double min_height = kLeastDrawingShare * output.page.height_pt;
+  b.room = bottom - y;
   b.area = {b.margin, y, output.page.width_pt - b.margin, std::max(bottom, y + min_height)};
   return b;
 }
@@ -386,6 +388,10 @@ TextExtent measure_text(const std::string& markup, double size, bool bold) {
     e.below = std::max(e.below, std::max(x.height + x.y_bearing, f.descent) + shift);
   }
   return e;
+}
+
+double room_for_drawing_pt(const Figure& figure, const FigureOutput& output) {
+  return bands_of(figure, output).room;
 }
 
 PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& output) {

@@ -104,6 +104,12 @@ struct PageFrame {
 // every frame has the same drawing area.
 PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& output);
 
+// The drawing's height the title, the caption and the matrix leave on the page, in points; below
+// kLeastDrawingShare of the page's height the layout gives the drawing that much anyway and the text runs
+// over it (raycam-cli figure refuses such a page).
+inline constexpr double kLeastDrawingShare = 0.2;
+double room_for_drawing_pt(const Figure& figure, const FigureOutput& output);
+
 // The width and the font's height (ascent, descent: a PDF reader's word box) above and below the baseline of a markup string set at `size` points.
 struct TextExtent {
   double width = 0.0, above = 0.0, below = 0.0;
