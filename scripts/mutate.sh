@@ -146,6 +146,7 @@ mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/m.point =
 mutant figure-far-eye-unnamed src/figure/construction_figure.cpp 's/ || m.point == Point::eye) \&\& !near(m.at)) {/) \&\& !near(m.at)) {/' "$FIGURE" "^figure:"
 mutant figure-beamer-standalone-cut src/figure/tikz_file.cpp 's/(output.pages ? slide_of_the_picture(output.page) : "")/std::string()/' "$FIGURE" "^figure:"
 mutant figure-page-without-room src/cli/figure_command.cpp 's/^  if (room < figure::kLeastDrawingShare \* output.page.height_pt) {/  if (false) {/' "$FIGURE" "cli rejects: figure a page with no room"
+mutant figure-export-rays-in-3d src/ui/panels.cpp 's/^  if (state.dimension == 2)  \/\/ the 3D steps draw no rays/  if (true)  \/\/ the 3D steps draw no rays/' "$UI" "^ui: ?Export figure"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

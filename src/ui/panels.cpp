@@ -327,8 +327,9 @@ void figure_export_row(AppState& state) {
   if (labelled(state, tr("format###figure_format"),
                [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); }))
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
-  labelled(state, tr("rays###figure_rays"),
-           [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
+  if (state.dimension == 2)  // the 3D steps draw no rays: a slider there would change nothing
+    labelled(state, tr("rays###figure_rays"),
+             [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
   checkbox(tr("matrix###figure_matrix"), &state.figure_matrix);
   int asked = button(tr("Export figure…")) ? 1 : 0;
   same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);

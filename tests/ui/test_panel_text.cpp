@@ -294,3 +294,14 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
   text.capture([&] { ui::construction_section(state); });
   CHECK(state.message == "saved scene.json");
 }
+
+TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no rays", "[ui][figure]") {
+  TextCapture text;
+  for (const char* view : {"2d", "3d"}) {
+    ui::AppState state = state_for({"--view", view});
+    const std::string shown = text.capture([&] { ui::construction_section(state); });
+    INFO(view);
+    CHECK(shown.find("Export figure") != std::string::npos);
+    CHECK((shown.find("rays") != std::string::npos) == (std::string(view) == "2d"));
+  }
+}
