@@ -5,46 +5,20 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 #include <cmath>
-#include <glm/geometric.hpp>
 #include <cstdint>
 #include <cstdio>
+#include <fstream>
+#include <glm/geometric.hpp>
 #include <memory>
 #include <png.h>
 #include <stdexcept>
+#include <unistd.h>
+
+#include "tikz_file.h"
 
 namespace raycam::figure {
 
 namespace {
-
-constexpr double kPointsPerMm = 72.0 / 25.4;
-constexpr double kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (the objects are all drawn)
-const char* const kFont = "DejaVu Sans";  // the app's font: it has θ, φ, ψ, Ω, ‖ and the arrow above u⃗
-const char* const kMonoFont = "DejaVu Sans Mono";
-
-// The page's bands: title and caption above the drawing, note and matrix below. Fixed per page size, so
-// every frame of a figure has the same drawing area and the same scale.
-struct Layout {
-  double unit;    // one point at the reference page height (340 pt ≈ 120 mm)
-  double margin;
-  double title, text, small;  // font sizes
-  double top, bottom;         // the drawing area's page y range
-  double left, right;
-};
-
-Layout layout_of(const PageSize& page, bool with_matrix) {
-  Layout l;
-  l.unit = std::min(page.width_pt, page.height_pt) / 340.0;
-  l.margin = 12.0 * l.unit;
-  l.title = 14.0 * l.unit;
-  l.text = 9.0 * l.unit;
-  l.small = 8.0 * l.unit;
-  l.left = l.margin;
-  l.right = page.width_pt - l.margin;
-  l.top = l.margin + 1.4 * l.title + 2.0 * 1.3 * l.text + 0.5 * l.margin;
-  const double matrix_rows = with_matrix ? 4.0 : 0.0;
-  l.bottom = page.height_pt - l.margin - 2.0 * 1.3 * l.small - matrix_rows * 1.3 * l.small;
-  return l;
-}
 
 struct CairoDeleter {
   void operator()(cairo_t* cr) const { cairo_destroy(cr); }
@@ -58,48 +32,37 @@ void check(cairo_status_t status, const std::string& path) {
     throw std::runtime_error(path + ": cannot write the figure (" + cairo_status_to_string(status) + ")");
 }
 
-void set_font(cairo_t* cr, const char* face, double size, bool bold = false, bool italic = false) {
-  cairo_select_font_face(cr, face, italic ? CAIRO_FONT_SLANT_ITALIC : CAIRO_FONT_SLANT_NORMAL,
-                         bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+// Files written under temporary names next to their final ones, renamed together once all are complete
+// (a reader never sees half a figure); whatever is not committed is removed.
+class PendingFiles {
+ public:
+  ~PendingFiles() {
+    for (const auto& file : files_) std::remove(file.first.c_str());
+  }
+  std::string add(const std::string& path) {
+    const std::string temporary = path + ".part" + std::to_string(::getpid());
+    files_.push_back({temporary, path});
+    return temporary;
+  }
+  void commit() {
+    for (const auto& [temporary, path] : files_)
+      if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot write the figure");
+    files_.clear();
+  }
+
+ private:
+  std::vector<std::pair<std::string, std::string>> files_;
+};
+
+// ---- drawing ----------------------------------------------------------------------------------------------
+
+void set_font(cairo_t* cr, double size, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, size);
 }
 
-double text_width(cairo_t* cr, const std::string& text) {
-  cairo_text_extents_t extents;
-  cairo_text_extents(cr, text.c_str(), &extents);
-  return extents.x_advance;
-}
-
-void text_at(cairo_t* cr, double x, double y, const std::string& text) {
-  cairo_move_to(cr, x, y);
-  cairo_show_text(cr, text.c_str());
-}
-
-// A label near a point, kept inside the drawing area: moved left when it would run past its right side.
-void label_at(cairo_t* cr, double x, double y, const std::string& text, const Layout& l) {
-  text_at(cr, std::max(l.left, std::min(x, l.right - text_width(cr, text))), y, text);
-}
-
-// Wraps between words within `width`; at most `max_lines` lines (the last one takes the rest).
-std::vector<std::string> wrap(cairo_t* cr, const std::string& text, double width, int max_lines) {
-  std::vector<std::string> lines(1);
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string candidate = lines.back().empty() ? word : lines.back() + " " + word;
-    if (!lines.back().empty() && text_width(cr, candidate) > width && int(lines.size()) < max_lines)
-      lines.push_back(word);
-    else
-      lines.back() = candidate;
-    start = end + 1;
-  }
-  return lines;
-}
-
-void arrow_head(cairo_t* cr, double x0, double y0, double x1, double y1, double size) {
-  const glm::dvec2 tip(x1, y1), along = glm::normalize(glm::dvec2(x1 - x0, y1 - y0) + 1e-300);
+void arrow_head(cairo_t* cr, glm::dvec2 from, glm::dvec2 tip, double size) {
+  const glm::dvec2 along = glm::normalize(tip - from + 1e-300);
   const glm::dvec2 side(-along.y, along.x);
   const glm::dvec2 a = tip - size * along + 0.4 * size * side, b = tip - size * along - 0.4 * size * side;
   cairo_move_to(cr, tip.x, tip.y);
@@ -109,154 +72,183 @@ void arrow_head(cairo_t* cr, double x0, double y0, double x1, double y1, double 
   cairo_fill(cr);
 }
 
-void draw_segments(cairo_t* cr, const Frame& frame, const PageTransform& to_page, const Layout& l) {
-  for (const Segment& s : frame.segments) {
-    const double x0 = to_page.x(s.from.x), y0 = to_page.y(s.from.y);
-    const double x1 = to_page.x(s.to.x), y1 = to_page.y(s.to.y);
+void line(cairo_t* cr, glm::dvec2 a, glm::dvec2 b) {
+  cairo_move_to(cr, a.x, a.y);
+  cairo_line_to(cr, b.x, b.y);
+}
+
+// Markup text (math_text.h) with its baseline's left end at `at`: scripts smaller and shifted, an arrow over
+// a vector. With `halo`, a white outline first, so that the text stays readable over lines.
+void draw_text(cairo_t* cr, const std::string& markup, glm::dvec2 at, double size, bool bold, bool halo) {
+  for (int pass = halo ? 0 : 1; pass < 2; ++pass) {
+    double x = at.x;
     cairo_save(cr);
-    switch (s.stroke) {
-      case Stroke::camera:
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_set_line_width(cr, 1.5 * l.unit);
-        break;
-      case Stroke::arrow:
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        cairo_set_line_width(cr, 1.0 * l.unit);
-        break;
-      case Stroke::construction: {
-        const double dashes[] = {3.0 * l.unit, 2.0 * l.unit};
-        cairo_set_dash(cr, dashes, 2, 0.0);
-        cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
-        cairo_set_line_width(cr, 0.6 * l.unit);
-        break;
-      }
-      case Stroke::ray:  // solid and coloured: grey but not dashed once printed in black and white
-        cairo_set_source_rgb(cr, 0.80, 0.30, 0.05);
-        cairo_set_line_width(cr, 0.7 * l.unit);
-        break;
+    if (pass == 0) {
+      cairo_set_source_rgb(cr, 1, 1, 1);
+      cairo_set_line_width(cr, 0.25 * size);
+      cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    } else {
+      cairo_set_source_rgb(cr, 0, 0, 0);
     }
-    cairo_move_to(cr, x0, y0);
-    cairo_line_to(cr, x1, y1);
-    cairo_stroke(cr);
-    if (s.stroke == Stroke::arrow) arrow_head(cr, x0, y0, x1, y1, 6.0 * l.unit);
+    for (const TextRun& run : parse_math_text(markup)) {
+      const double run_size = run.level == 0 ? size : kScriptScale * size;
+      const double y = at.y + (run.level < 0 ? kSubscriptDrop * size : run.level > 0 ? -kSuperscriptRise * size : 0.0);
+      set_font(cr, run_size, bold);
+      cairo_text_extents_t e;
+      cairo_text_extents(cr, run.text.c_str(), &e);
+      cairo_move_to(cr, x, y);
+      if (pass == 0) {
+        cairo_text_path(cr, run.text.c_str());
+        cairo_stroke(cr);
+      } else {
+        cairo_show_text(cr, run.text.c_str());
+      }
+      if (run.vector) {  // the arrow over the vector, from its ink's left to its right
+        const double over = y - std::max(-e.y_bearing, 0.72 * size) - 0.15 * size;
+        const glm::dvec2 a(x + e.x_bearing, over), b(x + e.x_bearing + std::max(e.width, 0.5 * size), over);
+        cairo_set_line_width(cr, pass == 0 ? 0.25 * size : 0.06 * size);
+        line(cr, a, b);
+        cairo_stroke(cr);
+        if (pass == 1) arrow_head(cr, a, b + glm::dvec2(0.12 * size, 0.0), 0.3 * size);
+      }
+      x += e.x_advance;
+    }
     cairo_restore(cr);
   }
 }
 
-int draw_objects(cairo_t* cr, const Frame& frame, const PageTransform& to_page, const Layout& l) {
-  for (const Disc& disc : frame.objects) {
+void draw_segments(cairo_t* cr, const PageFrame& page) {
+  for (const Segment& s : page.segments) {
+    cairo_save(cr);
+    const glm::dvec2 from = s.from, to = s.to;
+    switch (s.stroke) {
+      case Stroke::camera:
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 1.2);
+        break;
+      case Stroke::tick:  // thin: thinned ticks never merge into a bar
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 0.5);
+        break;
+      case Stroke::arrow:
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        cairo_set_line_width(cr, 0.8);
+        break;
+      case Stroke::construction:
+      case Stroke::pointer: {
+        const double dashes[] = {3.0, 2.0};
+        cairo_set_dash(cr, dashes, 2, 0.0);
+        cairo_set_source_rgb(cr, 0.45, 0.45, 0.45);
+        cairo_set_line_width(cr, s.stroke == Stroke::pointer ? 0.8 : 0.5);
+        break;
+      }
+      case Stroke::ray:  // solid and coloured: grey but not dashed once printed in black and white
+        cairo_set_source_rgb(cr, 0.80, 0.30, 0.05);
+        cairo_set_line_width(cr, 0.6);
+        break;
+    }
+    line(cr, from, to);
+    cairo_stroke(cr);
+    if (s.stroke == Stroke::arrow || s.stroke == Stroke::pointer) arrow_head(cr, from, to, 5.0);
+    cairo_restore(cr);
+  }
+}
+
+void draw_discs(cairo_t* cr, const PageFrame& page) {
+  for (const PageDisc& disc : page.discs) {
     cairo_new_path(cr);
-    cairo_arc(cr, to_page.x(disc.centre.x), to_page.y(disc.centre.y), to_page.scale * disc.radius, 0.0,
-              2.0 * M_PI);
-    if (frame.objects_faded)
+    if (disc.outline.empty()) {
+      cairo_arc(cr, disc.centre.x, disc.centre.y, disc.radius, 0.0, 2.0 * M_PI);
+    } else {
+      for (const glm::dvec2& p : disc.outline) cairo_line_to(cr, p.x, p.y);
+      cairo_close_path(cr);
+    }
+    if (page.objects_faded)
       cairo_set_source_rgba(cr, 0.5, 0.5, 0.5, 0.12);
     else
       cairo_set_source_rgba(cr, disc.colour.r / 255.0, disc.colour.g / 255.0, disc.colour.b / 255.0, 0.8);
     cairo_fill_preserve(cr);
-    cairo_set_source_rgba(cr, 0, 0, 0, frame.objects_faded ? 0.3 : 1.0);
-    cairo_set_line_width(cr, 0.6 * l.unit);
+    cairo_set_source_rgba(cr, 0, 0, 0, page.objects_faded ? 0.3 : 1.0);
+    cairo_set_line_width(cr, 0.5);
     cairo_stroke(cr);
   }
-  if (frame.objects.size() <= kObjectNamesUpTo && !frame.objects_faded) {  // names: black and white prints keep them apart
-    set_font(cr, kFont, l.small);
-    for (const Disc& disc : frame.objects) {
-      if (disc.name.empty()) continue;
-      const double r = to_page.scale * disc.radius;
-      label_at(cr, to_page.x(disc.centre.x) + 0.75 * r + 2.0 * l.unit, to_page.y(disc.centre.y) - 0.75 * r,
-               disc.name, l);
-    }
-  }
-  return int(frame.objects.size());
 }
 
-void draw_markers(cairo_t* cr, const Frame& frame, const PageTransform& to_page, const Layout& l) {
-  const double arm = 3.0 * l.unit;
-  for (const Marker& marker : frame.markers) {
-    const double x = to_page.x(marker.at.x), y = to_page.y(marker.at.y);
+void draw_markers(cairo_t* cr, const PageFrame& page) {
+  for (const PageMarker& marker : page.markers) {
     cairo_new_path(cr);
-    cairo_move_to(cr, x - arm, y);
-    cairo_line_to(cr, x + arm, y);
-    cairo_move_to(cr, x, y - arm);
-    cairo_line_to(cr, x, y + arm);
+    line(cr, marker.at - glm::dvec2(page.arm, 0.0), marker.at + glm::dvec2(page.arm, 0.0));
+    line(cr, marker.at - glm::dvec2(0.0, page.arm), marker.at + glm::dvec2(0.0, page.arm));
     cairo_set_source_rgb(cr, 0, 0, (int(marker.point) + 1) / 255.0);  // see the header
-    cairo_set_line_width(cr, 1.0 * l.unit);
+    cairo_set_line_width(cr, 0.8);
     cairo_stroke(cr);
   }
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  set_font(cr, kFont, l.text, true);
-  for (const Marker& marker : frame.markers)
-    if (!marker.label.empty())
-      label_at(cr, to_page.x(marker.at.x) + 1.5 * arm, to_page.y(marker.at.y) - 1.5 * arm, marker.label, l);
-  set_font(cr, kFont, l.small);
-  for (const Label& label : frame.labels)
-    label_at(cr, to_page.x(label.at.x) + 2.0 * l.unit, to_page.y(label.at.y) + 0.4 * l.small, label.text, l);
 }
 
-void draw_matrix(cairo_t* cr, const Frame& frame, const Layout& l, double y, Language language) {
-  set_font(cr, kMonoFont, l.small);
-  const std::string name = "M = ";
-  const double row_height = 1.3 * l.small;
-  text_at(cr, l.left, y + row_height * (frame.matrix_size - 1) / 2.0, name);
-  const double x = l.left + text_width(cr, name);
-  for (int r = 0; r < frame.matrix_size; ++r) {
-    std::string row = "[";
-    for (int c = 0; c < frame.matrix_size; ++c) {
-      std::string number = decimal(frame.matrix[r][c], 3, language);
-      row += std::string(std::max<std::size_t>(1, 9 - number.size()), ' ') + number;
+void draw_labels(cairo_t* cr, const PageFrame& page) {
+  for (const PlacedText& label : page.labels)
+    if (label.leader) {
+      cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+      cairo_set_line_width(cr, 0.4);
+      line(cr, label.anchor, glm::dvec2(std::clamp(label.anchor.x, label.box.left, label.box.right),
+                                        std::clamp(label.anchor.y, label.box.top, label.box.bottom)));
+      cairo_stroke(cr);
     }
-    text_at(cr, x, y + r * row_height, row + " ]");
+  for (const PlacedText& label : page.labels) draw_text(cr, label.markup, label.at, label.size, label.bold, true);
+}
+
+void draw_matrix(cairo_t* cr, const PageFrame& page) {
+  if (page.cells.empty()) return;
+  draw_text(cr, page.matrix_name.markup, page.matrix_name.at, page.matrix_name.size, false, false);
+  for (const MatrixCell& cell : page.cells) {
+    const double width = measure_text(cell.markup, page.font_size).width;
+    draw_text(cr, cell.markup, {cell.right - width, cell.baseline}, page.font_size, false, false);
   }
+  const Box& b = page.matrix_brackets;  // brackets spanning the rows
+  const double serif = 0.3 * page.font_size;
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 0.6);
+  cairo_move_to(cr, b.left + serif, b.top);
+  cairo_line_to(cr, b.left, b.top);
+  cairo_line_to(cr, b.left, b.bottom);
+  cairo_line_to(cr, b.left + serif, b.bottom);
+  cairo_move_to(cr, b.right - serif, b.top);
+  cairo_line_to(cr, b.right, b.top);
+  cairo_line_to(cr, b.right, b.bottom);
+  cairo_line_to(cr, b.right - serif, b.bottom);
+  cairo_stroke(cr);
 }
 
 // Paints one frame on `cr` in page points; returns the number of objects drawn.
-int paint_frame(cairo_t* cr, const Figure& figure, int index, const PageSize& page, const FigureOutput& output) {
-  const Frame& frame = figure.frames[std::size_t(index)];
-  const Layout l = layout_of(page, output.matrix);
-  const PageTransform to_page = page_transform(frame, page, output.matrix);
+int paint_frame(cairo_t* cr, const Figure& figure, int index, const FigureOutput& output) {
+  const PageFrame page = lay_out_frame(figure, index, output);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  set_font(cr, kFont, l.title, true);
-  text_at(cr, l.left, l.margin + l.title, frame.title);
-  set_font(cr, kFont, l.text);
-  double y = l.margin + 1.4 * l.title + 1.1 * l.text;
-  for (const std::string& line : wrap(cr, frame.caption, l.right - l.left, 2)) {
-    text_at(cr, l.left, y, line);
-    y += 1.3 * l.text;
-  }
-
+  if (!page.title.markup.empty())
+    draw_text(cr, page.title.markup, page.title.at, page.title.size, true, false);
+  for (const PlacedText& line : page.caption) draw_text(cr, line.markup, line.at, line.size, false, false);
   cairo_save(cr);
-  cairo_rectangle(cr, l.left, l.top, l.right - l.left, l.bottom - l.top);
+  cairo_rectangle(cr, page.area.left, page.area.top, page.area.width(), page.area.height());
   cairo_clip(cr);
-  const int drawn = draw_objects(cr, frame, to_page, l);
-  draw_segments(cr, frame, to_page, l);
-  draw_markers(cr, frame, to_page, l);
+  draw_discs(cr, page);
+  draw_segments(cr, page);
+  draw_markers(cr, page);
+  draw_labels(cr, page);
   cairo_restore(cr);
-
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  y = l.bottom + 1.1 * l.small;
-  if (!frame.note.empty()) {
-    set_font(cr, kFont, l.small, false, true);
-    for (const std::string& line : wrap(cr, frame.note, l.right - l.left, 2)) {
-      text_at(cr, l.left, y, line);
-      y += 1.3 * l.small;
-    }
-  } else {
-    y += 2.0 * 1.3 * l.small;
-  }
-  if (output.matrix) draw_matrix(cr, frame, l, y, figure.language);
-  return drawn;
+  draw_matrix(cr, page);
+  return int(page.discs.size());
 }
 
 // cairo_surface_write_to_png spends ~85 % of a 300 dpi frame in libpng's adaptive filters and zlib's
 // default level; a line drawing on white compresses as well with the "up" filter at a low level, ~5× faster.
-void write_png(cairo_surface_t* surface, const std::string& path) {
+// The pHYs chunk carries the dpi, so that a word processor places the figure at its size.
+void write_png(cairo_surface_t* surface, const std::string& temporary, const std::string& path, double dpi) {
   cairo_surface_flush(surface);
   const int width = cairo_image_surface_get_width(surface), height = cairo_image_surface_get_height(surface);
   const int stride = cairo_image_surface_get_stride(surface);
   const unsigned char* data = cairo_image_surface_get_data(surface);
   std::vector<unsigned char> row(std::size_t(width) * 3);  // before setjmp: nothing to unwind after it
-  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "wb"), &std::fclose);
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
   if (!file) throw std::runtime_error(path + ": cannot open for writing");
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
@@ -267,6 +259,8 @@ void write_png(cairo_surface_t* surface, const std::string& path) {
   png_init_io(png, file.get());
   png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  const auto per_metre = png_uint_32(std::lround(dpi / 0.0254));
+  png_set_pHYs(png, info, per_metre, per_metre, PNG_RESOLUTION_METER);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
   png_set_compression_level(png, 3);
   png_write_info(png, info);
@@ -284,24 +278,51 @@ void write_png(cairo_surface_t* surface, const std::string& path) {
   if (std::fflush(file.get()) != 0) throw std::runtime_error(path + ": cannot write the PNG");
 }
 
-std::string file_for(const std::string& path, const std::string& id, Format format, bool one_file) {
-  if (one_file) return path;
+bool one_file(const std::vector<int>& frames, const FigureOutput& output) {
+  return frames.size() == 1 || (output.pages && (output.format == Format::pdf || output.format == Format::tikz));
+}
+
+std::string file_for(const std::string& path, const std::string& id, Format format, bool one) {
+  if (one) return path;
   const std::string ext = std::string(".") + extension(format);
   const bool has_ext = path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0;
   const std::string stem = has_ext ? path.substr(0, path.size() - ext.size()) : path;
   return stem + "-" + id + ext;
 }
 
-}  // namespace
-
-int PageSize::width_px() const { return std::max(1, int(std::lround(width_pt * pixels_per_point))); }
-int PageSize::height_px() const { return std::max(1, int(std::lround(height_pt * pixels_per_point))); }
-
-PageSize page_in_mm(double width, double height) {
-  return {width * kPointsPerMm, height * kPointsPerMm, 300.0 / 72.0};
+void write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.flush();
+  if (!out) throw std::runtime_error(path + ": cannot write the figure");
 }
 
-PageSize page_in_px(int width, int height) { return {0.75 * width, 0.75 * height, 1.0 / 0.75}; }
+// One cairo file: SVG, PDF (all `frames` as pages) or PNG.
+void write_cairo_file(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
+                      const std::string& file, const std::string& shown_name, WrittenFigure& written) {
+  const PageSize& page = output.page;
+  Surface surface;
+  if (output.format == Format::svg)
+    surface.reset(cairo_svg_surface_create(file.c_str(), page.width_pt, page.height_pt));
+  else if (output.format == Format::pdf)
+    surface.reset(cairo_pdf_surface_create(file.c_str(), page.width_pt, page.height_pt));
+  else
+    surface.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, page.width_px(), page.height_px()));
+  check(cairo_surface_status(surface.get()), shown_name);
+  Context cr(cairo_create(surface.get()));
+  if (output.format == Format::png)
+    cairo_scale(cr.get(), page.width_px() / page.width_pt, page.height_px() / page.height_pt);
+  for (int index : frames) {
+    written.objects_drawn.push_back(paint_frame(cr.get(), figure, index, output));
+    if (output.format == Format::pdf) cairo_show_page(cr.get());
+  }
+  check(cairo_status(cr.get()), shown_name);
+  if (output.format == Format::png) write_png(surface.get(), file, shown_name, page.dpi());
+  cairo_surface_finish(surface.get());
+  check(cairo_surface_status(surface.get()), shown_name);
+}
+
+}  // namespace
 
 const char* extension(Format format) {
   switch (format) {
@@ -311,59 +332,38 @@ const char* extension(Format format) {
       return "pdf";
     case Format::png:
       return "png";
+    case Format::tikz:
+      return "tex";
   }
   return "";
 }
 
-PageTransform page_transform(const Frame& frame, const PageSize& page, bool with_matrix) {
-  const Layout l = layout_of(page, with_matrix);
-  const glm::dvec2 extent = frame.plane_max - frame.plane_min;
-  PageTransform t;
-  t.scale = std::min((l.right - l.left) / extent.x, (l.bottom - l.top) / extent.y);
-  const glm::dvec2 middle = 0.5 * (frame.plane_min + frame.plane_max);
-  t.x0 = 0.5 * (l.left + l.right) - t.scale * middle.x;
-  t.y0 = 0.5 * (l.top + l.bottom) + t.scale * middle.y;
-  return t;
+std::vector<std::string> figure_files(const Figure& figure, const std::vector<int>& frames,
+                                      const FigureOutput& output, const std::string& path) {
+  if (one_file(frames, output)) return {path};
+  std::vector<std::string> files;
+  for (int index : frames) files.push_back(file_for(path, figure.frames[std::size_t(index)].id, output.format, false));
+  return files;
 }
 
 WrittenFigure write_figure(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
                            const std::string& path) {
   WrittenFigure written;
-  const PageSize& page = output.page;
-  const bool one_file = frames.size() == 1 || (output.pages && output.format == Format::pdf);
-  if (one_file && output.format == Format::pdf) {
-    Surface surface(cairo_pdf_surface_create(path.c_str(), page.width_pt, page.height_pt));
-    Context cr(cairo_create(surface.get()));
-    for (int index : frames) {
-      written.objects_drawn.push_back(paint_frame(cr.get(), figure, index, page, output));
-      cairo_show_page(cr.get());
+  PendingFiles pending;
+  const std::vector<std::string> files = figure_files(figure, frames, output, path);
+  const bool one = files.size() == 1;
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::vector<int> these = one ? frames : std::vector<int>{frames[i]};
+    const std::string temporary = pending.add(files[i]);
+    if (output.format == Format::tikz) {
+      write_text_file(temporary, tikz_document(figure, these, output));
+      for (int index : these) written.objects_drawn.push_back(int(figure.frames[std::size_t(index)].objects.size()));
+    } else {
+      write_cairo_file(figure, these, output, temporary, files[i], written);
     }
-    check(cairo_status(cr.get()), path);
-    cairo_surface_finish(surface.get());
-    check(cairo_surface_status(surface.get()), path);
-    written.files.push_back(path);
-    return written;
   }
-  for (int index : frames) {
-    const std::string file = file_for(path, figure.frames[std::size_t(index)].id, output.format, one_file);
-    Surface surface;
-    if (output.format == Format::svg)
-      surface.reset(cairo_svg_surface_create(file.c_str(), page.width_pt, page.height_pt));
-    else if (output.format == Format::pdf)
-      surface.reset(cairo_pdf_surface_create(file.c_str(), page.width_pt, page.height_pt));
-    else
-      surface.reset(cairo_image_surface_create(CAIRO_FORMAT_RGB24, page.width_px(), page.height_px()));
-    check(cairo_surface_status(surface.get()), file);
-    Context cr(cairo_create(surface.get()));
-    if (output.format == Format::png)
-      cairo_scale(cr.get(), page.width_px() / page.width_pt, page.height_px() / page.height_pt);
-    written.objects_drawn.push_back(paint_frame(cr.get(), figure, index, page, output));
-    check(cairo_status(cr.get()), file);
-    if (output.format == Format::png) write_png(surface.get(), file);
-    cairo_surface_finish(surface.get());
-    check(cairo_surface_status(surface.get()), file);
-    written.files.push_back(file);
-  }
+  pending.commit();
+  written.files = files;
   return written;
 }
 

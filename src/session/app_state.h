@@ -135,6 +135,10 @@ struct AppState {
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   std::string export_path = "raycam-colour-map.png";
   std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
+  int figure_format = 0;       // its format: 0 SVG, 1 PDF, 2 PNG, 3 TikZ (sets figure_path's extension)
+  int figure_rays = 5;         // primary rays per 2D frame, as raycam-cli figure --rays
+  bool figure_matrix = true;   // each frame's matrix printed
+  int figure_replace_pending = 0;  // Export figure asked to replace existing files: 1 the step, 2 every step
 };
 
 // Sets the one message on screen (replacing any other).

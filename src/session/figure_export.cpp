@@ -1,5 +1,6 @@
 #include "figure_export.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "figure_files.h"
@@ -7,31 +8,53 @@
 
 namespace raycam::ui {
 
+namespace {
+
+struct Export {
+  figure::Figure drawn;
+  std::vector<int> frames;
+  figure::FigureOutput output;
+  std::string path;  // absolute
+};
+
+// The figure of the camera on screen, the frames asked for and the output the path's extension says.
+Export prepare(const AppState& state, const std::string& path, bool all_steps) {
+  const int format = figure_format_of(path);
+  if (format < 0)
+    throw std::invalid_argument(trf("%s: expected a name ending in .svg, .pdf, .png or .tex", path.c_str()));
+  Export e;
+  e.path = std::filesystem::absolute(path).lexically_normal().string();
+  e.output.format = figure::Format(format);  // kFigureExtensions is figure::Format's order
+  e.output.pages = all_steps && e.output.format == figure::Format::pdf;
+  e.output.matrix = state.figure_matrix;
+  const figure::FigureOptions options{current_language() == Language::fr ? figure::Language::fr
+                                                                         : figure::Language::en,
+                                      state.figure_rays};
+  e.drawn = state.dimension == 2 ? figure::construction_figure_2d(state.file.scene2d, state.camera2d, options)
+                                 : figure::construction_figure_3d(state.file.scene3d, state.camera3d, options);
+  // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
+  const int count = int(e.drawn.frames.size());
+  if (all_steps)
+    for (int i = 0; i < count; ++i) e.frames.push_back(i);
+  else
+    e.frames.push_back(state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1));
+  return e;
+}
+
+}  // namespace
+
 std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
                                                     bool all_steps) {
-  figure::FigureOutput output;
-  bool known = false;
-  for (figure::Format format : {figure::Format::svg, figure::Format::pdf, figure::Format::png}) {
-    const std::string ext = std::string(".") + figure::extension(format);
-    if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0) {
-      output.format = format;
-      known = true;
-    }
-  }
-  if (!known) throw std::invalid_argument(trf("%s: expected a name ending in .svg, .pdf or .png", path.c_str()));
-  output.pages = all_steps && output.format == figure::Format::pdf;
-  const figure::FigureOptions options{current_language()};
-  const figure::Figure drawn =
-      state.dimension == 2 ? figure::construction_figure_2d(state.file.scene2d, state.camera2d, options)
-                           : figure::construction_figure_3d(state.file.scene3d, state.camera3d, options);
-  // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
-  const int count = int(drawn.frames.size());
-  std::vector<int> frames;
-  if (all_steps)
-    for (int i = 0; i < count; ++i) frames.push_back(i);
-  else
-    frames.push_back(state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1));
-  return figure::write_figure(drawn, frames, output, path).files;
+  const Export e = prepare(state, path, all_steps);
+  return figure::write_figure(e.drawn, e.frames, e.output, e.path).files;
+}
+
+std::vector<std::string> existing_figure_files(const AppState& state, const std::string& path, bool all_steps) {
+  const Export e = prepare(state, path, all_steps);
+  std::vector<std::string> existing;
+  for (const std::string& file : figure::figure_files(e.drawn, e.frames, e.output, e.path))
+    if (std::filesystem::exists(file)) existing.push_back(file);
+  return existing;
 }
 
 }  // namespace raycam::ui

@@ -1,5 +1,6 @@
 // "Export figure…" in the construction panel: the figures of `raycam-cli figure` (src/figure) for the camera
-// and scene on screen, in the window's language. The format follows the file name's extension.
+// and scene on screen, in the window's language. The format follows the file name's extension, which the
+// panel's format choice sets.
 #pragma once
 
 #include <string>
@@ -9,10 +10,33 @@
 
 namespace raycam::ui {
 
-// The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf or .png; all
-// steps go to PATH-a.svg … or to one PDF of pages). Returns the files written; throws std::invalid_argument
-// for a name without one of those extensions, std::runtime_error when a file cannot be written.
+// The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf, .png or .tex
+// for TikZ; all steps go to PATH-a.svg … or to one PDF of pages) with state.figure_rays rays and the matrix
+// when state.figure_matrix. Returns the files written, as absolute paths; throws std::invalid_argument for a
+// name without one of those extensions, std::runtime_error when a file cannot be written.
 std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
                                                     bool all_steps);
+
+// The files among those the export would write that exist already (the panel asks before replacing them).
+std::vector<std::string> existing_figure_files(const AppState& state, const std::string& path, bool all_steps);
+
+// The extensions of the formats, in the order of AppState::figure_format (raycam-cli figure's --format).
+inline constexpr const char* kFigureExtensions[] = {".svg", ".pdf", ".png", ".tex"};
+
+// The index of `path`'s figure extension, or -1.
+inline int figure_format_of(const std::string& path) {
+  for (int i = 0; i < 4; ++i) {
+    const std::string ext = kFigureExtensions[i];
+    if (path.size() > ext.size() && path.compare(path.size() - ext.size(), ext.size(), ext) == 0) return i;
+  }
+  return -1;
+}
+
+// `path` with the extension of format `format`, replacing a figure extension (or added to the name).
+inline std::string with_figure_extension(const std::string& path, int format) {
+  const int now = figure_format_of(path);
+  const std::string stem = now < 0 ? path : path.substr(0, path.size() - std::string(kFigureExtensions[now]).size());
+  return stem + kFigureExtensions[format];
+}
 
 }  // namespace raycam::ui

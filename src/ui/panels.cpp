@@ -318,25 +318,68 @@ void camera_section(AppState& state) {
 }
 
 // ---- construction of M_d -------------------------------------------------------------------------------
-// The course figures of this camera (raycam-cli figure): the step shown, or every step.
+// The course figures of this camera (raycam-cli figure): the step shown, or every step, in the format, with
+// the rays and the matrix chosen here; existing files are replaced only after asking, as Save as does.
+void export_figure_now(AppState& state, bool all) {
+  try {
+    const std::vector<std::string> files = export_construction_figure(state, state.figure_path, all);
+    set_message(state, MessageSource::construction, false,
+                files.size() == 1 ? trf("wrote %s", files[0].c_str())
+                                  : trf("wrote %d files: %s …", int(files.size()), files[0].c_str()));
+  } catch (const std::exception& error) {
+    set_message(state, MessageSource::construction, true, tr_reason(error.what()));
+  }
+}
+
 void figure_export_row(AppState& state) {
   labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
-  bool all = false;
-  bool export_now = button(tr("Export figure…"));
+  static const char* const kFormats[] = {"SVG", "PDF", "PNG", "TikZ"};  // figure_export.h's order
+  if (figure_format_of(state.figure_path) >= 0) state.figure_format = figure_format_of(state.figure_path);
+  if (labelled(state, tr("format###figure_format"),
+               [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); }))
+    state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
+  if (state.dimension == 2)  // the 3D steps draw no rays: a slider there would change nothing
+    labelled(state, tr("rays###figure_rays"),
+             [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
+  checkbox(tr("matrix###figure_matrix"), &state.figure_matrix);
+  int asked = button(tr("Export figure…")) ? 1 : 0;
   same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (button(tr("Export every step"))) export_now = all = true;
-  if (export_now) {
+  if (button(tr("Export every step"))) asked = 2;
+  if (asked != 0) {
+    state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
+    state.figure_replace_pending = 0;
     try {
-      std::string written;
-      for (const std::string& file : export_construction_figure(state, state.figure_path, all))
-        written += (written.empty() ? "" : ", ") + file;
-      set_message(state, MessageSource::construction, false, trf("wrote %s", written.c_str()));
+      if (existing_figure_files(state, state.figure_path, asked == 2).empty())
+        export_figure_now(state, asked == 2);
+      else
+        state.figure_replace_pending = asked;
     } catch (const std::exception& error) {
       set_message(state, MessageSource::construction, true, tr_reason(error.what()));
     }
   }
+  const bool just_asked = asked != 0 && state.figure_replace_pending != 0;
+  if (state.figure_replace_pending != 0) {  // asked before replacing, as Save as
+    // The question replaces the last export's "wrote …": beside "… already exists. Replace it?" (here or on
+    // the line above the status at lecture sizes) it read as done.
+    if (state.message_source == MessageSource::construction) state.message.clear();
+    const bool all = state.figure_replace_pending == 2;
+    const std::vector<std::string> existing = existing_figure_files(state, state.figure_path, all);
+    ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
+    ImGui::TextWrapped("%s", trf("%s already exists. Replace it?", existing.empty() ? state.figure_path.c_str()
+                                                                                    : existing[0].c_str())
+                                 .c_str());
+    ImGui::PopStyleColor();
+    if (button(tr("Replace###figure_replace"))) {
+      state.figure_replace_pending = 0;
+      export_figure_now(state, all);
+    }
+    same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
+    if (button(tr("Cancel###figure_cancel"))) state.figure_replace_pending = 0;
+    // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
+    if (just_asked) ImGui::SetScrollHereY(1.0f);
+  }
   show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
-  explain(tr("SVG, PDF or PNG, after the name's extension; the frames as in the handout (docs/figures.md)."));
+  explain(tr("The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
 }
 
 void construction_section(AppState& state) {

@@ -10,4 +10,6 @@ std::vector<std::string> export_construction_figure(const AppState&, const std::
   throw std::runtime_error("Export figure needs the desktop app (or raycam-cli figure)");
 }
 
+std::vector<std::string> existing_figure_files(const AppState&, const std::string&, bool) { return {}; }
+
 }  // namespace raycam::ui

@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "../scratch_dir.h"
+#include "figure_test_support.h"
 #include "construction_figure.h"
 #include "figure_files.h"
 #include "raycam/ray_caster.h"
@@ -23,58 +24,9 @@
 
 using namespace raycam;
 using namespace raycam::figure;
+using namespace raycam::figure_tests;
 
 namespace {
-
-const Scene2D& scene_2d() {
-  static const Scene2D scene = [] {
-    Scene2D s;
-    s.circles = {{{-1.0, -0.5}, 0.8, {230, 60, 50}, "red"}, {{1.5, 0.8}, 0.5, {60, 190, 80}, "green"}};
-    return s;
-  }();
-  return scene;
-}
-
-const Scene3D& scene_3d() {
-  static const Scene3D scene = [] {
-    Scene3D s;
-    s.spheres = {{{0.0, 0.0, 0.0}, 1.0, {230, 60, 50}, "red"}, {{2.0, 1.0, 0.5}, 0.5, {60, 90, 230}, "blue"}};
-    return s;
-  }();
-  return scene;
-}
-
-// Cameras that exercise every quadrant of θ, a target away from the origin and d_f ≠ 1.
-std::vector<Camera2D> cameras_2d() {
-  std::vector<Camera2D> cameras;
-  for (double theta_deg : {90.0, 0.0, 200.0, -35.0}) {
-    Orbit2D orbit;
-    orbit.target = {2.0, -1.0};
-    orbit.d = 5.0;
-    orbit.theta = glm::radians(theta_deg);
-    orbit.df = 1.7;
-    cameras.emplace_back(16, orbit);
-  }
-  return cameras;
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string run_output(const std::string& command) {
-  std::string out;
-  if (FILE* pipe = popen(command.c_str(), "r")) {
-    char buffer[4096];
-    std::size_t n;
-    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-    pclose(pipe);
-  }
-  return out;
-}
 
 // The crosses of the SVG by kind (figure_files.h: kind k stroked rgb(0, 0, k+1)): page position of each
 // cross's centre, the middle of its horizontal arm "M x0 y L x1 y".
@@ -102,7 +54,7 @@ void require_svg_points(const Figure& figure, int index, const std::vector<Expec
   const std::string file = scratch.path("frame.svg");
   write_figure(figure, {index}, output, file);
   const auto crosses = crosses_in_svg(read_text(file));
-  const PageTransform to_page = page_transform(figure.frames[std::size_t(index)], output.page, output.matrix);
+  const PageTransform to_page = lay_out_frame(figure, index, output).to_page;
   for (const Expected& e : expected) {
     INFO("frame " << index << ", point kind " << int(e.point));
     REQUIRE(crosses.count(int(e.point)) == 1);
@@ -121,11 +73,15 @@ TEST_CASE("each 2D frame is the handout's factors so far, (c) and (d) the core's
     INFO("theta " << glm::degrees(camera.orbit().theta));
     // (a) the identity.
     CHECK(frame_matrix_2d(camera, 0) == glm::dmat3(1.0));
-    // (b) H(1, d_f) then the first rotation: u0 = (0, -1) is scaled to length d_f and turned onto +x, the
-    // direction from which R(φ_v) measures v's angle.
+    // (b) H(1, d_f): u0 = (0, -1) is scaled to length d_f (the app's step 1, the core's construction_step(1)).
     const glm::dvec2 u_b = transform_vector(frame_matrix_2d(camera, 1), kCanonicalView2D);
-    CHECK(u_b.x == Approx(camera.orbit().df));
-    CHECK(u_b.y == Approx(0.0).margin(1e-12));
+    CHECK(u_b.x == Approx(0.0).margin(1e-12));
+    CHECK(u_b.y == Approx(-camera.orbit().df));
+    // The first rotation R(ψ0) turns u0 onto +x, the direction from which R(φ_v) measures v's angle: φ_v,
+    // printed in (c)'s caption, is v's angle θ + π.
+    const double phi_v = view_angle_phi_v(camera);
+    CHECK(std::cos(phi_v) == Approx(std::cos(camera.orbit().theta + glm::pi<double>())).margin(1e-12));
+    CHECK(std::sin(phi_v) == Approx(std::sin(camera.orbit().theta + glm::pi<double>())).margin(1e-12));
     // (c) the camera looks along v = PC/‖PC‖, and the product is the core's R(α)·H.
     const glm::dmat3 c = frame_matrix_2d(camera, 2);
     const glm::dvec2 v = glm::normalize(camera.orbit().target - camera.screen_centre());
@@ -216,7 +172,7 @@ TEST_CASE("every 2D frame's rays leave the core's pixels along its rays and stop
       std::vector<Segment> rays, ticks;
       for (const Segment& s : frame.segments) {
         if (s.stroke == Stroke::ray) rays.push_back(s);
-        if (s.stroke == Stroke::camera && !(near(s.from, ends[0], size) && near(s.to, ends[1], size))) ticks.push_back(s);
+        if (s.stroke == Stroke::tick) ticks.push_back(s);
       }
       // The rays: evenly spread over the pixels, both ends included, each from P_k along u_k.
       REQUIRE(int(rays.size()) == options.rays);
@@ -244,9 +200,8 @@ TEST_CASE("every 2D frame's rays leave the core's pixels along its rays and stop
       // up to 64.
       std::vector<int> ticked;
       for (const Segment& tick : ticks) {
-        const glm::dvec2 middle = 0.5 * (tick.from + tick.to);
-        int k = 0;
-        while (k < n && !near(middle, transform_point(m, camera.canonical_pixel(k)), size)) ++k;
+        int k = 0;  // a tick starts at its pixel (the page draws it at a fixed length across the screen)
+        while (k < n && !near(tick.from, transform_point(m, camera.canonical_pixel(k)), size)) ++k;
         CHECK(k < n);
         ticked.push_back(k);
         CHECK(std::abs(glm::dot(glm::normalize(tick.to - tick.from), glm::normalize(ends[1] - ends[0]))) < 1e-9);
@@ -255,21 +210,29 @@ TEST_CASE("every 2D frame's rays leave the core's pixels along its rays and stop
       CHECK(std::count(ticked.begin(), ticked.end(), n - 1) == 1);
       if (n <= 64) CHECK(int(ticked.size()) == n);
     }
-    // The placed frame's SVG draws those rays where its page transform puts them.
+    // The placed frame's SVG draws those rays where its page transform puts them: each drawn ray is the
+    // plane's ray moved to the page, cut near the drawing area (the clip does the rest): its ends lie on the moved
+    // ray, between its ends.
     FigureOutput output;
     const std::string file = scratch.path("rays.svg");
     write_figure(figure, {3}, output, file);
     const auto drawn = rays_in_svg(read_text(file));
     const Frame& placed = figure.frames[3];
-    const PageTransform to_page = page_transform(placed, output.page, output.matrix);
+    const PageFrame laid_out = lay_out_frame(figure, 3, output);
     std::vector<Segment> rays;
     for (const Segment& s : placed.segments)
       if (s.stroke == Stroke::ray) rays.push_back(s);
     REQUIRE(drawn.size() == rays.size());
     for (std::size_t i = 0; i < rays.size(); ++i) {
-      for (const auto& [page, plane] : {std::pair{drawn[i].first, rays[i].from}, std::pair{drawn[i].second, rays[i].to}}) {
-        CHECK(page.x == Approx(to_page.x(plane.x)).margin(0.01));
-        CHECK(page.y == Approx(to_page.y(plane.y)).margin(0.01));
+      const glm::dvec2 a = laid_out.to_page(rays[i].from), b = laid_out.to_page(rays[i].to);
+      const double length = glm::length(b - a);
+      REQUIRE(length > 0.0);
+      const glm::dvec2 along = (b - a) / length;
+      for (const glm::dvec2 page : {drawn[i].first, drawn[i].second}) {
+        const glm::dvec2 rel = page - a;
+        CHECK(std::abs(rel.x * along.y - rel.y * along.x) < 0.01);  // on the moved ray's line (SVG: 2 decimals)
+        CHECK(glm::dot(rel, along) > -0.01);
+        CHECK(glm::dot(rel, along) < length + 0.01);
       }
     }
   }
@@ -292,7 +255,7 @@ TEST_CASE("a PNG figure fills each object in the scene's colour (red, green and 
     int width = 0, height = 0, channels = 0;
     unsigned char* pixels = stbi_load(file.c_str(), &width, &height, &channels, 3);
     REQUIRE(pixels);
-    const PageTransform to_page = page_transform(placed, output.page, output.matrix);
+    const PageTransform to_page = lay_out_frame(figure, 3, output).to_page;
     const double px_per_pt = double(output.page.width_px()) / output.page.width_pt;
     auto at = [&](double x, double y) {
       const std::size_t i = (std::size_t(std::lround(y)) * std::size_t(width) + std::size_t(std::lround(x))) * 3;
@@ -369,15 +332,19 @@ TEST_CASE("a PDF of pages holds one page per frame, the language's titles and th
       CHECK(text.find(std::string(fr ? "frame (" : "cadre (") + letter + ")") == std::string::npos);
     }
     CHECK(text.find(fr ? "homothétie" : "scaling") != std::string::npos);
-    // Every frame's matrix, row by row, with 3 decimals and the language's decimal separator.
+    // Every frame's matrix, row by row, with 3 decimals, the language's decimal separator and the minus sign.
     for (int f = 0; f < 4; ++f) {
       const glm::dmat3 m = frame_matrix_2d(camera, f);
       for (int r = 0; r < 3; ++r) {
         // The numbers in order, any spacing between them (the layout's).
-        std::string pattern = "\\[";
-        for (int c = 0; c < 3; ++c) pattern += " +" + std::regex_replace(decimal(m[c][r], 3, language),
-                                                                          std::regex("[.]"), "\\.");
-        pattern += " +\\]";
+        std::string pattern;
+        for (int c = 0; c < 3; ++c) {
+          char number[32];
+          std::snprintf(number, sizeof number, "%.3f", std::abs(m[c][r]) < 5e-4 ? 0.0 : m[c][r]);
+          std::string expected = std::regex_replace(number, std::regex("[.]"), fr ? "," : "\\.");
+          expected = std::regex_replace(expected, std::regex("-"), "\xe2\x88\x92");  // U+2212
+          pattern += (c == 0 ? "" : " +") + expected;
+        }
         INFO("frame " << f << " row " << r << ": " << pattern);
         CHECK(std::regex_search(text, std::regex(pattern)));
       }
@@ -414,17 +381,33 @@ TEST_CASE("several frames go to one file each, named after the frame", "[figure]
   for (const std::string& file : written.files) CHECK(read_text(file).rfind("<?xml", 0) == 0);
 }
 
-TEST_CASE("a scene of 2000 objects has every object drawn in every frame", "[figure]") {
+TEST_CASE("a scene of 2000 objects has every object that reaches the drawing drawn", "[figure]") {
   const test::ScratchDir scratch("figure-many");
   Scene2D scene;
   std::mt19937 random(7);
   std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
-  for (int i = 0; i < 2000; ++i)
-    scene.circles.push_back({{coordinate(random), coordinate(random) - 25.0}, 0.2, {200, 100, 50}, ""});
+  for (int i = 0; i < 2000; ++i)  // around the target: all in (d)'s view, some out of (a)'s
+    scene.circles.push_back({{2.0 + 0.1 * coordinate(random), -1.0 + 0.1 * coordinate(random)}, 0.02, {200, 100, 50}, ""});
   const Figure figure = construction_figure_2d(scene, cameras_2d()[0], {});
   FigureOutput output;
   const auto written = write_figure(figure, {0, 3}, output, scratch.path("many.svg"));
-  CHECK(written.objects_drawn == std::vector<int>{2000, 2000});
+  REQUIRE(written.objects_drawn.size() == 2);
+  CHECK(written.objects_drawn[1] == 2000);
+  // (a): at least every object inside the drawing area, at most those within 20 pt of it (stroke ends).
+  const PageFrame a = lay_out_frame(figure, 0, output);
+  int inside = 0, near = 0;
+  for (const Circle& c : scene.circles) {
+    const glm::dvec2 p = a.to_page(c.centre);
+    const double r = a.to_page.scale * c.radius;
+    const double dx = std::max({a.area.left - p.x, 0.0, p.x - a.area.right});
+    const double dy = std::max({a.area.top - p.y, 0.0, p.y - a.area.bottom});
+    inside += std::hypot(dx, dy) <= r;
+    near += std::hypot(std::max(dx - 20.0, 0.0), std::max(dy - 20.0, 0.0)) <= r;
+  }
+  CHECK(inside > 100);
+  CHECK(inside < 2000);
+  CHECK(written.objects_drawn[0] >= inside);
+  CHECK(written.objects_drawn[0] <= near);
   // Counted again in the file: the placed frame fills each object in its colour.
   const std::string svg = read_text(written.files[1]);
   std::size_t filled = 0;
@@ -438,4 +421,63 @@ TEST_CASE("numbers in French take the decimal comma and no minus zero", "[figure
   CHECK(decimal(1.5, 3, Language::en) == "1.500");
   CHECK(decimal(-1e-9, 3, Language::en) == "0.000");
   CHECK(decimal(-0.0, 1, Language::fr) == "0,0");
+  CHECK(decimal(-2.25, 2, Language::fr) == "\xe2\x88\x92" "2,25");  // U+2212, not the hyphen
+}
+
+TEST_CASE("a far C or O is pointed at and named, never a dashed line running off the page", "[figure]") {
+  // The target at (5000, 3000): in (d) the translation OP ran from P off the page unnamed (O is 5800 away).
+  Orbit2D orbit;
+  orbit.target = {5000.0, 3000.0};
+  orbit.d = 6.0;
+  orbit.theta = glm::half_pi<double>();
+  const Figure figure = construction_figure_2d(scene_2d(), Camera2D(64, orbit), {});
+  for (const Frame& frame : figure.frames) {
+    const bool placed = frame.id == "d";
+    std::vector<std::string> named;  // the labels at a pointer's tip
+    for (const Segment& s : frame.segments) {
+      if (s.stroke == Stroke::pointer)
+        for (const Label& l : frame.labels)
+          if (l.at == s.to) named.push_back(l.text);
+      if (s.stroke != Stroke::construction) continue;
+      INFO("frame " << frame.id << ": a dashed line from (" << s.from.x << ", " << s.from.y << ") to (" << s.to.x
+                    << ", " << s.to.y << ")");
+      const glm::dvec2 far = placed ? glm::dvec2(0.0) : orbit.target;  // O in (d), C in (a)–(c)
+      CHECK((s.from != far && s.to != far));
+    }
+    INFO("frame " << frame.id);
+    if (!placed) CHECK(named == std::vector<std::string>{"$C$"});  // (d): C is 6 from P, in view
+    if (placed) CHECK(named == std::vector<std::string>{"$O$"});
+  }
+}
+
+TEST_CASE("an eye far off the page (d_f = 50) is pointed at and named, from the screen's centre", "[figure]") {
+  // (b) says "the eye moves back to E = (0, d_f)": at d_f = 50 E was neither drawn nor named.
+  Orbit2D orbit;
+  orbit.d = 6.0;
+  orbit.theta = glm::half_pi<double>();
+  orbit.df = 50.0;
+  const Figure f2 = construction_figure_2d(scene_2d(), Camera2D(64, orbit), {});
+  Orbit3D orbit3;
+  orbit3.df = 50.0;
+  const Figure f3 = construction_figure_3d(scene_3d(), Camera3D(16, 12, orbit3), {});
+  for (const Figure* figure : {&f2, &f3})
+    for (const Frame& frame : figure->frames) {
+      const bool canonical = &frame == &figure->frames.front();  // E₀ at distance 1: in view
+      glm::dvec2 screen_centre(0.0), eye(0.0);
+      for (const Marker& m : frame.markers) {
+        if (m.point == Point::screen_centre) screen_centre = m.at;
+        if (m.point == Point::eye) eye = m.at;
+      }
+      int pointers_to_eye = 0;
+      for (const Segment& s : frame.segments) {
+        if (s.stroke != Stroke::pointer) continue;
+        INFO("frame " << frame.id);
+        CHECK(s.from == screen_centre);  // not the middle of the camera's extent
+        const glm::dvec2 along = glm::normalize(s.to - s.from), towards = glm::normalize(eye - s.from);
+        for (const Label& l : frame.labels)
+          if (l.at == s.to && (l.text == "$E$") && glm::dot(along, towards) > 1.0 - 1e-9) ++pointers_to_eye;
+      }
+      INFO("frame " << frame.id << " of " << figure->frames.size());
+      CHECK(pointers_to_eye == (canonical ? 0 : 1));
+    }
 }

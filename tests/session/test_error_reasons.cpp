@@ -24,6 +24,7 @@
 #include "check_report.h"
 #include "check_run.h"
 #include "figure_export.h"
+#include <unistd.h>
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/exact_bar.h"
@@ -211,7 +212,8 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   const std::string png_figure = scratch.path("no-such-folder/figure.png");
   add(thrown_by([&] { ui::export_construction_figure(app, png_figure, false); }), {png_figure});
   const std::string full = scratch.path("full.png");
-  fs::create_symlink("/dev/full", full);  // opens, then every write fails
+  // A figure is written under a temporary name (figure_files.h) made to open /dev/full: every write fails.
+  fs::create_symlink("/dev/full", full + ".part" + std::to_string(::getpid()));
   add(thrown_by([&] { ui::export_construction_figure(app, full, false); }), {full});
 
   // ---- io: the scene file against the command line's flags ----

@@ -3,11 +3,14 @@
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include "../scratch_dir.h"
 #include "app_state_for.h"
 #include "figure_export.h"
+#include "raycam/transform.h"
 #include "text.h"
 
 using namespace raycam;
@@ -65,4 +68,43 @@ TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
   const auto files = ui::export_construction_figure(state, scratch.path("steps.png"), true);
   REQUIRE(files.size() == 6);
   CHECK(files.back() == scratch.path("steps-5.png"));
+}
+
+TEST_CASE("Export figure draws the matrix on screen, with the panel's format, rays and matrix choice", "[ui][figure]") {
+  const test::ScratchDir scratch("figure-export-panel");
+  ui::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
+  struct Restore {
+    ui::Language language = ui::current_language();
+    ~Restore() { ui::set_language(language); }
+  } restore;
+  ui::set_language(ui::Language::en);
+  // The format chosen in the panel sets the name's extension.
+  CHECK(ui::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
+  CHECK(ui::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
+  CHECK(ui::figure_format_of("a.png") == 2);
+
+  state.construction_step = 1;  // on screen: construction_step(1) = H(1, d_f)
+  state.figure_rays = 3;
+  const std::string path = scratch.path("sub/../step.tex");
+  std::filesystem::create_directories(scratch.path("sub"));
+  CHECK(ui::existing_figure_files(state, path, false).empty());
+  const auto files = ui::export_construction_figure(state, path, false);
+  REQUIRE(files == std::vector<std::string>{scratch.path("step.tex")});  // the full path, normalised
+  CHECK(ui::existing_figure_files(state, path, false) == files);
+  std::ifstream in(files[0]);
+  const std::string tex((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(tex.find("frame (b)") != std::string::npos);
+  // The matrix the panel shows for step 1 (H: d_f on the diagonal), and as many rays as chosen.
+  const glm::dmat3 shown = construction_step(state.camera2d.placement(), 1);
+  CHECK(shown[1][1] == Approx(1.25));
+  CHECK(tex.find("\\begin{pmatrix} 1.000 & 0.000 & 0.000 \\\\ 0.000 & 1.250 & 0.000 \\\\ 0.000 & 0.000 & 1.000 "
+                 "\\end{pmatrix}") != std::string::npos);
+  std::size_t rays = 0;
+  for (std::size_t at = 0; (at = tex.find("\\draw[ray]", at)) != std::string::npos; ++at) ++rays;
+  CHECK(rays == 3);
+  state.figure_matrix = false;
+  CHECK(ui::export_construction_figure(state, path, false) == files);
+  std::ifstream again(files[0]);
+  const std::string without((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  CHECK(without.find("pmatrix") == std::string::npos);
 }

@@ -276,3 +276,32 @@ TEST_CASE("the French window shows no English word", "[ui][text]") {
     }
   }
 }
+
+TEST_CASE("Export figure's replace question is not shown beside the last export's 'wrote'", "[ui][figure]") {
+  // Exporting twice: the second click asks before replacing. The first export's "wrote …" stayed under the
+  // question, so the panel said both "… already exists. Replace it?" and "wrote …" at once.
+  TextCapture text;
+  ui::AppState state = state_for({"--view", "2d"});
+  state.figure_path = "raycam-figure.svg";
+  state.figure_replace_pending = 1;
+  ui::set_message(state, ui::MessageSource::construction, false, "wrote /somewhere/raycam-figure.svg");
+  const std::string asking = text.capture([&] { ui::construction_section(state); });
+  CHECK(asking.find("already exists. Replace it?") != std::string::npos);
+  CHECK(asking.find("wrote") == std::string::npos);
+  CHECK(state.message.empty());  // nor on the line above the status (lecture sizes): the question replaced it
+  // Another panel's message stays.
+  ui::set_message(state, ui::MessageSource::files, false, "saved scene.json");
+  text.capture([&] { ui::construction_section(state); });
+  CHECK(state.message == "saved scene.json");
+}
+
+TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no rays", "[ui][figure]") {
+  TextCapture text;
+  for (const char* view : {"2d", "3d"}) {
+    ui::AppState state = state_for({"--view", view});
+    const std::string shown = text.capture([&] { ui::construction_section(state); });
+    INFO(view);
+    CHECK(shown.find("Export figure") != std::string::npos);
+    CHECK((shown.find("rays") != std::string::npos) == (std::string(view) == "2d"));
+  }
+}

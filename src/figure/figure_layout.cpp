@@ -1,0 +1,427 @@
+#include "figure_layout.h"
+
+#include <algorithm>
+#include <cairo.h>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <memory>
+
+namespace raycam::figure {
+
+const char* const kFont = "DejaVu Sans";
+
+namespace {
+
+constexpr double kPointsPerMm = 72.0 / 25.4;
+constexpr double kLineSpacing = 1.25;       // a text line's height, in font sizes
+constexpr double kCaptionSpacing = 1.45;    // a caption's lines: room for the arrows over vectors and scripts
+constexpr double kTitleScale = 1.3;         // the title's size, in font sizes
+constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar; keep every k-th
+constexpr double kTickHalfLength = 2.5;     // pt
+constexpr double kOverObjectWeight = 20.0;  // a label over an object costs more than one over a ray
+constexpr std::size_t kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (all objects drawn)
+
+// One cairo context for measuring text (a 1×1 image: only the font metrics are used).
+cairo_t* measuring_context() {
+  struct Deleter {
+    void operator()(cairo_t* cr) const {
+      cairo_surface_destroy(cairo_get_target(cr));
+      cairo_destroy(cr);
+    }
+  };
+  thread_local std::unique_ptr<cairo_t, Deleter> cr(cairo_create(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1)));
+  return cr.get();
+}
+
+// ---- geometry --------------------------------------------------------------------------------------------
+
+Box grown(const Box& b, double by) { return {b.left - by, b.top - by, b.right + by, b.bottom + by}; }
+
+bool inside(const Box& b, glm::dvec2 p) { return p.x >= b.left && p.x <= b.right && p.y >= b.top && p.y <= b.bottom; }
+
+// The parameters [t0, t1] of segment a-b inside the box (Liang–Barsky clipping); false when it misses.
+bool clip_segment(glm::dvec2 a, glm::dvec2 b, const Box& box, double& t0, double& t1) {
+  t0 = 0.0;
+  t1 = 1.0;
+  const glm::dvec2 d = b - a;
+  const double p[] = {-d.x, d.x, -d.y, d.y};
+  const double q[] = {a.x - box.left, box.right - a.x, a.y - box.top, box.bottom - a.y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+// The length of segment a-b inside the box.
+double length_inside(glm::dvec2 a, glm::dvec2 b, const Box& box) {
+  double t0, t1;
+  return clip_segment(a, b, box, t0, t1) ? (t1 - t0) * glm::length(b - a) : 0.0;
+}
+
+// The part of the box a disc covers, sampled on a 5 × 3 grid (exact enough to rank candidate places).
+double disc_cover(const PageDisc& disc, const Box& box) {
+  const double nx = std::clamp(disc.centre.x, box.left, box.right), ny = std::clamp(disc.centre.y, box.top, box.bottom);
+  if (glm::length(glm::dvec2(nx, ny) - disc.centre) >= disc.radius) return 0.0;
+  int inside = 0;
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const glm::dvec2 p(box.left + (i + 0.5) / 5.0 * box.width(), box.top + (j + 0.5) / 3.0 * box.height());
+      inside += glm::length(p - disc.centre) < disc.radius;
+    }
+  return inside / 15.0 * box.width() * box.height();
+}
+
+glm::dvec2 nearest_point(const Box& b, glm::dvec2 p) {
+  return {std::clamp(p.x, b.left, b.right), std::clamp(p.y, b.top, b.bottom)};
+}
+
+// ---- text -----------------------------------------------------------------------------------------------
+
+void set_font(cairo_t* cr, double size, bool bold) {
+  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size);
+}
+
+PlacedText text_at(const std::string& markup, glm::dvec2 at, double size, bool bold) {
+  const TextExtent e = measure_text(markup, size, bold);
+  PlacedText t;
+  t.markup = markup;
+  t.at = at;
+  t.size = size;
+  t.bold = bold;
+  t.box = {at.x, at.y - e.above, at.x + e.width, at.y + e.below};
+  t.anchor = at;
+  return t;
+}
+
+// Splits at spaces outside $…$ (a formula is never broken), within `width`.
+std::vector<std::string> wrap(const std::string& markup, double width, double size) {
+  std::vector<std::string> words(1);
+  bool math = false;
+  for (std::size_t i = 0; i < markup.size(); ++i) {
+    const char c = markup[i];
+    if (c == '\\' && i + 1 < markup.size()) {
+      words.back() += markup.substr(i, 2);
+      ++i;
+      continue;
+    }
+    if (c == '$') math = !math;
+    if (c == ' ' && !math)
+      words.emplace_back();
+    else
+      words.back() += c;
+  }
+  std::vector<std::string> lines(1);
+  for (const std::string& word : words) {
+    const std::string candidate = lines.back().empty() ? word : lines.back() + " " + word;
+    if (!lines.back().empty() && measure_text(candidate, size).width > width)
+      lines.push_back(word);
+    else
+      lines.back() = candidate;
+  }
+  return lines;
+}
+
+// ---- the bands ------------------------------------------------------------------------------------------
+
+struct Bands {
+  double margin, font, line;
+  Box area;
+  double caption_top, matrix_top;
+  int caption_lines;
+  double room;  // the drawing's height before the least share is given to it
+};
+
+Bands bands_of(const Figure& figure, const FigureOutput& output) {
+  Bands b;
+  b.font = output.font_size_pt;
+  b.line = kLineSpacing * b.font;
+  b.margin = std::max(4.0, b.font);
+  const double width = output.page.width_pt - 2.0 * b.margin;
+  double y = b.margin;
+  if (output.title) y += 1.5 * kTitleScale * b.font;
+  b.caption_top = y;
+  b.caption_lines = 0;
+  if (output.caption)
+    for (const Frame& frame : figure.frames)
+      b.caption_lines = std::max(b.caption_lines, int(wrap(frame.caption, width, b.font).size()));
+  y += b.caption_lines * kCaptionSpacing * b.font + 0.5 * b.font;
+  int rows = 0;
+  if (output.matrix)
+    for (const Frame& frame : figure.frames) rows = std::max(rows, frame.matrix_size);
+  const double bottom = output.page.height_pt - b.margin - (rows > 0 ? rows * b.line + 0.5 * b.font : 0.0);
+  b.matrix_top = bottom + 0.5 * b.font;
+  // A page too small for its text still gets a drawing (the text then runs over it; the command refuses).
+  const double min_height = kLeastDrawingShare * output.page.height_pt;
+  b.room = bottom - y;
+  b.area = {b.margin, y, output.page.width_pt - b.margin, std::max(bottom, y + min_height)};
+  return b;
+}
+
+PageTransform transform_of(const Frame& frame, const Box& area) {
+  const glm::dvec2 extent = glm::max(frame.plane_max - frame.plane_min, glm::dvec2(1e-300));
+  PageTransform t;
+  t.scale = std::min(area.width() / extent.x, area.height() / extent.y);
+  const glm::dvec2 middle = 0.5 * (frame.plane_min + frame.plane_max);
+  t.x0 = 0.5 * (area.left + area.right) - t.scale * middle.x;
+  t.y0 = 0.5 * (area.top + area.bottom) + t.scale * middle.y;
+  return t;
+}
+
+// ---- primitives -----------------------------------------------------------------------------------------
+
+// The pixels' ticks, every k-th (the first and the last always) so that they stay kMinTickGap apart.
+void add_segments(const Frame& frame, const PageTransform& to_page, PageFrame& page) {
+  std::vector<Segment> ticks;
+  // Cut to the drawing area (and a little more, for the strokes' ends): a ray of 4·10⁵ units would overflow
+  // cairo's fixed-point coordinates, and lines nobody sees would only weigh on the file.
+  const Box kept = grown(page.area, 20.0);
+  for (const Segment& s : frame.segments) {
+    Segment moved{to_page(s.from), to_page(s.to), s.stroke};
+    if (s.stroke == Stroke::tick) {  // a fixed length across the screen, whatever the scale
+      const glm::dvec2 across = kTickHalfLength * glm::normalize(moved.to - moved.from + 1e-300);
+      if (inside(kept, moved.from)) ticks.push_back({moved.from - across, moved.from + across, Stroke::tick});
+      continue;
+    }
+    double t0, t1;
+    if (!clip_segment(moved.from, moved.to, kept, t0, t1)) continue;
+    const glm::dvec2 along = moved.to - moved.from;
+    moved.to = moved.from + t1 * along;
+    moved.from = moved.from + t0 * along;
+    page.segments.push_back(moved);
+  }
+  if (ticks.empty()) return;
+  const double gap = ticks.size() > 1 ? glm::length(ticks[1].from - ticks[0].from) : kMinTickGap;
+  const std::size_t every = std::max<std::size_t>(1, std::size_t(std::ceil(kMinTickGap / std::max(gap, 1e-12) - 1e-9)));
+  const std::size_t last = ticks.size() - 1;
+  for (std::size_t i = 0; i <= last; ++i)
+    if (i == last || (i % every == 0 && (i == 0 || last - i >= every)))
+      page.segments.push_back(ticks[i]);
+}
+
+// The objects that reach the drawing area (the others would only weigh on the file and overflow TeX's
+// dimensions); a disc too big for the page's numbers becomes the polygon of its visible part.
+void add_discs(const Frame& frame, PageFrame& page) {
+  constexpr double kHugeRadius = 1e4;  // pt: beyond, the outline is a polygon
+  const Box kept = grown(page.area, 20.0);
+  const glm::dvec2 middle(0.5 * (kept.left + kept.right), 0.5 * (kept.top + kept.bottom));
+  const double half_diagonal = 0.5 * std::hypot(kept.width(), kept.height());
+  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+    const Disc& disc = frame.objects[i];
+    PageDisc d{page.to_page(disc.centre), page.to_page.scale * disc.radius, disc.colour, {}};
+    if (glm::length(nearest_point(kept, d.centre) - d.centre) > d.radius) continue;  // misses the area
+    const double distance = glm::length(d.centre - middle);
+    if (distance + half_diagonal < d.radius && d.radius > kHugeRadius) {  // covers it all
+      d.outline = {{kept.left, kept.top}, {kept.right, kept.top}, {kept.right, kept.bottom}, {kept.left, kept.bottom}};
+    } else if (d.radius > kHugeRadius) {  // its rim crosses the area: the arc there, closed inside the disc
+      const glm::dvec2 towards = (middle - d.centre) / std::max(distance, 1e-300);
+      const double angle = std::atan2(towards.y, towards.x);
+      const double span = 2.0 * half_diagonal / d.radius;
+      constexpr int kSteps = 64;
+      for (int k = 0; k <= kSteps; ++k) {
+        const double a = angle - span + 2.0 * span * k / kSteps;
+        d.outline.push_back(d.centre + d.radius * glm::dvec2(std::cos(a), std::sin(a)));
+      }
+      d.outline.push_back(d.outline.back() - 4.0 * half_diagonal * towards);
+      d.outline.insert(d.outline.begin(), d.outline.front() - 4.0 * half_diagonal * towards);
+    }
+    page.discs.push_back(std::move(d));
+  }
+}
+
+// ---- label placement ------------------------------------------------------------------------------------
+
+struct Request {
+  std::string markup;
+  glm::dvec2 anchor;
+  bool bold;
+};
+
+class Placer {
+ public:
+  Placer(PageFrame& page, double font) : page_(page), font_(font) {
+    for (const Segment& s : page.segments) lines_.push_back({s.from, s.to});
+    for (const PageMarker& m : page.markers) {  // the crosses
+      lines_.push_back({m.at - glm::dvec2(page.arm, 0.0), m.at + glm::dvec2(page.arm, 0.0)});
+      lines_.push_back({m.at - glm::dvec2(0.0, page.arm), m.at + glm::dvec2(0.0, page.arm)});
+    }
+  }
+
+  void place(const Request& request) {
+    const TextExtent e = measure_text(request.markup, font_, request.bold);
+    const double gap = page_.arm + 0.25 * font_;
+    static const glm::dvec2 kDirections[] = {{1, -1}, {1, 0}, {-1, -1}, {0, -1}, {1, 1}, {-1, 0}, {0, 1}, {-1, 1}};
+    const double kRings[] = {1.0, 2.5, 4.5};
+    double best_cost = std::numeric_limits<double>::infinity();
+    PlacedText best;
+    for (int ring = 0; ring < 3; ++ring)
+      for (int d = 0; d < 8; ++d) {
+        glm::dvec2 dir = kDirections[d];
+        if (dir.x != 0.0 && dir.y != 0.0) dir *= 0.7071;
+        const glm::dvec2 p = request.anchor + kRings[ring] * gap * dir;
+        const double ax = 0.5 * (1.0 - kDirections[d].x), ay = 0.5 * (1.0 + kDirections[d].y);
+        const double h = e.above + e.below;
+        const Box b{p.x - ax * e.width, p.y - ay * h, p.x - ax * e.width + e.width, p.y - ay * h + h};
+        const double cost = cost_of(b) + 3.0 * font_ * font_ * ring + 0.05 * d;
+        if (cost < best_cost) {
+          best_cost = cost;
+          best = PlacedText{request.markup, {b.left, b.top + e.above}, font_, request.bold, b, ring > 0, request.anchor};
+        }
+      }
+    if (best.leader) lines_.push_back({request.anchor, nearest_point(best.box, request.anchor)});
+    page_.labels.push_back(best);
+  }
+
+ private:
+  double cost_of(const Box& box) const {
+    const Box halo = grown(box, 0.8);
+    double cost = 0.0;
+    // A clearance of a third of the font size: LaTeX's fonts (TikZ) set a label a little wider than DejaVu.
+    for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 0.3 * font_), box);
+    for (const auto& [a, b] : lines_) cost += 4.0 * font_ * length_inside(a, b, halo);
+    // A label's halo over a placed object's disc erases that part of it; over the grey backdrop of the
+    // construction frames it hides nothing that matters.
+    const double disc_weight = page_.objects_faded ? 1.0 : kOverObjectWeight;
+    for (const PageDisc& disc : page_.discs) cost += disc_weight * disc_cover(disc, box);
+    const Box& area = page_.area;
+    cost += 1000.0 * (box.width() * box.height() - overlap_area(box, area));
+    return cost;
+  }
+
+  PageFrame& page_;
+  double font_;
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> lines_;
+};
+
+
+void place_labels(const Frame& frame, PageFrame& page, double font) {
+  Placer placer(page, font);
+  std::vector<Request> requests;
+  for (const Marker& m : frame.markers)  // the points first: they matter most
+    if (!m.label.empty()) requests.push_back({m.label, page.to_page(m.at), true});
+  for (const Label& l : frame.labels) requests.push_back({l.text, page.to_page(l.at), false});
+  if (!frame.objects_faded && frame.objects.size() <= kObjectNamesUpTo)
+    for (const Disc& disc : frame.objects) {
+      if (disc.name.empty()) continue;
+      // An object's name is anchored at its rim towards the upper right, where the disc leaves room.
+      const glm::dvec2 rim = page.to_page(disc.centre) + 0.7071 * page.to_page.scale * disc.radius * glm::dvec2(1.0, -1.0);
+      requests.push_back({escape_markup(disc.name), rim, false});
+    }
+  for (const Request& r : requests)
+    if (inside(page.area, r.anchor)) placer.place(r);
+}
+
+// ---- the matrix -----------------------------------------------------------------------------------------
+
+void lay_out_matrix(const Frame& frame, const Bands& bands, Language language, PageFrame& page) {
+  const int n = frame.matrix_size;
+  std::vector<std::string> cells;
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) cells.push_back("$" + matrix_entry(frame.matrix[std::size_t(r)][std::size_t(c)], language) + "$");
+  std::vector<double> widths(std::size_t(n), 0.0);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c)
+      widths[std::size_t(c)] = std::max(widths[std::size_t(c)], measure_text(cells[std::size_t(r * n + c)], bands.font).width);
+  const std::string name = "$M_d =$";
+  const double top = bands.matrix_top;
+  const double middle = top + 0.5 * n * bands.line;
+  const PlacedText name_text = text_at(name, {bands.area.left, middle + 0.35 * bands.font}, bands.font, false);
+  page.matrix_name = name_text;
+  const double bracket = 0.4 * bands.font, column_gap = 1.2 * bands.font;
+  double x = name_text.box.right + 0.4 * bands.font + bracket;
+  page.matrix_brackets.left = x - bracket;
+  page.matrix_brackets.top = top;
+  page.matrix_brackets.bottom = top + n * bands.line;
+  for (int c = 0; c < n; ++c) {
+    x += (c == 0 ? 0.0 : column_gap) + widths[std::size_t(c)];
+    for (int r = 0; r < n; ++r)
+      page.cells.push_back({cells[std::size_t(r * n + c)], x, top + (r + 0.78) * bands.line});
+  }
+  page.matrix_brackets.right = x + bracket;
+  // Row by row, as a reader (and pdftotext) reads them.
+  std::stable_sort(page.cells.begin(), page.cells.end(),
+                   [](const MatrixCell& a, const MatrixCell& b) { return a.baseline < b.baseline; });
+}
+
+}  // namespace
+
+double overlap_area(const Box& a, const Box& b) {
+  const double w = std::min(a.right, b.right) - std::max(a.left, b.left);
+  const double h = std::min(a.bottom, b.bottom) - std::max(a.top, b.top);
+  return w > 0.0 && h > 0.0 ? w * h : 0.0;
+}
+
+int PageSize::width_px() const { return std::max(1, int(std::lround(width_pt * pixels_per_point))); }
+int PageSize::height_px() const { return std::max(1, int(std::lround(height_pt * pixels_per_point))); }
+
+PageSize page_in_mm(double width, double height, double dpi) {
+  return {width * kPointsPerMm, height * kPointsPerMm, dpi / 72.0};
+}
+
+PageSize page_in_px(int width, int height) { return {0.75 * width, 0.75 * height, 1.0 / 0.75}; }
+
+TextExtent measure_text(const std::string& markup, double size, bool bold) {
+  cairo_t* cr = measuring_context();
+  TextExtent e;
+  for (const TextRun& run : parse_math_text(markup)) {
+    const double run_size = run.level == 0 ? size : kScriptScale * size;
+    const double shift = run.level < 0 ? kSubscriptDrop * size : run.level > 0 ? -kSuperscriptRise * size : 0.0;
+    set_font(cr, run_size, bold);
+    cairo_text_extents_t x;
+    cairo_text_extents(cr, run.text.c_str(), &x);
+    cairo_font_extents_t f;  // the font's ascent and descent, as a PDF reader boxes a word
+    cairo_font_extents(cr, &f);
+    e.width += x.x_advance;
+    double above = std::max(-x.y_bearing, f.ascent) - shift;
+    if (run.vector) above = std::max(above, 0.72 * size + 0.3 * size - shift);  // the arrow over it
+    e.above = std::max(e.above, above);
+    e.below = std::max(e.below, std::max(x.height + x.y_bearing, f.descent) + shift);
+  }
+  return e;
+}
+
+double room_for_drawing_pt(const Figure& figure, const FigureOutput& output) {
+  return bands_of(figure, output).room;
+}
+
+PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& output) {
+  const Frame& frame = figure.frames[std::size_t(index)];
+  const Bands bands = bands_of(figure, output);
+  PageFrame page;
+  page.area = bands.area;
+  page.font_size = bands.font;
+  page.arm = 0.35 * bands.font;
+  page.to_page = transform_of(frame, bands.area);
+  page.objects_faded = frame.objects_faded;
+  add_discs(frame, page);
+  add_segments(frame, page.to_page, page);
+  const Box kept = grown(page.area, 20.0);
+  for (const Marker& m : frame.markers)  // a point far out of view is left out (its label too)
+    if (inside(kept, page.to_page(m.at))) page.markers.push_back({m.point, page.to_page(m.at)});
+  place_labels(frame, page, bands.font);
+
+  if (output.title)
+    page.title = (text_at(frame.title, {bands.margin, bands.margin + kTitleScale * bands.font},
+                                 kTitleScale * bands.font, true));
+  if (output.caption) {
+    double y = bands.caption_top + 1.1 * bands.font;
+    for (const std::string& line : wrap(frame.caption, bands.area.width(), bands.font)) {
+      page.caption.push_back(text_at(line, {bands.margin, y}, bands.font, false));
+      y += kCaptionSpacing * bands.font;
+    }
+  }
+  if (output.matrix) lay_out_matrix(frame, bands, figure.language, page);
+  return page;
+}
+
+}  // namespace raycam::figure
