@@ -23,7 +23,7 @@ volatile std::sig_atomic_t quit_signal = 0;  // SIGINT / SIGTERM: leave the loop
 extern "C" void on_quit_signal(int) { quit_signal = 1; }
 
 struct Callbacks {  // what the callbacks reach through the window's user pointer
-  ui::AppState* state;
+  session::AppState* state;
   GlfwHost* host;
 };
 Callbacks& callbacks_of(GLFWwindow* window) {
@@ -34,10 +34,10 @@ void note(GLFWwindow* window) { callbacks_of(window).host->note_event(); }
 void key_callback(GLFWwindow* window, int key, int, int action, int) {
   note(window);
   if (action != GLFW_PRESS) return;
-  ui::AppState& state = *callbacks_of(window).state;
+  session::AppState& state = *callbacks_of(window).state;
   if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
   if (key == GLFW_KEY_F11) state.request_fullscreen = true;
-  if (key == GLFW_KEY_F12) ui::request_screenshot(state);  // numbered, as the Screenshot button
+  if (key == GLFW_KEY_F12) session::request_screenshot(state);  // numbered, as the Screenshot button
   if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
     state.request_quit = true;
 }
@@ -57,7 +57,7 @@ void queued_char_callback(GLFWwindow* window, unsigned int character) {
 void drop_callback(GLFWwindow* window, int count, const char** paths) {
   note(window);
   // A bad file shows its error in the status line and keeps the current scene.
-  if (count > 0) ui::open_scene(*callbacks_of(window).state, paths[0]);
+  if (count > 0) session::open_scene(*callbacks_of(window).state, paths[0]);
 }
 
 // Every other event only wakes the loop (ImGui's backend installs its own after these and chains to them).
@@ -91,7 +91,7 @@ void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
 
 bool GlfwHost::should_close() const { return quit_signal || glfwWindowShouldClose(window_); }
 
-ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
+ui::FramebufferSize GlfwHost::begin(const session::AppState& state) {
   // A key's changes held since the last frame, before this frame's events (key_queue.h).
   for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
     if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
@@ -125,7 +125,7 @@ gl::RgbaImage GlfwHost::read_back() const {
   return gl::read_framebuffer(size_.width, size_.height);
 }  // back buffer
 
-int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppState& state) {
+int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state) {
   glfwSetErrorCallback([](int, const char* message) { std::fprintf(stderr, "raycam: GLFW: %s\n", message); });
   if (!glfwInit()) {
     std::fprintf(stderr,

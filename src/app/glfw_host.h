@@ -23,7 +23,7 @@ struct ScriptedRun {
 
 // Opens the window, runs the loop until the user quits (window closed, Ctrl+Q, SIGINT or SIGTERM), and
 // returns the process's exit code. Prints one line at exit: frames drawn, casts and the CPU time used.
-int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppState& state);
+int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state);
 
 class GlfwHost : public ui::FrameHost {
  public:
@@ -33,7 +33,7 @@ class GlfwHost : public ui::FrameHost {
   static constexpr double kIdleWaitSeconds = 0.25;
 
   GlfwHost(GLFWwindow* window, bool scripted) : window_(window), scripted_(scripted) {}
-  ui::FramebufferSize begin(const ui::AppState& state) override;
+  ui::FramebufferSize begin(const session::AppState& state) override;
   void present() override;
   gl::RgbaImage read_back() const override;
 

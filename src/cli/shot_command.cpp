@@ -33,7 +33,7 @@ double process_cpu_ms() {
 
 // Every id is -1 or a real object, every colour is the background or that object's: a NaN anywhere in the
 // camera would break this (NaN compares false and leaves garbage ids or all-background maps with hits).
-bool colour_map_is_consistent(const ui::AppState& state) {
+bool colour_map_is_consistent(const session::AppState& state) {
   const bool is_2d = state.dimension == 2;
   const std::size_t count = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
   const Rgb8 background = is_2d ? state.file.scene2d.background : state.file.scene3d.background;
@@ -47,7 +47,7 @@ bool colour_map_is_consistent(const ui::AppState& state) {
   return true;
 }
 
-int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) {
+int soak(session::AppState& state, headless::HeadlessRenderer& renderer, int frames) {
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times, cpu_times;
@@ -88,13 +88,13 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
   return bad_frames == 0 ? 0 : 1;
 }
 struct ShotOptions {
-  ui::AppOptions app;
+  session::AppOptions app;
   std::string out_path = "raycam-shot.png";
   int frames = 3, soak_frames = 0;
 };
 
 int run_shot(const ShotOptions& options) {
-  ui::AppState state = ui::make_app_state(options.app);
+  session::AppState state = session::make_app_state(options.app);
   headless::HeadlessRenderer renderer(options.app.width, options.app.height);
   if (options.soak_frames > 0) return soak(state, renderer, options.soak_frames);
   const auto start = std::chrono::steady_clock::now();

@@ -5,7 +5,7 @@
 
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 ViewSetup checked_view_setup(const ViewFlags& flags) {
@@ -67,4 +67,4 @@ AppState make_app_state(const AppOptions& options) {
   return state;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

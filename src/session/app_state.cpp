@@ -13,7 +13,7 @@
 #include "raycam/view_setup.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.file = setup.file;
@@ -297,4 +297,4 @@ int construction_steps(const AppState& state) {
   return state.dimension == 2 ? kConstructionSteps2D : kConstructionSteps3D;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -18,7 +18,7 @@
 #include "raycam/view_setup.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // A widget's rectangle on screen, in pixels: (x0, y0) its top-left corner, (x1, y1) its bottom-right.
 struct WidgetRect {
@@ -199,4 +199,4 @@ CameraPreset active_preset(const AppState& state);
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
 int construction_steps(const AppState& state);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -15,7 +15,7 @@
 #include "student_process.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // ---- the worker ----------------------------------------------------------------------------------------
 struct CheckJob {
@@ -214,4 +214,4 @@ std::string check_header(const CheckProgress& progress) {
   return trf("CHECK: %s", check::text(language_code(current_language()), check::status_name(r.status)));
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -10,7 +10,7 @@
 #include "app_state.h"
 #include "case_verdict.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 inline constexpr double kQuietSeconds = 0.3;   // after the last camera or scene change
 inline constexpr double kCheckTimeout = 10.0;  // per run, as `raycam-cli check`'s default
@@ -89,4 +89,4 @@ class CameraCheck {
   double changed_at_ = 0;
 };
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -5,7 +5,7 @@
 #include "figure_files.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
                                                     bool all_steps) {
@@ -35,4 +35,4 @@ std::vector<std::string> export_construction_figure(const AppState& state, const
   return figure::write_figure(drawn, frames, output, path).files;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

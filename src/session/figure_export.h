@@ -7,7 +7,7 @@
 
 #include "app_state.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf or .png; all
 // steps go to PATH-a.svg … or to one PDF of pages). Returns the files written; throws std::invalid_argument
@@ -15,4 +15,4 @@ namespace raycam::ui {
 std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
                                                     bool all_steps);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 // The object the caster put in this pixel, and t along the ray from the caster's formula. The reference
@@ -67,4 +67,4 @@ std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays) {
   return fan;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

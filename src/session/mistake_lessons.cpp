@@ -10,7 +10,7 @@
 
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 double& focal(AppState& state) { return active_orbit(state).df; }
@@ -206,4 +206,4 @@ std::string mistakes_on(const AppState& state) {
   return names;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -10,7 +10,7 @@
 #include "app_state.h"
 #include "raycam/classic_mistakes.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 struct MistakeLesson {
   const char* id;            // the core's id, or "arccos"
@@ -36,4 +36,4 @@ void show_mistake(AppState& state, const MistakeLesson& lesson);
 // The labels of the mistakes that are on, joined with ", " (empty: none), for the image's header.
 std::string mistakes_on(const AppState& state);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -9,7 +9,7 @@
 
 #include "camera_ranges.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 constexpr double kRadiansPerPixel = 0.01;  // drag speed
@@ -67,4 +67,4 @@ void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, do
   state.cameras_dirty = true;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

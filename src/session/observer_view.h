@@ -8,7 +8,7 @@
 
 #include "app_state.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 inline constexpr double kObserverFovY = 0.7853981633974483;  // 45°, in radians
 
@@ -27,4 +27,4 @@ ObserverCamera observer_camera(const AppState& state, double aspect);
 // from (θ's sign from the camera's motion seen by the observer).
 void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, double dx, double dy);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -12,6 +12,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 // ---- the panel section -----------------------------------------------------------------------------------
 void check_section(CameraCheck& check, double now) {
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;

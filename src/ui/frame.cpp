@@ -32,6 +32,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
 const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on

@@ -12,6 +12,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   FrameResult result;
   prepare_frame(state);  // fonts at the current scale, before the backend's frame

@@ -25,7 +25,7 @@ class FrameHost {
   // Waits for what the next frame needs (a window: events, or nothing when `state` has work pending; a
   // buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty when
   // there is nothing to draw (minimised): the frame is skipped.
-  virtual FramebufferSize begin(const AppState& state) = 0;
+  virtual FramebufferSize begin(const session::AppState& state) = 0;
   // Shows the frame just drawn (a window swaps its buffers; a buffer finishes drawing).
   virtual void present() = 0;
   // The frame just drawn, read before present() (a window's back buffer), top row first.
@@ -40,11 +40,11 @@ struct FrameResult {
 
 // The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
 // framebuffer, a requested screenshot saved (state.request_screenshot, to state.screenshot_path), present.
-FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state);
+FrameResult run_frame(FrameHost& host, FrameRenderer& frame, session::AppState& state);
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse
 // preview waits for its refinement, a request is waiting for the executable. Anything that makes the image
 // change with no input (a background cast) adds its condition here.
-bool frame_needs_redraw(const AppState& state);
+bool frame_needs_redraw(const session::AppState& state);
 
 }  // namespace raycam::ui

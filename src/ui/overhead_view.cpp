@@ -12,6 +12,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
 constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams

@@ -31,6 +31,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 // A label's shown text and the id ImGui sees: "Save###save" gives "Save" and "###save"; a label with no id
 // gives itself and "###" + itself, so the id stays the same whatever text a widget shows for it.

@@ -4,10 +4,10 @@
 
 #include "figure_export.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 std::vector<std::string> export_construction_figure(const AppState&, const std::string&, bool) {
   throw std::runtime_error("Export figure needs the desktop app (or raycam-cli figure)");
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

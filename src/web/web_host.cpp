@@ -22,7 +22,7 @@ namespace raycam::web {
 namespace {
 struct Page {
   GLFWwindow* window = nullptr;
-  ui::AppState* state = nullptr;
+  session::AppState* state = nullptr;
   WebHost* host = nullptr;
   ui::FrameRenderer* frame = nullptr;
   Downloads* downloads = nullptr;
@@ -36,14 +36,14 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
   note(window);
   if (action != GLFW_PRESS) return;
   if (key == GLFW_KEY_F1) page.state->show_help = !page.state->show_help;
-  if (key == GLFW_KEY_F12) ui::request_screenshot(*page.state);  // a download, as the Screenshot button
+  if (key == GLFW_KEY_F12) session::request_screenshot(*page.state);  // a download, as the Screenshot button
 }
 
 // emscripten's GLFW writes a dropped file into the page's file system and passes its path: the desktop's
 // open_scene reads it, with the same checks and messages (a bad file keeps the current scene).
 void drop_callback(GLFWwindow* window, int count, const char** paths) {
   note(window);
-  if (count > 0) ui::open_scene(*page.state, paths[0]);
+  if (count > 0) session::open_scene(*page.state, paths[0]);
 }
 
 void install_wake_callbacks(GLFWwindow* window) {
@@ -90,15 +90,15 @@ void tick() {
   if (!result.drawn) return;
   last_layout = result.layout;
   // Check my camera in the page: its case out as a download, its answer file asked of the browser.
-  ui::CheckRequest& request = page.frame->check().request();
+  session::CheckRequest& request = page.frame->check().request();
   if (request.download_case) {
     request.download_case = false;
     try {
-      const SceneFile downloaded = ui::camera_case(*page.state);
+      const SceneFile downloaded = session::camera_case(*page.state);
       save_scene_file(downloaded, "raycam-case.json");
       page.downloaded_case = scene_to_json(downloaded);
     } catch (const std::exception& error) {
-      ui::set_message(*page.state, ui::MessageSource::general, true, ui::tr_reason(error.what()));
+      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(error.what()));
     }
   }
   if (page.state->pick_scene_file) {  // the status line's button
@@ -118,11 +118,11 @@ void tick() {
 }
 }  // namespace
 
-ui::AppState& page_state() { return *page.state; }
+session::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
-ui::CameraCheck& page_check() { return page.frame->check(); }
+session::CameraCheck& page_check() { return page.frame->check(); }
 bool camera_changed_since_case_download() {
-  return !page.downloaded_case.empty() && scene_to_json(ui::camera_case(*page.state)) != page.downloaded_case;
+  return !page.downloaded_case.empty() && scene_to_json(session::camera_case(*page.state)) != page.downloaded_case;
 }
 void wake_page() { page.host->note_event(); }
 
@@ -134,7 +134,7 @@ void WebHost::note_event() {
   }
 }
 
-bool WebHost::wants_frame(const ui::AppState& state) {
+bool WebHost::wants_frame(const session::AppState& state) {
   if (settle_frames_ > 0 || ui::frame_needs_redraw(state)) {
     settle_frames_ = std::max(0, settle_frames_ - 1);
     return true;
@@ -144,7 +144,7 @@ bool WebHost::wants_frame(const ui::AppState& state) {
   return false;
 }
 
-ui::FramebufferSize WebHost::begin(const ui::AppState&) {
+ui::FramebufferSize WebHost::begin(const session::AppState&) {
   glfwGetFramebufferSize(window_, &size_.width, &size_.height);
   if (size_.empty()) return {};
   ImGui_ImplOpenGL3_NewFrame();
@@ -154,7 +154,7 @@ ui::FramebufferSize WebHost::begin(const ui::AppState&) {
 
 gl::RgbaImage WebHost::read_back() const { return gl::read_framebuffer(size_.width, size_.height); }
 
-void run_page(ui::AppState& state) {
+void run_page(session::AppState& state) {
   if (!glfwInit()) {
     std::fprintf(stderr, "raycam: cannot start GLFW in this page\n");
     return;

@@ -16,14 +16,14 @@ class WebHost : public ui::FrameHost {
   static constexpr int kSettleFrames = 3;  // as the desktop's: press, release, hover settle
 
   explicit WebHost(GLFWwindow* window) : window_(window) {}
-  ui::FramebufferSize begin(const ui::AppState& state) override;
+  ui::FramebufferSize begin(const session::AppState& state) override;
   void present() override {}  // the browser shows the canvas when the animation frame returns
   gl::RgbaImage read_back() const override;
 
   // Called by every input callback: draw the next frames, waking the loop if it sleeps.
   void note_event();
   // True when this animation frame has something to draw; false puts the loop to sleep.
-  bool wants_frame(const ui::AppState& state);
+  bool wants_frame(const session::AppState& state);
 
  private:
   GLFWwindow* window_;
@@ -34,12 +34,12 @@ class WebHost : public ui::FrameHost {
 
 // Creates the canvas's context and ImGui, then hands the loop to the browser (never returns to main's
 // caller in the usual sense: emscripten keeps the runtime alive).
-void run_page(ui::AppState& state);
+void run_page(session::AppState& state);
 
 // The page's state, for the functions JavaScript calls (web_main.cpp).
-ui::AppState& page_state();
+session::AppState& page_state();
 const ui::FrameLayout& page_layout();  // the last frame drawn: where things were, what the tables showed
-ui::CameraCheck& page_check();
+session::CameraCheck& page_check();
 // Check my camera: a case was downloaded, and the camera or scene on screen is no longer that case's.
 bool camera_changed_since_case_download();         // Check my camera's, for the answer file the page is given
 void wake_page();

@@ -25,10 +25,10 @@ using namespace raycam;
 
 namespace {
 
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
+session::AppState state_for(const std::vector<std::string>& args) {
+  session::AppOptions options;
   options.language = ui::Language::en;
-  return ui::make_app_state(flags::parse_app_options(args, options));
+  return session::make_app_state(flags::parse_app_options(args, options));
 }
 
 // The image region of the frame holds exactly `expected`, sampled at pixel centres.
@@ -47,7 +47,7 @@ int wrong_pixels(const gl::RgbaImage& image, const ui::Rect& r, const ColourMap&
 
 // The frame just rendered agrees with the core for the state's current parameters: the M_d the table
 // showed is the core's placement matrix, and the image is the core's colour map (both computed here).
-void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const ui::AppState& state) {
+void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const session::AppState& state) {
   const gl::RgbaImage image = renderer.read_back();
   const ui::FrameLayout& layout = renderer.layout();
   const Orbit3D& o = state.orbit3d;
@@ -61,14 +61,14 @@ void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const ui
 }
 
 // A key pressed for one frame and released the next, as fingers do.
-void tap(headless::HeadlessRenderer& renderer, ui::AppState& state, int key) {
+void tap(headless::HeadlessRenderer& renderer, session::AppState& state, int key) {
   renderer.press_key(key);
   renderer.run_frame(state);
   renderer.run_frame(state);
 }
 
 // Ctrl+click, as ImGui's sliders take it to type a value: hover, press with ctrl held, release.
-void ctrl_click(headless::HeadlessRenderer& renderer, ui::AppState& state, ImVec2 at) {
+void ctrl_click(headless::HeadlessRenderer& renderer, session::AppState& state, ImVec2 at) {
   renderer.move_mouse(at.x, at.y);
   renderer.run_frame(state);
   ImGui::GetIO().KeyCtrl = true;
@@ -84,19 +84,19 @@ ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
 }
 
 // Where the panels drew the labelled widget "###id" (state.widget_rects, the panels' test hook).
-std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const ui::AppState& state, const std::string& id) {
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const session::AppState& state, const std::string& id) {
   if (!state.widget_rects) return std::nullopt;
   const auto found = state.widget_rects->find(id);
   if (found == state.widget_rects->end()) return std::nullopt;
-  const ui::WidgetRect& r = found->second;
+  const session::WidgetRect& r = found->second;
   return std::pair<ImVec2, ImVec2>{{r.x0, r.y0}, {r.x1, r.y1}};
 }
 }  // namespace
 
 TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
           "[render][input][same-frame]") {
-  ui::AppState state = state_for({"--size", "64x64"});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({"--size", "64x64"});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
@@ -123,7 +123,7 @@ TEST_CASE("a slider dragged with the mouse: image and M_d table match the core i
 
 TEST_CASE("a mistake toggled in the panel shows in the image and the table of the same frame",
           "[render][input][same-frame]") {
-  ui::AppState state = state_for({"--size", "64x64", "--theta", "10", "--phi", "75"});
+  session::AppState state = state_for({"--size", "64x64", "--theta", "10", "--phi", "75"});
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   state.mistakes.printed_rotation_sign = true;  // what the checkbox sets (the section is closed here)
@@ -139,7 +139,7 @@ TEST_CASE("a mistake toggled in the panel shows in the image and the table of th
 
 TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees with the core",
           "[render][input]") {
-  ui::AppState state = state_for({"--size", "64x64"});
+  session::AppState state = state_for({"--size", "64x64"});
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   const ui::Rect view = renderer.layout().overhead;
@@ -160,8 +160,8 @@ TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees w
 TEST_CASE(
     "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
     "[render][input][keyboard]") {
-  ui::AppState state = state_for({});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
@@ -202,10 +202,10 @@ TEST_CASE(
 
 TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed or replaced",
           "[render][messages]") {
-  ui::AppState state = state_for({});
+  session::AppState state = state_for({});
   headless::HeadlessRenderer renderer(1280, 800);
   renderer.render_settled(state);
-  CHECK_FALSE(ui::open_scene(state, "no/such/scene_file_for_the_test.json"));
+  CHECK_FALSE(session::open_scene(state, "no/such/scene_file_for_the_test.json"));
   for (int frame = 0; frame < 30; ++frame) renderer.run_frame(state);  // stays
   const ui::FrameLayout& layout = renderer.layout();
   REQUIRE(state.message_is_error);
@@ -227,7 +227,7 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   // A message whose section is closed (here: none) gets its own line above the status line, tall enough
   // for its wrapped text at 3× font, inside the window.
   state.font_scale = 3.0f;
-  ui::set_message(state, ui::MessageSource::general, true,
+  session::set_message(state, session::MessageSource::general, true,
                   "a long message that cannot fit on one line of the right-hand side at three times the font size, "
                   "so it wraps: /a/long/path/to/a/scene/file/lesson3.json");
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
@@ -241,7 +241,7 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK(big.panel.w <= 0.4f * 1280 + 0.5f);
   CHECK(big.status.x + big.status.w <= 1280.5f);
   // Replaced by the next message; cleared by Dismiss (what the button does).
-  ui::set_message(state, ui::MessageSource::general, false, "done");
+  session::set_message(state, session::MessageSource::general, false, "done");
   renderer.run_frame(state);
   CHECK(renderer.layout().message.h < big.message.h);
   state.message.clear();
@@ -255,8 +255,8 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
     for (const char* language : {"en", "fr"})
       for (const char* view : {"3d", "2d"})
         for (const float scale : {1.0f, 1.5f, 2.0f, 3.0f}) {
-          ui::AppState state = state_for({"--view", view, "--lang", language});
-          std::map<std::string, ui::WidgetRect> rects;
+          session::AppState state = state_for({"--view", view, "--lang", language});
+          std::map<std::string, session::WidgetRect> rects;
           state.widget_rects = &rects;
           state.font_scale = scale;
           headless::HeadlessRenderer renderer(width, height);
@@ -297,8 +297,8 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
 }
 
 TEST_CASE("lecture mode: after a change of font scale its slider is still in view", "[render][lecture]") {
-  ui::AppState state = state_for({"--view", "3d", "--lang", "fr"});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({"--view", "3d", "--lang", "fr"});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1024, 768);
   renderer.render_settled(state);
@@ -330,14 +330,14 @@ TEST_CASE("lecture mode: a font scale changed in a running window draws what a w
   gl::RgbaImage after_change;
   GLenum error_after_change = GL_NO_ERROR;
   {
-    ui::AppState changed = state_for({"--view", "3d"});
+    session::AppState changed = state_for({"--view", "3d"});
     headless::HeadlessRenderer renderer(1024, 768);
     renderer.render_settled(changed);
     changed.font_scale = 3.0f;
     after_change = renderer.render_settled(changed);
     error_after_change = glGetError();
   }
-  ui::AppState started = state_for({"--view", "3d", "--font-scale", "3"});
+  session::AppState started = state_for({"--view", "3d", "--font-scale", "3"});
   headless::HeadlessRenderer fresh(1024, 768);
   const gl::RgbaImage from_start = fresh.render_settled(started);
   const ui::Rect status = fresh.layout().status;  // the frame and cast times there are measured: they differ

@@ -21,16 +21,16 @@ using namespace raycam;
 namespace {
 
 struct Shot {
-  ui::AppState state;
+  session::AppState state;
   gl::RgbaImage image;
   ui::FrameLayout layout;
 };
 
 Shot shoot(const std::vector<std::string>& args, int width = 1280, int height = 720) {
-  ui::AppOptions options = flags::parse_app_options(args);
+  session::AppOptions options = flags::parse_app_options(args);
   options.width = width;
   options.height = height;
-  Shot shot{ui::make_app_state(options), {}, {}};
+  Shot shot{session::make_app_state(options), {}, {}};
   headless::HeadlessRenderer renderer(width, height);
   shot.image = renderer.render_settled(shot.state);
   shot.layout = renderer.layout();
@@ -193,7 +193,7 @@ TEST_CASE("the overhead view draws each ray to the hit the caster found, mistake
   const ui::OverheadMapping& m = shot.layout.overhead_mapping;
   int hits = 0;
   for (int column = 0; column < shot.state.map.width; ++column) {
-    const ui::InspectedRay ray = ui::inspect_pixel(shot.state, {0, column});
+    const session::InspectedRay ray = session::inspect_pixel(shot.state, {0, column});
     if (ray.hit.id < 0) continue;
     ++hits;
     const Rgb8 c = shot.state.file.scene2d.circles[std::size_t(ray.hit.id)].colour;
@@ -234,8 +234,8 @@ TEST_CASE("the screenshot comparison fails on one changed digit and ignores only
 
 TEST_CASE("the overhead view holds still while the camera moves inside it, and fits again when it would leave",
           "[render][views]") {
-  ui::AppOptions options;
-  ui::AppState state = ui::make_app_state(options);
+  session::AppOptions options;
+  session::AppState state = session::make_app_state(options);
   headless::HeadlessRenderer renderer(1280, 800);
   renderer.render_settled(state);
   const ui::OverheadMapping before = renderer.layout().overhead_mapping;
@@ -304,7 +304,7 @@ TEST_CASE("the 2D screen segment marks pixel k = 0, and the eye's left at the ot
 TEST_CASE("the observer view shows the camera's screen at least a tenth of its height, at 1280x800",
           "[render][views]") {
   const Shot shot = shoot({}, 1280, 800);
-  const ui::ObserverCamera& observer = shot.layout.observer_camera;
+  const session::ObserverCamera& observer = shot.layout.observer_camera;
   const ui::Rect& view = shot.layout.observer;
   double top = 1e9, bottom = -1e9;
   for (const glm::dvec3& corner : shot.state.camera3d.screen_corners()) {

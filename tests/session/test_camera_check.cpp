@@ -9,7 +9,7 @@
 #include "camera_check.h"
 
 using namespace raycam;
-using namespace raycam::ui;
+using namespace raycam::session;
 
 namespace {
 AppState classic_2d() {
@@ -73,22 +73,22 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
 }  // the destructor does not wait either: the worker finishes on its own
 
 TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
-  ui::CheckProgress progress;
-  CHECK(ui::check_header(progress).empty());  // no verdict yet
-  auto verdict = std::make_shared<ui::KeyedVerdict>();
+  session::CheckProgress progress;
+  CHECK(session::check_header(progress).empty());  // no verdict yet
+  auto verdict = std::make_shared<session::KeyedVerdict>();
   verdict->verdict.result.status = check::CaseStatus::fail;
   verdict->verdict.result.wrong_pixels = 27932;
   progress.latest = verdict;
   progress.current = true;
-  CHECK(ui::check_header(progress) == "CHECK: 27932 pixels wrong");
+  CHECK(session::check_header(progress) == "CHECK: 27932 pixels wrong");
   progress.running = true;  // checking again: the old verdict is not this image's any more
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
   progress.running = false;
   progress.current = false;  // made for the camera before the last change
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
   progress.current = true;
   verdict->verdict.result.status = check::CaseStatus::crash;
-  CHECK(ui::check_header(progress) == "CHECK: crash");
+  CHECK(session::check_header(progress) == "CHECK: crash");
   verdict->verdict.result.status = check::CaseStatus::pass;
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
 }

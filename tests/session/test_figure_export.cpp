@@ -27,7 +27,7 @@ std::string pdf_text(const std::string& file) {
 
 TEST_CASE("Export figure writes the step shown, or every step, in the window's language", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export");
-  ui::AppState state = test::state_for({"--view", "2d"});
+  session::AppState state = test::state_for({"--view", "2d"});
   struct Restore {
     ui::Language language = ui::current_language();
     ~Restore() { ui::set_language(language); }
@@ -35,34 +35,34 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
 
   ui::set_language(ui::Language::fr);
   state.construction_step = 1;  // the second frame: (b)
-  auto files = ui::export_construction_figure(state, scratch.path("b.pdf"), false);
+  auto files = session::export_construction_figure(state, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
   std::string text = pdf_text(files[0]);
   CHECK(text.find("cadre (b)") != std::string::npos);
   CHECK(text.find("cadre (a)") == std::string::npos);
 
   state.construction_step = -1;  // M_d itself: frame (d)
-  CHECK(pdf_text(ui::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
+  CHECK(pdf_text(session::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
   ui::set_language(ui::Language::en);
-  files = ui::export_construction_figure(state, scratch.path("all.pdf"), true);
+  files = session::export_construction_figure(state, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
   for (const char* title : {"frame (a)", "frame (b)", "frame (c)", "frame (d)"})
     CHECK(text.find(title) != std::string::npos);
 
-  files = ui::export_construction_figure(state, scratch.path("all.svg"), true);
+  files = session::export_construction_figure(state, scratch.path("all.svg"), true);
   CHECK(files.size() == 4);
   for (const std::string& file : files) CHECK(std::filesystem::file_size(file) > 1000);
 
-  CHECK_THROWS_AS(ui::export_construction_figure(state, scratch.path("figure.gif"), false), std::invalid_argument);
+  CHECK_THROWS_AS(session::export_construction_figure(state, scratch.path("figure.gif"), false), std::invalid_argument);
 }
 
 TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-3d");
-  ui::AppState state = test::state_for({"--view", "3d"});
-  const auto files = ui::export_construction_figure(state, scratch.path("steps.png"), true);
+  session::AppState state = test::state_for({"--view", "3d"});
+  const auto files = session::export_construction_figure(state, scratch.path("steps.png"), true);
   REQUIRE(files.size() == 6);
   CHECK(files.back() == scratch.path("steps-5.png"));
 }

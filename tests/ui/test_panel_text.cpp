@@ -53,9 +53,9 @@ class TextCapture {
   ImGuiContext* context_;
 };
 
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppState state = ui::make_app_state(flags::parse_app_options(args));
-  ui::recast_if_needed(state);
+session::AppState state_for(const std::vector<std::string>& args) {
+  session::AppState state = session::make_app_state(flags::parse_app_options(args));
+  session::recast_if_needed(state);
   return state;
 }
 
@@ -132,7 +132,7 @@ void check_tuple(const std::vector<double>& printed, const glm::dvec3& expected,
 TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][inspector]") {
   TextCapture text;
   for (int column : {100, 17, 200}) {
-    ui::AppState state = state_for({"--view", "2d", "--inspect", std::to_string(column) + ",0"});
+    session::AppState state = state_for({"--view", "2d", "--inspect", std::to_string(column) + ",0"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO("column " << column << ", the panel says:\n" << shown);
     const Camera2D& camera = state.camera2d;
@@ -163,7 +163,7 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
 TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][inspector]") {
   TextCapture text;
   for (const char* pixel : {"120,140", "10,10", "200,60"}) {
-    ui::AppState state = state_for({"--inspect", pixel, "--theta", "40", "--phi", "65"});
+    session::AppState state = state_for({"--inspect", pixel, "--theta", "40", "--phi", "65"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO(pixel << ", the panel says:\n" << shown);
     const int column = std::stoi(pixel),
@@ -199,7 +199,7 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
 TEST_CASE("the status line prints the cast's work counts", "[ui][status]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
-    ui::AppState state = state_for({"--view", view});
+    session::AppState state = state_for({"--view", view});
     const std::string shown = text.capture([&] { ui::status_counters(state); });  // the status line's tooltip
     INFO(shown);
     const CastStats& w = state.stats;
@@ -245,10 +245,10 @@ TEST_CASE("panel text wraps between words, never inside a number, and never past
 TEST_CASE("the French window shows no English word", "[ui][text]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
-    ui::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0"});
-    ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
-    ui::open_scene(state, "/inexistant/fichier.json");  // a red message, in French
-    ui::recast_if_needed(state);
+    session::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0"});
+    session::show_mistake(state, *session::find_lesson("pixel_edges"));
+    session::open_scene(state, "/inexistant/fichier.json");  // a red message, in French
+    session::recast_if_needed(state);
     const std::string shown = text.capture([&] {
       ImGuiWindow* window = ImGui::GetCurrentWindow();
       for (const char* id : {"###camera", "###mistakes", "###caster", "###files", "###lecture", "###construction",
