@@ -17,6 +17,7 @@
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
 #include "text.h"
+#include "view.h"
 
 namespace raycam::session {
 
@@ -44,23 +45,12 @@ enum class MessageSource { general, camera, files, caster, construction };
 
 struct AppState {
   // ---- scene and camera parameters (the sliders' model) ----
-  int dimension = 3;
-  std::string scene_path;  // empty: built-in demo
-  // The file the other dimension's scene came from (empty: the demo). A file holds one kind of scene, so
-  // switching 2D/3D shows the other kind's and swaps the two: coming back names the file again.
-  std::string other_scene_path;
-  SceneFile file;
-  Orbit2D orbit2d;
-  Orbit3D orbit3d;
-  double res = 1.0;
-  int max_pixels_2d = 256;
-  int max_columns_3d = 256, max_rows_3d = 256;
-  Camera2D camera2d{256};
-  Camera3D camera3d{256, 256};
-  // The camera the scene file (with the command line's overrides) opened with: "Reset camera" returns here.
-  Orbit2D preset_orbit2d;
-  Orbit3D preset_orbit3d;
-  double preset_res = 1.0;
+  // The view on screen, and the other dimension's, kept as it was left: switching 2D/3D swaps the two, so
+  // coming back finds its scene, its file and its camera again (view.h).
+  View view{View3D{}};
+  View other_view{View2D{}};
+  double res = 1.0;         // one res for both views: switching keeps it
+  double preset_res = 1.0;  // the res the scene file and the command line opened with
 
   // ---- the lesson ----
   ClassicMistakes mistakes;
@@ -177,7 +167,16 @@ void reset_camera(AppState& state);
 // built-in demo scene.
 void switch_dimension(AppState& state, int dimension);
 
-// ---- the camera on screen (2D or 3D): the one place that picks it ----
+// ---- the views: the one on screen and each dimension's ----
+int dimension(const AppState& state);  // of the view on screen
+// Each dimension's view, on screen or kept aside.
+View2D& view2d(AppState& state);
+const View2D& view2d(const AppState& state);
+View3D& view3d(AppState& state);
+const View3D& view3d(const AppState& state);
+// The file the scene on screen came from (empty: the built-in demo).
+const std::string& scene_path(const AppState& state);
+
 // The orbit parameters the 2D and 3D cameras share (Number: double, or const double to read them).
 template <class Number>
 struct SharedOrbit {

@@ -76,10 +76,7 @@ void work(std::shared_ptr<CheckShared> shared) {
 }  // namespace
 
 SceneFile camera_case(const AppState& state) {
-  SceneFile file = state.file;
-  file.dimension = state.dimension;
-  file.camera = active_preset(state);
-  return file;
+  return scene_file_of(state.view, active_preset(state));
 }
 
 // ---- CameraCheck (debounce) -------------------------------------------------------------------------------
@@ -100,7 +97,7 @@ std::string CameraCheck::case_key(const AppState& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
-  key << std::hexfloat << state.dimension << '|' << state.scene_version << '|' << state.scene_path << '|'
+  key << std::hexfloat << dimension(state) << '|' << state.scene_version << '|' << scene_path(state) << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
       << p.df.value_or(0) << '|' << p.res.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';

@@ -22,9 +22,10 @@ std::vector<std::string> export_construction_figure(const AppState& state, const
   output.pages = all_steps && output.format == figure::Format::pdf;
   const figure::FigureOptions options{current_language() == Language::fr ? figure::Language::fr
                                                                          : figure::Language::en};
-  const figure::Figure drawn =
-      state.dimension == 2 ? figure::construction_figure_2d(state.file.scene2d, state.camera2d, options)
-                           : figure::construction_figure_3d(state.file.scene3d, state.camera3d, options);
+  const figure::Figure drawn = std::visit(
+      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(view.scene, view.camera, options); },
+                 [&](const View3D& view) { return figure::construction_figure_3d(view.scene, view.camera, options); }},
+      state.view);
   // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
   const int count = int(drawn.frames.size());
   std::vector<int> frames;

@@ -79,7 +79,7 @@ void check_overlay(const CameraCheck& check, const AppState& state, ImDrawList* 
   const CheckProgress progress = check.progress();
   if (!progress.latest || !progress.current) return;  // only over the image it was made for
   const check::CaseVerdict& v = progress.latest->verdict;
-  if (v.dimension != state.dimension || v.columns != state.map.width || v.rows != state.map.height) return;
+  if (v.dimension != dimension(state) || v.columns != state.map.width || v.rows != state.map.height) return;
   const float cw = (x1 - x0) / float(v.columns), ch = (y1 - y0) / float(v.rows);
   const ImU32 red = IM_COL32(255, 0, 0, 120);  // translucent: the student's mistake stays visible underneath
   // One rectangle per run of wrong pixels along a row: few rectangles even when most of the image is wrong.

@@ -260,13 +260,12 @@ bool section(const char* full, const char* brief, int flags) {
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {
   if (!section(tr("Camera###camera"), tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
-  int dimension = state.dimension;
-  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &dimension, 2);
+  int wanted = dimension(state);
+  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &wanted, 2);
   same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr("3D camera")).x);
-  mode_changed |= ImGui::RadioButton(tr("3D camera"), &dimension, 3);
-  if (mode_changed) switch_dimension(state, dimension);
+  mode_changed |= ImGui::RadioButton(tr("3D camera"), &wanted, 3);
+  if (mode_changed) switch_dimension(state, wanted);
 
-  const bool is_2d = state.dimension == 2;
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
   bool changed = slider_double(state, tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
@@ -274,34 +273,39 @@ void camera_section(AppState& state) {
   changed |= slider_double(state, tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
                            "%.2f", true);
   changed |= slider_degrees(state, tr("θ azimuth###theta"), theta, -180.0, 180.0);
-  if (!is_2d)
-    changed |= slider_degrees(state, tr("φ polar angle###phi"), state.orbit3d.phi,
-                              glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+  std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
+                        [&](View3D& view) {
+                          changed |= slider_degrees(state, tr("φ polar angle###phi"), view.orbit.phi,
+                                                    glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+                        }},
+             state.view);
   const int max_size = active_max_side(state);
   changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
-  if (is_2d) {
-    // The target's coordinates are doubles in the widget too, as the sliders'.
-    if (target_fields(state, glm::value_ptr(state.orbit2d.target), 2)) changed = true;
-    int n = state.max_pixels_2d;
-    if (labelled(state, tr("N max pixels###N"),
-                 [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
-      state.max_pixels_2d = std::clamp(n, 1, kMaxPixels2DInApp);
-      changed = true;
-    }
-  } else {
-    if (target_fields(state, glm::value_ptr(state.orbit3d.target), 3)) changed = true;
-    int size[2] = {state.max_columns_3d, state.max_rows_3d};
-    if (labelled(state, tr("max size W, H###size"),
-                 [&](const char* l) { return ImGui::InputInt2(l, size); })) {
-      state.max_columns_3d = std::clamp(size[0], 1, kMaxSideInApp);
-      state.max_rows_3d = std::clamp(size[1], 1, kMaxSideInApp);
-      changed = true;
-    }
-  }
-  ImGui::TextWrapped(
-      "%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
-                glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()))
-                .c_str());
+  // The target's coordinates are doubles in the widget too, as the sliders'.
+  std::visit([&](auto& view) {
+    changed |= target_fields(state, glm::value_ptr(view.orbit.target), view.kDimension);
+  }, state.view);
+  std::visit(overloaded{[&](View2D& view) {
+                          int n = view.max_pixels;
+                          if (labelled(state, tr("N max pixels###N"),
+                                       [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
+                            view.max_pixels = std::clamp(n, 1, kMaxPixels2DInApp);
+                            changed = true;
+                          }
+                        },
+                        [&](View3D& view) {
+                          int size[2] = {view.max_columns, view.max_rows};
+                          if (labelled(state, tr("max size W, H###size"),
+                                       [&](const char* l) { return ImGui::InputInt2(l, size); })) {
+                            view.max_columns = std::clamp(size[0], 1, kMaxSideInApp);
+                            view.max_rows = std::clamp(size[1], 1, kMaxSideInApp);
+                            changed = true;
+                          }
+                        }},
+             state.view);
+  const double fov = std::visit([](const auto& view) { return view.camera.field_of_view(); }, state.view);
+  ImGui::TextWrapped("%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
+                               glm::degrees(fov)).c_str());
   if (button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
   explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
@@ -346,8 +350,21 @@ void construction_section(AppState& state) {
                                     tr_later("5: T(OP) moves the screen to P")};
   if (labelled(state, tr("step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
-  explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
-  if (state.dimension == 3) {
+  explain(tr(dimension(state) == 2 ? k2D[step] : k3D[step]));
+  std::visit(overloaded{[&](const View2D& view) {
+    const Placement2D& p = view.camera.placement();
+    ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
+    if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
+    if (ImGui::TreeNode("R(α)")) {
+      matrix_table<3>("R", p.rotation);
+      ImGui::TreePop();
+    }
+    if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
+    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+    state.shown_matrix = glm::dmat4(construction_step(p, step));
+    matrix_table<3>("M", construction_step(p, step));
+  },
+  [&](const View3D& view) {
     if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
       explain(tr(
         "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
@@ -360,21 +377,7 @@ void construction_section(AppState& state) {
       if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
         state.cameras_dirty = true;
     }
-  }
-  if (state.dimension == 2) {
-    const Placement2D& p = state.camera2d.placement();
-    ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
-    if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("R(α)")) {
-      matrix_table<3>("R", p.rotation);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
-    state.shown_matrix = glm::dmat4(construction_step(p, step));
-    matrix_table<3>("M", construction_step(p, step));
-  } else {
-    const Placement3D& p = state.camera3d.placement();
+    const Placement3D& p = view.camera.placement();
     ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
     if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
     if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
@@ -393,7 +396,7 @@ void construction_section(AppState& state) {
     wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
     state.shown_matrix = construction_step(p, step);
     matrix_table<4>("M", construction_step(p, step));
-  }
+  }}, state.view);
   figure_export_row(state);
 }
 
@@ -407,7 +410,7 @@ void inspector_section(const AppState& state) {
   }
   const InspectedRay ray = inspect_pixel(state, *pixel);
   // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
-  const int dimensions = state.dimension;
+  const int dimensions = dimension(state);
   const auto line = [dimensions](const char* name, const glm::dvec3& v) {
     std::string text = std::string(name) + " = (";
     for (int i = 0; i < dimensions; ++i) {
@@ -417,24 +420,26 @@ void inspector_section(const AppState& state) {
     }
     wrapped_between_words(text + ")");
   };
-  if (state.dimension == 2) {
+  std::visit(overloaded{[&](const View2D&) {
     wrapped_between_words(trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
     line("P_k^0", ray.canonical_pixel);
     line("u_k^0", ray.canonical_direction);
     line("P_k  ", ray.origin);
     line("u_k  ", ray.direction);
-  } else {
+  },
+  [&](const View3D&) {
     wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
     line("P^0", ray.canonical_pixel);
     line("u^0", ray.canonical_direction);
     line("P  ", ray.origin);
     line("u  ", ray.direction);
-  }
+  }}, state.view);
   if (ray.hit.id < 0) {
     wrapped_between_words(tr("hit: nothing (background)"));
   } else {
-    const std::string& name = state.dimension == 2 ? state.file.scene2d.circles[std::size_t(ray.hit.id)].name
-                                                   : state.file.scene3d.spheres[std::size_t(ray.hit.id)].name;
+    const std::string& name = std::visit(
+        [&](const auto& view) -> const std::string& { return objects_of(view.scene)[std::size_t(ray.hit.id)].name; },
+        state.view);
     wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }
@@ -444,21 +449,22 @@ namespace {
 // The angle recovered from the current CP by the handout's arccos and by atan2, against the slider's angle.
 void arccos_error_line(const AppState& state) {
   std::string line;
-  if (state.dimension == 2) {
-    const Orbit2D& o = state.orbit2d;
+  std::visit(overloaded{[&](const View2D& view) {
+    const Orbit2D& o = view.orbit;
     const glm::dvec2 cp = polar_direction(o.theta);
     const double truth = std::remainder(o.theta, glm::two_pi<double>());
     line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad",
                std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
                std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
-  } else {
-    const Orbit3D& o = state.orbit3d;
+  },
+  [&](const View3D& view) {
+    const Orbit3D& o = view.orbit;
     const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
     const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
     line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad",
                std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
                std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
-  }
+  }}, state.view);
   explain(line.c_str());  // wrapped: at lecture sizes the line is wider than the panel
 }
 }  // namespace
@@ -537,7 +543,7 @@ void caster_section(AppState& state) {
   changed |= choice(state, tr("intersection###intersection"), knobs.formula, kFormulas);
   changed |= choice(state, tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
   changed |= checkbox(tr("camera-relative rays"), &knobs.camera_relative);
-  if (state.dimension == 2)
+  if (exact_bar_applies(state.view))
     changed |= checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
               ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
@@ -578,7 +584,7 @@ void files_section(AppState& state) {
            [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
   if (button(tr("Export colour map PNG"))) {
     try {
-      write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
+      write_png(state.map, state.export_path, 1, image_is_bar(state.view) ? 32 : 1);
       set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, tr_reason(error.what()));
@@ -768,11 +774,10 @@ void handle_shortcuts(AppState& state) {
   if (g_tab_key >= 0 && ImGui::IsKeyPressed(g_tab_key, false) &&
       !io.KeyCtrl) {  // always 2D/3D, even in a field
     ImGui::ClearActiveID();
-    switch_dimension(state, state.dimension == 2 ? 3 : 2);
+    switch_dimension(state, dimension_of(state.other_view));
     return;
   }
   if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
-  const bool is_2d = state.dimension == 2;
   const SharedOrbit<double> orbit = active_orbit(state);
   double &theta = orbit.theta, &d = orbit.d, &df = orbit.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
@@ -780,10 +785,11 @@ void handle_shortcuts(AppState& state) {
   const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
   if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow))
-    state.orbit3d.phi = std::max(kPolarRange.low, state.orbit3d.phi - kStep), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(kPolarRange.high, state.orbit3d.phi + kStep), changed = true;
+  if (auto* view = std::get_if<View3D>(&state.view)) {  // the polar angle: 3D only
+    double& phi = view->orbit.phi;
+    if (pressed(ImGuiKey_UpArrow)) phi = std::max(kPolarRange.low, phi - kStep), changed = true;
+    if (pressed(ImGuiKey_DownArrow)) phi = std::min(kPolarRange.high, phi + kStep), changed = true;
+  }
   if (pressed(ImGuiKey_PageUp)) df = std::min(kFocalRange.high, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(kFocalRange.low, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

@@ -63,15 +63,11 @@ EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* i
     raycam::ViewFlags flags;
     flags.scene_path = std::string(scene_path);
     const raycam::ViewSetup setup = raycam::make_view_setup(flags);
-    raycam::ColourMap map;
-    if (setup.dimension == 2) {
-      raycam::validate(setup.file.scene2d);
-      map = raycam::cast_primary_rays(setup.camera2d, setup.file.scene2d, raycam::CastOptions{});
-    } else {
-      raycam::validate(setup.file.scene3d);
-      map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d, raycam::CastOptions{});
-    }
-    raycam::write_ids(map, ids_path);
+    const raycam::session::View view = raycam::session::views_from_setup(setup).on_screen;
+    raycam::session::validate(view);
+    raycam::write_ids(std::visit([](const auto& v) { return raycam::cast_primary_rays(v.camera, v.scene, raycam::CastOptions{}); },
+                                 view),
+                      ids_path);
     return 0;
   } catch (const std::exception& error) {
     last_error = error.what();
@@ -132,14 +128,14 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   static std::string json;
   const raycam::session::AppState& state = raycam::web::page_state();
   const raycam::ui::FrameLayout& layout = raycam::web::page_layout();
-  const raycam::Orbit3D& o = state.orbit3d;
+  const raycam::Orbit3D& o = view3d(state).orbit;
   char number[64];
   const auto add = [&](const char* key, double value) {
     std::snprintf(number, sizeof number, "%.17g", value);
     json += std::string("\"") + key + "\": " + number + ", ";
   };
   json = "{";
-  add("dimension", state.dimension);
+  add("dimension", dimension(state));
   add("theta", o.theta);
   add("phi", o.phi);
   add("d", o.d);
@@ -160,8 +156,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   add("shown_map_version", double(layout.shown.map_version));
   add("map_version", double(state.map_version));
   const raycam::ColourMap fresh =
-      state.dimension == 2 ? raycam::cast_primary_rays(state.camera2d, state.file.scene2d)
-                           : raycam::cast_primary_rays(state.camera3d, state.file.scene3d);
+      std::visit([](const auto& view) { return raycam::cast_primary_rays(view.camera, view.scene); }, state.view);
   add("map_is_the_camera_s", fresh.ids == state.map.ids ? 1 : 0);
   add("map_width", state.map.width);
   add("map_height", state.map.height);

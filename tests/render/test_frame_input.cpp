@@ -50,14 +50,14 @@ int wrong_pixels(const gl::RgbaImage& image, const ui::Rect& r, const ColourMap&
 void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const session::AppState& state) {
   const gl::RgbaImage image = renderer.read_back();
   const ui::FrameLayout& layout = renderer.layout();
-  const Orbit3D& o = state.orbit3d;
+  const Orbit3D& o = view3d(state).orbit;
   Camera3D camera(64, 64);
   camera.set_orbit({o.target, o.d, o.theta, o.phi, o.df});
   const glm::dmat4 expected = camera.world_from_camera();
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) CHECK(layout.shown.placement[c][r] == Approx(expected[c][r]).margin(1e-12));
   CHECK(layout.shown.map_version == state.map_version);
-  CHECK(wrong_pixels(image, layout.image, cast_primary_rays(camera, state.file.scene3d)) == 0);
+  CHECK(wrong_pixels(image, layout.image, cast_primary_rays(camera, view3d(state).scene)) == 0);
 }
 
 // A key pressed for one frame and released the next, as fingers do.
@@ -103,13 +103,13 @@ TEST_CASE("a slider dragged with the mouse: image and M_d table match the core i
   const auto theta = widget_rect(state, "###theta");
   REQUIRE(theta);
   const float y = centre(*theta).y;
-  const double before = state.orbit3d.theta;
+  const double before = view3d(state).orbit.theta;
   renderer.move_mouse(theta->first.x + 0.8f * (theta->second.x - theta->first.x),
                       y);  // hover first, as a hand does
   renderer.run_frame(state);
   renderer.set_mouse_button(0, true);  // the slider jumps to the mouse: this frame changes θ
   renderer.run_frame(state);
-  CHECK(std::abs(state.orbit3d.theta - before) > glm::radians(30.0));
+  CHECK(std::abs(view3d(state).orbit.theta - before) > glm::radians(30.0));
   check_frame_agrees_with_core(renderer, state);
   // ... and while dragging, every frame.
   for (float x : {0.3f, 0.55f, 0.1f}) {
@@ -131,10 +131,10 @@ TEST_CASE("a mistake toggled in the panel shows in the image and the table of th
   renderer.run_frame(state);
   Camera3D camera(64, 64);
   camera.set_mistakes(state.mistakes);
-  camera.set_orbit(state.orbit3d);
+  camera.set_orbit(view3d(state).orbit);
   CHECK(renderer.layout().shown.placement == camera.world_from_camera());
   CHECK(wrong_pixels(renderer.read_back(), renderer.layout().image,
-                     cast_primary_rays(camera, state.file.scene3d)) == 0);
+                     cast_primary_rays(camera, view3d(state).scene)) == 0);
 }
 
 TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees with the core",
@@ -143,14 +143,14 @@ TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees w
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   const ui::Rect view = renderer.layout().overhead;
-  const ImVec2 target = renderer.layout().overhead_mapping.to_screen(glm::dvec2(state.orbit3d.target));
+  const ImVec2 target = renderer.layout().overhead_mapping.to_screen(glm::dvec2(view3d(state).orbit.target));
   renderer.move_mouse(view.x + view.w - 10, target.y);  // to the right of the target: θ = 0 there
   renderer.run_frame(state);
   renderer.set_mouse_button(0, true);
   renderer.run_frame(state);
   renderer.move_mouse(target.x, view.y + 10);  // straight above the target: θ = 90°
   renderer.run_frame(state);
-  CHECK(state.orbit3d.theta ==
+  CHECK(view3d(state).orbit.theta ==
         Approx(glm::radians(90.0)).margin(glm::radians(1.0)));  // within a screen pixel
   check_frame_agrees_with_core(renderer, state);
   renderer.set_mouse_button(0, false);
@@ -168,35 +168,35 @@ TEST_CASE(
   CHECK(state.window_title == "raycam — 3D — demo scene");
   for (int dimension : {2, 3, 2, 3}) {
     tap(renderer, state, ImGuiKey_Tab);
-    CHECK(state.dimension == dimension);
+    CHECK(session::dimension(state) == dimension);
     CHECK(state.window_title == "raycam — " + std::to_string(dimension) + "D — demo scene");
     CHECK_FALSE(ui::editing_text());  // Tab never puts a field into text editing
   }
   // Right arrow: θ + 5°.
-  const double theta = state.orbit3d.theta;
+  const double theta = view3d(state).orbit.theta;
   tap(renderer, state, ImGuiKey_RightArrow);
-  CHECK(state.orbit3d.theta == Approx(theta + glm::radians(5.0)));
+  CHECK(view3d(state).orbit.theta == Approx(theta + glm::radians(5.0)));
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
   const auto d_slider = widget_rect(state, "###d");
   REQUIRE(d_slider);
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
-  const double d = state.orbit3d.d, theta_editing = state.orbit3d.theta;
+  const double d = view3d(state).orbit.d, theta_editing = view3d(state).orbit.theta;
   tap(renderer, state, ImGuiKey_LeftArrow);
   renderer.type_text("+");
   renderer.run_frame(state);
-  CHECK(state.orbit3d.theta == theta_editing);
+  CHECK(view3d(state).orbit.theta == theta_editing);
   // Esc leaves the field (the typed text is dropped), and the arrows act on the camera again.
   tap(renderer, state, ImGuiKey_Escape);
   CHECK_FALSE(ui::editing_text());
-  CHECK(state.orbit3d.d == d);
+  CHECK(view3d(state).orbit.d == d);
   tap(renderer, state, ImGuiKey_LeftArrow);
-  CHECK(state.orbit3d.theta == Approx(theta_editing - glm::radians(5.0)));
+  CHECK(view3d(state).orbit.theta == Approx(theta_editing - glm::radians(5.0)));
   // Tab from inside a text field: leaves it and switches.
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
   tap(renderer, state, ImGuiKey_Tab);
-  CHECK(state.dimension == 2);
+  CHECK(dimension(state) == 2);
   CHECK_FALSE(ui::editing_text());
 }
 

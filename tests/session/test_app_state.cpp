@@ -16,7 +16,7 @@ using raycam::test::state_for;
 TEST_CASE("a bad scene file shows an error naming it and keeps the current scene", "[ui][input]") {
   session::AppState state = state_for({});
   session::recast_if_needed(state);
-  const std::size_t spheres = state.file.scene3d.spheres.size();
+  const std::size_t spheres = view3d(state).scene.spheres.size();
   const test::ScratchDir scratch("app-state");
   const std::string bad_scene = scratch.path("bad_scene.json");
   {
@@ -26,9 +26,9 @@ TEST_CASE("a bad scene file shows an error naming it and keeps the current scene
   CHECK_FALSE(session::open_scene(state, bad_scene));
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("bad_scene.json") && Catch::Contains("objects[0].radius"));
-  CHECK(state.file.scene3d.spheres.size() == spheres);
+  CHECK(view3d(state).scene.spheres.size() == spheres);
   CHECK_FALSE(session::open_scene(state, scratch.path("no_such_file.json")));
-  CHECK(state.file.scene3d.spheres.size() == spheres);
+  CHECK(view3d(state).scene.spheres.size() == spheres);
 }
 
 TEST_CASE("a saved preset opens with the same camera", "[ui][files]") {
@@ -37,11 +37,11 @@ TEST_CASE("a saved preset opens with the same camera", "[ui][files]") {
   REQUIRE(session::save_preset(state, scratch.path("preset.json")));
   session::AppState reopened = state_for({});
   REQUIRE(session::open_scene(reopened, scratch.path("preset.json")));
-  CHECK(reopened.orbit3d.theta == Approx(state.orbit3d.theta));
-  CHECK(reopened.orbit3d.phi == Approx(state.orbit3d.phi));
-  CHECK(reopened.orbit3d.d == Approx(5.5));
-  CHECK(reopened.orbit3d.df == Approx(0.8));
-  CHECK(reopened.file.scene3d.spheres.size() == state.file.scene3d.spheres.size());
+  CHECK(view3d(reopened).orbit.theta == Approx(view3d(state).orbit.theta));
+  CHECK(view3d(reopened).orbit.phi == Approx(view3d(state).orbit.phi));
+  CHECK(view3d(reopened).orbit.d == Approx(5.5));
+  CHECK(view3d(reopened).orbit.df == Approx(0.8));
+  CHECK(view3d(reopened).scene.spheres.size() == view3d(state).scene.spheres.size());
 }
 
 TEST_CASE("options outside their range are refused before any window opens", "[ui][input]") {
@@ -71,8 +71,8 @@ TEST_CASE("the accuracy knobs switch the app to the reference caster, and back",
   session::AppState state = state_for({"--view", "2d", "--exact"});
   REQUIRE(session::uses_reference_caster(state));
   REQUIRE(session::recast_if_needed(state));
-  const ExactBar bar = exact_bar(state.camera2d, state.file.scene2d);
-  const ColourMap exact = to_colour_map(exact_bar_image(bar, state.file.scene2d));
+  const ExactBar bar = exact_bar(view2d(state).camera, view2d(state).scene);
+  const ColourMap exact = to_colour_map(exact_bar_image(bar, view2d(state).scene));
   CHECK(state.map.colours == exact.colours);
   CHECK(state.map.ids == exact.ids);
   // Back to the defaults: the fast caster, which equals the plain loop.
@@ -82,9 +82,9 @@ TEST_CASE("the accuracy knobs switch the app to the reference caster, and back",
   REQUIRE(session::recast_if_needed(state));
   CastOptions plain;
   plain.method = CastMethod::plain;
-  CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+  CHECK(state.map.ids == cast_primary_rays(view2d(state).camera, view2d(state).scene, plain).ids);
   // The exact bar is 2D only: in 3D the knob is ignored rather than failing every frame.
-  state.dimension = 3;
+  session::switch_dimension(state, 3);
   state.accuracy.exact = true;
   CHECK_FALSE(session::uses_reference_caster(state));
 }
@@ -102,22 +102,22 @@ TEST_CASE("every caster method shows the same image in the app", "[ui][accuracy]
 
 TEST_CASE("a knob the scene cannot take shows an error and the fast image, never a crash", "[ui][accuracy]") {
   session::AppState state = state_for({"--view", "2d", "--exact"});
-  state.file.scene2d.circles.assign(kMaxExactBarCircles + 1, Circle{{0, 0}, 0.5, {9, 9, 9}, ""});
+  view2d(state).scene.circles.assign(kMaxExactBarCircles + 1, Circle{{0, 0}, 0.5, {9, 9, 9}, ""});
   state.cameras_dirty = true;
   REQUIRE(session::recast_if_needed(state));
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("circles"));
   CastOptions plain;
   plain.method = CastMethod::plain;
-  CHECK(state.map.ids == cast_primary_rays(state.camera2d, state.file.scene2d, plain).ids);
+  CHECK(state.map.ids == cast_primary_rays(view2d(state).camera, view2d(state).scene, plain).ids);
 }
 
 TEST_CASE("placing the app's camera composes M_d once per change, with or without a mistake", "[ui][cache]") {
   session::AppState state = state_for({});
   for (bool printed : {false, true})
     for (bool arccos : {false, true})
-      for (int dimension : {2, 3}) {
-        state.dimension = dimension;
+      for (int wanted : {2, 3}) {
+        session::switch_dimension(state, wanted);
         state.mistakes.printed_rotation_sign = printed;
         state.arccos_route = arccos;
         const long long before = placements_built_on_this_thread();
@@ -134,11 +134,11 @@ TEST_CASE("the 3D scene is packed for the caster once per scene: a newly opened 
   CastOptions plain;
   plain.method = CastMethod::plain;
   // A camera change re-casts from the same packed copy.
-  state.orbit3d.theta += 0.3;
+  view3d(state).orbit.theta += 0.3;
   state.cameras_dirty = true;
   REQUIRE(session::recast_if_needed(state));
   CHECK(state.packed_version == packed);
-  CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
+  CHECK(state.map.ids == cast_primary_rays(view3d(state).camera, view3d(state).scene, plain).ids);
   // A new file: one big sphere on the target, so nearly every pixel changes from the demo's.
   const test::ScratchDir scratch("app-state");
   {
@@ -150,21 +150,21 @@ TEST_CASE("the 3D scene is packed for the caster once per scene: a newly opened 
   REQUIRE(session::recast_if_needed(state));
   CHECK(state.packed_version != packed);
   CHECK(state.packed3d.size() == 1);
-  CHECK(state.map.ids == cast_primary_rays(state.camera3d, state.file.scene3d, plain).ids);
+  CHECK(state.map.ids == cast_primary_rays(view3d(state).camera, view3d(state).scene, plain).ids);
   CHECK(state.map.colour_at(24, 32) == Rgb8{1, 2, 3});
 }
 
 TEST_CASE("switching 2D/3D away from a file and back shows and names that file again", "[ui][files]") {
   session::AppState state = state_for({"--scene", RAYCAM_SOURCE_DIR "/scenes/many3d.json"});
-  const std::size_t spheres = state.file.scene3d.spheres.size();
+  const std::size_t spheres = view3d(state).scene.spheres.size();
   REQUIRE(spheres == 2000);
   CHECK_THAT(session::window_title(state), Catch::Contains("3D") && Catch::Contains("many3d.json"));
   session::switch_dimension(state, 2);
   CHECK_THAT(session::window_title(state), Catch::Contains("2D") && Catch::Contains("demo scene"));
-  CHECK(state.file.scene2d.circles.size() == demo_scene_2d().circles.size());
+  CHECK(view2d(state).scene.circles.size() == demo_scene_2d().circles.size());
   session::switch_dimension(state, 3);
   CHECK_THAT(session::window_title(state), Catch::Contains("3D") && Catch::Contains("many3d.json"));
-  CHECK(state.file.scene3d.spheres.size() == spheres);
+  CHECK(view3d(state).scene.spheres.size() == spheres);
   // A 2D file opened now: the 3D side is the demo again, and is named so.
   REQUIRE(session::open_scene(state, RAYCAM_SOURCE_DIR "/scenes/classic2d.json"));
   session::switch_dimension(state, 3);

@@ -51,7 +51,7 @@ TEST_CASE("Check my camera grades the current camera in the background and names
 
   // A new camera is checked again: the right program passes there too.
   check.set_command(EXAMPLE_STUDENT_CPP, false);
-  state.orbit2d.theta += 0.5;
+  view2d(state).orbit.theta += 0.5;
   place_cameras(state);
   settle(check, state, now);
   CHECK(check.status() == "pass");

@@ -34,13 +34,13 @@ struct Scratch : test::ScratchDir {
 
 TEST_CASE("Open with an empty box says what to type, and changes nothing else", "[ui][files]") {
   session::AppState state = state_for({"--theta", "40"});
-  const double theta = state.orbit3d.theta;
+  const double theta = view3d(state).orbit.theta;
   const std::string title = state.window_title;
   CHECK_FALSE(session::open_scene(state, ""));
   CHECK(state.message_is_error);
   CHECK(state.message.find("path") != std::string::npos);
   CHECK(state.message.find(": :") == std::string::npos);
-  CHECK(state.orbit3d.theta == theta);
+  CHECK(view3d(state).orbit.theta == theta);
   CHECK(state.window_title == title);
 }
 
@@ -52,17 +52,17 @@ TEST_CASE("a failed open leaves the scene, the camera and the Open box as they w
   REQUIRE(session::save_preset(state, good));
   REQUIRE(session::open_scene(state, good));
   CHECK(state.path_input == good);
-  state.orbit3d.theta = 1.25;  // the student moved the camera since
-  const auto spheres = state.file.scene3d.spheres.size();
+  view3d(state).orbit.theta = 1.25;  // the student moved the camera since
+  const auto spheres = view3d(state).scene.spheres.size();
   const std::string missing = (scratch.dir / "typo.json").string();
   state.path_input = missing;  // typed in the box
   CHECK_FALSE(session::open_scene(state, missing));
   CHECK(state.message_is_error);
   CHECK(state.message_source == session::MessageSource::files);
   CHECK_THAT(state.message, Catch::Contains("typo.json"));
-  CHECK(state.file.scene3d.spheres.size() == spheres);
-  CHECK(state.orbit3d.theta == 1.25);
-  CHECK(state.scene_path == good);
+  CHECK(view3d(state).scene.spheres.size() == spheres);
+  CHECK(view3d(state).orbit.theta == 1.25);
+  CHECK(scene_path(state) == good);
   CHECK(state.path_input == good);  // the box shows the file on screen again
 }
 
@@ -75,7 +75,7 @@ TEST_CASE("Save as never writes over a file without a yes, and never defaults to
   REQUIRE(session::open_scene(state, opened));
   CHECK(state.save_path.empty());  // Save as starts empty after an open
   const std::string before = read(opened);
-  state.orbit3d.d = 3.5;
+  view3d(state).orbit.d = 3.5;
   CHECK_FALSE(session::save_preset_as(state, opened, false));  // exists: asks
   CHECK(state.overwrite_pending == opened);
   CHECK(read(opened) == before);                   // nothing written yet
@@ -97,7 +97,7 @@ TEST_CASE("Replace writes the file the prompt names, as the panel's button calls
   session::AppState state = state_for({});
   REQUIRE(session::save_preset(state, path));
   const std::string before = read(path);
-  state.orbit3d.d = 3.5;
+  view3d(state).orbit.d = 3.5;
   state.save_path = path;
   CHECK_FALSE(session::save_preset_as(state, state.save_path, false));  // "… already exists. Replace it?"
   REQUIRE(state.overwrite_pending == path);
@@ -106,7 +106,7 @@ TEST_CASE("Replace writes the file the prompt names, as the panel's button calls
   CHECK_FALSE(state.message_is_error);
   CHECK(read(path) != before);
   CHECK(session::open_scene(state, path));
-  CHECK(state.orbit3d.d == 3.5);
+  CHECK(view3d(state).orbit.d == 3.5);
 }
 
 TEST_CASE("a save that fails leaves the old file as it was and names the path typed", "[ui][files]") {
@@ -116,7 +116,7 @@ TEST_CASE("a save that fails leaves the old file as it was and names the path ty
   REQUIRE(session::save_preset(state, path));
   const std::string before = read(path);
   fs::create_directory(path + ".tmp");  // the temporary file cannot be made: the write fails
-  state.orbit3d.d = 3.5;
+  view3d(state).orbit.d = 3.5;
   CHECK_FALSE(session::save_preset(state, path));
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains(path + ":"));
@@ -141,7 +141,7 @@ TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][
   Scratch scratch;
   const std::string path = (scratch.dir / "scene.json").string();
   session::AppState state = state_for({SCENES_DIR "/classic3d.json"});
-  const std::size_t objects = state.file.scene3d.spheres.size();
+  const std::size_t objects = view3d(state).scene.spheres.size();
   REQUIRE(session::save_preset(state, path));
   const std::string text = read(path);
   std::istringstream lines(text);
@@ -158,7 +158,7 @@ TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][
   CHECK(centres == int(objects));
   CHECK(count <= int(objects) + 16);     // a few header lines, one line per object, the camera (dump(2): 60)
   REQUIRE(session::open_scene(state, path));  // and it still reads back
-  CHECK(state.file.scene3d.spheres.size() == objects);
+  CHECK(view3d(state).scene.spheres.size() == objects);
 }
 
 TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
@@ -176,8 +176,8 @@ TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
 TEST_CASE("started with a scene that cannot be opened, the app shows the demo and the error naming the file",
           "[ui][files]") {
   const session::AppState state = state_for({"no_such_dir/lesson3.json"}, true);
-  CHECK(state.scene_path.empty());
-  CHECK(state.file.scene3d.spheres.size() == demo_scene_3d().spheres.size());
+  CHECK(scene_path(state).empty());
+  CHECK(view3d(state).scene.spheres.size() == demo_scene_3d().spheres.size());
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("no_such_dir/lesson3.json"));
   CHECK(session::window_title(state) == "raycam — 3D — demo scene");

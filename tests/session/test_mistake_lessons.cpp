@@ -60,12 +60,12 @@ TEST_CASE("show me moves to where the mistake shows", "[ui][mistakes]") {
   CHECK(edges.res == Approx(0.05));
   session::AppState arccos = state_for({"--view", "2d", "--theta", "5"});
   session::show_mistake(arccos, lesson("arccos"));
-  CHECK(arccos.dimension == 3);  // in 2D the error never moves a pixel
-  CHECK(arccos.orbit3d.phi < 1e-8);
-  CHECK(std::abs(arccos.orbit3d.theta) > 0.3);  // theta must not be ~0, or losing it would change nothing
+  CHECK(dimension(arccos) == 3);  // in 2D the error never moves a pixel
+  CHECK(view3d(arccos).orbit.phi < 1e-8);
+  CHECK(std::abs(view3d(arccos).orbit.theta) > 0.3);  // theta must not be ~0, or losing it would change nothing
   session::AppState renormalise = state_for({"--df", "3"});
   session::show_mistake(renormalise, lesson("skip_renormalise"));
-  CHECK(renormalise.orbit3d.df == 1.0);
+  CHECK(view3d(renormalise).orbit.df == 1.0);
 }
 
 // One circle, so that each pixel's hit or miss is decided by that circle alone. With f = origin - centre,
@@ -80,11 +80,11 @@ TEST_CASE("forgetting to renormalise does what the panel says, with both formula
           state_for({"--view", "2d", "--df", std::to_string(df), "--d", "6", "--mistake", "no-renormalise"});
       state.accuracy.options.formula = formula;
       const Circle circle{{0.4, 0.3}, 1.0, {200, 10, 10}, "lone"};
-      state.file.scene2d.circles = {circle};
+      view2d(state).scene.circles = {circle};
       ids_now(state);
       int predicted_hits = 0, hits = 0, disagreements = 0;
       for (int column = 0; column < state.map.width; ++column) {
-        const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
+        const Ray2D ray = view2d(state).camera.primary_ray(view2d(state).camera.pixel_of_column(column));
         const double length = glm::length(ray.direction);
         const glm::dvec2 f = ray.origin - circle.centre;
         const double b_unit = glm::dot(f, ray.direction / length);
@@ -155,11 +155,11 @@ TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the 
         ++hits;
         const glm::dvec3 centre =
             std::string(view) == "2d"
-                ? glm::dvec3(state.file.scene2d.circles[std::size_t(ray.hit.id)].centre, 0.0)
-                : state.file.scene3d.spheres[std::size_t(ray.hit.id)].centre;
+                ? glm::dvec3(view2d(state).scene.circles[std::size_t(ray.hit.id)].centre, 0.0)
+                : view3d(state).scene.spheres[std::size_t(ray.hit.id)].centre;
         const double radius = std::string(view) == "2d"
-                                  ? state.file.scene2d.circles[std::size_t(ray.hit.id)].radius
-                                  : state.file.scene3d.spheres[std::size_t(ray.hit.id)].radius;
+                                  ? view2d(state).scene.circles[std::size_t(ray.hit.id)].radius
+                                  : view3d(state).scene.spheres[std::size_t(ray.hit.id)].radius;
         INFO(view << " " << id << " column " << ray.pixel.column);
         REQUIRE(std::isfinite(ray.hit.t));
         CHECK(glm::length(ray.end(0.0) - centre) == Approx(radius).epsilon(1e-9));

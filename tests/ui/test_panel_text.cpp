@@ -135,7 +135,7 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
     session::AppState state = state_for({"--view", "2d", "--inspect", std::to_string(column) + ",0"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO("column " << column << ", the panel says:\n" << shown);
-    const Camera2D& camera = state.camera2d;
+    const Camera2D& camera = view2d(state).camera;
     const int n = camera.pixel_count(), k = n - 1 - column;  // column 0 is the eye's left: k = n-1
     const glm::dvec2 p0(-1.0 + (2.0 * k + 1.0) / n, 0.0), u0 = p0 - glm::dvec2(0, 1);
     const glm::dmat3& m = camera.world_from_camera();  // M_d from the app's state
@@ -148,7 +148,7 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
     check_tuple(tuples[2], {p, 0}, 2);
     check_tuple(tuples[3], {u, 0}, 2);
     CHECK(number_after(shown, R"(k\s*=)") == Approx(k));
-    const auto [id, t] = nearest(state.file.scene2d.circles, p, u);
+    const auto [id, t] = nearest(view2d(state).scene.circles, p, u);
     CHECK(id == state.map.id_at(0, column));
     if (id >= 0) {
       CHECK(number_after(shown, "obje[ct]+") == Approx(id));
@@ -168,7 +168,7 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
     INFO(pixel << ", the panel says:\n" << shown);
     const int column = std::stoi(pixel),
               row = std::stoi(std::string(pixel).substr(std::string(pixel).find(',') + 1));
-    const Camera3D& camera = state.camera3d;
+    const Camera3D& camera = view3d(state).camera;
     const glm::dvec3 p0(-1.0 + (2.0 * column + 1.0) / camera.columns(),
                         1.0 - (2.0 * row + 1.0) / camera.rows(), 0.0);
     const glm::dvec3 u0 = p0 - glm::dvec3(0, 0, 1);
@@ -186,7 +186,7 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
     check_tuple(tuples[1], u0, 3);
     check_tuple(tuples[2], p, 3);
     check_tuple(tuples[3], u, 3);
-    const auto [id, t] = nearest(state.file.scene3d.spheres, p, u);
+    const auto [id, t] = nearest(view3d(state).scene.spheres, p, u);
     CHECK(id == state.map.id_at(row, column));
     if (id >= 0) {
       CHECK(number_after(shown, "obje[ct]+") == Approx(id));
