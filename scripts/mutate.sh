@@ -125,6 +125,9 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? french_of(/false ? french_of(/' "$SESSION" "^session: ?error reasons"
 mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+# --- one view model, host capabilities ---
+mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
+mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -2,6 +2,8 @@
 // only) · the parent's poll loop · the sandbox.
 #include "student_process.h"
 
+#include "close_descriptors.h"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
@@ -279,9 +281,7 @@ void stop(pid_t pid) {
       (info >= 0 && dup2(info, 4) < 0))
     _exit(127);
   fcntl(3, F_SETFD, FD_CLOEXEC);
-#ifndef __EMSCRIPTEN__  // the web page has no processes: fork() fails there before this point
-  close_range(info >= 0 ? 5 : 4, ~0U, 0);  // nothing else of ours leaks into the student's program
-#endif
+  close_descriptors_from(info >= 0 ? 5 : 4);  // nothing else of ours leaks into the student's program
   if (chdir(work) == 0) execve(program, argv, envp);
   const int code = errno;
   ssize_t ignored = write(3, &code, sizeof code);

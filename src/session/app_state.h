@@ -16,6 +16,7 @@
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
+#include "host_capabilities.h"
 #include "text.h"
 #include "view.h"
 
@@ -91,6 +92,8 @@ struct AppState {
   double ns_per_ray = 20.0;     // measured at every full cast; predicts the next cast's cost
   bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
 
+  // ---- the host: what it can do (set once by the executable) and what it is asked for ----
+  HostCapabilities host = kDesktopHost;
   // ---- requests to the executable (only it knows about windows and files of pixels) ----
   bool request_screenshot = false;  // write the frame to screenshot_path (request_screenshot() picks it)
   std::string screenshot_path;

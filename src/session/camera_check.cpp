@@ -53,7 +53,7 @@ std::shared_ptr<const KeyedVerdict> graded(const CheckJob& job) {
   }
 }
 
-#ifndef __EMSCRIPTEN__  // the page grades at once, on its one thread (update())
+// The worker thread's loop (a host that grades in the background; a page grades at once in update()).
 void work(std::shared_ptr<CheckShared> shared) {
   for (;;) {
     CheckJob job;
@@ -71,7 +71,6 @@ void work(std::shared_ptr<CheckShared> shared) {
     shared->running = false;
   }
 }
-#endif
 
 }  // namespace
 
@@ -139,12 +138,13 @@ void CameraCheck::update(const AppState& state, double now) {
     return;
   }
   submitted_key_ = key;
-#ifdef __EMSCRIPTEN__
-  // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
-  std::shared_ptr<const KeyedVerdict> verdict = graded(job);
-  std::lock_guard<std::mutex> lock(shared_->mutex);
-  shared_->latest = std::move(verdict);
-#else
+  if (!state.host.grades_in_background) {
+    // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
+    std::shared_ptr<const KeyedVerdict> verdict = graded(job);
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    shared_->latest = std::move(verdict);
+    return;
+  }
   std::lock_guard<std::mutex> lock(shared_->mutex);
   shared_->pending = std::move(job);  // a newer case replaces one still waiting
   shared_->started_at = now;
@@ -153,7 +153,6 @@ void CameraCheck::update(const AppState& state, double now) {
     std::thread(work, shared_).detach();  // it holds the shared state; it ends when stop is set
   }
   shared_->wake.notify_all();
-#endif
 }
 
 // ---- what the panel reads

@@ -15,28 +15,28 @@ namespace raycam::ui {
 using namespace session;  // the state the window shows and edits
 
 // ---- the panel section -----------------------------------------------------------------------------------
-void check_section(CameraCheck& check, double now) {
+void check_section(CameraCheck& check, const HostCapabilities& host, double now) {
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                            "it is checked whenever they change (docs/check.md)."));
   ImGui::PopStyleColor();
   CheckRequest& request = check.request();
-#ifdef __EMSCRIPTEN__  // a page runs no program: the case goes out as a download, the answer file comes back
-  wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
-                           "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
-  if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
-  if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
-  if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
-#else
-  const std::string label = tr("program###check_command");  // above its box, which takes the whole width
-  wrapped_between_words(label.substr(0, label.find("##")));
-  ImGui::SetNextItemWidth(-FLT_MIN);
-  ImGui::InputText("###check_command", &request.command);
-  checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
-  checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
-  if (button(tr("Check now###check_now"))) request.check_now = true;
-#endif
+  if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
+    wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
+                             "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
+    if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
+    if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
+    if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
+  } else {
+    const std::string label = tr("program###check_command");  // above its box, which takes the whole width
+    wrapped_between_words(label.substr(0, label.find("##")));
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    ImGui::InputText("###check_command", &request.command);
+    checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
+    checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
+    if (button(tr("Check now###check_now"))) request.check_now = true;
+  }
 
   const CheckProgress progress = check.progress();
   if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));

@@ -230,7 +230,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_section(check_, ImGui::GetTime());
+    check_section(check_, state.host, ImGui::GetTime());
   }
   ImGui::End();
   if (state.map_version != uploaded_map_version_) {

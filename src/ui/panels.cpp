@@ -653,23 +653,25 @@ bool message_shown_this_frame(const AppState& state) {
 // ---- status line ---------------------------------------------------------------------------------------
 void status_line(AppState& state) {
   float room = ImGui::GetContentRegionAvail().x;
-#ifdef __EMSCRIPTEN__
   // The page's file picker, at the line's right end in the app's font and language: the browser's own
   // button stays small, and covered the line's text at 1.5× and 2×.
   // Shortened where the line's shortest text and it would not fit (1024 px at 3×, in French).
+  const bool picker = state.host.picks_files;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  // A text's height (no vertical padding): the line keeps the desktop's height, so the page's layout is the
-  // desktop's.
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
-  const auto width_of = [](const char* label) {
-    return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
-  };
   const char* open_label = tr("Open a scene file…###open_scene_file");
-  if (ImGui::CalcTextSize(trf("cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
-    open_label = tr("Open…###open_scene_file");
-  const float open_width = width_of(open_label);
-  room -= open_width + spacing;
-#endif
+  float open_width = 0.0f;
+  if (picker) {
+    // A text's height (no vertical padding): the line keeps the desktop's height, so the page's layout is
+    // the desktop's.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
+    const auto width_of = [](const char* label) {
+      return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+    };
+    if (ImGui::CalcTextSize(trf("cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
+      open_label = tr("Open…###open_scene_file");
+    open_width = width_of(open_label);
+    room -= open_width + spacing;
+  }
   // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
   const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
@@ -686,13 +688,13 @@ void status_line(AppState& state) {
     status_counters(state);
     ImGui::EndTooltip();
   }
-#ifdef __EMSCRIPTEN__
-  const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
-  ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
-  if (ImGui::Button(open_label)) state.pick_scene_file = true;
-  record_item_rect(state, "###open_scene_file");
-  ImGui::PopStyleVar();
-#endif
+  if (picker) {
+    const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
+    ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
+    if (ImGui::Button(open_label)) state.pick_scene_file = true;
+    record_item_rect(state, "###open_scene_file");
+    ImGui::PopStyleVar();
+  }
 }
 
 void status_counters(const AppState& state) {

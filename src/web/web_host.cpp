@@ -155,6 +155,7 @@ ui::FramebufferSize WebHost::begin(const session::AppState&) {
 gl::RgbaImage WebHost::read_back() const { return gl::read_framebuffer(size_.width, size_.height); }
 
 void run_page(session::AppState& state) {
+  state.host = session::kPageHost;  // what the panels offer: the picker, answer files, no program to run
   if (!glfwInit()) {
     std::fprintf(stderr, "raycam: cannot start GLFW in this page\n");
     return;

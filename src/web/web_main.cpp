@@ -231,7 +231,7 @@ int main() {
     // As --font-scale, with its rule and its words: the projector's size in a bookmark.
     const std::string scale = query_value("scale");
     if (scale.empty()) return;
-    const auto rule = raycam::flags::number_in({raycam::session::kFontScaleOptionMin, raycam::ui::kFontScaleOptionMax});
+    const auto rule = raycam::flags::number_in({raycam::session::kFontScaleOptionMin, raycam::session::kFontScaleOptionMax});
     options.font_scale = float(raycam::flags::checked_value(rule, scale, "?scale"));
   });
   const std::string scene = query_value("scene");

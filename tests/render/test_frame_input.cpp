@@ -93,6 +93,23 @@ std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const session::AppState& st
 }
 }  // namespace
 
+TEST_CASE("the page's host offers its file picker at the status line's end, the desktop's does not",
+          "[render][host]") {
+  for (const bool page : {false, true}) {
+    session::AppState state = state_for({"--size", "64x64"});
+    state.host = page ? session::kPageHost : session::kDesktopHost;
+    std::map<std::string, session::WidgetRect> rects;
+    state.widget_rects = &rects;
+    headless::HeadlessRenderer renderer(1280, 720);
+    renderer.render_settled(state);
+    const auto open = widget_rect(state, "###open_scene_file");
+    CHECK(open.has_value() == page);
+    const auto status = widget_rect(state, "###status_text");
+    REQUIRE(status);
+    if (open) CHECK(open->first.x >= status->second.x);  // after the text, never over it
+  }
+}
+
 TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
           "[render][input][same-frame]") {
   session::AppState state = state_for({"--size", "64x64"});

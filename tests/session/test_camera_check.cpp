@@ -3,8 +3,10 @@
 // blocks.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <fstream>
 #include <thread>
 
+#include "../scratch_dir.h"
 #include "app_options.h"
 #include "camera_check.h"
 
@@ -71,6 +73,32 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CHECK(check.status().empty());
   CHECK_FALSE(check.up_to_date());
 }  // the destructor does not wait either: the worker finishes on its own
+
+TEST_CASE("a host without a thread to spare (the page) has the verdict in the frame that asks for it",
+          "[ui][check][host]") {
+  const test::ScratchDir scratch("page-check");
+  const std::string answer = scratch.path("answer.json");
+  {
+    std::ofstream file(answer);
+    file << "{\"ids\": []}";  // the wrong size: a verdict at once, whatever it says
+  }
+  for (const bool in_background : {false, true}) {
+    AppState state = classic_2d();
+    state.host = in_background ? kDesktopHost : kPageHost;
+    CameraCheck check;
+    check.set_command(answer, true);
+    check.update(state, 0.0);
+    check.update(state, 10.0);  // past the quiet time: due
+    if (in_background) {
+      double now = 10.0;
+      settle(check, state, now);  // a worker's verdict arrives later
+    } else {
+      CHECK_FALSE(check.busy());  // graded in update() itself: no worker, nothing queued
+      CHECK(check.up_to_date());
+    }
+    CHECK_FALSE(check.status().empty());
+  }
+}
 
 TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
   session::CheckProgress progress;
