@@ -36,10 +36,10 @@ void key_callback(GLFWwindow* window, int key, int, int action, int) {
   if (action != GLFW_PRESS) return;
   session::AppState& state = *callbacks_of(window).state;
   if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
-  if (key == GLFW_KEY_F11) state.request_fullscreen = true;
+  if (key == GLFW_KEY_F11 && state.host.fullscreen) state.requests.ask(session::HostRequestKind::toggle_fullscreen);
   if (key == GLFW_KEY_F12) session::request_screenshot(state);  // numbered, as the Screenshot button
   if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
-    state.request_quit = true;
+    state.requests.ask(session::HostRequestKind::quit);
 }
 
 // Installed over ImGui's backend's key and character callbacks (which chain to ours): a key's changes reach
@@ -172,12 +172,9 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
     ui::FrameRenderer frame;
     int saved[4] = {0, 0, options.width, options.height};
     std::string applied_title = "raycam";
-    for (int drawn = 0; !host.should_close() && !state.request_quit;) {
+    for (int drawn = 0; !host.should_close() && !state.requests.pending(session::HostRequestKind::quit);) {
       const bool last = run.frames > 0 && drawn + 1 >= run.frames;
-      if (last && !run.screenshot.empty()) {
-        state.screenshot_path = run.screenshot;
-        state.request_screenshot = true;
-      }
+      if (last && !run.screenshot.empty()) state.requests.ask(session::HostRequestKind::screenshot, run.screenshot);
       const ui::FrameResult result = ui::run_frame(host, frame, state);
       if (!result.drawn) continue;
       if (state.window_title != applied_title) {  // the UI names the mode and the scene; the host applies it
@@ -186,10 +183,8 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
       }
       ++drawn;
       if (result.screenshot_failed && last) exit_code = 1;
-      if (state.request_fullscreen) {
-        toggle_fullscreen(window, saved);
-        state.request_fullscreen = false;
-      }
+      if (state.requests.take(session::HostRequestKind::toggle_fullscreen)) toggle_fullscreen(window, saved);
+      state.requests.take(session::HostRequestKind::pick_scene_file);  // a window has no picker: typed paths
       if (last) break;
     }
   }

@@ -205,10 +205,10 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite) {
   return save_preset(state, path);
 }
 
-void set_message(AppState& state, MessageSource source, bool is_error, std::string text) {
-  state.message = std::move(text);
-  state.message_is_error = is_error;
-  state.message_source = source;
+void set_message(Messages& messages, MessageSource source, bool is_error, std::string text) {
+  messages.message = std::move(text);
+  messages.message_is_error = is_error;
+  messages.message_source = source;
 }
 
 std::string next_screenshot_path(const std::string& directory) {
@@ -220,11 +220,10 @@ std::string next_screenshot_path(const std::string& directory) {
   }
 }
 
-void request_screenshot(AppState& state) {
+void request_screenshot(HostLink& host) {
   std::error_code ignored;
-  state.screenshot_path =
-      std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string();
-  state.request_screenshot = true;
+  host.requests.ask(HostRequestKind::screenshot,
+                    std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string());
 }
 
 std::string window_title(const AppState& state) {

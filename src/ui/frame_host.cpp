@@ -28,8 +28,8 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   glClearColor(clear.x, clear.y, clear.z, clear.w);
   glClear(GL_COLOR_BUFFER_BIT);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (state.request_screenshot) {
-    const std::string path = state.screenshot_path.empty() ? "raycam-screenshot.png" : state.screenshot_path;
+  if (const auto shot = state.requests.take(HostRequestKind::screenshot)) {
+    const std::string path = shot->path.empty() ? "raycam-screenshot.png" : shot->path;
     try {
       glFinish();
       gl::write_png(host.read_back(), path);
@@ -38,7 +38,6 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
       set_message(state, MessageSource::files, true, tr_reason(error.what()));
       result.screenshot_failed = true;
     }
-    state.request_screenshot = false;
   }
   host.present();
   state.frame_ms =
@@ -48,8 +47,10 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
 }
 
 bool frame_needs_redraw(const AppState& state) {
-  return state.cameras_dirty || state.refine_pending || state.request_screenshot ||
-         state.request_fullscreen || state.request_quit || state.check_waiting;
+  const HostRequests& asked = state.requests;
+  return state.cameras_dirty || state.refine_pending || asked.pending(HostRequestKind::screenshot) ||
+         asked.pending(HostRequestKind::toggle_fullscreen) || asked.pending(HostRequestKind::quit) ||
+         state.check_waiting;
 }
 
 }  // namespace raycam::ui

@@ -39,7 +39,7 @@ struct FrameResult {
 };
 
 // The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
-// framebuffer, a requested screenshot saved (state.request_screenshot, to state.screenshot_path), present.
+// framebuffer, a requested screenshot saved (taken from state.requests), present.
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, session::AppState& state);
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse

@@ -625,7 +625,7 @@ void lecture_section(AppState& state) {
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(state, tr("Language / Langue###language"), state.language, kLanguages);
-  if (button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
+  if (button(tr("Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
   same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr("Help (F1)"))) state.show_help = !state.show_help;
 }
@@ -691,7 +691,7 @@ void status_line(AppState& state) {
   if (picker) {
     const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
     ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
-    if (ImGui::Button(open_label)) state.pick_scene_file = true;
+    if (ImGui::Button(open_label)) state.requests.ask(HostRequestKind::pick_scene_file);
     record_item_rect(state, "###open_scene_file");
     ImGui::PopStyleVar();
   }

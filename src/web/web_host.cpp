@@ -101,8 +101,7 @@ void tick() {
       session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(error.what()));
     }
   }
-  if (page.state->pick_scene_file) {  // the status line's button
-    page.state->pick_scene_file = false;
+  if (page.state->requests.take(session::HostRequestKind::pick_scene_file)) {  // the status line's button
     EM_ASM(document.getElementById('picker').click(););  // within the click's user activation
   }
   if (request.pick_answer) {
@@ -110,6 +109,7 @@ void tick() {
     EM_ASM(document.getElementById('answer-picker').click(););  // within the click's user activation
   }
   page.downloads->offer_new_files();  // Save as, PNGs, screenshots, the check's case become downloads
+  page.state->requests.take(session::HostRequestKind::toggle_fullscreen);  // the browser's own (kPageHost)
   static std::string applied_title;
   if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
     glfwSetWindowTitle(page.window, page.state->window_title.c_str());

@@ -169,8 +169,9 @@ TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
   CHECK(fs::path(session::next_screenshot_path(scratch.dir.string())).filename() == "raycam-screenshot-002.png");
   session::AppState state = state_for({});
   session::request_screenshot(state);
-  CHECK(state.request_screenshot);
-  CHECK(fs::path(state.screenshot_path).is_absolute());  // the message can say exactly where
+  const session::HostRequest* shot = state.requests.find(session::HostRequestKind::screenshot);
+  REQUIRE(shot);
+  CHECK(fs::path(shot->path).is_absolute());  // the message can say exactly where
 }
 
 TEST_CASE("started with a scene that cannot be opened, the app shows the demo and the error naming the file",
