@@ -32,7 +32,7 @@ void reset_camera(AppState& state) {
   state.cameras_dirty = true;
 }
 
-void place_cameras(AppState& state) {
+void place_cameras(Lesson& state) {
   // One Camera per change, M_d composed once in its constructor. The arccos route re-derives the angles
   // from P and C as the handout's free placement does (the mistake near a pole).
   std::visit(
@@ -47,7 +47,7 @@ void place_cameras(AppState& state) {
       state.view);
 }
 
-bool uses_reference_caster(const AppState& state) {
+bool uses_reference_caster(const Lesson& state) {
   return needs_reference_caster(state.accuracy.options, state.accuracy.exact && exact_bar_applies(state.view));
 }
 
@@ -248,7 +248,7 @@ void switch_dimension(AppState& state, int dimension) {
   state.cameras_dirty = true;
 }
 
-int dimension(const AppState& state) { return dimension_of(state.view); }
+int dimension(const Lesson& state) { return dimension_of(state.view); }
 
 namespace {
 template <class Wanted, class State>
@@ -257,43 +257,43 @@ auto& view_of_kind(State& state) {  // the one of the two views that is of this 
   return on_screen ? *on_screen : std::get<Wanted>(state.other_view);
 }
 }  // namespace
-View2D& view2d(AppState& state) { return view_of_kind<View2D>(state); }
-const View2D& view2d(const AppState& state) { return view_of_kind<View2D>(state); }
-View3D& view3d(AppState& state) { return view_of_kind<View3D>(state); }
-const View3D& view3d(const AppState& state) { return view_of_kind<View3D>(state); }
+View2D& view2d(Lesson& state) { return view_of_kind<View2D>(state); }
+const View2D& view2d(const Lesson& state) { return view_of_kind<View2D>(state); }
+View3D& view3d(Lesson& state) { return view_of_kind<View3D>(state); }
+const View3D& view3d(const Lesson& state) { return view_of_kind<View3D>(state); }
 
-const std::string& scene_path(const AppState& state) {
+const std::string& scene_path(const Lesson& state) {
   return std::visit([](const auto& view) -> const std::string& { return view.scene_path; }, state.view);
 }
 
-SharedOrbit<double> active_orbit(AppState& state) {
+SharedOrbit<double> active_orbit(Lesson& state) {
   return std::visit([](auto& view) { return SharedOrbit<double>{view.orbit.theta, view.orbit.d, view.orbit.df}; },
                     state.view);
 }
 
-SharedOrbit<const double> active_orbit(const AppState& state) {
+SharedOrbit<const double> active_orbit(const Lesson& state) {
   return std::visit(
       [](const auto& view) { return SharedOrbit<const double>{view.orbit.theta, view.orbit.d, view.orbit.df}; },
       state.view);
 }
 
-glm::dvec2 active_target_xy(const AppState& state) {
+glm::dvec2 active_target_xy(const Lesson& state) {
   return std::visit([](const auto& view) { return glm::dvec2(view.orbit.target); }, state.view);
 }
 
-int active_max_side(const AppState& state) {
+int active_max_side(const Lesson& state) {
   return std::visit([](const auto& view) { return max_side(view); }, state.view);
 }
 
-std::size_t active_object_count(const AppState& state) {
+std::size_t active_object_count(const Lesson& state) {
   return std::visit([](const auto& view) { return objects_of(view.scene).size(); }, state.view);
 }
 
-CameraPreset active_preset(const AppState& state) {
+CameraPreset active_preset(const Lesson& state) {
   return std::visit([](const auto& view) { return preset_of(view.camera); }, state.view);
 }
 
-int construction_steps(const AppState& state) {
+int construction_steps(const Lesson& state) {
   return std::visit([](const auto& view) { return view.kConstructionSteps; }, state.view);
 }
 

@@ -154,7 +154,7 @@ std::string window_title(const AppState& state);
 // Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
 void adopt_view_setup(AppState& state, const ViewSetup& setup);
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
-void place_cameras(AppState& state);
+void place_cameras(Lesson& state);
 // Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the
 // user is interacting, a cast predicted to take longer than kInteractiveBudgetMs is done at a coarser res
 // (a preview), and refined to full resolution once the interaction stops: the UI never freezes.
@@ -170,7 +170,7 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite);
 
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
-bool uses_reference_caster(const AppState& state);
+bool uses_reference_caster(const Lesson& state);
 
 // Back to the camera the scene opened with (the file's preset and the command line), and a fresh fit of
 // the overhead view.
@@ -181,14 +181,14 @@ void reset_camera(AppState& state);
 void switch_dimension(AppState& state, int dimension);
 
 // ---- the views: the one on screen and each dimension's ----
-int dimension(const AppState& state);  // of the view on screen
+int dimension(const Lesson& state);  // of the view on screen
 // Each dimension's view, on screen or kept aside.
-View2D& view2d(AppState& state);
-const View2D& view2d(const AppState& state);
-View3D& view3d(AppState& state);
-const View3D& view3d(const AppState& state);
+View2D& view2d(Lesson& state);
+const View2D& view2d(const Lesson& state);
+View3D& view3d(Lesson& state);
+const View3D& view3d(const Lesson& state);
 // The file the scene on screen came from (empty: the built-in demo).
-const std::string& scene_path(const AppState& state);
+const std::string& scene_path(const Lesson& state);
 
 // The orbit parameters the 2D and 3D cameras share (Number: double, or const double to read them).
 template <class Number>
@@ -197,18 +197,18 @@ struct SharedOrbit {
   Number& d;
   Number& df;
 };
-SharedOrbit<double> active_orbit(AppState& state);
-SharedOrbit<const double> active_orbit(const AppState& state);
+SharedOrbit<double> active_orbit(Lesson& state);
+SharedOrbit<const double> active_orbit(const Lesson& state);
 // The target C seen from above (3D: its x and y).
-glm::dvec2 active_target_xy(const AppState& state);
+glm::dvec2 active_target_xy(const Lesson& state);
 // The longest side the camera may use: N in 2D, max(W, H) in 3D.
-int active_max_side(const AppState& state);
+int active_max_side(const Lesson& state);
 // The objects of the scene on screen (circles or spheres).
-std::size_t active_object_count(const AppState& state);
+std::size_t active_object_count(const Lesson& state);
 // The camera's current parameters as a scene file's preset.
-CameraPreset active_preset(const AppState& state);
+CameraPreset active_preset(const Lesson& state);
 
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
-int construction_steps(const AppState& state);
+int construction_steps(const Lesson& state);
 
 }  // namespace raycam::session

@@ -74,7 +74,7 @@ void work(std::shared_ptr<CheckShared> shared) {
 
 }  // namespace
 
-SceneFile camera_case(const AppState& state) {
+SceneFile camera_case(const Lesson& state) {
   return scene_file_of(state.view, active_preset(state));
 }
 

@@ -44,7 +44,7 @@ struct CheckProgress {
 
 // The case of the camera on screen, as the student's program reads it: the scene and the camera's parameters
 // (the page offers it as a download: it runs no program, and grades the answer file given back).
-SceneFile camera_case(const AppState& state);
+SceneFile camera_case(const Lesson& state);
 
 // What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
 // wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty

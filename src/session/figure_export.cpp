@@ -7,7 +7,7 @@
 
 namespace raycam::session {
 
-std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
+std::vector<std::string> export_construction_figure(const Lesson& state, const std::string& path,
                                                     bool all_steps) {
   figure::FigureOutput output;
   bool known = false;

@@ -12,7 +12,7 @@ namespace raycam::session {
 // The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf or .png; all
 // steps go to PATH-a.svg … or to one PDF of pages). Returns the files written; throws std::invalid_argument
 // for a name without one of those extensions, std::runtime_error when a file cannot be written.
-std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
+std::vector<std::string> export_construction_figure(const Lesson& state, const std::string& path,
                                                     bool all_steps);
 
 }  // namespace raycam::session

@@ -6,7 +6,7 @@
 
 namespace raycam::session {
 
-std::vector<std::string> export_construction_figure(const AppState&, const std::string&, bool) {
+std::vector<std::string> export_construction_figure(const Lesson&, const std::string&, bool) {
   throw std::runtime_error("Export figure needs the desktop app (or raycam-cli figure)");
 }
 
