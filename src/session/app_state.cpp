@@ -99,8 +99,8 @@ bool recast_if_needed(AppState& state, bool interacting) {
   remember_pin_point(state);
   // A new scene is packed once, before the clock starts: packing 10⁵ spheres (14 ms, their clusters) is not a
   // cast's cost, and counted in it, it would have shown a cast 7 times slower and made the next drag coarser.
-  if (auto* view = std::get_if<View3D>(&state.view); view && state.packed_version != state.scene_version) {
-    state.packed3d.pack(view->scene);  // 3D only: the 2D caster walks its circles as they are
+  if (state.packed_version != state.scene_version) {
+    pack_scene(state.view, state.packed3d);
     state.packed_version = state.scene_version;
   }
   const auto start = std::chrono::steady_clock::now();
@@ -123,13 +123,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   if (!cast) {
     CastOptions options = state.cast_options;
     options.formula = state.accuracy.options.formula;
-    std::visit(overloaded{[&](const View2D& view) {
-                            cast_primary_rays(view.camera, view.scene, state.map, options, &state.stats);
-                          },
-                          [&](const View3D& view) {  // the packed scene
-                            cast_primary_rays(view.camera, state.packed3d, state.map, options, &state.stats);
-                          }},
-               state.view);
+    cast_view(state.view, state.packed3d, state.map, options, &state.stats);
   }
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);

@@ -30,6 +30,17 @@ OpenedViews views_from_setup(const ViewSetup& setup) {
   return views;
 }
 
+void pack_scene(const View& view, PackedScene3D& packed) {
+  if (const auto* view3d = std::get_if<View3D>(&view)) packed.pack(view3d->scene);  // 2D casts its circles as they are
+}
+
+void cast_view(const View& view, const PackedScene3D& packed, ColourMap& map, const CastOptions& options,
+               CastStats* stats) {
+  std::visit(overloaded{[&](const View2D& v) { cast_primary_rays(v.camera, v.scene, map, options, stats); },
+                        [&](const View3D& v) { cast_primary_rays(v.camera, packed, map, options, stats); }},
+             view);
+}
+
 void validate(const View& view) {
   std::visit([](const auto& v) { raycam::validate(v.scene); }, view);
 }

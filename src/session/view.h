@@ -12,6 +12,7 @@
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
+#include "raycam/ray_caster.h"
 #include "raycam/scene.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
@@ -100,6 +101,11 @@ struct OpenedViews {
   View other;
 };
 OpenedViews views_from_setup(const ViewSetup& setup);
+// The fast casters on a view: the 2D scene as it is, the 3D scene as `packed` (pack_scene: packing is not a
+// cast's cost, so the caller packs once per scene).
+void pack_scene(const View& view, PackedScene3D& packed);
+void cast_view(const View& view, const PackedScene3D& packed, ColourMap& map, const CastOptions& options,
+               CastStats* stats);
 // The scene's own rules (raycam/scene.h's validate): throws std::invalid_argument.
 void validate(const View& view);
 // The scene file holding a view's scene and a camera preset (for saving and for the checker's case).
