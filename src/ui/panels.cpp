@@ -313,6 +313,56 @@ void camera_section(AppState& state) {
 }
 
 // ---- construction of M_d -------------------------------------------------------------------------------
+namespace {
+// M_d's factors and their product up to `step`, as the handout writes them in each dimension.
+void placement_tables(AppState& state, const View2D& view, int step, int steps) {
+  const Placement2D& p = view.camera.placement();
+  ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
+  if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("R(α)")) {
+    matrix_table<3>("R", p.rotation);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  state.shown_matrix = glm::dmat4(construction_step(p, step));
+  matrix_table<3>("M", construction_step(p, step));
+}
+void placement_tables(AppState& state, const View3D& view, int step, int steps) {
+  if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
+    explain(tr(
+        "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
+        "(red), image up (green), view (blue)."));
+  if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
+    explain(tr(
+        "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+        "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
+        "world up points down and the image is upside down."));
+    if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+      state.cameras_dirty = true;
+  }
+  const Placement3D& p = view.camera.placement();
+  ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
+  if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
+    matrix_table<4>("Roll", p.roll);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("Ry(φ)")) {
+    matrix_table<4>("Ry", p.polar);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("Rz(θ)")) {
+    matrix_table<4>("Rz", p.azimuth);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  state.shown_matrix = construction_step(p, step);
+  matrix_table<4>("M", construction_step(p, step));
+}
+}  // namespace
+
 // The course figures of this camera (raycam-cli figure): the step shown, or every step.
 void figure_export_row(AppState& state) {
   labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
@@ -351,52 +401,7 @@ void construction_section(AppState& state) {
   if (labelled(state, tr("step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
   explain(tr(dimension(state) == 2 ? k2D[step] : k3D[step]));
-  std::visit(overloaded{[&](const View2D& view) {
-    const Placement2D& p = view.camera.placement();
-    ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
-    if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("R(α)")) {
-      matrix_table<3>("R", p.rotation);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
-    state.shown_matrix = glm::dmat4(construction_step(p, step));
-    matrix_table<3>("M", construction_step(p, step));
-  },
-  [&](const View3D& view) {
-    if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
-      explain(tr(
-        "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
-        "(red), image up (green), view (blue)."));
-    if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
-      explain(tr(
-          "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
-          "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
-          "world up points down and the image is upside down."));
-      if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
-        state.cameras_dirty = true;
-    }
-    const Placement3D& p = view.camera.placement();
-    ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
-    if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
-      matrix_table<4>("Roll", p.roll);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("Ry(φ)")) {
-      matrix_table<4>("Ry", p.polar);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("Rz(θ)")) {
-      matrix_table<4>("Rz", p.azimuth);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
-    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
-    state.shown_matrix = construction_step(p, step);
-    matrix_table<4>("M", construction_step(p, step));
-  }}, state.view);
+  std::visit([&](const auto& view) { placement_tables(state, view, step, steps); }, state.view);
   figure_export_row(state);
 }
 
@@ -420,20 +425,22 @@ void inspector_section(const AppState& state) {
     }
     wrapped_between_words(text + ")");
   };
-  std::visit(overloaded{[&](const View2D&) {
-    wrapped_between_words(trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
-    line("P_k^0", ray.canonical_pixel);
-    line("u_k^0", ray.canonical_direction);
-    line("P_k  ", ray.origin);
-    line("u_k  ", ray.direction);
-  },
-  [&](const View3D&) {
-    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
-    line("P^0", ray.canonical_pixel);
-    line("u^0", ray.canonical_direction);
-    line("P  ", ray.origin);
-    line("u  ", ray.direction);
-  }}, state.view);
+  std::visit(overloaded{[&](const View2D&) {  // the bar's pixel k, the handout's P_k and u_k
+                          wrapped_between_words(
+                              trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
+                          line("P_k^0", ray.canonical_pixel);
+                          line("u_k^0", ray.canonical_direction);
+                          line("P_k  ", ray.origin);
+                          line("u_k  ", ray.direction);
+                        },
+                        [&](const View3D&) {
+                          wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
+                          line("P^0", ray.canonical_pixel);
+                          line("u^0", ray.canonical_direction);
+                          line("P  ", ray.origin);
+                          line("u  ", ray.direction);
+                        }},
+             state.view);
   if (ray.hit.id < 0) {
     wrapped_between_words(tr("hit: nothing (background)"));
   } else {
@@ -449,22 +456,26 @@ namespace {
 // The angle recovered from the current CP by the handout's arccos and by atan2, against the slider's angle.
 void arccos_error_line(const AppState& state) {
   std::string line;
-  std::visit(overloaded{[&](const View2D& view) {
-    const Orbit2D& o = view.orbit;
-    const glm::dvec2 cp = polar_direction(o.theta);
-    const double truth = std::remainder(o.theta, glm::two_pi<double>());
-    line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad",
-               std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
-               std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
-  },
-  [&](const View3D& view) {
-    const Orbit3D& o = view.orbit;
-    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
-    const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
-    line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad",
-               std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
-               std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
-  }}, state.view);
+  std::visit(
+      overloaded{[&](const View2D& view) {  // θ: the 2D camera's one angle
+                   const Orbit2D& o = view.orbit;
+                   const glm::dvec2 cp = polar_direction(o.theta);
+                   const double truth = std::remainder(o.theta, glm::two_pi<double>());
+                   const auto error = [&](AngleRoute route) {
+                     return std::abs(std::remainder(polar_angle(cp, route) - truth, glm::two_pi<double>()));
+                   };
+                   line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                              error(AngleRoute::stable));
+                 },
+                 [&](const View3D& view) {  // φ: where the pole makes the arccos route fail
+                   const Orbit3D& o = view.orbit;
+                   const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
+                   const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // in [0, pi]
+                   const auto error = [&](AngleRoute route) { return std::abs(spherical_angles(cp, route).phi - truth); };
+                   line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                              error(AngleRoute::stable));
+                 }},
+      state.view);
   explain(line.c_str());  // wrapped: at lecture sizes the line is wider than the panel
 }
 }  // namespace
