@@ -128,6 +128,7 @@ mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string
 # --- one view model, host capabilities ---
 mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
 mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
+mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(state, ImGui::IsAnyMouseDown());/  (void)0;/' "raycam_ui_tests" "^ui: ?the null host runs"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

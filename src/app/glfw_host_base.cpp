@@ -87,7 +87,10 @@ ui::FramebufferSize GlfwHostBase::begin(const session::AppState& state) {
   return size_;
 }
 
-gl::RgbaImage GlfwHostBase::read_back() const { return gl::read_framebuffer(size_.width, size_.height); }
+gl::RgbaImage GlfwHostBase::read_back() const {
+  glFinish();
+  return gl::read_framebuffer(size_.width, size_.height);
+}
 
 void GlfwHostBase::apply_title() {
   if (state_.window_title == applied_title_) return;  // the UI names the mode and the scene; the host shows it

@@ -79,6 +79,9 @@ void HeadlessRenderer::scroll(float wheel) { wheel_ += wheel; }
 void HeadlessRenderer::press_key(int imgui_key) { pressed_key_ = imgui_key; }
 void HeadlessRenderer::type_text(const char* utf8) { ImGui::GetIO().AddInputCharactersUTF8(utf8); }
 
-gl::RgbaImage HeadlessRenderer::read_back() const { return gl::read_framebuffer(width_, height_); }
+gl::RgbaImage HeadlessRenderer::read_back() const {
+  glFinish();
+  return gl::read_framebuffer(width_, height_);
+}
 
 }  // namespace raycam::headless

@@ -142,8 +142,11 @@ void prepare_frame(const AppState& state) {
 }
 
 // ---- layout and build ----------------------------------------------------------------------------------
-FrameRenderer::FrameRenderer()
-    : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
+FrameRenderer::FrameRenderer(Graphics graphics) {
+  if (graphics == Graphics::none) return;  // the views' geometry is computed, their textures are not drawn
+  observer_ = std::make_unique<gl::ObserverRenderer>();
+  discs_ = std::make_unique<gl::DiscLayer>();
+}
 FrameRenderer::~FrameRenderer() = default;
 
 Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const {
@@ -233,15 +236,15 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     check_section(check_, state.host, ImGui::GetTime());
   }
   ImGui::End();
-  if (state.map_version != uploaded_map_version_) {
+  if (draws_textures() && state.map_version != uploaded_map_version_) {
     texture_.upload(state.map);
     uploaded_map_version_ = state.map_version;
   }
-  if (has_observer(state.view) && state.scene_version != uploaded_scene_version_) {
+  if (observer_ && has_observer(state.view) && state.scene_version != uploaded_scene_version_) {
     observer_->set_spheres(view3d(state).scene.spheres);
     uploaded_scene_version_ = state.scene_version;
   }
-  if (state.scene_version != uploaded_disc_version_ || dimension(state) != uploaded_disc_dimension_) {
+  if (discs_ && (state.scene_version != uploaded_disc_version_ || dimension(state) != uploaded_disc_dimension_)) {
     discs_->set_discs(overhead_discs(state));
     uploaded_disc_version_ = state.scene_version;
     uploaded_disc_dimension_ = dimension(state);
@@ -366,7 +369,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected, *discs_);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, discs_.get());
       draw->PopClipRect();
     }
   }
@@ -454,7 +457,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
                 {glm::vec3(segment.from + shift), glm::vec3(segment.to + shift), colour});
           }
         }
-      const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
+      const GLuint texture = observer_ ? observer_->render(frame, int(size.x), int(size.y)) : 0;
       // GL textures are bottom-up: flip v.
       ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,
                                            {top_left.x + size.x, top_left.y + size.y}, {0, 1}, {1, 0});

@@ -54,13 +54,16 @@ struct AppliedTheme {
 
 class FrameRenderer {
  public:
-  FrameRenderer();  // needs a current GL 3.3 context and an ImGui context
+  // What the frame draws its textures with: GL (a current GL 3.3 context), or nothing (the null host).
+  enum class Graphics { gl, none };
+  explicit FrameRenderer(Graphics graphics = Graphics::gl);  // needs an ImGui context
   ~FrameRenderer();
   FrameLayout build(session::AppState& state, int width, int height);
   session::CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
 
  private:
   enum class Drag { none, overhead, observer };
+  bool draws_textures() const { return observer_ != nullptr; }  // false with Graphics::none
   // Sets the panel's rectangle and the views' areas; returns the status line's.
   Rect layout_areas(const session::AppState& state, int width, int height, FrameLayout& layout) const;
   void view_input(session::AppState& state);
@@ -69,7 +72,7 @@ class FrameRenderer {
   void overhead_window(session::AppState& state, const Rect& area, FrameLayout& layout);
   void observer_window(session::AppState& state, const Rect& area, FrameLayout& layout);
 
-  gl::ColourMapTexture texture_;
+  gl::ColourMapTexture texture_;  // with Graphics::none: never uploaded, id 0
   std::unique_ptr<gl::ObserverRenderer> observer_;
   std::unique_ptr<gl::DiscLayer> discs_;
   std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;

@@ -26,10 +26,28 @@ class FrameHost {
   // buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty when
   // there is nothing to draw (minimised): the frame is skipped.
   virtual FramebufferSize begin(const session::AppState& state) = 0;
+  // Draws ImGui's frame into the framebuffer: GL hosts with the shared GL code (frame_host.cpp); the null
+  // host draws nothing.
+  virtual void draw(const FramebufferSize& size);
   // Shows the frame just drawn (a window swaps its buffers; a buffer finishes drawing).
   virtual void present() = 0;
   // The frame just drawn, read before present() (a window's back buffer), top row first.
   virtual gl::RgbaImage read_back() const = 0;
+};
+
+// A host with no GL at all: it runs a whole frame's logic (input, the panels, the views' geometry, the casts,
+// ImGui's draw lists) and draws nothing, so the frame's tests also run where there is no GL context (the
+// sanitizer build). Input is set on ImGui's IO directly.
+class NullHost : public FrameHost {
+ public:
+  NullHost(int width, int height) : size_{width, height} {}
+  FramebufferSize begin(const session::AppState& state) override;
+  void draw(const FramebufferSize&) override {}
+  void present() override {}
+  gl::RgbaImage read_back() const override { return {}; }
+
+ private:
+  FramebufferSize size_;
 };
 
 struct FrameResult {

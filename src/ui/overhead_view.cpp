@@ -313,7 +313,7 @@ std::vector<gl::Disc> overhead_discs(const AppState& state) {
 }
 
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
   draw_axes(draw, m, clip_min, clip_max);
@@ -326,8 +326,8 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   placement.scale = m.scale * density.x;
   placement.width = int(std::lround((clip_max.x - clip_min.x) * density.x));
   placement.height = int(std::lround((clip_max.y - clip_min.y) * density.y));
-  if (placement.width > 0 && placement.height > 0)
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs.texture(placement))), clip_min,
+  if (discs && placement.width > 0 && placement.height > 0)  // none: the null host draws no texture
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs->texture(placement))), clip_min,
                    clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);

@@ -39,9 +39,9 @@ bool camera_and_target_in_view(const session::AppState& state, ImVec2 top_left, 
 std::vector<gl::Disc> overhead_discs(const session::AppState& state);
 
 // Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray. `discs` must hold
-// overhead_discs(state).
+// overhead_discs(state); null (the null host): no disc texture.
 void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const session::AppState& state,
-                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer& discs);
+                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer* discs);
 
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const session::AppState& state, ImVec2 screen_point);
