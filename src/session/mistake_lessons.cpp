@@ -171,13 +171,13 @@ const MistakeLesson* find_lesson(const std::string& id) {
   return nullptr;
 }
 
-bool& mistake_flag(AppState& state, const MistakeLesson& lesson) {
+bool& mistake_flag(Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
-bool mistake_is_on(const AppState& state, const MistakeLesson& lesson) {
+bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
-bool mistake_applies(const AppState& state, const MistakeLesson& lesson) {
+bool mistake_applies(const Lesson& state, const MistakeLesson& lesson) {
   return !lesson.info || (dimension(state) == 2 ? lesson.info->in_2d : lesson.info->in_3d);
 }
 const char* mistake_label(const MistakeLesson& lesson) {

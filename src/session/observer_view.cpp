@@ -55,7 +55,7 @@ ObserverCamera observer_camera(const AppState& state, double aspect) {
   return observer;
 }
 
-void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, double dx, double dy) {
+void drag_camera_in_observer(Lesson& state, const ObserverCamera& observer, double dx, double dy) {
   Orbit3D& orbit = view3d(state).orbit;
   // dP/dθ = d·sin φ·(−sin θ, cos θ, 0): its component along the observer's right says which way θ moves
   // the camera on screen. (Side-on, where it vanishes, either way is fine.)
