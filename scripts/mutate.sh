@@ -209,6 +209,10 @@ mutant figure-far-eye-unnamed src/figure/construction_figure.cpp 's/ || m.point 
 mutant figure-beamer-standalone-cut src/figure/tikz_file.cpp 's/(output.pages ? slide_of_the_picture(output.page) : "")/std::string()/' "$FIGURE" "^figure:"
 mutant figure-page-without-room src/cli/figure_command.cpp 's/^  if (room < figure::kLeastDrawingShare \* output.page.height_pt) {/  if (false) {/' "$FIGURE" "cli rejects: figure a page with no room"
 mutant figure-export-rays-in-3d src/ui/panels.cpp 's/^  if (state.dimension == 2)  \/\/ the 3D steps draw no rays/  if (true)  \/\/ the 3D steps draw no rays/' "$UI" "^ui: ?Export figure"
+# --- one view model, host capabilities ---
+mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
+mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
+mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(state, ImGui::IsAnyMouseDown());/  (void)0;/' "raycam_ui_tests" "^ui: ?the null host runs"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

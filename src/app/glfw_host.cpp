@@ -22,57 +22,18 @@ namespace {
 volatile std::sig_atomic_t quit_signal = 0;  // SIGINT / SIGTERM: leave the loop cleanly
 extern "C" void on_quit_signal(int) { quit_signal = 1; }
 
-struct Callbacks {  // what the callbacks reach through the window's user pointer
-  ui::AppState* state;
-  GlfwHost* host;
-};
-Callbacks& callbacks_of(GLFWwindow* window) {
-  return *static_cast<Callbacks*>(glfwGetWindowUserPointer(window));
-}
-void note(GLFWwindow* window) { callbacks_of(window).host->note_event(); }
-
-void key_callback(GLFWwindow* window, int key, int, int action, int) {
-  note(window);
-  if (action != GLFW_PRESS) return;
-  ui::AppState& state = *callbacks_of(window).state;
-  if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
-  if (key == GLFW_KEY_F11) state.request_fullscreen = true;
-  if (key == GLFW_KEY_F12) ui::request_screenshot(state);  // numbered, as the Screenshot button
-  if (key == GLFW_KEY_Q && (glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
-    state.request_quit = true;
-}
+GlfwHost& desktop_host_of(GLFWwindow* window) { return static_cast<GlfwHost&>(host_of(window)); }
 
 // Installed over ImGui's backend's key and character callbacks (which chain to ours): a key's changes reach
 // ImGui one per frame, characters in order with them (KeyEventQueue).
 void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  note(window);
-  if (action == GLFW_REPEAT || callbacks_of(window).host->keys().arrive(key, action == GLFW_PRESS))
+  desktop_host_of(window).note_event();
+  if (action == GLFW_REPEAT || desktop_host_of(window).keys().arrive(key, action == GLFW_PRESS))
     ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
 }
 void queued_char_callback(GLFWwindow* window, unsigned int character) {
-  note(window);
-  if (callbacks_of(window).host->keys().arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
-}
-
-void drop_callback(GLFWwindow* window, int count, const char** paths) {
-  note(window);
-  // A bad file shows its error in the status line and keeps the current scene.
-  if (count > 0) ui::open_scene(*callbacks_of(window).state, paths[0]);
-}
-
-// Every other event only wakes the loop (ImGui's backend installs its own after these and chains to them).
-void install_wake_callbacks(GLFWwindow* window) {
-  glfwSetKeyCallback(window, key_callback);
-  glfwSetDropCallback(window, drop_callback);
-  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { note(w); });
-  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { note(w); });
-  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { note(w); });
-  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { note(w); });
-  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { note(w); });
-  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { note(w); });
-  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
-  glfwSetWindowRefreshCallback(window, [](GLFWwindow* w) { note(w); });
-  glfwSetWindowIconifyCallback(window, [](GLFWwindow* w, int) { note(w); });
+  desktop_host_of(window).note_event();
+  if (desktop_host_of(window).keys().arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
 }
 
 void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
@@ -91,7 +52,22 @@ void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
 
 bool GlfwHost::should_close() const { return quit_signal || glfwWindowShouldClose(window_); }
 
-ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
+void GlfwHost::key_pressed(int key) {
+  if (key == GLFW_KEY_Q && (glfwGetKey(window_, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS))
+    state_.requests.ask(session::HostRequestKind::quit);
+}
+
+void GlfwHost::install_own_callbacks() {
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { host_of(w).note_event(); });
+  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { host_of(w).note_event(); });
+}
+
+void GlfwHost::after_imgui_backend() {
+  glfwSetKeyCallback(window_, queued_key_callback);  // over the backend's, which they call
+  glfwSetCharCallback(window_, queued_char_callback);
+}
+
+void GlfwHost::wait_for_frame(const session::AppState& state) {
   // A key's changes held since the last frame, before this frame's events (key_queue.h).
   for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
     if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
@@ -99,33 +75,27 @@ ui::FramebufferSize GlfwHost::begin(const ui::AppState& state) {
   }
   if (scripted_) {
     glfwPollEvents();
-  } else {
-    // Sleep until there is something to draw: input (the callbacks set settle_frames_), pending work, or
-    // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
-    for (;;) {
-      const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
-      const bool busy = !minimised && (settle_frames_ > 0 || keys_.holding() || ui::frame_needs_redraw(state));
-      if (busy || should_close()) break;
-      glfwWaitEventsTimeout(kIdleWaitSeconds);
-    }
-    settle_frames_ = std::max(0, settle_frames_ - 1);
-    glfwPollEvents();
+    return;
   }
-  glfwGetFramebufferSize(window_, &size_.width, &size_.height);
-  if (size_.empty() || should_close()) return {};  // minimised (or leaving): no frame
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
+  // Sleep until there is something to draw: input (the callbacks set the settle frames), pending work, or
+  // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
+  for (;;) {
+    const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
+    const bool busy = !minimised && (has_work(state) || keys_.holding());
+    if (busy || should_close()) break;
+    glfwWaitEventsTimeout(kIdleWaitSeconds);
+  }
+  spend_settle_frame();
+  glfwPollEvents();
+}
+
+void GlfwHost::frame_started() {
   if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);  // scripted: no stray hover
-  return size_;
 }
 
 void GlfwHost::present() { glfwSwapBuffers(window_); }
 
-gl::RgbaImage GlfwHost::read_back() const {
-  return gl::read_framebuffer(size_.width, size_.height);
-}  // back buffer
-
-int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppState& state) {
+int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state) {
   glfwSetErrorCallback([](int, const char* message) { std::fprintf(stderr, "raycam: GLFW: %s\n", message); });
   if (!glfwInit()) {
     std::fprintf(stderr,
@@ -154,48 +124,28 @@ int run_window(const ui::AppOptions& options, const ScriptedRun& run, ui::AppSta
   }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(run.frames > 0 ? 0 : 1);
-  GlfwHost host(window, run.frames > 0);
-  Callbacks callbacks{&state, &host};
-  glfwSetWindowUserPointer(window, &callbacks);
-  install_wake_callbacks(window);  // before ImGui's backend, which chains to them
+  GlfwHost host(window, state, run.frames > 0);
   std::signal(SIGINT, on_quit_signal);
   std::signal(SIGTERM, on_quit_signal);
-
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  glfwSetKeyCallback(window, queued_key_callback);  // over the backend's, which they call
-  glfwSetCharCallback(window, queued_char_callback);
-  ui::start_renderer_backend();
+  host.start_imgui();
   int exit_code = 0;
   {
     ui::FrameRenderer frame;
     int saved[4] = {0, 0, options.width, options.height};
-    std::string applied_title = "raycam";
-    for (int drawn = 0; !host.should_close() && !state.request_quit;) {
+    for (int drawn = 0; !host.should_close() && !state.requests.pending(session::HostRequestKind::quit);) {
       const bool last = run.frames > 0 && drawn + 1 >= run.frames;
-      if (last && !run.screenshot.empty()) {
-        state.screenshot_path = run.screenshot;
-        state.request_screenshot = true;
-      }
+      if (last && !run.screenshot.empty()) state.requests.ask(session::HostRequestKind::screenshot, run.screenshot);
       const ui::FrameResult result = ui::run_frame(host, frame, state);
       if (!result.drawn) continue;
-      if (state.window_title != applied_title) {  // the UI names the mode and the scene; the host applies it
-        glfwSetWindowTitle(window, state.window_title.c_str());
-        applied_title = state.window_title;
-      }
+      host.apply_title();
       ++drawn;
       if (result.screenshot_failed && last) exit_code = 1;
-      if (state.request_fullscreen) {
-        toggle_fullscreen(window, saved);
-        state.request_fullscreen = false;
-      }
+      if (state.requests.take(session::HostRequestKind::toggle_fullscreen)) toggle_fullscreen(window, saved);
+      state.requests.take(session::HostRequestKind::pick_scene_file);  // a window has no picker: typed paths
       if (last) break;
     }
   }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
+  host.stop_imgui();
   glfwDestroyWindow(window);
   glfwTerminate();
   // The process's CPU time too: an idle loop that polls instead of waiting draws no frame but burns a core.

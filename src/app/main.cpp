@@ -12,7 +12,7 @@
 #include "glfw_host.h"
 
 int main(int argc, char** argv) {
-  raycam::ui::AppOptions options;
+  raycam::session::AppOptions options;
   options.demo_on_bad_scene = true;  // open on the demo scene and show why the file did not open
   raycam::app::ScriptedRun run;
   CLI::App cli(
@@ -31,10 +31,10 @@ int main(int argc, char** argv) {
       raycam::flags::file_name(), [&run](std::string path) { run.screenshot = path; });
   if (const auto usage_exit = raycam::flags::parse_command_line(cli, argc, argv)) return *usage_exit;
   if (!run.screenshot.empty() && run.frames == 0) run.frames = 3;
-  raycam::ui::AppState state;
+  raycam::session::AppState state;
   try {
     raycam::flags::merge_scene_argument(positional_scene, options);
-    state = raycam::ui::make_app_state(options);
+    state = raycam::session::make_app_state(options);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "raycam: error: %s\n", error.what());
     return 2;

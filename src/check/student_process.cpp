@@ -2,6 +2,8 @@
 // only) · the parent's poll loop · the sandbox.
 #include "student_process.h"
 
+#include "close_descriptors.h"
+
 #include <fcntl.h>
 #if __has_include(<linux/keyctl.h>)
 #include <linux/keyctl.h>
@@ -328,9 +330,7 @@ struct ChildSetup {
       (c.info >= 0 && dup2(c.info, 4) < 0) || (c.block >= 0 && dup2(c.block, 5) < 0))
     _exit(127);
   fcntl(3, F_SETFD, FD_CLOEXEC);
-#ifndef __EMSCRIPTEN__  // the web page has no processes: fork() fails there before this point
-  close_range(c.block >= 0 ? 6 : 4, ~0U, 0);  // nothing else of ours leaks into the student's program
-#endif
+  close_descriptors_from(c.block >= 0 ? 6 : 4);  // nothing else of ours leaks into the student's program
   if (chdir(c.work) == 0) execve(program, argv, envp);
   fail_in_child(3);
 }

@@ -38,6 +38,7 @@
 #include "raycam/speed_families.h"
 #include "raycam/standard_scenes.h"
 #include "raycam/view_setup.h"
+#include "view.h"
 #include "view_options.h"
 #ifdef RAYCAM_HAVE_EMBREE
 #include "embree_caster.h"
@@ -616,18 +617,14 @@ int run_scene(const SpeedOptions& o) {
   flags.camera.size = o.scene_size;
   const ViewSetup setup = make_view_setup(flags);  // the file's camera preset, at --size
   const int threads = o.threads.back();
-  const Camera2D& camera2d = setup.camera2d;
-  const Camera3D& camera3d = setup.camera3d;
-  if (setup.dimension == 2) validate(setup.file.scene2d);
-  else validate(setup.file.scene3d);
-  const double pixels =
-      setup.dimension == 2 ? double(camera2d.pixel_count()) : double(camera3d.columns()) * camera3d.rows();
-  const std::size_t objects =
-      setup.dimension == 2 ? setup.file.scene2d.circles.size() : setup.file.scene3d.spheres.size();
+  const session::View view = session::views_from_setup(setup).on_screen;  // the app's view of the scene
+  session::validate(view);
+  const double pixels = std::visit([](const auto& v) { return session::ray_count(v.camera); }, view);
+  const std::size_t objects = std::visit([](const auto& v) { return session::objects_of(v.scene).size(); }, view);
   const bool plain_affordable = pixels * double(objects) <= kMaxPlainTests;
   // Packed once, as the app packs its scene once per scene (packing is not a frame's cost).
   PackedScene3D packed;
-  if (setup.dimension == 3) packed.pack(setup.file.scene3d);
+  session::pack_scene(view, packed);
   std::map<std::string, Result> results;
   CastStats stats;
   for (const char* method : {"automatic", "plain"}) {
@@ -639,12 +636,7 @@ int run_scene(const SpeedOptions& o) {
                     CastOptions options;
                     options.method = cast_method_named(method).value();
                     options.threads = threads;
-                    for (auto _ : state) {
-                      if (setup.dimension == 2)
-                        cast_primary_rays(camera2d, setup.file.scene2d, map, options, &stats);
-                      else
-                        cast_primary_rays(camera3d, packed, map, options, &stats);
-                    }
+                    for (auto _ : state) session::cast_view(view, packed, map, options, &stats);
                     state.counters["Mrays/s"] =
                         benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
                   }),
@@ -656,7 +648,7 @@ int run_scene(const SpeedOptions& o) {
   benchmark::ClearRegisteredBenchmarks();
   const Result& fast = results["scene/automatic"];
   std::printf("%s: %dD, %.0f pixels, %d threads: automatic %.3f ms median (%.1f Mrays/s)",
-              o.scene_path.c_str(), setup.dimension, pixels, threads, fast.median_ms, fast.mrays);
+              o.scene_path.c_str(), session::dimension_of(view), pixels, threads, fast.median_ms, fast.mrays);
   if (results.count("scene/plain"))
     std::printf("; plain loop %.3f ms (%.1fx)", results["scene/plain"].median_ms,
                 results["scene/plain"].median_ms / fast.median_ms);

@@ -9,6 +9,7 @@
 #include "raycam/accuracy_options.h"
 #include "raycam/ray_caster.h"
 #include "raycam/view_setup.h"
+#include "view.h"
 #include "view_options.h"
 
 namespace raycam::cli {
@@ -26,28 +27,27 @@ struct RenderOptions {
 int run_render(RenderOptions options) {
   if (options.out_path.empty() && options.ids_path.empty()) options.out_path = "render.png";
   const ViewSetup setup = make_view_setup(options.view);
-  if (options.accuracy.exact && setup.dimension != 2)
+  const session::View view = session::views_from_setup(setup).on_screen;  // the app's view of the scene
+  if (options.accuracy.exact && !session::exact_bar_applies(view))
     throw std::invalid_argument("--exact: only for a 2D scene (3D: use --spp)");
   ColourMap map;
   const AccuracyFlags& knobs = options.accuracy;
   options.cast.formula = knobs.options.formula;  // the fast casters take either formula
   if (needs_reference_caster(knobs.options, knobs.exact) || knobs.placement != PlacementRoute::orbit) {
     map = render_with_accuracy(setup, knobs);
-  } else if (setup.dimension == 2) {
-    validate(setup.file.scene2d);
-    map = cast_primary_rays(setup.camera2d, setup.file.scene2d, options.cast);
   } else {
-    validate(setup.file.scene3d);
-    map = cast_primary_rays(setup.camera3d, setup.file.scene3d, options.cast);
+    session::validate(view);
+    map = std::visit([&](const auto& v) { return cast_primary_rays(v.camera, v.scene, options.cast); }, view);
   }
   long long background = 0;
   for (int id : map.ids) background += id < 0;
   const std::string& out = options.out_path;
   const std::string& ids = options.ids_path;
-  if (!out.empty()) write_png(map, out, 1, setup.dimension == 2 ? kBarHeight : 1);
+  if (!out.empty()) write_png(map, out, 1, session::image_is_bar(view) ? kBarHeight : 1);
   if (!ids.empty()) write_ids(map, ids);
-  std::printf("%dD %dx%d, %zu objects, %.1f%% background%s%s%s%s\n", setup.dimension, map.width, map.height,
-              setup.dimension == 2 ? setup.file.scene2d.circles.size() : setup.file.scene3d.spheres.size(),
+  const std::size_t objects = std::visit([](const auto& v) { return session::objects_of(v.scene).size(); }, view);
+  std::printf("%dD %dx%d, %zu objects, %.1f%% background%s%s%s%s\n", session::dimension_of(view), map.width,
+              map.height, objects,
               100.0 * double(background) / double(map.ids.size()), out.empty() ? "" : "; wrote ", out.c_str(),
               ids.empty() ? "" : "; wrote ", ids.c_str());
   return 0;

@@ -33,21 +33,22 @@ double process_cpu_ms() {
 
 // Every id is -1 or a real object, every colour is the background or that object's: a NaN anywhere in the
 // camera would break this (NaN compares false and leaves garbage ids or all-background maps with hits).
-bool colour_map_is_consistent(const ui::AppState& state) {
-  const bool is_2d = state.dimension == 2;
-  const std::size_t count = is_2d ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
-  const Rgb8 background = is_2d ? state.file.scene2d.background : state.file.scene3d.background;
-  for (std::size_t i = 0; i < state.map.ids.size(); ++i) {
-    const int id = state.map.ids[i];
-    if (id < -1 || id >= int(count)) return false;
-    const Rgb8 expected = id < 0 ? background : (is_2d ? state.file.scene2d.circles[std::size_t(id)].colour
-                                                        : state.file.scene3d.spheres[std::size_t(id)].colour);
-    if (state.map.colours[i] != expected) return false;
-  }
-  return true;
+bool colour_map_is_consistent(const session::AppState& state) {
+  return std::visit(
+      [&](const auto& view) {
+        const auto& objects = session::objects_of(view.scene);
+        for (std::size_t i = 0; i < state.map.ids.size(); ++i) {
+          const int id = state.map.ids[i];
+          if (id < -1 || id >= int(objects.size())) return false;
+          const Rgb8 expected = id < 0 ? view.scene.background : objects[std::size_t(id)].colour;
+          if (state.map.colours[i] != expected) return false;
+        }
+        return true;
+      },
+      state.view);
 }
 
-int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) {
+int soak(session::AppState& state, headless::HeadlessRenderer& renderer, int frames) {
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times, cpu_times;
@@ -57,8 +58,8 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
   for (int frame = 0; frame < frames; ++frame) {
     // A student dragging sliders: small random steps, sometimes a jump, sometimes a mode or res change.
     const double jump = unit(random) < 0.05 ? 10.0 : 1.0;
-    Orbit2D& o2 = state.orbit2d;
-    Orbit3D& o3 = state.orbit3d;
+    Orbit2D& o2 = view2d(state).orbit;
+    Orbit3D& o3 = view3d(state).orbit;
     o2.theta += jump * (unit(random) - 0.5) * 0.2;
     o3.theta += jump * (unit(random) - 0.5) * 0.2;
     o3.phi = std::clamp(o3.phi + jump * (unit(random) - 0.5) * 0.2, 0.0, glm::pi<double>());
@@ -80,7 +81,7 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
   std::printf(
       "soak: %d frames %dx%d (%dD), frame ms: median %.2f, p95 %.2f, max %.2f; CPU ms (all threads): median "
       "%.2f\n",
-      frames, renderer.width(), renderer.height(), state.dimension, at(0.5), at(0.95), times.back(),
+      frames, renderer.width(), renderer.height(), dimension(state), at(0.5), at(0.95), times.back(),
       cpu_times[cpu_times.size() / 2]);
   std::printf("soak: RSS %ld KB after the first frames, %ld KB at the end (%+ld KB), peak %ld KB\n", rss_start, rss_end,
               rss_end - rss_start, peak);
@@ -88,13 +89,13 @@ int soak(ui::AppState& state, headless::HeadlessRenderer& renderer, int frames) 
   return bad_frames == 0 ? 0 : 1;
 }
 struct ShotOptions {
-  ui::AppOptions app;
+  session::AppOptions app;
   std::string out_path = "raycam-shot.png";
   int frames = 3, soak_frames = 0;
 };
 
 int run_shot(const ShotOptions& options) {
-  ui::AppState state = ui::make_app_state(options.app);
+  session::AppState state = session::make_app_state(options.app);
   headless::HeadlessRenderer renderer(options.app.width, options.app.height);
   if (options.soak_frames > 0) return soak(state, renderer, options.soak_frames);
   const auto start = std::chrono::steady_clock::now();
@@ -102,7 +103,7 @@ int run_shot(const ShotOptions& options) {
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   gl::write_png(image, options.out_path);
   std::printf("wrote %s (%dx%d, %dD, %d frames in %.0f ms, last frame %.1f ms)\n", options.out_path.c_str(),
-              image.width, image.height, state.dimension, options.frames, ms, state.frame_ms);
+              image.width, image.height, dimension(state), options.frames, ms, state.frame_ms);
   return 0;
 }
 

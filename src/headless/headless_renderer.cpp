@@ -44,7 +44,7 @@ HeadlessRenderer::~HeadlessRenderer() {
   OSMesaDestroyContext(context_->mesa);
 }
 
-ui::FramebufferSize HeadlessRenderer::begin(const ui::AppState&) {
+ui::FramebufferSize HeadlessRenderer::begin(const session::AppState&) {
   ImGuiIO& io = ImGui::GetIO();
   io.DeltaTime = 1.0f / 60.0f;
   io.DisplaySize = ImVec2(float(width_), float(height_));
@@ -61,11 +61,11 @@ ui::FramebufferSize HeadlessRenderer::begin(const ui::AppState&) {
 
 void HeadlessRenderer::present() { glFinish(); }
 
-void HeadlessRenderer::run_frame(ui::AppState& state) {
+void HeadlessRenderer::run_frame(session::AppState& state) {
   layout_ = ui::run_frame(*this, *frame_, state).layout;
 }
 
-gl::RgbaImage HeadlessRenderer::render_settled(ui::AppState& state, int frames) {
+gl::RgbaImage HeadlessRenderer::render_settled(session::AppState& state, int frames) {
   for (int i = 0; i < std::max(frames, 2); ++i) run_frame(state);
   return read_back();
 }
@@ -79,6 +79,9 @@ void HeadlessRenderer::scroll(float wheel) { wheel_ += wheel; }
 void HeadlessRenderer::press_key(int imgui_key) { pressed_key_ = imgui_key; }
 void HeadlessRenderer::type_text(const char* utf8) { ImGui::GetIO().AddInputCharactersUTF8(utf8); }
 
-gl::RgbaImage HeadlessRenderer::read_back() const { return gl::read_framebuffer(width_, height_); }
+gl::RgbaImage HeadlessRenderer::read_back() const {
+  glFinish();
+  return gl::read_framebuffer(width_, height_);
+}
 
 }  // namespace raycam::headless

@@ -21,12 +21,12 @@ class HeadlessRenderer : public ui::FrameHost {
   HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
   // Runs one frame (ImGui needs two to settle its layout: see render_settled).
-  void run_frame(ui::AppState& state);
+  void run_frame(session::AppState& state);
   // Runs `frames` frames (at least 2) and reads the last one back.
-  gl::RgbaImage render_settled(ui::AppState& state, int frames = 3);
+  gl::RgbaImage render_settled(session::AppState& state, int frames = 3);
 
   // FrameHost: no events to wait for, no mouse (nothing hovered), a fixed 60 Hz clock for ImGui.
-  ui::FramebufferSize begin(const ui::AppState& state) override;
+  ui::FramebufferSize begin(const session::AppState& state) override;
   void present() override;
   gl::RgbaImage read_back() const override;
 

@@ -5,13 +5,12 @@
 
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 ViewSetup checked_view_setup(const ViewFlags& flags) {
   const ViewSetup setup = make_view_setup(flags);
-  if (setup.dimension == 2) validate(setup.file.scene2d);
-  else validate(setup.file.scene3d);
+  validate(views_from_setup(setup).on_screen);
   return setup;
 }
 }  // namespace
@@ -40,10 +39,10 @@ AppState make_app_state(const AppOptions& options) {
     const int steps = construction_steps(state);
     if (*options.step > steps)
       throw std::invalid_argument("--step: expected an integer in [0, " + std::to_string(steps) + "] in " +
-                                  std::to_string(state.dimension) + "D");
+                                  std::to_string(dimension(state)) + "D");
     state.construction_step = *options.step;
   }
-  if (options.accuracy.exact && state.dimension != 2)
+  if (options.accuracy.exact && !exact_bar_applies(state.view))
     throw std::invalid_argument("--exact: only for a 2D scene (3D: use --spp)");
   if (options.accuracy.placement != PlacementRoute::orbit)
     throw std::invalid_argument("--placement: the app places the camera by orbit; show the arccos route with "
@@ -55,16 +54,16 @@ AppState make_app_state(const AppOptions& options) {
   state.check_command = options.check_command;
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
-    const int columns = state.dimension == 2 ? state.camera2d.pixel_count() : state.camera3d.columns();
-    const int rows = state.dimension == 2 ? 1 : state.camera3d.rows();
+    const auto [columns, rows] = std::visit(
+        [](const auto& view) { return std::pair(image_columns(view.camera), image_rows(view.camera)); }, state.view);
     if (options.inspect->column >= columns || options.inspect->row >= rows)
       throw std::invalid_argument("--inspect: pixel " + std::to_string(options.inspect->column) + "," +
                                   std::to_string(options.inspect->row) + " is outside the " + std::to_string(columns) +
                                   "x" + std::to_string(rows) + " image");
     state.pinned_pixel = options.inspect;
   }
-  if (!state.scene_path.empty()) state.path_input = state.scene_path;
+  if (!scene_path(state).empty()) state.path_input = scene_path(state);
   return state;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -11,7 +11,7 @@
 #include "raycam/accuracy_options.h"
 #include "raycam/view_setup.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // The font scale a start-up option accepts (--font-scale, the page's ?scale=); the slider spans 0.75–3.
 inline constexpr double kFontScaleOptionMin = 0.5, kFontScaleOptionMax = 4.0;
@@ -36,4 +36,4 @@ struct AppOptions {
 // The initial state for these options (scene loaded, cameras placed). Throws std::invalid_argument.
 AppState make_app_state(const AppOptions& options);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -13,63 +13,46 @@
 #include "raycam/view_setup.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 void adopt_view_setup(AppState& state, const ViewSetup& setup) {
-  state.file = setup.file;
-  state.other_scene_path.clear();  // the new file's scene is of one kind: the other kind's is the demo
+  OpenedViews views = views_from_setup(setup);  // the file's scene is of one kind: the other's is the demo
+  state.view = std::move(views.on_screen);
+  state.other_view = std::move(views.other);
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
-  state.scene_path = setup.scene_path;
-  state.dimension = setup.dimension;
-  state.orbit2d = setup.camera2d.orbit();
-  state.orbit3d = setup.camera3d.orbit();
-  state.res = setup.dimension == 2 ? setup.camera2d.res() : setup.camera3d.res_columns();
-  state.res_rows = setup.dimension == 3 ? setup.file.camera.res_rows : std::nullopt;
-  state.max_pixels_2d = setup.camera2d.max_pixels();
-  state.max_columns_3d = setup.camera3d.max_columns();
-  state.max_rows_3d = setup.camera3d.max_rows();
-  state.preset_orbit2d = state.orbit2d;
-  state.preset_orbit3d = state.orbit3d;
+  state.res = std::visit([](const auto& view) { return res_of(view.camera); }, state.view);
+  // The rows' res of a non-square 3D preset (the handout's second resolution variable).
+  state.res_rows = std::holds_alternative<View3D>(state.view) ? setup.file.camera.res_rows : std::nullopt;
   state.preset_res = state.res;
   state.preset_res_rows = state.res_rows;
   state.overhead_fit_pending = true;
 }
 
 void reset_camera(AppState& state) {
-  if (state.dimension == 2)
-    state.orbit2d = state.preset_orbit2d;
-  else
-    state.orbit3d = state.preset_orbit3d;
+  std::visit([](auto& view) { view.orbit = view.preset; }, state.view);
   state.res = state.preset_res;
   state.res_rows = state.preset_res_rows;
   state.overhead_fit_pending = true;
   state.cameras_dirty = true;
 }
 
-void place_cameras(AppState& state) {
+void place_cameras(Lesson& state) {
   // One Camera per change, M_d composed once in its constructor. The arccos route re-derives the angles
   // from P and C as the handout's free placement does (the mistake near a pole).
-  if (state.dimension == 2) {
-    const Orbit2D& o = state.orbit2d;
-    const Orbit2D orbit = state.arccos_route
-                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
-                              : o;
-    Camera2D camera(state.max_pixels_2d, orbit, state.mistakes);
-    camera.set_res(state.res);
-    state.camera2d = camera;
-  } else {
-    const Orbit3D& o = state.orbit3d;
-    const Orbit3D orbit = state.arccos_route
-                              ? free_orbit(orbit_screen_centre(o), o.target, o.df, AngleRoute::handout_arccos)
-                              : o;
-    Camera3D camera(state.max_columns_3d, state.max_rows_3d, orbit, state.mistakes);
-    camera.set_res(state.res, state.res_rows.value_or(state.res));
-    state.camera3d = camera;
-  }
+  std::visit(
+      [&](auto& view) {
+        auto orbit = view.orbit;
+        if (state.arccos_route)
+          orbit = free_orbit(orbit_screen_centre(orbit), orbit.target, orbit.df, AngleRoute::handout_arccos);
+        auto camera = camera_for(view, orbit, state.mistakes);
+        set_res_of(camera, state.res, state.res_rows);
+        view.camera = camera;
+      },
+      state.view);
 }
 
-bool uses_reference_caster(const AppState& state) {
-  return needs_reference_caster(state.accuracy.options, state.accuracy.exact && state.dimension == 2);
+bool uses_reference_caster(const Lesson& state) {
+  return needs_reference_caster(state.accuracy.options, state.accuracy.exact && exact_bar_applies(state.view));
 }
 
 namespace {
@@ -106,34 +89,35 @@ bool recast_if_needed(AppState& state, bool interacting) {
     state.cameras_dirty = false;
     return false;
   }
-  const bool is_2d = state.dimension == 2;
-  const double rays = is_2d ? state.camera2d.pixel_count() : double(state.camera3d.columns()) * state.camera3d.rows();
+  const double rays = std::visit([](const auto& view) { return ray_count(view.camera); }, state.view);
   // Per ray, not per object: the accelerated casters' cost follows what the pixels see, not the object count.
   const double predicted_ms = rays * state.ns_per_ray * 1e-6;
   state.refine_pending = interacting && predicted_ms > kInteractiveBudgetMs;
-  if (state.refine_pending) {  // fewer rays in proportion: res scales both sides in 3D
-    const double factor = is_2d ? kInteractiveBudgetMs / predicted_ms : std::sqrt(kInteractiveBudgetMs / predicted_ms);
-    const double least = 1.0 / active_max_side(state);
-    if (is_2d) state.camera2d.set_res(std::max(state.res * factor, least));
-    else
-      state.camera3d.set_res(std::max(state.res * factor, least),
-                             std::max(state.res_rows.value_or(state.res) * factor, least));
-  }
+  if (state.refine_pending)  // fewer rays in proportion: res scales one side in 2D, both in 3D
+    std::visit(
+        [&](auto& view) {
+          const double factor = side_factor(view, kInteractiveBudgetMs / predicted_ms);
+          const double least = 1.0 / max_side(view);
+          const std::optional<double> rows =
+              state.res_rows ? std::optional<double>(std::max(*state.res_rows * factor, least)) : std::nullopt;
+          set_res_of(view.camera, std::max(state.res * factor, least), rows);
+        },
+        state.view);
   remember_pin_point(state);
   // A new scene is packed once, before the clock starts: packing 10⁵ spheres (14 ms, their clusters) is not a
   // cast's cost, and counted in it, it would have shown a cast 7 times slower and made the next drag coarser.
-  if (!is_2d && state.packed_version != state.scene_version) {
-    state.packed3d.pack(state.file.scene3d);
+  if (state.packed_version != state.scene_version) {
+    pack_scene(state.view, state.packed3d);
     state.packed_version = state.scene_version;
   }
   const auto start = std::chrono::steady_clock::now();
   bool cast = false;
   if (uses_reference_caster(state)) {
     AccuracyFlags knobs = state.accuracy;
-    knobs.exact = knobs.exact && is_2d;
+    knobs.exact = knobs.exact && exact_bar_applies(state.view);
     try {
-      state.map = is_2d ? render_with_accuracy(state.camera2d, state.file.scene2d, knobs)
-                        : render_with_accuracy(state.camera3d, state.file.scene3d, knobs);
+      state.map = std::visit([&](const auto& view) { return render_with_accuracy(view.camera, view.scene, knobs); },
+                             state.view);
       const long long objects = active_object_count(state);
       state.stats = CastStats{static_cast<long long>(rays),
                               static_cast<long long>(rays) * objects * knobs.options.samples_per_pixel, 0, 0};
@@ -146,11 +130,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   if (!cast) {
     CastOptions options = state.cast_options;
     options.formula = state.accuracy.options.formula;
-    if (is_2d) {
-      cast_primary_rays(state.camera2d, state.file.scene2d, state.map, options, &state.stats);
-    } else {
-      cast_primary_rays(state.camera3d, state.packed3d, state.map, options, &state.stats);
-    }
+    cast_view(state.view, state.packed3d, state.map, options, &state.stats);
   }
   state.cast_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!state.refine_pending && state.stats.rays >= 10000) state.ns_per_ray = state.cast_ms * 1e6 / double(state.stats.rays);
@@ -176,8 +156,7 @@ bool open_scene(AppState& state, const std::string& path) {
     ViewFlags flags;
     flags.scene_path = path;
     const ViewSetup setup = make_view_setup(flags);
-    if (setup.dimension == 2) validate(setup.file.scene2d);
-    else validate(setup.file.scene3d);
+    validate(views_from_setup(setup).on_screen);  // before anything changes: a bad file leaves the state as it was
     adopt_view_setup(state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
@@ -189,7 +168,7 @@ bool open_scene(AppState& state, const std::string& path) {
     return true;
   } catch (const std::exception& error) {
     // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
-    state.path_input = state.scene_path;
+    state.path_input = scene_path(state);
     set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
     return false;
   }
@@ -198,12 +177,12 @@ bool open_scene(AppState& state, const std::string& path) {
 bool save_preset(AppState& state, const std::string& path) {
   try {
     place_cameras(state);
-    SceneFile file = state.file;
-    file.camera = active_preset(state);
+    CameraPreset preset = active_preset(state);
     if (state.arccos_route) {  // save what the student set, not what the mistake produced
-      file.camera.theta_deg = glm::degrees(active_orbit(state).theta);
-      if (state.dimension == 3) file.camera.phi_deg = glm::degrees(state.orbit3d.phi);
+      preset.theta_deg = glm::degrees(active_orbit(state).theta);
+      if (const auto* view = std::get_if<View3D>(&state.view)) preset.phi_deg = glm::degrees(view->orbit.phi);
     }
+    const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
     set_message(state, MessageSource::files, false, trf("saved the camera preset to %s", path.c_str()));
     return true;
@@ -227,10 +206,10 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite) {
   return save_preset(state, path);
 }
 
-void set_message(AppState& state, MessageSource source, bool is_error, std::string text) {
-  state.message = std::move(text);
-  state.message_is_error = is_error;
-  state.message_source = source;
+void set_message(Messages& messages, MessageSource source, bool is_error, std::string text) {
+  messages.message = std::move(text);
+  messages.message_is_error = is_error;
+  messages.message_source = source;
 }
 
 std::string next_screenshot_path(const std::string& directory) {
@@ -242,29 +221,27 @@ std::string next_screenshot_path(const std::string& directory) {
   }
 }
 
-void request_screenshot(AppState& state) {
+void request_screenshot(HostLink& host) {
   std::error_code ignored;
-  state.screenshot_path =
-      std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string();
-  state.request_screenshot = true;
+  host.requests.ask(HostRequestKind::screenshot,
+                    std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string());
 }
 
 std::string window_title(const AppState& state) {
-  const std::string scene = state.scene_path.empty()
-                                ? std::string(tr("demo scene"))
-                                : std::filesystem::path(state.scene_path).filename().string();
-  return "raycam — " + std::to_string(state.dimension) + "D — " + scene;
+  const std::string scene = scene_path(state).empty() ? std::string(tr("demo scene"))
+                                                      : std::filesystem::path(scene_path(state)).filename().string();
+  return "raycam — " + std::to_string(dimension(state)) + "D — " + scene;
 }
 
 void switch_dimension(AppState& state, int dimension) {
-  if (dimension == state.dimension) return;
-  std::swap(state.scene_path, state.other_scene_path);
-  if (state.scene_path.empty() && !state.other_scene_path.empty())  // leaving a file for the other kind's demo
+  if (dimension == session::dimension(state)) return;
+  const bool left_a_file = !scene_path(state).empty();
+  std::swap(state.view, state.other_view);
+  if (scene_path(state).empty() && left_a_file)  // leaving a file for the other kind's demo
     set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));
-  state.file.dimension = dimension;
-  if (dimension == 2 && state.file.scene2d.circles.empty()) state.file.scene2d = demo_scene_2d();
-  if (dimension == 3 && state.file.scene3d.spheres.empty()) state.file.scene3d = demo_scene_3d();
-  state.dimension = dimension;
+  std::visit(overloaded{[](View2D& view) { if (view.scene.circles.empty()) view.scene = demo_scene_2d(); },
+                        [](View3D& view) { if (view.scene.spheres.empty()) view.scene = demo_scene_3d(); }},
+             state.view);
   state.overhead_fit_pending = true;
   state.construction_step = -1;
   state.pinned_pixel.reset();
@@ -272,34 +249,53 @@ void switch_dimension(AppState& state, int dimension) {
   state.cameras_dirty = true;
 }
 
-SharedOrbit<double> active_orbit(AppState& state) {
-  if (state.dimension == 2) return {state.orbit2d.theta, state.orbit2d.d, state.orbit2d.df};
-  return {state.orbit3d.theta, state.orbit3d.d, state.orbit3d.df};
+int dimension(const Lesson& state) { return dimension_of(state.view); }
+
+namespace {
+template <class Wanted, class State>
+auto& view_of_kind(State& state) {  // the one of the two views that is of this kind
+  auto* on_screen = std::get_if<Wanted>(&state.view);
+  return on_screen ? *on_screen : std::get<Wanted>(state.other_view);
+}
+}  // namespace
+View2D& view2d(Lesson& state) { return view_of_kind<View2D>(state); }
+const View2D& view2d(const Lesson& state) { return view_of_kind<View2D>(state); }
+View3D& view3d(Lesson& state) { return view_of_kind<View3D>(state); }
+const View3D& view3d(const Lesson& state) { return view_of_kind<View3D>(state); }
+
+const std::string& scene_path(const Lesson& state) {
+  return std::visit([](const auto& view) -> const std::string& { return view.scene_path; }, state.view);
 }
 
-SharedOrbit<const double> active_orbit(const AppState& state) {
-  if (state.dimension == 2) return {state.orbit2d.theta, state.orbit2d.d, state.orbit2d.df};
-  return {state.orbit3d.theta, state.orbit3d.d, state.orbit3d.df};
+SharedOrbit<double> active_orbit(Lesson& state) {
+  return std::visit([](auto& view) { return SharedOrbit<double>{view.orbit.theta, view.orbit.d, view.orbit.df}; },
+                    state.view);
 }
 
-glm::dvec2 active_target_xy(const AppState& state) {
-  return state.dimension == 2 ? state.orbit2d.target : glm::dvec2(state.orbit3d.target);
+SharedOrbit<const double> active_orbit(const Lesson& state) {
+  return std::visit(
+      [](const auto& view) { return SharedOrbit<const double>{view.orbit.theta, view.orbit.d, view.orbit.df}; },
+      state.view);
 }
 
-int active_max_side(const AppState& state) {
-  return state.dimension == 2 ? state.max_pixels_2d : std::max(state.max_columns_3d, state.max_rows_3d);
+glm::dvec2 active_target_xy(const Lesson& state) {
+  return std::visit([](const auto& view) { return glm::dvec2(view.orbit.target); }, state.view);
 }
 
-std::size_t active_object_count(const AppState& state) {
-  return state.dimension == 2 ? state.file.scene2d.circles.size() : state.file.scene3d.spheres.size();
+int active_max_side(const Lesson& state) {
+  return std::visit([](const auto& view) { return max_side(view); }, state.view);
 }
 
-CameraPreset active_preset(const AppState& state) {
-  return state.dimension == 2 ? preset_of(state.camera2d) : preset_of(state.camera3d);
+std::size_t active_object_count(const Lesson& state) {
+  return std::visit([](const auto& view) { return objects_of(view.scene).size(); }, state.view);
 }
 
-int construction_steps(const AppState& state) {
-  return state.dimension == 2 ? kConstructionSteps2D : kConstructionSteps3D;
+CameraPreset active_preset(const Lesson& state) {
+  return std::visit([](const auto& view) { return preset_of(view.camera); }, state.view);
 }
 
-}  // namespace raycam::ui
+int construction_steps(const Lesson& state) {
+  return std::visit([](const auto& view) { return view.kConstructionSteps; }, state.view);
+}
+
+}  // namespace raycam::session

@@ -16,9 +16,12 @@
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
+#include "host_capabilities.h"
+#include "host_requests.h"
 #include "text.h"
+#include "view.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // A widget's rectangle on screen, in pixels: (x0, y0) its top-left corner, (x1, y1) its bottom-right.
 struct WidgetRect {
@@ -42,29 +45,20 @@ struct ObserverOrbit {
 // is closed).
 enum class MessageSource { general, camera, files, caster, construction };
 
-struct AppState {
-  // ---- scene and camera parameters (the sliders' model) ----
-  int dimension = 3;
-  std::string scene_path;  // empty: built-in demo
-  // The file the other dimension's scene came from (empty: the demo). A file holds one kind of scene, so
-  // switching 2D/3D shows the other kind's and swaps the two: coming back names the file again.
-  std::string other_scene_path;
-  SceneFile file;
-  Orbit2D orbit2d;
-  Orbit3D orbit3d;
-  double res = 1.0;
-  std::optional<double> res_rows;  // 3D, "non-square" on: the rows' res (res is then the columns')
-  int max_pixels_2d = 256;
-  int max_columns_3d = 256, max_rows_3d = 256;
-  Camera2D camera2d{256};
-  Camera3D camera3d{256, 256};
-  // The camera the scene file (with the command line's overrides) opened with: "Reset camera" returns here.
-  Orbit2D preset_orbit2d;
-  Orbit3D preset_orbit3d;
-  double preset_res = 1.0;
-  std::optional<double> preset_res_rows;
+// The session's state, split by what each part is. Functions take the part they use (const where they only
+// read it); AppState is the whole, and converts to any of its parts.
 
-  // ---- the lesson ----
+// The lesson's model: what the student and the teacher set. Everything else is derived from it or about
+// showing it.
+struct Lesson {
+  // The view on screen, and the other dimension's, kept as it was left: switching 2D/3D swaps the two, so
+  // coming back finds its scene, its file and its camera again (view.h).
+  View view{View3D{}};
+  View other_view{View2D{}};
+  double res = 1.0;         // one res for both views: switching keeps it
+  double preset_res = 1.0;  // the res the scene file and the command line opened with
+  // 3D, "non-square" on: the rows' res (res is then the columns'), and the preset's.
+  std::optional<double> res_rows, preset_res_rows;
   ClassicMistakes mistakes;
   bool arccos_route = false;  // free placement through the handout's arccos (the mistake near a pole)
   std::string mistake_look_at;  // after a mistake's "show me": what to look at (empty: nothing shown)
@@ -73,11 +67,32 @@ struct AppState {
   std::optional<glm::dvec2> pin_point;      // its canonical point as a fraction of the image (follows res)
   PixelIndex pin_placed;                    // the pixel the last image pinned for that point
   std::optional<PixelIndex> hovered_pixel;  // under the mouse this frame
+  CastOptions cast_options;  // the caster's method (the app's "Caster" combo); same ids whatever it is
+  AccuracyFlags accuracy;    // the accuracy knobs; at their defaults the fast caster runs
+  Language language = Language::en;  // --lang, else the environment; the frame applies it (text.h)
+  // What changed since the last cast: the cast cache is rebuilt from the model when these say so.
+  bool cameras_dirty = true;
+  std::uint64_t scene_version = 1;  // bumped when the objects change
+};
 
-  // ---- display ----
+// The cast cache: rebuilt from the lesson by recast_if_needed, never edited by the panels.
+struct CastCache {
+  // The 3D scene packed for the caster (raycam/scene.h), repacked when scene_version moves past packed_version.
+  PackedScene3D packed3d;
+  std::uint64_t packed_version = 0;
+  ColourMap map;
+  std::uint64_t map_version = 0;  // bumped at every cast
+  CastStats stats;
+  double cast_ms = 0.0;
+  long long cast_count = 0;
+  double ns_per_ray = 20.0;     // measured at every full cast; predicts the next cast's cost
+  bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
+};
+
+// How the window shows the lesson: the lecture settings and the views' own framing.
+struct Display {
   float font_scale = 1.0f;  // the font is rasterised at this scale (fonts.h), not stretched
   bool high_contrast = false;
-  Language language = Language::en;  // --lang, else the environment; the frame applies it (text.h)
   bool show_help = false;
   ObserverOrbit observer;
   // The overhead view's world rectangle (x, y). Fitted to the scene and the camera when a scene is loaded,
@@ -85,51 +100,28 @@ struct AppState {
   // camera moves.
   glm::dvec2 overhead_low{-1.0}, overhead_high{1.0};
   bool overhead_fit_pending = true;
+};
 
-  // ---- results: recomputed only when something they depend on changed ----
-  bool cameras_dirty = true;
-  std::uint64_t scene_version = 1;  // bumped when the objects change
-  std::uint64_t map_version = 0;    // bumped at every cast
-  // The 3D scene packed for the caster (raycam/scene.h), repacked when scene_version moves past packed_version.
-  PackedScene3D packed3d;
-  std::uint64_t packed_version = 0;
-  ColourMap map;
-  CastOptions cast_options;  // the caster's method (the app's "Caster" combo); same ids whatever it is
-  AccuracyFlags accuracy;    // the accuracy knobs; at their defaults the fast caster runs
-  CastStats stats;
-  double cast_ms = 0.0;
-  long long frame_count = 0, cast_count = 0;
-  double frame_ms = 0.0;
-  double ns_per_ray = 20.0;     // measured at every full cast; predicts the next cast's cost
-  bool refine_pending = false;  // the map on screen is a coarse preview cast while the user drags
-
-  // ---- requests to the executable (only it knows about windows and files of pixels) ----
-  bool request_screenshot = false;  // write the frame to screenshot_path (request_screenshot() picks it)
-  std::string screenshot_path;
-  bool request_fullscreen = false;
-  bool request_quit = false;
-  std::string window_title = "raycam";  // "raycam — 3D — many3d.json": the frame sets it, the host applies it
-
-  // ---- messages: one at a time, shown next to what caused it until dismissed or replaced ----
+// Messages: one at a time, shown next to what caused it until dismissed or replaced.
+struct Messages {
   std::string message;
   bool message_is_error = false;
   MessageSource message_source = MessageSource::general;
   long long message_shown_frame = -1;  // the frame in which a panel section showed it (else the frame does)
+};
 
-  // ---- what the panels showed (read by the frame after them) ----
+// What the panels keep between frames (their widgets' own state; read by the frame after them).
+struct PanelState {
   glm::dmat4 shown_matrix{1.0};      // the last product the construction table showed (2D: its 3×3 top-left)
   float font_scale_editing = -1.0f;  // the font scale slider's value while dragged (applied on release)
   float font_scale_seen = -1.0f;     // by the Lecture mode section: a change scrolls its slider into view
   int font_scale_scroll_frames = 0;
-  bool pick_scene_file = false;  // the page: the status line's button asks the browser for a scene file
   // A test hook, null in the app: where each labelled widget "###id" was last drawn (screen corners).
   std::map<std::string, WidgetRect>* widget_rects = nullptr;
-
-  // ---- Check my camera (check_panel.h) ----
+  // Check my camera (check_panel.h).
   std::string check_command;  // --check CMD: handed to the panel at the next frame, then cleared
   bool check_waiting = false;  // a verdict is on its way: the window keeps drawing (frame_needs_redraw)
-
-  // ---- text inputs (Open and Save as have their own paths) ----
+  // Text inputs (Open and Save as have their own paths).
   std::string path_input;         // Open
   std::string save_path;          // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
@@ -141,11 +133,22 @@ struct AppState {
   int figure_replace_pending = 0;  // Export figure asked to replace existing files: 1 the step, 2 every step
 };
 
+// The host: what it can do (set once by the executable), what the session asks of it, and the frame clock.
+struct HostLink {
+  HostCapabilities host = kDesktopHost;
+  HostRequests requests;  // only the executable knows about windows and files of pixels
+  std::string window_title = "raycam";  // "raycam — 3D — many3d.json": the frame sets it, the host applies it
+  long long frame_count = 0;
+  double frame_ms = 0.0;
+};
+
+struct AppState : Lesson, CastCache, Display, Messages, PanelState, HostLink {};
+
 // Sets the one message on screen (replacing any other).
-void set_message(AppState& state, MessageSource source, bool is_error, std::string text);
+void set_message(Messages& messages, MessageSource source, bool is_error, std::string text);
 
 // Asks the host for a screenshot at the next free raycam-screenshot-NNN.png in the current directory.
-void request_screenshot(AppState& state);
+void request_screenshot(HostLink& host);
 // "cannot open PATH: REASON", without the path twice when the reason already names it.
 std::string cannot_open_message(const std::string& path, const std::string& reason);
 // The first raycam-screenshot-NNN.png (NNN from 001) that does not exist in `directory`.
@@ -157,7 +160,7 @@ std::string window_title(const AppState& state);
 // Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
 void adopt_view_setup(AppState& state, const ViewSetup& setup);
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
-void place_cameras(AppState& state);
+void place_cameras(Lesson& state);
 // Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the
 // user is interacting, a cast predicted to take longer than kInteractiveBudgetMs is done at a coarser res
 // (a preview), and refined to full resolution once the interaction stops: the UI never freezes.
@@ -173,7 +176,7 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite);
 
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
-bool uses_reference_caster(const AppState& state);
+bool uses_reference_caster(const Lesson& state);
 
 // Back to the camera the scene opened with (the file's preset and the command line), and a fresh fit of
 // the overhead view.
@@ -183,7 +186,16 @@ void reset_camera(AppState& state);
 // built-in demo scene.
 void switch_dimension(AppState& state, int dimension);
 
-// ---- the camera on screen (2D or 3D): the one place that picks it ----
+// ---- the views: the one on screen and each dimension's ----
+int dimension(const Lesson& state);  // of the view on screen
+// Each dimension's view, on screen or kept aside.
+View2D& view2d(Lesson& state);
+const View2D& view2d(const Lesson& state);
+View3D& view3d(Lesson& state);
+const View3D& view3d(const Lesson& state);
+// The file the scene on screen came from (empty: the built-in demo).
+const std::string& scene_path(const Lesson& state);
+
 // The orbit parameters the 2D and 3D cameras share (Number: double, or const double to read them).
 template <class Number>
 struct SharedOrbit {
@@ -191,18 +203,18 @@ struct SharedOrbit {
   Number& d;
   Number& df;
 };
-SharedOrbit<double> active_orbit(AppState& state);
-SharedOrbit<const double> active_orbit(const AppState& state);
+SharedOrbit<double> active_orbit(Lesson& state);
+SharedOrbit<const double> active_orbit(const Lesson& state);
 // The target C seen from above (3D: its x and y).
-glm::dvec2 active_target_xy(const AppState& state);
+glm::dvec2 active_target_xy(const Lesson& state);
 // The longest side the camera may use: N in 2D, max(W, H) in 3D.
-int active_max_side(const AppState& state);
+int active_max_side(const Lesson& state);
 // The objects of the scene on screen (circles or spheres).
-std::size_t active_object_count(const AppState& state);
+std::size_t active_object_count(const Lesson& state);
 // The camera's current parameters as a scene file's preset.
-CameraPreset active_preset(const AppState& state);
+CameraPreset active_preset(const Lesson& state);
 
 // Number of construction steps of the current mode (3 in 2D, 5 in 3D).
-int construction_steps(const AppState& state);
+int construction_steps(const Lesson& state);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

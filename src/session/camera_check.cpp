@@ -15,7 +15,7 @@
 #include "student_process.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // ---- the worker ----------------------------------------------------------------------------------------
 struct CheckJob {
@@ -53,7 +53,7 @@ std::shared_ptr<const KeyedVerdict> graded(const CheckJob& job) {
   }
 }
 
-#ifndef __EMSCRIPTEN__  // the page grades at once, on its one thread (update())
+// The worker thread's loop (a host that grades in the background; a page grades at once in update()).
 void work(std::shared_ptr<CheckShared> shared) {
   for (;;) {
     CheckJob job;
@@ -71,15 +71,11 @@ void work(std::shared_ptr<CheckShared> shared) {
     shared->running = false;
   }
 }
-#endif
 
 }  // namespace
 
-SceneFile camera_case(const AppState& state) {
-  SceneFile file = state.file;
-  file.dimension = state.dimension;
-  file.camera = active_preset(state);
-  return file;
+SceneFile camera_case(const Lesson& state) {
+  return scene_file_of(state.view, active_preset(state));
 }
 
 // ---- CameraCheck (debounce) -------------------------------------------------------------------------------
@@ -100,7 +96,7 @@ std::string CameraCheck::case_key(const AppState& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
-  key << std::hexfloat << state.dimension << '|' << state.scene_version << '|' << state.scene_path << '|'
+  key << std::hexfloat << dimension(state) << '|' << state.scene_version << '|' << scene_path(state) << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
       << p.df.value_or(0) << '|' << p.res.value_or(0) << '|' << p.res_rows.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';
@@ -142,12 +138,13 @@ void CameraCheck::update(const AppState& state, double now) {
     return;
   }
   submitted_key_ = key;
-#ifdef __EMSCRIPTEN__
-  // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
-  std::shared_ptr<const KeyedVerdict> verdict = graded(job);
-  std::lock_guard<std::mutex> lock(shared_->mutex);
-  shared_->latest = std::move(verdict);
-#else
+  if (!state.host.grades_in_background) {
+    // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
+    std::shared_ptr<const KeyedVerdict> verdict = graded(job);
+    std::lock_guard<std::mutex> lock(shared_->mutex);
+    shared_->latest = std::move(verdict);
+    return;
+  }
   std::lock_guard<std::mutex> lock(shared_->mutex);
   shared_->pending = std::move(job);  // a newer case replaces one still waiting
   shared_->started_at = now;
@@ -156,7 +153,6 @@ void CameraCheck::update(const AppState& state, double now) {
     std::thread(work, shared_).detach();  // it holds the shared state; it ends when stop is set
   }
   shared_->wake.notify_all();
-#endif
 }
 
 // ---- what the panel reads
@@ -214,4 +210,4 @@ std::string check_header(const CheckProgress& progress) {
   return trf("CHECK: %s", check::text(current_language(), check::status_name(r.status)));
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

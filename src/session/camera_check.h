@@ -10,7 +10,7 @@
 #include "app_state.h"
 #include "case_verdict.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 inline constexpr double kQuietSeconds = 0.3;   // after the last camera or scene change
 inline constexpr double kCheckTimeout = 10.0;  // per run, as `raycam-cli check`'s default
@@ -44,7 +44,7 @@ struct CheckProgress {
 
 // The case of the camera on screen, as the student's program reads it: the scene and the camera's parameters
 // (the page offers it as a download: it runs no program, and grades the answer file given back).
-SceneFile camera_case(const AppState& state);
+SceneFile camera_case(const Lesson& state);
 
 // What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
 // wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty
@@ -89,4 +89,4 @@ class CameraCheck {
   double changed_at_ = 0;
 };
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <glm/gtc/constants.hpp>
 
-namespace raycam::ui {
+namespace raycam::session {
 
 struct CameraRange {
   double low, high;
@@ -19,4 +19,4 @@ inline constexpr CameraRange kPolarRange{0.0, glm::pi<double>()};  // φ in radi
 inline constexpr int kMaxPixels2DInApp = 4096;                     // N, the 2D camera's max pixels
 inline constexpr int kMaxSideInApp = 2048;                         // W and H, the 3D camera's max size
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

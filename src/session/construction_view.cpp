@@ -5,7 +5,7 @@
 #include "raycam/camera3d.h"
 #include "raycam/transform.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 std::vector<ConstructionSegment> construction_camera(const glm::dmat4& m, double axis_length) {
   std::vector<ConstructionSegment> segments;
@@ -49,4 +49,4 @@ glm::vec4 construction_colour(ConstructionPart part) {
   return {1, 1, 1, 1};
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

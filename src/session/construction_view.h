@@ -11,7 +11,7 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
-namespace raycam::ui {
+namespace raycam::session {
 
 enum class ConstructionPart { screen, top_edge, field_edge, right_axis, up_axis, view_axis };
 
@@ -27,4 +27,4 @@ std::vector<ConstructionSegment> construction_camera(const glm::dmat4& world_fro
 // Colour of each part, RGBA in [0, 1].
 glm::vec4 construction_colour(ConstructionPart part);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -6,7 +6,7 @@
 #include "figure_files.h"
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 
@@ -30,8 +30,10 @@ Export prepare(const AppState& state, const std::string& path, bool all_steps) {
   const figure::FigureOptions options{current_language() == Language::fr ? figure::Language::fr
                                                                          : figure::Language::en,
                                       state.figure_rays};
-  e.drawn = state.dimension == 2 ? figure::construction_figure_2d(state.file.scene2d, state.camera2d, options)
-                                 : figure::construction_figure_3d(state.file.scene3d, state.camera3d, options);
+  e.drawn = std::visit(
+      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(view.scene, view.camera, options); },
+                 [&](const View3D& view) { return figure::construction_figure_3d(view.scene, view.camera, options); }},
+      state.view);
   // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
   const int count = int(e.drawn.frames.size());
   if (all_steps)
@@ -57,4 +59,4 @@ std::vector<std::string> existing_figure_files(const AppState& state, const std:
   return existing;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -8,7 +8,7 @@
 
 #include "app_state.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 // The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf, .png or .tex
 // for TikZ; all steps go to PATH-a.svg … or to one PDF of pages) with state.figure_rays rays and the matrix
@@ -39,4 +39,4 @@ inline std::string with_figure_extension(const std::string& path, int format) {
   return stem + kFigureExtensions[format];
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

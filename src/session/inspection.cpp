@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 // The object the caster put in this pixel, and t along the ray from the caster's formula. The reference
@@ -27,26 +27,28 @@ Hit hit_as_cast(const AppState& state, PixelIndex pixel, const Ray& ray, const O
 InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
   InspectedRay out;
   out.pixel = pixel;
-  if (state.dimension == 2) {
-    const Camera2D& camera = state.camera2d;
-    out.k = camera.pixel_of_column(pixel.column);
-    const glm::dvec2 p0 = camera.canonical_pixel(out.k);
-    const Ray2D ray = camera.primary_ray(out.k);
-    out.canonical_pixel = {p0, 0.0};
-    out.canonical_direction = {p0 - kCanonicalEye2D, 0.0};  // u_k^0 = P_k^0 - E0
-    out.origin = {ray.origin, 0.0};
-    out.direction = {ray.direction, 0.0};
-    out.hit = hit_as_cast(state, pixel, ray, state.file.scene2d.circles);
-  } else {
-    const Camera3D& camera = state.camera3d;
-    const glm::dvec3 p0 = camera.canonical_pixel(pixel.row, pixel.column);
-    const Ray3D ray = camera.primary_ray(pixel.row, pixel.column);
-    out.canonical_pixel = p0;
-    out.canonical_direction = p0 - kCanonicalEye3D;
-    out.origin = ray.origin;
-    out.direction = ray.direction;
-    out.hit = hit_as_cast(state, pixel, ray, state.file.scene3d.spheres);
-  }
+  std::visit(overloaded{[&](const View2D& view) {  // a pixel k of the bar, the plane z = 0 of the views
+                          const Camera2D& camera = view.camera;
+                          out.k = camera.pixel_of_column(pixel.column);
+                          const glm::dvec2 p0 = camera.canonical_pixel(out.k);
+                          const Ray2D ray = camera.primary_ray(out.k);
+                          out.canonical_pixel = {p0, 0.0};
+                          out.canonical_direction = {p0 - kCanonicalEye2D, 0.0};  // u_k^0 = P_k^0 - E0
+                          out.origin = {ray.origin, 0.0};
+                          out.direction = {ray.direction, 0.0};
+                          out.hit = hit_as_cast(state, pixel, ray, view.scene.circles);
+                        },
+                        [&](const View3D& view) {
+                          const Camera3D& camera = view.camera;
+                          const glm::dvec3 p0 = camera.canonical_pixel(pixel.row, pixel.column);
+                          const Ray3D ray = camera.primary_ray(pixel.row, pixel.column);
+                          out.canonical_pixel = p0;
+                          out.canonical_direction = p0 - kCanonicalEye3D;
+                          out.origin = ray.origin;
+                          out.direction = ray.direction;
+                          out.hit = hit_as_cast(state, pixel, ray, view.scene.spheres);
+                        }},
+             state.view);
   return out;
 }
 
@@ -67,4 +69,4 @@ std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays) {
   return fan;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -11,7 +11,7 @@
 
 #include "app_state.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 struct InspectedRay {
   PixelIndex pixel;                     // image row and column
@@ -36,4 +36,4 @@ std::optional<PixelIndex> active_pixel(const AppState& state);
 // column order (column 0 = the eye's left). The overhead and the observer views draw these same rays.
 std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

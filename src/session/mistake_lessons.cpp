@@ -10,7 +10,7 @@
 
 #include "text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 double& focal(AppState& state) { return active_orbit(state).df; }
@@ -35,8 +35,8 @@ void res_truncated_show(AppState& state) { state.res = 12.75 / max_side(state); 
 // ---- square pixels ---------------------------------------------------------------------------------------
 // Only a non-square image shows it: the canonical screen is the square whatever nbc and nbl.
 void square_pixels_show(AppState& state) {
-  if (state.dimension == 2) switch_dimension(state, 3);
-  state.max_rows_3d = std::max(16, state.max_columns_3d / 2);
+  switch_dimension(state, 3);
+  view3d(state).max_rows = std::max(16, view3d(state).max_columns / 2);
 }
 
 // ---- forgot to renormalise -----------------------------------------------------------------------------
@@ -48,7 +48,7 @@ void square_pixels_show(AppState& state) {
 //   |u| ≈ 1, only objects whose nearest point is close to the screen (b̂ small) are hit.
 // (tests/session/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
 std::string renormalise_does(const AppState& state) {
-  const double df = focal(state), edge = std::sqrt((state.dimension == 2 ? 1.0 : 2.0) + df * df);
+  const double df = focal(state), edge = std::sqrt((dimension(state) - 1) + df * df);  // 1 or 2 screen coordinates
   std::string text = trf("Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
   if (state.accuracy.options.formula == IntersectFormula::stable)
     text +=
@@ -93,12 +93,12 @@ void object_behind_screen_show(AppState& state) {
   } catch (const std::invalid_argument&) {
     return;  // parameters out of range: the recast says why
   }
-  if (state.dimension == 2)
-    put_object_behind_screen(state.file.scene2d.circles, state.orbit2d.target, state.orbit2d.d, state.orbit2d.df,
-                             state.camera2d.view_direction(), state.camera2d.image_right());
-  else
-    put_object_behind_screen(state.file.scene3d.spheres, state.orbit3d.target, state.orbit3d.d, state.orbit3d.df,
-                             state.camera3d.view_direction(), state.camera3d.image_right());
+  std::visit(
+      [](auto& view) {
+        put_object_behind_screen(objects_of(view.scene), view.orbit.target, view.orbit.d, view.orbit.df,
+                                 view.camera.view_direction(), view.camera.image_right());
+      },
+      state.view);
 }
 std::string eye_origin_does(const AppState&) {
   return tr("Rays start at the eye instead of the pixel on the screen: what lies between the eye and the "
@@ -111,7 +111,7 @@ std::string no_t_min_does(const AppState&) {
 
 // ---- arccos route --------------------------------------------------------------------------------------
 std::string arccos_does(const AppState& state) {
-  if (state.dimension == 2)
+  if (dimension(state) == 2)
     return tr(
         "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
         "error √(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
@@ -121,10 +121,10 @@ std::string arccos_does(const AppState& state) {
       "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
 }
 void arccos_show(AppState& state) {
-  if (state.dimension == 2) switch_dimension(state, 3);
-  state.orbit3d.phi = glm::radians(1e-7);
-  if (std::abs(std::remainder(state.orbit3d.theta, 2 * glm::pi<double>())) < glm::radians(20.0))
-    state.orbit3d.theta = glm::radians(60.0);
+  switch_dimension(state, 3);
+  view3d(state).orbit.phi = glm::radians(1e-7);
+  if (std::abs(std::remainder(view3d(state).orbit.theta, 2 * glm::pi<double>())) < glm::radians(20.0))
+    view3d(state).orbit.theta = glm::radians(60.0);
 }
 
 const char* kNothingToAdd = "";
@@ -171,14 +171,14 @@ const MistakeLesson* find_lesson(const std::string& id) {
   return nullptr;
 }
 
-bool& mistake_flag(AppState& state, const MistakeLesson& lesson) {
+bool& mistake_flag(Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
-bool mistake_is_on(const AppState& state, const MistakeLesson& lesson) {
+bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
-bool mistake_applies(const AppState& state, const MistakeLesson& lesson) {
-  return !lesson.info || (state.dimension == 2 ? lesson.info->in_2d : lesson.info->in_3d);
+bool mistake_applies(const Lesson& state, const MistakeLesson& lesson) {
+  return !lesson.info || (dimension(state) == 2 ? lesson.info->in_2d : lesson.info->in_3d);
 }
 const char* mistake_label(const MistakeLesson& lesson) {
   return lesson.info ? lesson.info->label[current_language()]
@@ -206,4 +206,4 @@ std::string mistakes_on(const AppState& state) {
   return names;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -10,7 +10,7 @@
 #include "app_state.h"
 #include "raycam/classic_mistakes.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 struct MistakeLesson {
   const char* id;            // the core's id, or "arccos"
@@ -25,9 +25,9 @@ struct MistakeLesson {
 // Every lesson, in the core's order, then the arccos route.
 const std::vector<MistakeLesson>& mistake_lessons();
 const MistakeLesson* find_lesson(const std::string& id);
-bool& mistake_flag(AppState& state, const MistakeLesson& lesson);
-bool mistake_is_on(const AppState& state, const MistakeLesson& lesson);
-bool mistake_applies(const AppState& state, const MistakeLesson& lesson);  // exists in the current mode
+bool& mistake_flag(Lesson& state, const MistakeLesson& lesson);
+bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson);
+bool mistake_applies(const Lesson& state, const MistakeLesson& lesson);  // exists in the current mode
 const char* mistake_label(const MistakeLesson& lesson);
 // The core's line and what it does at the current settings.
 std::string mistake_text(const AppState& state, const MistakeLesson& lesson);
@@ -36,4 +36,4 @@ void show_mistake(AppState& state, const MistakeLesson& lesson);
 // The labels of the mistakes that are on, joined with ", " (empty: none), for the image's header.
 std::string mistakes_on(const AppState& state);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

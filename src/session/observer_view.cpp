@@ -9,15 +9,15 @@
 
 #include "camera_ranges.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 namespace {
 constexpr double kRadiansPerPixel = 0.01;  // drag speed
 }
 
 ObserverCamera observer_camera(const AppState& state, double aspect) {
-  const Camera3D& camera = state.camera3d;
-  const glm::dvec3 target = state.orbit3d.target;
+  const Camera3D& camera = view3d(state).camera;
+  const glm::dvec3 target = view3d(state).orbit.target;
   // What must be in view: the camera (eye and screen corners), its target, and the objects within d of the
   // target (farther ones, and a ground larger than the orbit, would shrink the camera to a few pixels).
   glm::dvec3 low = camera.eye(), high = low;
@@ -31,8 +31,8 @@ ObserverCamera observer_camera(const AppState& state, double aspect) {
   } else {
     for (const glm::dvec3& corner : camera.screen_corners()) include(corner);
     include(target);
-    const double near_target = state.orbit3d.d;
-    for (const Sphere& s : state.file.scene3d.spheres)
+    const double near_target = view3d(state).orbit.d;
+    for (const Sphere& s : view3d(state).scene.spheres)
       if (glm::length(s.centre - target) + s.radius <= near_target + 1e-9)
         include(s.centre - s.radius), include(s.centre + s.radius);
   }
@@ -55,8 +55,8 @@ ObserverCamera observer_camera(const AppState& state, double aspect) {
   return observer;
 }
 
-void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, double dx, double dy) {
-  Orbit3D& orbit = state.orbit3d;
+void drag_camera_in_observer(Lesson& state, const ObserverCamera& observer, double dx, double dy) {
+  Orbit3D& orbit = view3d(state).orbit;
   // dP/dθ = d·sin φ·(−sin θ, cos θ, 0): its component along the observer's right says which way θ moves
   // the camera on screen. (Side-on, where it vanishes, either way is fine.)
   const glm::dvec3 along_theta{-std::sin(orbit.theta), std::cos(orbit.theta), 0.0};
@@ -67,4 +67,4 @@ void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, do
   state.cameras_dirty = true;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -8,7 +8,7 @@
 
 #include "app_state.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 inline constexpr double kObserverFovY = 0.7853981633974483;  // 45°, in radians
 
@@ -25,6 +25,6 @@ ObserverCamera observer_camera(const AppState& state, double aspect);
 // A left drag by (dx, dy) pixels in the observer view moves the camera the way the mouse went: up is up
 // (φ decreases, so the camera rises), and right is right on the screen whichever side the observer looks
 // from (θ's sign from the camera's motion seen by the observer).
-void drag_camera_in_observer(AppState& state, const ObserverCamera& observer, double dx, double dy);
+void drag_camera_in_observer(Lesson& state, const ObserverCamera& observer, double dx, double dy);
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

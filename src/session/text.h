@@ -56,3 +56,13 @@ Language current_language();
 const std::vector<Translation>& translations();
 
 }  // namespace raycam::ui
+
+namespace raycam::session {
+// The session's own code shows its texts through the same lookup.
+using ui::current_language;
+using ui::set_language;
+using ui::tr;
+using ui::tr_later;
+using ui::tr_reason;
+using ui::trf;
+}  // namespace raycam::session

@@ -12,29 +12,31 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 // ---- the panel section -----------------------------------------------------------------------------------
-void check_section(CameraCheck& check, double now) {
+void check_section(CameraCheck& check, const HostCapabilities& host, double now) {
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                            "it is checked whenever they change (docs/check.md)."));
   ImGui::PopStyleColor();
   CheckRequest& request = check.request();
-#ifdef __EMSCRIPTEN__  // a page runs no program: the case goes out as a download, the answer file comes back
-  wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
-                           "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
-  if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
-  if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
-  if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
-#else
-  const std::string label = tr("program###check_command");  // above its box, which takes the whole width
-  wrapped_between_words(label.substr(0, label.find("##")));
-  ImGui::SetNextItemWidth(-FLT_MIN);
-  ImGui::InputText("###check_command", &request.command);
-  checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
-  checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
-  if (button(tr("Check now###check_now"))) request.check_now = true;
-#endif
+  if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
+    wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
+                             "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
+    if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
+    if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
+    if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
+  } else {
+    const std::string label = tr("program###check_command");  // above its box, which takes the whole width
+    wrapped_between_words(label.substr(0, label.find("##")));
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    ImGui::InputText("###check_command", &request.command);
+    checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
+    checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
+    if (button(tr("Check now###check_now"))) request.check_now = true;
+  }
 
   const CheckProgress progress = check.progress();
   if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));
@@ -76,7 +78,7 @@ void check_overlay(const CameraCheck& check, const AppState& state, ImDrawList* 
   const CheckProgress progress = check.progress();
   if (!progress.latest || !progress.current) return;  // only over the image it was made for
   const check::CaseVerdict& v = progress.latest->verdict;
-  if (v.dimension != state.dimension || v.columns != state.map.width || v.rows != state.map.height) return;
+  if (v.dimension != dimension(state) || v.columns != state.map.width || v.rows != state.map.height) return;
   const float cw = (x1 - x0) / float(v.columns), ch = (y1 - y0) / float(v.rows);
   const ImU32 red = IM_COL32(255, 0, 0, 120);  // translucent: the student's mistake stays visible underneath
   // One rectangle per run of wrong pixels along a row: few rectangles even when most of the image is wrong.

@@ -32,6 +32,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
 const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
@@ -73,16 +75,18 @@ bool view_hovered(const char* window_id, const Rect& area) {
 PixelIndex pixel_under(const AppState& state, double fx, double fy) {
   auto pixel_of = [](double raster, int count) { return std::clamp(int(std::floor(raster)), 0, count - 1); };
   PixelIndex pixel;
-  if (state.dimension == 2) {
-    const Camera2D& camera = state.camera2d;
-    pixel.column =
-        camera.column_of_pixel(pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
-  } else {
-    const Camera3D& camera = state.camera3d;
-    const glm::dvec2 raster = camera.raster_from_screen({2.0 * fx - 1.0, 1.0 - 2.0 * fy});
-    pixel.column = pixel_of(raster.x, camera.columns());
-    pixel.row = pixel_of(raster.y, camera.rows());
-  }
+  std::visit(overloaded{[&](const View2D& view) {  // the bar: canonical +x at the left
+                          const Camera2D& camera = view.camera;
+                          pixel.column = camera.column_of_pixel(
+                              pixel_of(camera.raster_from_screen(1.0 - 2.0 * fx), camera.pixel_count()));
+                        },
+                        [&](const View3D& view) {
+                          const Camera3D& camera = view.camera;
+                          const glm::dvec2 raster = camera.raster_from_screen({2.0 * fx - 1.0, 1.0 - 2.0 * fy});
+                          pixel.column = pixel_of(raster.x, camera.columns());
+                          pixel.row = pixel_of(raster.y, camera.rows());
+                        }},
+             state.view);
   return pixel;
 }
 
@@ -91,7 +95,6 @@ PixelIndex pixel_under(const AppState& state, double fx, double fy) {
 void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_turns_around_target,
                       const OverheadMapping* mapping, const ObserverCamera* observer = nullptr) {
   ImGuiIO& io = ImGui::GetIO();
-  const bool is_2d = state.dimension == 2;
   double& theta = active_orbit(state).theta;
   if (dragging && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 1.0f) &&
       (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) {
@@ -114,8 +117,8 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
   if (mapping && hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
     const int id = object_under(*mapping, state, io.MousePos);
     if (id >= 0) {
-      if (is_2d) state.orbit2d.target = state.file.scene2d.circles[std::size_t(id)].centre;
-      else state.orbit3d.target = state.file.scene3d.spheres[std::size_t(id)].centre;
+      std::visit([&](auto& view) { view.orbit.target = objects_of(view.scene)[std::size_t(id)].centre; },
+                 state.view);
       state.cameras_dirty = true;
     }
   }
@@ -139,8 +142,11 @@ void prepare_frame(const AppState& state) {
 }
 
 // ---- layout and build ----------------------------------------------------------------------------------
-FrameRenderer::FrameRenderer()
-    : observer_(std::make_unique<gl::ObserverRenderer>()), discs_(std::make_unique<gl::DiscLayer>()) {}
+FrameRenderer::FrameRenderer(Graphics graphics) {
+  if (graphics == Graphics::none) return;  // the views' geometry is computed, their textures are not drawn
+  observer_ = std::make_unique<gl::ObserverRenderer>();
+  discs_ = std::make_unique<gl::DiscLayer>();
+}
 FrameRenderer::~FrameRenderer() = default;
 
 Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const {
@@ -151,7 +157,7 @@ Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, F
   layout.panel = {0, 0, std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f),
                   float(height)};
   const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
-  if (state.dimension == 2) {
+  if (image_is_bar(state.view)) {
     const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
     image_area_ = {right_x, 0, right_w, bar_h};
     overhead_area_ = {right_x, bar_h, right_w, body_h - bar_h};
@@ -170,14 +176,14 @@ Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, F
 void FrameRenderer::view_input(AppState& state) {
   ImGuiIO& io = ImGui::GetIO();
   const bool over_overhead = view_hovered("###overhead", last_.overhead);
-  const bool over_observer = state.dimension == 3 && view_hovered("###observer", last_.observer);
+  const bool over_observer = has_observer(state.view) && view_hovered("###observer", last_.observer);
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
     left_drag_ = over_overhead ? Drag::overhead : over_observer ? Drag::observer : Drag::none;
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) right_drag_observer_ = over_observer;
   if (!io.MouseDown[ImGuiMouseButton_Left]) left_drag_ = Drag::none;
   if (!io.MouseDown[ImGuiMouseButton_Right]) right_drag_observer_ = false;
   orbit_with_mouse(state, over_overhead, left_drag_ == Drag::overhead, true, &last_.overhead_mapping);
-  if (state.dimension != 3) return;
+  if (!has_observer(state.view)) return;
   orbit_with_mouse(state, over_observer, left_drag_ == Drag::observer, false, nullptr, &observer_view_);
   if (right_drag_observer_ && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
     state.observer.yaw_deg -= io.MouseDelta.x * 0.4f;
@@ -227,25 +233,25 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_section(check_, ImGui::GetTime());
+    check_section(check_, state.host, ImGui::GetTime());
   }
   ImGui::End();
-  if (state.map_version != uploaded_map_version_) {
+  if (draws_textures() && state.map_version != uploaded_map_version_) {
     texture_.upload(state.map);
     uploaded_map_version_ = state.map_version;
   }
-  if (state.dimension == 3 && state.scene_version != uploaded_scene_version_) {
-    observer_->set_spheres(state.file.scene3d.spheres);
+  if (observer_ && has_observer(state.view) && state.scene_version != uploaded_scene_version_) {
+    observer_->set_spheres(view3d(state).scene.spheres);
     uploaded_scene_version_ = state.scene_version;
   }
-  if (state.scene_version != uploaded_disc_version_ || state.dimension != uploaded_disc_dimension_) {
+  if (discs_ && (state.scene_version != uploaded_disc_version_ || dimension(state) != uploaded_disc_dimension_)) {
     discs_->set_discs(overhead_discs(state));
     uploaded_disc_version_ = state.scene_version;
-    uploaded_disc_dimension_ = state.dimension;
+    uploaded_disc_dimension_ = dimension(state);
   }
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
-  if (state.dimension == 3) observer_window(state, observer_area_, layout);
+  if (has_observer(state.view)) observer_window(state, observer_area_, layout);
   shown_.placement = state.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
@@ -279,10 +285,10 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const bool is_2d = state.dimension == 2;
-  const std::string full = is_2d ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+  const bool is_bar = image_is_bar(state.view);
+  const std::string full = is_bar ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
                                   : trf("Image: %d × %d###image", state.map.width, state.map.height);
-  const std::string brief = is_2d ? trf("Colour bar: n = %d###image", state.map.width)
+  const std::string brief = is_bar ? trf("Colour bar: n = %d###image", state.map.width)
                                   : trf("%d × %d###image", state.map.width, state.map.height);
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not, and so
   // does a failing check: where the eye is. Where the header is too narrow for the name (lecture sizes), it
@@ -316,7 +322,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
-    const ImVec2 size = is_2d ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
+    const ImVec2 size = is_bar ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))
                               : ImVec2(std::floor(std::min(avail.x, avail.y)), std::floor(std::min(avail.x, avail.y)));
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture_.id())), size, {0, 0}, {1, 1});
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
@@ -337,7 +343,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const std::string title = first_fitting({state.dimension == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
+  const std::string title = first_fitting({dimension(state) == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
                                                                 : tr("Overhead view: looking down the z axis###overhead"),
                                             tr("Overhead view###overhead"), tr("Overhead###overhead")},
                                            area.w);
@@ -363,7 +369,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected, *discs_);
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, discs_.get());
       draw->PopClipRect();
     }
   }
@@ -385,9 +391,9 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       layout.observer = {top_left.x, top_left.y, size.x, size.y};
       const double aspect = double(size.x) / double(size.y);
 
-      const Camera3D& camera = state.camera3d;
-      const glm::dvec3 target = state.orbit3d.target;
-      const double reach = state.orbit3d.d + state.orbit3d.df;
+      const Camera3D& camera = view3d(state).camera;
+      const glm::dvec3 target = view3d(state).orbit.target;
+      const double reach = view3d(state).orbit.d + view3d(state).orbit.df;
       const ObserverCamera observer = observer_camera(state, aspect);
       layout.observer_camera = observer_view_ = observer;
       const glm::mat4 view = observer.view, projection = observer.projection;
@@ -395,7 +401,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       gl::ObserverFrame frame;
       frame.view_projection = projection * view;
       frame.observer_eye = glm::vec3(observer.eye);
-      frame.background = state.file.scene3d.background;
+      frame.background = view3d(state).scene.background;
       const glm::dvec3 eye = camera.eye();
       const std::array<glm::dvec3, 4> corners = camera.screen_corners();
       const glm::vec4 cyan{0, 0.9f, 1, 1}, faint_cyan{0, 0.9f, 1, 0.45f};
@@ -451,7 +457,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
                 {glm::vec3(segment.from + shift), glm::vec3(segment.to + shift), colour});
           }
         }
-      const GLuint texture = observer_->render(frame, int(size.x), int(size.y));
+      const GLuint texture = observer_ ? observer_->render(frame, int(size.x), int(size.y)) : 0;
       // GL textures are bottom-up: flip v.
       ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,
                                            {top_left.x + size.x, top_left.y + size.y}, {0, 1}, {1, 0});

@@ -39,7 +39,7 @@ struct FrameLayout {
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only
-  ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
+  session::ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
   Rect status;    // the status line (frame time, work done and skipped)
   Rect message;   // the message line above the status line, when no open panel section showed the message
   ShownValues shown;
@@ -54,22 +54,25 @@ struct AppliedTheme {
 
 class FrameRenderer {
  public:
-  FrameRenderer();  // needs a current GL 3.3 context and an ImGui context
+  // What the frame draws its textures with: GL (a current GL 3.3 context), or nothing (the null host).
+  enum class Graphics { gl, none };
+  explicit FrameRenderer(Graphics graphics = Graphics::gl);  // needs an ImGui context
   ~FrameRenderer();
-  FrameLayout build(AppState& state, int width, int height);
-  CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
+  FrameLayout build(session::AppState& state, int width, int height);
+  session::CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
 
  private:
   enum class Drag { none, overhead, observer };
+  bool draws_textures() const { return observer_ != nullptr; }  // false with Graphics::none
   // Sets the panel's rectangle and the views' areas; returns the status line's.
-  Rect layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const;
-  void view_input(AppState& state);
-  void hover_image(AppState& state);
-  void image_window(AppState& state, const Rect& area, FrameLayout& layout);
-  void overhead_window(AppState& state, const Rect& area, FrameLayout& layout);
-  void observer_window(AppState& state, const Rect& area, FrameLayout& layout);
+  Rect layout_areas(const session::AppState& state, int width, int height, FrameLayout& layout) const;
+  void view_input(session::AppState& state);
+  void hover_image(session::AppState& state);
+  void image_window(session::AppState& state, const Rect& area, FrameLayout& layout);
+  void overhead_window(session::AppState& state, const Rect& area, FrameLayout& layout);
+  void observer_window(session::AppState& state, const Rect& area, FrameLayout& layout);
 
-  gl::ColourMapTexture texture_;
+  gl::ColourMapTexture texture_;  // with Graphics::none: never uploaded, id 0
   std::unique_ptr<gl::ObserverRenderer> observer_;
   std::unique_ptr<gl::DiscLayer> discs_;
   std::uint64_t uploaded_map_version_ = 0, uploaded_scene_version_ = 0, uploaded_disc_version_ = 0;
@@ -79,16 +82,16 @@ class FrameRenderer {
   Drag left_drag_ = Drag::none;
   bool right_drag_observer_ = false;
   ShownValues shown_;
-  ObserverCamera observer_view_;  // last frame's, for the mouse
-  CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
+  session::ObserverCamera observer_view_;  // last frame's, for the mouse
+  session::CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
   AppliedTheme applied_theme_;
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
 // the state's font scale when it changed (fonts.h). Both hosts (GLFW window, OSMesa) call it every frame.
-void prepare_frame(const AppState& state);
+void prepare_frame(const session::AppState& state);
 
 // Dark or high-contrast theme and the font scale (lecture mode), when they differ from `applied`.
-void apply_theme(const AppState& state, AppliedTheme& applied);
+void apply_theme(const session::AppState& state, AppliedTheme& applied);
 
 }  // namespace raycam::ui

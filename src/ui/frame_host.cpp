@@ -12,6 +12,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   FrameResult result;
   prepare_frame(state);  // fonts at the current scale, before the backend's frame
@@ -21,22 +23,16 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   ImGui::NewFrame();
   result.layout = frame.build(state, size.width, size.height);
   ImGui::Render();
-  glViewport(0, 0, size.width, size.height);
-  const ImVec4 clear = current_theme().clear;  // the colour the theme's contrast was computed against
-  glClearColor(clear.x, clear.y, clear.z, clear.w);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (state.request_screenshot) {
-    const std::string path = state.screenshot_path.empty() ? "raycam-screenshot.png" : state.screenshot_path;
+  host.draw(size);
+  if (const auto shot = state.requests.take(HostRequestKind::screenshot)) {
+    const std::string path = shot->path.empty() ? "raycam-screenshot.png" : shot->path;
     try {
-      glFinish();
       gl::write_png(host.read_back(), path);
       set_message(state, MessageSource::files, false, trf("wrote %s", path.c_str()));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, tr_reason(error.what()));
       result.screenshot_failed = true;
     }
-    state.request_screenshot = false;
   }
   host.present();
   state.frame_ms =
@@ -45,9 +41,31 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   return result;
 }
 
+void FrameHost::draw(const FramebufferSize& size) {
+  glViewport(0, 0, size.width, size.height);
+  const ImVec4 clear = current_theme().clear;  // the colour the theme's contrast was computed against
+  glClearColor(clear.x, clear.y, clear.z, clear.w);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+FramebufferSize NullHost::begin(const session::AppState&) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(float(size_.width), float(size_.height));
+  io.DeltaTime = 1.0f / 60.0f;
+  if (!io.Fonts->IsBuilt()) {  // what a renderer backend's first frame does, without a texture
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsAlpha8(&pixels, &width, &height);
+  }
+  return size_;
+}
+
 bool frame_needs_redraw(const AppState& state) {
-  return state.cameras_dirty || state.refine_pending || state.request_screenshot ||
-         state.request_fullscreen || state.request_quit || state.check_waiting;
+  const HostRequests& asked = state.requests;
+  return state.cameras_dirty || state.refine_pending || asked.pending(HostRequestKind::screenshot) ||
+         asked.pending(HostRequestKind::toggle_fullscreen) || asked.pending(HostRequestKind::quit) ||
+         state.check_waiting;
 }
 
 }  // namespace raycam::ui

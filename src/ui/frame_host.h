@@ -25,11 +25,29 @@ class FrameHost {
   // Waits for what the next frame needs (a window: events, or nothing when `state` has work pending; a
   // buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty when
   // there is nothing to draw (minimised): the frame is skipped.
-  virtual FramebufferSize begin(const AppState& state) = 0;
+  virtual FramebufferSize begin(const session::AppState& state) = 0;
+  // Draws ImGui's frame into the framebuffer: GL hosts with the shared GL code (frame_host.cpp); the null
+  // host draws nothing.
+  virtual void draw(const FramebufferSize& size);
   // Shows the frame just drawn (a window swaps its buffers; a buffer finishes drawing).
   virtual void present() = 0;
   // The frame just drawn, read before present() (a window's back buffer), top row first.
   virtual gl::RgbaImage read_back() const = 0;
+};
+
+// A host with no GL at all: it runs a whole frame's logic (input, the panels, the views' geometry, the casts,
+// ImGui's draw lists) and draws nothing, so the frame's tests also run where there is no GL context (the
+// sanitizer build). Input is set on ImGui's IO directly.
+class NullHost : public FrameHost {
+ public:
+  NullHost(int width, int height) : size_{width, height} {}
+  FramebufferSize begin(const session::AppState& state) override;
+  void draw(const FramebufferSize&) override {}
+  void present() override {}
+  gl::RgbaImage read_back() const override { return {}; }
+
+ private:
+  FramebufferSize size_;
 };
 
 struct FrameResult {
@@ -39,12 +57,12 @@ struct FrameResult {
 };
 
 // The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
-// framebuffer, a requested screenshot saved (state.request_screenshot, to state.screenshot_path), present.
-FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state);
+// framebuffer, a requested screenshot saved (taken from state.requests), present.
+FrameResult run_frame(FrameHost& host, FrameRenderer& frame, session::AppState& state);
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse
 // preview waits for its refinement, a request is waiting for the executable. Anything that makes the image
 // change with no input (a background cast) adds its condition here.
-bool frame_needs_redraw(const AppState& state);
+bool frame_needs_redraw(const session::AppState& state);
 
 }  // namespace raycam::ui

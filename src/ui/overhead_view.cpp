@@ -12,6 +12,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
 constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
@@ -33,14 +35,20 @@ std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dve
   for (const auto& corner : screen_corners_of(world_from_camera)) outline.push_back(xy(corner));
   return outline;
 }
+std::vector<glm::dvec2> camera_outline(const AppState& state, glm::dvec2* eye) {
+  return std::visit([&](const auto& view) { return camera_outline(view.camera.world_from_camera(), eye); },
+                    state.view);
+}
+// How high an object reaches above the plane seen from above: discs are drawn low to high, and the mouse
+// picks the one drawn last. A 2D scene is flat: its objects keep their order.
+double top_of(const Circle&) { return 0.0; }
+double top_of(const Sphere& sphere) { return sphere.centre.z + sphere.radius; }
 }  // namespace
 
 // ---- fitting -------------------------------------------------------------------------------------------
 void fit_overhead(AppState& state) {
   glm::dvec2 eye;
-  std::vector<glm::dvec2> points = state.dimension == 2
-                                       ? camera_outline(state.camera2d.world_from_camera(), &eye)
-                                       : camera_outline(state.camera3d.world_from_camera(), &eye);
+  std::vector<glm::dvec2> points = camera_outline(state, &eye);
   points.push_back(eye);
   const glm::dvec2 target = active_target_xy(state);
   points.push_back(target);
@@ -51,10 +59,9 @@ void fit_overhead(AppState& state) {
     points.push_back(centre - glm::dvec2(radius));
     points.push_back(centre + glm::dvec2(radius));
   };
-  if (state.dimension == 2)
-    for (const Circle& c : state.file.scene2d.circles) include(c.centre, c.radius);
-  else
-    for (const Sphere& s : state.file.scene3d.spheres) include(xy(s.centre), s.radius);
+  std::visit([&](const auto& view) {
+    for (const auto& object : objects_of(view.scene)) include(xy(object.centre), object.radius);
+  }, state.view);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
   state.overhead_low = low;
@@ -65,8 +72,7 @@ void fit_overhead(AppState& state) {
 bool camera_and_target_in_view(const AppState& state, ImVec2 top_left, ImVec2 size) {
   const OverheadMapping m = overhead_mapping(state, top_left, size);
   glm::dvec2 eye;
-  std::vector<glm::dvec2> points = state.dimension == 2 ? camera_outline(state.camera2d.world_from_camera(), &eye)
-                                                        : camera_outline(state.camera3d.world_from_camera(), &eye);
+  std::vector<glm::dvec2> points = camera_outline(state, &eye);
   points.push_back(eye);
   points.push_back(active_target_xy(state));
   for (const glm::dvec2& p : points) {
@@ -292,25 +298,24 @@ ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
 
 std::vector<gl::Disc> overhead_discs(const AppState& state) {
   std::vector<gl::Disc> discs;
-  if (state.dimension == 2) {
-    for (const Circle& c : state.file.scene2d.circles) discs.push_back({c.centre, c.radius, c.colour});
-    return discs;
-  }
-  const auto& spheres = state.file.scene3d.spheres;
-  std::vector<std::size_t> order(spheres.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return spheres[a].centre.z + spheres[a].radius < spheres[b].centre.z + spheres[b].radius;
-  });
-  discs.reserve(order.size());
-  for (std::size_t i : order) discs.push_back({xy(spheres[i].centre), spheres[i].radius, spheres[i].colour});
+  std::visit(
+      [&](const auto& view) {
+        const auto& objects = objects_of(view.scene);
+        std::vector<std::size_t> order(objects.size());
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t a, std::size_t b) { return top_of(objects[a]) < top_of(objects[b]); });
+        discs.reserve(order.size());
+        for (std::size_t i : order) discs.push_back({xy(objects[i].centre), objects[i].radius, objects[i].colour});
+      },
+      state.view);
   return discs;
 }
 
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected, gl::DiscLayer& discs) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
-  draw->AddRectFilled(clip_min, clip_max, colour_of(state.dimension == 2 ? state.file.scene2d.background : state.file.scene3d.background));
+  draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
   draw_axes(draw, m, clip_min, clip_max);
   const double far_length = 3.0 * camera_reach(state);
 
@@ -321,23 +326,28 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   placement.scale = m.scale * density.x;
   placement.width = int(std::lround((clip_max.x - clip_min.x) * density.x));
   placement.height = int(std::lround((clip_max.y - clip_min.y) * density.y));
-  if (placement.width > 0 && placement.height > 0)
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs.texture(placement))), clip_min,
+  if (discs && placement.width > 0 && placement.height > 0)  // none: the null host draws no texture
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs->texture(placement))), clip_min,
                    clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
   if (final_camera) draw_fan(draw, m, state, far_length);
-  if (state.dimension == 2) {
-    draw_camera(draw, m, state.camera2d.world_from_camera(), kScreenColour, far_length, true);
-    mark_screen_segment(draw, m, state.camera2d);
-  } else
-    draw_camera(draw, m, state.camera3d.world_from_camera(), kScreenColour, far_length, true);
-  if (!final_camera) {
-    // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
-    if (state.dimension == 2) draw_camera(draw, m, construction_step(state.camera2d.placement(), state.construction_step), kConstructionColour, far_length * 0.3, true);
-    else
-      draw_construction_3d(draw, m, construction_step(state.camera3d.placement(), state.construction_step));
-  }
+  std::visit([&](const auto& view) {
+    draw_camera(draw, m, view.camera.world_from_camera(), kScreenColour, far_length, true);
+  }, state.view);
+  // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
+  const int step = state.construction_step;
+  std::visit(overloaded{[&](const View2D& view) {
+                          mark_screen_segment(draw, m, view.camera);
+                          if (!final_camera)
+                            draw_camera(draw, m, construction_step(view.camera.placement(), step),
+                                        kConstructionColour, far_length * 0.3, true);
+                        },
+                        [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
+                          if (!final_camera)
+                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step));
+                        }},
+             state.view);
   const glm::dvec2 target = active_target_xy(state);
   draw_cross(draw, m.to_screen(target), 7.0f, kTargetColour);
 
@@ -353,16 +363,14 @@ int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_
   const glm::dvec2 p = m.to_world(screen_point);
   int best = -1;
   double best_top = -1e300;
-  if (state.dimension == 2) {
-    for (std::size_t i = 0; i < state.file.scene2d.circles.size(); ++i)
-      if (glm::length(state.file.scene2d.circles[i].centre - p) <= state.file.scene2d.circles[i].radius) best = int(i);
-    return best;
-  }
-  const auto& spheres = state.file.scene3d.spheres;
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    const double top = spheres[i].centre.z + spheres[i].radius;
-    if (glm::length(xy(spheres[i].centre) - p) <= spheres[i].radius && top > best_top) best = int(i), best_top = top;
-  }
+  std::visit([&](const auto& view) {
+    const auto& objects = objects_of(view.scene);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const double top = top_of(objects[i]);
+      // >=: of discs as high, the later one is drawn over the others (overhead_discs' stable order)
+      if (glm::length(xy(objects[i].centre) - p) <= objects[i].radius && top >= best_top) best = int(i), best_top = top;
+    }
+  }, state.view);
   return best;
 }
 

@@ -31,6 +31,8 @@
 
 namespace raycam::ui {
 
+using namespace session;  // the state the window shows and edits
+
 namespace {
 // A label's shown text and the id ImGui sees: "Save###save" gives "Save" and "###save"; a label with no id
 // gives itself and "###" + itself, so the id stays the same whatever text a widget shows for it.
@@ -258,13 +260,12 @@ bool section(const char* full, const char* brief, int flags) {
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {
   if (!section(tr("Camera###camera"), tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
-  int dimension = state.dimension;
-  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &dimension, 2);
+  int wanted = dimension(state);
+  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &wanted, 2);
   same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr("3D camera")).x);
-  mode_changed |= ImGui::RadioButton(tr("3D camera"), &dimension, 3);
-  if (mode_changed) switch_dimension(state, dimension);
+  mode_changed |= ImGui::RadioButton(tr("3D camera"), &wanted, 3);
+  if (mode_changed) switch_dimension(state, wanted);
 
-  const bool is_2d = state.dimension == 2;
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
   bool changed = slider_double(state, tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
@@ -272,11 +273,15 @@ void camera_section(AppState& state) {
   changed |= slider_double(state, tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
                            "%.2f", true);
   changed |= slider_degrees(state, tr("θ azimuth###theta"), theta, -180.0, 180.0);
-  if (!is_2d)
-    changed |= slider_degrees(state, tr("φ polar angle###phi"), state.orbit3d.phi,
-                              glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+  std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
+                        [&](View3D& view) {
+                          changed |= slider_degrees(state, tr("φ polar angle###phi"), view.orbit.phi,
+                                                    glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+                        }},
+             state.view);
   const int max_size = active_max_side(state);
-  if (is_2d || !state.res_rows) {
+  // The handout's one or two resolution variables (two in 3D, "non-square" on).
+  if (dimension(state) == 2 || !state.res_rows) {
     changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   } else {  // the handout's two resolution variables: nbc = round(res_c·W), nbl = round(res_l·H)
     changed |= slider_double(state, tr("res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
@@ -284,33 +289,35 @@ void camera_section(AppState& state) {
                              true);
   }
   bool non_square = state.res_rows.has_value();
-  if (!is_2d && checkbox(tr("non-square: res per side"), &non_square)) {
+  if (dimension(state) == 3 && checkbox(tr("non-square: res per side"), &non_square)) {
     state.res_rows = non_square ? std::optional<double>(state.res) : std::nullopt;
     changed = true;
   }
-  if (is_2d) {
-    // The target's coordinates are doubles in the widget too, as the sliders'.
-    if (target_fields(state, glm::value_ptr(state.orbit2d.target), 2)) changed = true;
-    int n = state.max_pixels_2d;
-    if (labelled(state, tr("N max pixels###N"),
-                 [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
-      state.max_pixels_2d = std::clamp(n, 1, kMaxPixels2DInApp);
-      changed = true;
-    }
-  } else {
-    if (target_fields(state, glm::value_ptr(state.orbit3d.target), 3)) changed = true;
-    int size[2] = {state.max_columns_3d, state.max_rows_3d};
-    if (labelled(state, tr("max size W, H###size"),
-                 [&](const char* l) { return ImGui::InputInt2(l, size); })) {
-      state.max_columns_3d = std::clamp(size[0], 1, kMaxSideInApp);
-      state.max_rows_3d = std::clamp(size[1], 1, kMaxSideInApp);
-      changed = true;
-    }
-  }
-  ImGui::TextWrapped(
-      "%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
-                glm::degrees(is_2d ? state.camera2d.field_of_view() : state.camera3d.field_of_view()))
-                .c_str());
+  // The target's coordinates are doubles in the widget too, as the sliders'.
+  std::visit([&](auto& view) {
+    changed |= target_fields(state, glm::value_ptr(view.orbit.target), view.kDimension);
+  }, state.view);
+  std::visit(overloaded{[&](View2D& view) {
+                          int n = view.max_pixels;
+                          if (labelled(state, tr("N max pixels###N"),
+                                       [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
+                            view.max_pixels = std::clamp(n, 1, kMaxPixels2DInApp);
+                            changed = true;
+                          }
+                        },
+                        [&](View3D& view) {
+                          int size[2] = {view.max_columns, view.max_rows};
+                          if (labelled(state, tr("max size W, H###size"),
+                                       [&](const char* l) { return ImGui::InputInt2(l, size); })) {
+                            view.max_columns = std::clamp(size[0], 1, kMaxSideInApp);
+                            view.max_rows = std::clamp(size[1], 1, kMaxSideInApp);
+                            changed = true;
+                          }
+                        }},
+             state.view);
+  const double fov = std::visit([](const auto& view) { return view.camera.field_of_view(); }, state.view);
+  ImGui::TextWrapped("%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
+                               glm::degrees(fov)).c_str());
   if (button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
   explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
@@ -318,6 +325,56 @@ void camera_section(AppState& state) {
 }
 
 // ---- construction of M_d -------------------------------------------------------------------------------
+namespace {
+// M_d's factors and their product up to `step`, as the handout writes them in each dimension.
+void placement_tables(AppState& state, const View2D& view, int step, int steps) {
+  const Placement2D& p = view.camera.placement();
+  ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
+  if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("R(α)")) {
+    matrix_table<3>("R", p.rotation);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  state.shown_matrix = glm::dmat4(construction_step(p, step));
+  matrix_table<3>("M", construction_step(p, step));
+}
+void placement_tables(AppState& state, const View3D& view, int step, int steps) {
+  if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
+    explain(tr(
+        "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
+        "(red), image up (green), view (blue)."));
+  if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
+    explain(tr(
+        "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+        "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
+        "world up points down and the image is upside down."));
+    if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+      state.cameras_dirty = true;
+  }
+  const Placement3D& p = view.camera.placement();
+  ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
+  if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
+    matrix_table<4>("Roll", p.roll);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("Ry(φ)")) {
+    matrix_table<4>("Ry", p.polar);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("Rz(θ)")) {
+    matrix_table<4>("Rz", p.azimuth);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  state.shown_matrix = construction_step(p, step);
+  matrix_table<4>("M", construction_step(p, step));
+}
+}  // namespace
+
 // The course figures of this camera (raycam-cli figure): the step shown, or every step, in the format, with
 // the rays and the matrix chosen here; existing files are replaced only after asking, as Save as does.
 void export_figure_now(AppState& state, bool all) {
@@ -338,7 +395,7 @@ void figure_export_row(AppState& state) {
   if (labelled(state, tr("format###figure_format"),
                [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); }))
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
-  if (state.dimension == 2)  // the 3D steps draw no rays: a slider there would change nothing
+  if (dimension(state) == 2)  // the 3D steps draw no rays: a slider there would change nothing
     labelled(state, tr("rays###figure_rays"),
              [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
   checkbox(tr("matrix###figure_matrix"), &state.figure_matrix);
@@ -398,54 +455,8 @@ void construction_section(AppState& state) {
                                     tr_later("5: T(OP) moves the screen to P")};
   if (labelled(state, tr("step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
-  explain(tr(state.dimension == 2 ? k2D[step] : k3D[step]));
-  if (state.dimension == 3) {
-    if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
-      explain(tr(
-        "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
-        "(red), image up (green), view (blue)."));
-    if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
-      explain(tr(
-          "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
-          "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
-          "world up points down and the image is upside down."));
-      if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
-        state.cameras_dirty = true;
-    }
-  }
-  if (state.dimension == 2) {
-    const Placement2D& p = state.camera2d.placement();
-    ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
-    if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("R(α)")) {
-      matrix_table<3>("R", p.rotation);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
-    state.shown_matrix = glm::dmat4(construction_step(p, step));
-    matrix_table<3>("M", construction_step(p, step));
-  } else {
-    const Placement3D& p = state.camera3d.placement();
-    ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
-    if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
-    if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
-      matrix_table<4>("Roll", p.roll);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("Ry(φ)")) {
-      matrix_table<4>("Ry", p.polar);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("Rz(θ)")) {
-      matrix_table<4>("Rz", p.azimuth);
-      ImGui::TreePop();
-    }
-    if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
-    wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
-    state.shown_matrix = construction_step(p, step);
-    matrix_table<4>("M", construction_step(p, step));
-  }
+  explain(tr(dimension(state) == 2 ? k2D[step] : k3D[step]));
+  std::visit([&](const auto& view) { placement_tables(state, view, step, steps); }, state.view);
   figure_export_row(state);
 }
 
@@ -459,7 +470,7 @@ void inspector_section(const AppState& state) {
   }
   const InspectedRay ray = inspect_pixel(state, *pixel);
   // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
-  const int dimensions = state.dimension;
+  const int dimensions = dimension(state);
   const auto line = [dimensions](const char* name, const glm::dvec3& v) {
     std::string text = std::string(name) + " = (";
     for (int i = 0; i < dimensions; ++i) {
@@ -469,24 +480,28 @@ void inspector_section(const AppState& state) {
     }
     wrapped_between_words(text + ")");
   };
-  if (state.dimension == 2) {
-    wrapped_between_words(trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
-    line("P_k^0", ray.canonical_pixel);
-    line("u_k^0", ray.canonical_direction);
-    line("P_k  ", ray.origin);
-    line("u_k  ", ray.direction);
-  } else {
-    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
-    line("P^0", ray.canonical_pixel);
-    line("u^0", ray.canonical_direction);
-    line("P  ", ray.origin);
-    line("u  ", ray.direction);
-  }
+  std::visit(overloaded{[&](const View2D&) {  // the bar's pixel k, the handout's P_k and u_k
+                          wrapped_between_words(
+                              trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
+                          line("P_k^0", ray.canonical_pixel);
+                          line("u_k^0", ray.canonical_direction);
+                          line("P_k  ", ray.origin);
+                          line("u_k  ", ray.direction);
+                        },
+                        [&](const View3D&) {
+                          wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
+                          line("P^0", ray.canonical_pixel);
+                          line("u^0", ray.canonical_direction);
+                          line("P  ", ray.origin);
+                          line("u  ", ray.direction);
+                        }},
+             state.view);
   if (ray.hit.id < 0) {
     wrapped_between_words(tr("hit: nothing (background)"));
   } else {
-    const std::string& name = state.dimension == 2 ? state.file.scene2d.circles[std::size_t(ray.hit.id)].name
-                                                   : state.file.scene3d.spheres[std::size_t(ray.hit.id)].name;
+    const std::string& name = std::visit(
+        [&](const auto& view) -> const std::string& { return objects_of(view.scene)[std::size_t(ray.hit.id)].name; },
+        state.view);
     wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }
@@ -496,21 +511,26 @@ namespace {
 // The angle recovered from the current CP by the handout's arccos and by atan2, against the slider's angle.
 void arccos_error_line(const AppState& state) {
   std::string line;
-  if (state.dimension == 2) {
-    const Orbit2D& o = state.orbit2d;
-    const glm::dvec2 cp = polar_direction(o.theta);
-    const double truth = std::remainder(o.theta, glm::two_pi<double>());
-    line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad",
-               std::abs(std::remainder(polar_angle(cp, AngleRoute::handout_arccos) - truth, glm::two_pi<double>())),
-               std::abs(std::remainder(polar_angle(cp, AngleRoute::stable) - truth, glm::two_pi<double>())));
-  } else {
-    const Orbit3D& o = state.orbit3d;
-    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
-    const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // polar angle in [0, pi]
-    line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad",
-               std::abs(spherical_angles(cp, AngleRoute::handout_arccos).phi - truth),
-               std::abs(spherical_angles(cp, AngleRoute::stable).phi - truth));
-  }
+  std::visit(
+      overloaded{[&](const View2D& view) {  // θ: the 2D camera's one angle
+                   const Orbit2D& o = view.orbit;
+                   const glm::dvec2 cp = polar_direction(o.theta);
+                   const double truth = std::remainder(o.theta, glm::two_pi<double>());
+                   const auto error = [&](AngleRoute route) {
+                     return std::abs(std::remainder(polar_angle(cp, route) - truth, glm::two_pi<double>()));
+                   };
+                   line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                              error(AngleRoute::stable));
+                 },
+                 [&](const View3D& view) {  // φ: where the pole makes the arccos route fail
+                   const Orbit3D& o = view.orbit;
+                   const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
+                   const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // in [0, pi]
+                   const auto error = [&](AngleRoute route) { return std::abs(spherical_angles(cp, route).phi - truth); };
+                   line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                              error(AngleRoute::stable));
+                 }},
+      state.view);
   explain(line.c_str());  // wrapped: at lecture sizes the line is wider than the panel
 }
 }  // namespace
@@ -589,7 +609,7 @@ void caster_section(AppState& state) {
   changed |= choice(state, tr("intersection###intersection"), knobs.formula, kFormulas);
   changed |= choice(state, tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
   changed |= checkbox(tr("camera-relative rays"), &knobs.camera_relative);
-  if (state.dimension == 2)
+  if (exact_bar_applies(state.view))
     changed |= checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
               ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
@@ -630,7 +650,7 @@ void files_section(AppState& state) {
            [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
   if (button(tr("Export colour map PNG"))) {
     try {
-      write_png(state.map, state.export_path, 1, state.dimension == 2 ? 32 : 1);
+      write_png(state.map, state.export_path, 1, image_is_bar(state.view) ? 32 : 1);
       set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, tr_reason(error.what()));
@@ -671,7 +691,7 @@ void lecture_section(AppState& state) {
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(state, tr("Language / Langue###language"), state.language, kLanguages);
-  if (button(tr("Fullscreen (F11)"))) state.request_fullscreen = true;
+  if (button(tr("Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
   same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr("Help (F1)"))) state.show_help = !state.show_help;
 }
@@ -699,23 +719,25 @@ bool message_shown_this_frame(const AppState& state) {
 // ---- status line ---------------------------------------------------------------------------------------
 void status_line(AppState& state) {
   float room = ImGui::GetContentRegionAvail().x;
-#ifdef __EMSCRIPTEN__
   // The page's file picker, at the line's right end in the app's font and language: the browser's own
   // button stays small, and covered the line's text at 1.5× and 2×.
   // Shortened where the line's shortest text and it would not fit (1024 px at 3×, in French).
+  const bool picker = state.host.picks_files;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  // A text's height (no vertical padding): the line keeps the desktop's height, so the page's layout is the
-  // desktop's.
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
-  const auto width_of = [](const char* label) {
-    return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
-  };
   const char* open_label = tr("Open a scene file…###open_scene_file");
-  if (ImGui::CalcTextSize(trf("cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
-    open_label = tr("Open…###open_scene_file");
-  const float open_width = width_of(open_label);
-  room -= open_width + spacing;
-#endif
+  float open_width = 0.0f;
+  if (picker) {
+    // A text's height (no vertical padding): the line keeps the desktop's height, so the page's layout is
+    // the desktop's.
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
+    const auto width_of = [](const char* label) {
+      return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+    };
+    if (ImGui::CalcTextSize(trf("cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
+      open_label = tr("Open…###open_scene_file");
+    open_width = width_of(open_label);
+    room -= open_width + spacing;
+  }
   // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
   const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
@@ -732,13 +754,13 @@ void status_line(AppState& state) {
     status_counters(state);
     ImGui::EndTooltip();
   }
-#ifdef __EMSCRIPTEN__
-  const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
-  ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
-  if (ImGui::Button(open_label)) state.pick_scene_file = true;
-  record_item_rect(state, "###open_scene_file");
-  ImGui::PopStyleVar();
-#endif
+  if (picker) {
+    const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
+    ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
+    if (ImGui::Button(open_label)) state.requests.ask(HostRequestKind::pick_scene_file);
+    record_item_rect(state, "###open_scene_file");
+    ImGui::PopStyleVar();
+  }
 }
 
 void status_counters(const AppState& state) {
@@ -820,11 +842,10 @@ void handle_shortcuts(AppState& state) {
   if (g_tab_key >= 0 && ImGui::IsKeyPressed(g_tab_key, false) &&
       !io.KeyCtrl) {  // always 2D/3D, even in a field
     ImGui::ClearActiveID();
-    switch_dimension(state, state.dimension == 2 ? 3 : 2);
+    switch_dimension(state, dimension_of(state.other_view));
     return;
   }
   if (editing_text()) return;  // the arrows, + and - belong to the text field being edited
-  const bool is_2d = state.dimension == 2;
   const SharedOrbit<double> orbit = active_orbit(state);
   double &theta = orbit.theta, &d = orbit.d, &df = orbit.df;
   auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key)); };
@@ -832,10 +853,11 @@ void handle_shortcuts(AppState& state) {
   const double kStep = glm::radians(5.0);  // one key press turns the camera by 5 degrees
   if (pressed(ImGuiKey_LeftArrow)) theta -= kStep, changed = true;
   if (pressed(ImGuiKey_RightArrow)) theta += kStep, changed = true;
-  if (!is_2d && pressed(ImGuiKey_UpArrow))
-    state.orbit3d.phi = std::max(kPolarRange.low, state.orbit3d.phi - kStep), changed = true;
-  if (!is_2d && pressed(ImGuiKey_DownArrow))
-    state.orbit3d.phi = std::min(kPolarRange.high, state.orbit3d.phi + kStep), changed = true;
+  if (auto* view = std::get_if<View3D>(&state.view)) {  // the polar angle: 3D only
+    double& phi = view->orbit.phi;
+    if (pressed(ImGuiKey_UpArrow)) phi = std::max(kPolarRange.low, phi - kStep), changed = true;
+    if (pressed(ImGuiKey_DownArrow)) phi = std::min(kPolarRange.high, phi + kStep), changed = true;
+  }
   if (pressed(ImGuiKey_PageUp)) df = std::min(kFocalRange.high, df * 1.1), changed = true;
   if (pressed(ImGuiKey_PageDown)) df = std::max(kFocalRange.low, df / 1.1), changed = true;
   if (pressed(ImGuiKey_Escape)) state.pinned_pixel.reset();

@@ -19,7 +19,9 @@ void restart_renderer_backend() {
   // Not ImGui_ImplOpenGL3_DestroyDeviceObjects alone: in Dear ImGui 1.86 it deletes the vertex and index
   // buffers but keeps their sizes, so the new buffers would never be given storage (WebGL: "bufferSubData:
   // buffer overflow", a blank page). A new backend starts with sizes of zero.
-  if (ImGui::GetIO().BackendRendererUserData) ImGui_ImplOpenGL3_Shutdown();
+  // No backend (the null host draws nothing): the font atlas stays on the CPU, nothing to restart.
+  if (!ImGui::GetIO().BackendRendererUserData) return;
+  ImGui_ImplOpenGL3_Shutdown();
   start_renderer_backend();
 }
 

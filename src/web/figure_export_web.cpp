@@ -4,7 +4,7 @@
 
 #include "figure_export.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 std::vector<std::string> export_construction_figure(const AppState&, const std::string&, bool) {
   throw std::runtime_error("Export figure needs the desktop app (or raycam-cli figure)");
@@ -12,4 +12,4 @@ std::vector<std::string> export_construction_figure(const AppState&, const std::
 
 std::vector<std::string> existing_figure_files(const AppState&, const std::string&, bool) { return {}; }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

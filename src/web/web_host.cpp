@@ -22,41 +22,13 @@ namespace raycam::web {
 namespace {
 struct Page {
   GLFWwindow* window = nullptr;
-  ui::AppState* state = nullptr;
+  session::AppState* state = nullptr;
   WebHost* host = nullptr;
   ui::FrameRenderer* frame = nullptr;
   Downloads* downloads = nullptr;
   std::string downloaded_case;  // the JSON of Check my camera's last case download
 };
 Page page;
-
-void note(GLFWwindow*) { page.host->note_event(); }
-
-void key_callback(GLFWwindow* window, int key, int, int action, int) {
-  note(window);
-  if (action != GLFW_PRESS) return;
-  if (key == GLFW_KEY_F1) page.state->show_help = !page.state->show_help;
-  if (key == GLFW_KEY_F12) ui::request_screenshot(*page.state);  // a download, as the Screenshot button
-}
-
-// emscripten's GLFW writes a dropped file into the page's file system and passes its path: the desktop's
-// open_scene reads it, with the same checks and messages (a bad file keeps the current scene).
-void drop_callback(GLFWwindow* window, int count, const char** paths) {
-  note(window);
-  if (count > 0) ui::open_scene(*page.state, paths[0]);
-}
-
-void install_wake_callbacks(GLFWwindow* window) {
-  glfwSetKeyCallback(window, key_callback);
-  glfwSetDropCallback(window, drop_callback);
-  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned int) { note(w); });
-  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int, int, int) { note(w); });
-  glfwSetScrollCallback(window, [](GLFWwindow* w, double, double) { note(w); });
-  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double, double) { note(w); });
-  glfwSetCursorEnterCallback(window, [](GLFWwindow* w, int) { note(w); });
-  glfwSetWindowFocusCallback(window, [](GLFWwindow* w, int) { note(w); });
-  glfwSetFramebufferSizeCallback(window, [](GLFWwindow* w, int, int) { note(w); });
-}
 
 // emscripten 3.1.6's GLFW hands the scroll callback the browser's raw deltaX and deltaY: pixels (or lines, or
 // pages), positive downwards, where the desktop's GLFW gives notches, positive upwards. One notch of a mouse
@@ -85,24 +57,23 @@ void listen_for_the_wheel() {
 ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
 
 void tick() {
-  if (!page.host->wants_frame(*page.state)) return;  // asleep until note_event()
+  if (!page.host->wants_frame(*page.state)) return;  // asleep until an event
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
   last_layout = result.layout;
   // Check my camera in the page: its case out as a download, its answer file asked of the browser.
-  ui::CheckRequest& request = page.frame->check().request();
+  session::CheckRequest& request = page.frame->check().request();
   if (request.download_case) {
     request.download_case = false;
     try {
-      const SceneFile downloaded = ui::camera_case(*page.state);
+      const SceneFile downloaded = session::camera_case(*page.state);
       save_scene_file(downloaded, "raycam-case.json");
       page.downloaded_case = scene_to_json(downloaded);
     } catch (const std::exception& error) {
-      ui::set_message(*page.state, ui::MessageSource::general, true, ui::tr_reason(error.what()));
+      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(error.what()));
     }
   }
-  if (page.state->pick_scene_file) {  // the status line's button
-    page.state->pick_scene_file = false;
+  if (page.state->requests.take(session::HostRequestKind::pick_scene_file)) {  // the status line's button
     EM_ASM(document.getElementById('picker').click(););  // within the click's user activation
   }
   if (request.pick_answer) {
@@ -110,33 +81,28 @@ void tick() {
     EM_ASM(document.getElementById('answer-picker').click(););  // within the click's user activation
   }
   page.downloads->offer_new_files();  // Save as, PNGs, screenshots, the check's case become downloads
-  static std::string applied_title;
-  if (page.state->window_title != applied_title) {  // the UI names the mode and the scene: the tab's title
-    glfwSetWindowTitle(page.window, page.state->window_title.c_str());
-    applied_title = page.state->window_title;
-  }
+  page.state->requests.take(session::HostRequestKind::toggle_fullscreen);  // the browser's own (kPageHost)
+  page.host->apply_title();  // the tab's title
 }
 }  // namespace
 
-ui::AppState& page_state() { return *page.state; }
+session::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
-ui::CameraCheck& page_check() { return page.frame->check(); }
+session::CameraCheck& page_check() { return page.frame->check(); }
 bool camera_changed_since_case_download() {
-  return !page.downloaded_case.empty() && scene_to_json(ui::camera_case(*page.state)) != page.downloaded_case;
+  return !page.downloaded_case.empty() && scene_to_json(session::camera_case(*page.state)) != page.downloaded_case;
 }
 void wake_page() { page.host->note_event(); }
 
-void WebHost::note_event() {
-  settle_frames_ = kSettleFrames;
-  if (sleeping_) {
-    sleeping_ = false;
-    emscripten_resume_main_loop();
-  }
+void WebHost::woken() {
+  if (!sleeping_) return;
+  sleeping_ = false;
+  emscripten_resume_main_loop();
 }
 
-bool WebHost::wants_frame(const ui::AppState& state) {
-  if (settle_frames_ > 0 || ui::frame_needs_redraw(state)) {
-    settle_frames_ = std::max(0, settle_frames_ - 1);
+bool WebHost::wants_frame(const session::AppState& state) {
+  if (has_work(state)) {
+    spend_settle_frame();
     return true;
   }
   sleeping_ = true;
@@ -144,17 +110,10 @@ bool WebHost::wants_frame(const ui::AppState& state) {
   return false;
 }
 
-ui::FramebufferSize WebHost::begin(const ui::AppState&) {
-  glfwGetFramebufferSize(window_, &size_.width, &size_.height);
-  if (size_.empty()) return {};
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  return size_;
-}
+void WebHost::after_imgui_backend() { listen_for_the_wheel(); }
 
-gl::RgbaImage WebHost::read_back() const { return gl::read_framebuffer(size_.width, size_.height); }
-
-void run_page(ui::AppState& state) {
+void run_page(session::AppState& state) {
+  state.host = session::kPageHost;  // what the panels offer: the picker, answer files, no program to run
   if (!glfwInit()) {
     std::fprintf(stderr, "raycam: cannot start GLFW in this page\n");
     return;
@@ -174,15 +133,10 @@ void run_page(ui::AppState& state) {
   }
   glfwMakeContextCurrent(window);
   // Objects of the page live as long as the page: the loop below never returns.
-  static WebHost host(window);
+  static WebHost host(window, state);
   static Downloads downloads;
   page = Page{window, &state, &host, nullptr, &downloads};
-  install_wake_callbacks(window);  // before ImGui's backend, which chains to them
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  listen_for_the_wheel();
-  ui::start_renderer_backend();
+  host.start_imgui();
   static ui::FrameRenderer frame;
   page.frame = &frame;
   emscripten_set_main_loop(tick, 0, false);

@@ -52,7 +52,7 @@ std::string last_error;
 extern "C" {
 // The file picker's file (written into the page's file system by the page's script): opened as if dropped.
 EMSCRIPTEN_KEEPALIVE void raycam_open_file(const char* path) {
-  raycam::ui::open_scene(raycam::web::page_state(), path);
+  raycam::session::open_scene(raycam::web::page_state(), path);
   raycam::web::wake_page();
 }
 
@@ -63,15 +63,11 @@ EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* i
     raycam::ViewFlags flags;
     flags.scene_path = std::string(scene_path);
     const raycam::ViewSetup setup = raycam::make_view_setup(flags);
-    raycam::ColourMap map;
-    if (setup.dimension == 2) {
-      raycam::validate(setup.file.scene2d);
-      map = raycam::cast_primary_rays(setup.camera2d, setup.file.scene2d, raycam::CastOptions{});
-    } else {
-      raycam::validate(setup.file.scene3d);
-      map = raycam::cast_primary_rays(setup.camera3d, setup.file.scene3d, raycam::CastOptions{});
-    }
-    raycam::write_ids(map, ids_path);
+    const raycam::session::View view = raycam::session::views_from_setup(setup).on_screen;
+    raycam::session::validate(view);
+    raycam::write_ids(std::visit([](const auto& v) { return raycam::cast_primary_rays(v.camera, v.scene, raycam::CastOptions{}); },
+                                 view),
+                      ids_path);
     return 0;
   } catch (const std::exception& error) {
     last_error = error.what();
@@ -130,16 +126,16 @@ EMSCRIPTEN_KEEPALIVE int raycam_status_line_scrolls() {
 // and a fresh cast of that camera), where the image was and the θ slider.
 EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   static std::string json;
-  const raycam::ui::AppState& state = raycam::web::page_state();
+  const raycam::session::AppState& state = raycam::web::page_state();
   const raycam::ui::FrameLayout& layout = raycam::web::page_layout();
-  const raycam::Orbit3D& o = state.orbit3d;
+  const raycam::Orbit3D& o = view3d(state).orbit;
   char number[64];
   const auto add = [&](const char* key, double value) {
     std::snprintf(number, sizeof number, "%.17g", value);
     json += std::string("\"") + key + "\": " + number + ", ";
   };
   json = "{";
-  add("dimension", state.dimension);
+  add("dimension", dimension(state));
   add("theta", o.theta);
   add("phi", o.phi);
   add("d", o.d);
@@ -160,8 +156,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   add("shown_map_version", double(layout.shown.map_version));
   add("map_version", double(state.map_version));
   const raycam::ColourMap fresh =
-      state.dimension == 2 ? raycam::cast_primary_rays(state.camera2d, state.file.scene2d)
-                           : raycam::cast_primary_rays(state.camera3d, state.file.scene3d);
+      std::visit([](const auto& view) { return raycam::cast_primary_rays(view.camera, view.scene); }, state.view);
   add("map_is_the_camera_s", fresh.ids == state.map.ids ? 1 : 0);
   add("map_width", state.map.width);
   add("map_height", state.map.height);
@@ -176,7 +171,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
     for (const auto& [id, r] : *state.widget_rects) rect(id.c_str(), r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
     json += "\"end\": 0}, ";
   }
-  const raycam::ui::CameraCheck& check = raycam::web::page_check();
+  const raycam::session::CameraCheck& check = raycam::web::page_check();
   json += "\"check_status\": \"" + check.status() + "\", ";
   add("check_wrong_pixels", double(check.wrong_pixels()));
   json += "\"end\": 0}";
@@ -186,11 +181,11 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
 // Check my camera's answer file (the page's answer picker wrote it here): graded at once against the camera
 // on screen, as the desktop grades an answer file.
 EMSCRIPTEN_KEEPALIVE void raycam_check_answer(const char* path) {
-  raycam::ui::CameraCheck& check = raycam::web::page_check();
+  raycam::session::CameraCheck& check = raycam::web::page_check();
   // An answer is graded against the camera on screen (as on the desktop): if that is no longer the case the
   // student downloaded, the verdict would blame the program for the move. Said at once, beside the verdict.
   if (raycam::web::camera_changed_since_case_download())
-    raycam::ui::set_message(raycam::web::page_state(), raycam::ui::MessageSource::general, true,
+    raycam::session::set_message(raycam::web::page_state(), raycam::session::MessageSource::general, true,
                             raycam::ui::tr("The camera or the scene changed since the case was downloaded: this "
                                            "answer is graded against the camera on screen. Download this camera's "
                                            "case again and run your program on it."));
@@ -207,7 +202,7 @@ EMSCRIPTEN_KEEPALIVE void raycam_download_case() {
 
 // Save as, as the panel's button does (the file then becomes a download): for the browser tests.
 EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
-  const bool saved = raycam::ui::save_preset_as(raycam::web::page_state(), path, true);
+  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, true);
   raycam::web::wake_page();
   return saved ? 1 : 0;
 }
@@ -215,7 +210,7 @@ EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
 
 int main() {
   chdir("/home/web_user");  // the app writes relative paths here: web_host.cpp offers them as downloads
-  raycam::ui::AppOptions options;
+  raycam::session::AppOptions options;
   options.demo_on_bad_scene = true;
   // A bad part of the address is shown in the page, the first one's reason; the other parts still apply.
   std::string error;
@@ -236,22 +231,22 @@ int main() {
     // As --font-scale, with its rule and its words: the projector's size in a bookmark.
     const std::string scale = query_value("scale");
     if (scale.empty()) return;
-    const auto rule = raycam::flags::number_in({raycam::ui::kFontScaleOptionMin, raycam::ui::kFontScaleOptionMax});
+    const auto rule = raycam::flags::number_in({raycam::session::kFontScaleOptionMin, raycam::session::kFontScaleOptionMax});
     options.font_scale = float(raycam::flags::checked_value(rule, scale, "?scale"));
   });
   const std::string scene = query_value("scene");
   if (!scene.empty()) options.view.scene_path = "/scenes/" + scene;
-  static raycam::ui::AppState state;
+  static raycam::session::AppState state;
   bool made = false;
   apply([&] {
-    state = raycam::ui::make_app_state(options);
+    state = raycam::session::make_app_state(options);
     made = true;
   });
   if (!made) {  // the demo scene then
     options.view.scene_path.reset();
-    state = raycam::ui::make_app_state(options);
+    state = raycam::session::make_app_state(options);
   }
-  static std::map<std::string, raycam::ui::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
+  static std::map<std::string, raycam::session::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
   state.widget_rects = &widget_rects;
   if (!error.empty()) {
     std::fprintf(stderr, "raycam: error: %s\n", error.c_str());

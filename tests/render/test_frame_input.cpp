@@ -25,10 +25,10 @@ using namespace raycam;
 
 namespace {
 
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppOptions options;
+session::AppState state_for(const std::vector<std::string>& args) {
+  session::AppOptions options;
   options.language = ui::Language::en;
-  return ui::make_app_state(flags::parse_app_options(args, options));
+  return session::make_app_state(flags::parse_app_options(args, options));
 }
 
 // The image region of the frame holds exactly `expected`, sampled at pixel centres.
@@ -47,28 +47,28 @@ int wrong_pixels(const gl::RgbaImage& image, const ui::Rect& r, const ColourMap&
 
 // The frame just rendered agrees with the core for the state's current parameters: the M_d the table
 // showed is the core's placement matrix, and the image is the core's colour map (both computed here).
-void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const ui::AppState& state) {
+void check_frame_agrees_with_core(headless::HeadlessRenderer& renderer, const session::AppState& state) {
   const gl::RgbaImage image = renderer.read_back();
   const ui::FrameLayout& layout = renderer.layout();
-  const Orbit3D& o = state.orbit3d;
+  const Orbit3D& o = view3d(state).orbit;
   Camera3D camera(64, 64);
   camera.set_orbit({o.target, o.d, o.theta, o.phi, o.df});
   const glm::dmat4 expected = camera.world_from_camera();
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) CHECK(layout.shown.placement[c][r] == Approx(expected[c][r]).margin(1e-12));
   CHECK(layout.shown.map_version == state.map_version);
-  CHECK(wrong_pixels(image, layout.image, cast_primary_rays(camera, state.file.scene3d)) == 0);
+  CHECK(wrong_pixels(image, layout.image, cast_primary_rays(camera, view3d(state).scene)) == 0);
 }
 
 // A key pressed for one frame and released the next, as fingers do.
-void tap(headless::HeadlessRenderer& renderer, ui::AppState& state, int key) {
+void tap(headless::HeadlessRenderer& renderer, session::AppState& state, int key) {
   renderer.press_key(key);
   renderer.run_frame(state);
   renderer.run_frame(state);
 }
 
 // Ctrl+click, as ImGui's sliders take it to type a value: hover, press with ctrl held, release.
-void ctrl_click(headless::HeadlessRenderer& renderer, ui::AppState& state, ImVec2 at) {
+void ctrl_click(headless::HeadlessRenderer& renderer, session::AppState& state, ImVec2 at) {
   renderer.move_mouse(at.x, at.y);
   renderer.run_frame(state);
   ImGui::GetIO().KeyCtrl = true;
@@ -84,32 +84,49 @@ ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
 }
 
 // Where the panels drew the labelled widget "###id" (state.widget_rects, the panels' test hook).
-std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const ui::AppState& state, const std::string& id) {
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const session::AppState& state, const std::string& id) {
   if (!state.widget_rects) return std::nullopt;
   const auto found = state.widget_rects->find(id);
   if (found == state.widget_rects->end()) return std::nullopt;
-  const ui::WidgetRect& r = found->second;
+  const session::WidgetRect& r = found->second;
   return std::pair<ImVec2, ImVec2>{{r.x0, r.y0}, {r.x1, r.y1}};
 }
 }  // namespace
 
+TEST_CASE("the page's host offers its file picker at the status line's end, the desktop's does not",
+          "[render][host]") {
+  for (const bool page : {false, true}) {
+    session::AppState state = state_for({"--size", "64x64"});
+    state.host = page ? session::kPageHost : session::kDesktopHost;
+    std::map<std::string, session::WidgetRect> rects;
+    state.widget_rects = &rects;
+    headless::HeadlessRenderer renderer(1280, 720);
+    renderer.render_settled(state);
+    const auto open = widget_rect(state, "###open_scene_file");
+    CHECK(open.has_value() == page);
+    const auto status = widget_rect(state, "###status_text");
+    REQUIRE(status);
+    if (open) CHECK(open->first.x >= status->second.x);  // after the text, never over it
+  }
+}
+
 TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
           "[render][input][same-frame]") {
-  ui::AppState state = state_for({"--size", "64x64"});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({"--size", "64x64"});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   const auto theta = widget_rect(state, "###theta");
   REQUIRE(theta);
   const float y = centre(*theta).y;
-  const double before = state.orbit3d.theta;
+  const double before = view3d(state).orbit.theta;
   renderer.move_mouse(theta->first.x + 0.8f * (theta->second.x - theta->first.x),
                       y);  // hover first, as a hand does
   renderer.run_frame(state);
   renderer.set_mouse_button(0, true);  // the slider jumps to the mouse: this frame changes θ
   renderer.run_frame(state);
-  CHECK(std::abs(state.orbit3d.theta - before) > glm::radians(30.0));
+  CHECK(std::abs(view3d(state).orbit.theta - before) > glm::radians(30.0));
   check_frame_agrees_with_core(renderer, state);
   // ... and while dragging, every frame.
   for (float x : {0.3f, 0.55f, 0.1f}) {
@@ -123,7 +140,7 @@ TEST_CASE("a slider dragged with the mouse: image and M_d table match the core i
 
 TEST_CASE("a mistake toggled in the panel shows in the image and the table of the same frame",
           "[render][input][same-frame]") {
-  ui::AppState state = state_for({"--size", "64x64", "--theta", "10", "--phi", "75"});
+  session::AppState state = state_for({"--size", "64x64", "--theta", "10", "--phi", "75"});
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   state.mistakes.printed_rotation_sign = true;  // what the checkbox sets (the section is closed here)
@@ -131,26 +148,26 @@ TEST_CASE("a mistake toggled in the panel shows in the image and the table of th
   renderer.run_frame(state);
   Camera3D camera(64, 64);
   camera.set_mistakes(state.mistakes);
-  camera.set_orbit(state.orbit3d);
+  camera.set_orbit(view3d(state).orbit);
   CHECK(renderer.layout().shown.placement == camera.world_from_camera());
   CHECK(wrong_pixels(renderer.read_back(), renderer.layout().image,
-                     cast_primary_rays(camera, state.file.scene3d)) == 0);
+                     cast_primary_rays(camera, view3d(state).scene)) == 0);
 }
 
 TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees with the core",
           "[render][input]") {
-  ui::AppState state = state_for({"--size", "64x64"});
+  session::AppState state = state_for({"--size", "64x64"});
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   const ui::Rect view = renderer.layout().overhead;
-  const ImVec2 target = renderer.layout().overhead_mapping.to_screen(glm::dvec2(state.orbit3d.target));
+  const ImVec2 target = renderer.layout().overhead_mapping.to_screen(glm::dvec2(view3d(state).orbit.target));
   renderer.move_mouse(view.x + view.w - 10, target.y);  // to the right of the target: θ = 0 there
   renderer.run_frame(state);
   renderer.set_mouse_button(0, true);
   renderer.run_frame(state);
   renderer.move_mouse(target.x, view.y + 10);  // straight above the target: θ = 90°
   renderer.run_frame(state);
-  CHECK(state.orbit3d.theta ==
+  CHECK(view3d(state).orbit.theta ==
         Approx(glm::radians(90.0)).margin(glm::radians(1.0)));  // within a screen pixel
   check_frame_agrees_with_core(renderer, state);
   renderer.set_mouse_button(0, false);
@@ -160,52 +177,52 @@ TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees w
 TEST_CASE(
     "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
     "[render][input][keyboard]") {
-  ui::AppState state = state_for({});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.render_settled(state);
   CHECK(state.window_title == "raycam — 3D — demo scene");
   for (int dimension : {2, 3, 2, 3}) {
     tap(renderer, state, ImGuiKey_Tab);
-    CHECK(state.dimension == dimension);
+    CHECK(session::dimension(state) == dimension);
     CHECK(state.window_title == "raycam — " + std::to_string(dimension) + "D — demo scene");
     CHECK_FALSE(ui::editing_text());  // Tab never puts a field into text editing
   }
   // Right arrow: θ + 5°.
-  const double theta = state.orbit3d.theta;
+  const double theta = view3d(state).orbit.theta;
   tap(renderer, state, ImGuiKey_RightArrow);
-  CHECK(state.orbit3d.theta == Approx(theta + glm::radians(5.0)));
+  CHECK(view3d(state).orbit.theta == Approx(theta + glm::radians(5.0)));
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
   const auto d_slider = widget_rect(state, "###d");
   REQUIRE(d_slider);
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
-  const double d = state.orbit3d.d, theta_editing = state.orbit3d.theta;
+  const double d = view3d(state).orbit.d, theta_editing = view3d(state).orbit.theta;
   tap(renderer, state, ImGuiKey_LeftArrow);
   renderer.type_text("+");
   renderer.run_frame(state);
-  CHECK(state.orbit3d.theta == theta_editing);
+  CHECK(view3d(state).orbit.theta == theta_editing);
   // Esc leaves the field (the typed text is dropped), and the arrows act on the camera again.
   tap(renderer, state, ImGuiKey_Escape);
   CHECK_FALSE(ui::editing_text());
-  CHECK(state.orbit3d.d == d);
+  CHECK(view3d(state).orbit.d == d);
   tap(renderer, state, ImGuiKey_LeftArrow);
-  CHECK(state.orbit3d.theta == Approx(theta_editing - glm::radians(5.0)));
+  CHECK(view3d(state).orbit.theta == Approx(theta_editing - glm::radians(5.0)));
   // Tab from inside a text field: leaves it and switches.
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
   tap(renderer, state, ImGuiKey_Tab);
-  CHECK(state.dimension == 2);
+  CHECK(dimension(state) == 2);
   CHECK_FALSE(ui::editing_text());
 }
 
 TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed or replaced",
           "[render][messages]") {
-  ui::AppState state = state_for({});
+  session::AppState state = state_for({});
   headless::HeadlessRenderer renderer(1280, 800);
   renderer.render_settled(state);
-  CHECK_FALSE(ui::open_scene(state, "no/such/scene_file_for_the_test.json"));
+  CHECK_FALSE(session::open_scene(state, "no/such/scene_file_for_the_test.json"));
   for (int frame = 0; frame < 30; ++frame) renderer.run_frame(state);  // stays
   const ui::FrameLayout& layout = renderer.layout();
   REQUIRE(state.message_is_error);
@@ -227,7 +244,7 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   // A message whose section is closed (here: none) gets its own line above the status line, tall enough
   // for its wrapped text at 3× font, inside the window.
   state.font_scale = 3.0f;
-  ui::set_message(state, ui::MessageSource::general, true,
+  session::set_message(state, session::MessageSource::general, true,
                   "a long message that cannot fit on one line of the right-hand side at three times the font size, "
                   "so it wraps: /a/long/path/to/a/scene/file/lesson3.json");
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
@@ -241,7 +258,7 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK(big.panel.w <= 0.4f * 1280 + 0.5f);
   CHECK(big.status.x + big.status.w <= 1280.5f);
   // Replaced by the next message; cleared by Dismiss (what the button does).
-  ui::set_message(state, ui::MessageSource::general, false, "done");
+  session::set_message(state, session::MessageSource::general, false, "done");
   renderer.run_frame(state);
   CHECK(renderer.layout().message.h < big.message.h);
   state.message.clear();
@@ -255,8 +272,8 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
     for (const char* language : {"en", "fr"})
       for (const char* view : {"3d", "2d"})
         for (const float scale : {1.0f, 1.5f, 2.0f, 3.0f}) {
-          ui::AppState state = state_for({"--view", view, "--lang", language});
-          std::map<std::string, ui::WidgetRect> rects;
+          session::AppState state = state_for({"--view", view, "--lang", language});
+          std::map<std::string, session::WidgetRect> rects;
           state.widget_rects = &rects;
           state.font_scale = scale;
           headless::HeadlessRenderer renderer(width, height);
@@ -297,8 +314,8 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
 }
 
 TEST_CASE("lecture mode: after a change of font scale its slider is still in view", "[render][lecture]") {
-  ui::AppState state = state_for({"--view", "3d", "--lang", "fr"});
-  std::map<std::string, ui::WidgetRect> rects;
+  session::AppState state = state_for({"--view", "3d", "--lang", "fr"});
+  std::map<std::string, session::WidgetRect> rects;
   state.widget_rects = &rects;
   headless::HeadlessRenderer renderer(1024, 768);
   renderer.render_settled(state);
@@ -330,14 +347,14 @@ TEST_CASE("lecture mode: a font scale changed in a running window draws what a w
   gl::RgbaImage after_change;
   GLenum error_after_change = GL_NO_ERROR;
   {
-    ui::AppState changed = state_for({"--view", "3d"});
+    session::AppState changed = state_for({"--view", "3d"});
     headless::HeadlessRenderer renderer(1024, 768);
     renderer.render_settled(changed);
     changed.font_scale = 3.0f;
     after_change = renderer.render_settled(changed);
     error_after_change = glGetError();
   }
-  ui::AppState started = state_for({"--view", "3d", "--font-scale", "3"});
+  session::AppState started = state_for({"--view", "3d", "--font-scale", "3"});
   headless::HeadlessRenderer fresh(1024, 768);
   const gl::RgbaImage from_start = fresh.render_settled(started);
   const ui::Rect status = fresh.layout().status;  // the frame and cast times there are measured: they differ

@@ -21,16 +21,16 @@ using namespace raycam;
 namespace {
 
 struct Shot {
-  ui::AppState state;
+  session::AppState state;
   gl::RgbaImage image;
   ui::FrameLayout layout;
 };
 
 Shot shoot(const std::vector<std::string>& args, int width = 1280, int height = 720) {
-  ui::AppOptions options = flags::parse_app_options(args);
+  session::AppOptions options = flags::parse_app_options(args);
   options.width = width;
   options.height = height;
-  Shot shot{ui::make_app_state(options), {}, {}};
+  Shot shot{session::make_app_state(options), {}, {}};
   headless::HeadlessRenderer renderer(width, height);
   shot.image = renderer.render_settled(shot.state);
   shot.layout = renderer.layout();
@@ -88,7 +88,7 @@ TEST_CASE("the 3D image on screen is the core's colour map, pixel for pixel", "[
 TEST_CASE("eye, target and screen are drawn where the overhead mapping puts them", "[render][overhead]") {
   const Shot two = shoot({"--view", "2d", "--theta", "60", "--target", "0.5,-0.5"});
   const ui::OverheadMapping& m2 = two.layout.overhead_mapping;
-  const Camera2D& c2 = two.state.camera2d;
+  const Camera2D& c2 = view2d(two.state).camera;
   CHECK(colour_near(two.image, m2.to_screen(c2.eye()), ui::kEyeColour));
   CHECK(colour_near(two.image, m2.to_screen({0.5, -0.5}), ui::kTargetColour));
   CHECK(colour_near(two.image, m2.to_screen(c2.screen_centre()), ui::kScreenColour));
@@ -97,9 +97,9 @@ TEST_CASE("eye, target and screen are drawn where the overhead mapping puts them
 
   const Shot three = shoot({"--theta", "-40", "--phi", "50"});
   const ui::OverheadMapping& m3 = three.layout.overhead_mapping;
-  const glm::dvec3 corner = transform_point(three.state.camera3d.world_from_camera(), glm::dvec3(1, 1, 0));
+  const glm::dvec3 corner = transform_point(view3d(three.state).camera.world_from_camera(), glm::dvec3(1, 1, 0));
   CHECK(colour_near(three.image, m3.to_screen({corner.x, corner.y}), ui::kScreenColour));
-  const glm::dvec3 eye = three.state.camera3d.eye();
+  const glm::dvec3 eye = view3d(three.state).camera.eye();
   CHECK(colour_near(three.image, m3.to_screen({eye.x, eye.y}), ui::kEyeColour));
 }
 
@@ -109,15 +109,15 @@ TEST_CASE("the inspected ray ends at its hit point", "[render][inspector]") {
     const Shot shot = shoot({"--view", view, "--inspect", is_2d ? "90,0" : "120,140"});
     glm::dvec2 origin, end;
     if (is_2d) {
-      const Camera2D& camera = shot.state.camera2d;
+      const Camera2D& camera = view2d(shot.state).camera;
       const Ray2D ray = camera.primary_ray(camera.pixel_of_column(90));
-      const Hit hit = nearest_hit(shot.state.file.scene2d.circles, ray, IntersectFormula::stable);
+      const Hit hit = nearest_hit(view2d(shot.state).scene.circles, ray, IntersectFormula::stable);
       REQUIRE(hit.id >= 0);
       origin = ray.origin;
       end = ray.origin + hit.t * ray.direction;
     } else {
-      const Ray3D ray = shot.state.camera3d.primary_ray(140, 120);
-      const Hit hit = nearest_hit(shot.state.file.scene3d.spheres, ray, IntersectFormula::stable);
+      const Ray3D ray = view3d(shot.state).camera.primary_ray(140, 120);
+      const Hit hit = nearest_hit(view3d(shot.state).scene.spheres, ray, IntersectFormula::stable);
       REQUIRE(hit.id >= 0);
       origin = {ray.origin.x, ray.origin.y};
       end = glm::dvec2(ray.origin + hit.t * ray.direction);
@@ -193,10 +193,10 @@ TEST_CASE("the overhead view draws each ray to the hit the caster found, mistake
   const ui::OverheadMapping& m = shot.layout.overhead_mapping;
   int hits = 0;
   for (int column = 0; column < shot.state.map.width; ++column) {
-    const ui::InspectedRay ray = ui::inspect_pixel(shot.state, {0, column});
+    const session::InspectedRay ray = session::inspect_pixel(shot.state, {0, column});
     if (ray.hit.id < 0) continue;
     ++hits;
-    const Rgb8 c = shot.state.file.scene2d.circles[std::size_t(ray.hit.id)].colour;
+    const Rgb8 c = view2d(shot.state).scene.circles[std::size_t(ray.hit.id)].colour;
     INFO("column " << column);
     CHECK(colour_near(shot.image, m.to_screen({ray.end(0).x, ray.end(0).y}), IM_COL32(c.r, c.g, c.b, 255), 1,
                       30));
@@ -234,8 +234,8 @@ TEST_CASE("the screenshot comparison fails on one changed digit and ignores only
 
 TEST_CASE("the overhead view holds still while the camera moves inside it, and fits again when it would leave",
           "[render][views]") {
-  ui::AppOptions options;
-  ui::AppState state = ui::make_app_state(options);
+  session::AppOptions options;
+  session::AppState state = session::make_app_state(options);
   headless::HeadlessRenderer renderer(1280, 800);
   renderer.render_settled(state);
   const ui::OverheadMapping before = renderer.layout().overhead_mapping;
@@ -243,19 +243,19 @@ TEST_CASE("the overhead view holds still while the camera moves inside it, and f
   auto inside = [&](ImVec2 p) {
     return p.x >= view.x && p.x <= view.x + view.w && p.y >= view.y && p.y <= view.y + view.h;
   };
-  state.orbit3d.theta += 0.1;  // a small orbit: the camera stays in view, the objects neither slide nor scale
+  view3d(state).orbit.theta += 0.1;  // a small orbit: the camera stays in view, the objects neither slide nor scale
   state.cameras_dirty = true;
   renderer.render_settled(state);
   const ui::OverheadMapping during = renderer.layout().overhead_mapping;
   CHECK(during.scale == before.scale);
   CHECK(during.origin.x == before.origin.x);
   CHECK(during.origin.y == before.origin.y);
-  state.orbit3d.theta = glm::radians(90.0);  // the demo's camera used to leave the top of the view here…
-  state.orbit3d.d = 40.0;                    // …and a far camera its sides
+  view3d(state).orbit.theta = glm::radians(90.0);  // the demo's camera used to leave the top of the view here…
+  view3d(state).orbit.d = 40.0;                    // …and a far camera its sides
   state.cameras_dirty = true;
   renderer.render_settled(state);
   const ui::OverheadMapping after = renderer.layout().overhead_mapping;
-  const glm::dvec3 eye = state.camera3d.eye(), target = state.orbit3d.target;
+  const glm::dvec3 eye = view3d(state).camera.eye(), target = view3d(state).orbit.target;
   CHECK(after.scale < before.scale);  // fitted again, by itself
   CHECK(inside(after.to_screen({eye.x, eye.y})));
   CHECK(inside(after.to_screen({target.x, target.y})));
@@ -288,7 +288,7 @@ TEST_CASE("the 2D screen segment marks pixel k = 0, and the eye's left at the ot
           "[render][overhead]") {
   for (const char* theta : {"90", "20", "-135"}) {
     const Shot shot = shoot({"--view", "2d", "--theta", theta, "--res", "0.1"});
-    const Camera2D& camera = shot.state.camera2d;
+    const Camera2D& camera = view2d(shot.state).camera;
     const ui::OverheadMapping& m = shot.layout.overhead_mapping;
     INFO("theta " << theta);
     // Pixel k = 0 is at canonical x = -1 + 1/n: M_d carries it into the world; column 0 (the eye's left) is
@@ -304,10 +304,10 @@ TEST_CASE("the 2D screen segment marks pixel k = 0, and the eye's left at the ot
 TEST_CASE("the observer view shows the camera's screen at least a tenth of its height, at 1280x800",
           "[render][views]") {
   const Shot shot = shoot({}, 1280, 800);
-  const ui::ObserverCamera& observer = shot.layout.observer_camera;
+  const session::ObserverCamera& observer = shot.layout.observer_camera;
   const ui::Rect& view = shot.layout.observer;
   double top = 1e9, bottom = -1e9;
-  for (const glm::dvec3& corner : shot.state.camera3d.screen_corners()) {
+  for (const glm::dvec3& corner : view3d(shot.state).camera.screen_corners()) {
     const glm::vec4 clip = observer.projection * observer.view * glm::vec4(glm::vec3(corner), 1.0f);
     const double y = view.y + (1.0 - clip.y / clip.w) * 0.5 * view.h;  // NDC y up, screen y down
     top = std::min(top, y), bottom = std::max(bottom, y);

@@ -22,9 +22,9 @@
 using namespace raycam;
 
 namespace {
-ui::AppState lecture_state(const char* view, const char* language) {
-  ui::AppOptions options;
-  return ui::make_app_state(
+session::AppState lecture_state(const char* view, const char* language) {
+  session::AppOptions options;
+  return session::make_app_state(
       flags::parse_app_options({"--view", view, "--lang", language, "--inspect", "3,0"}, options));
 }
 
@@ -78,9 +78,9 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
     for (const float scale : {1.0f, 2.0f, 3.0f})
       for (const char* language : {"fr", "en"})
         for (const char* view : {"2d", "3d"}) {
-          ui::AppState state = lecture_state(view, language);
+          session::AppState state = lecture_state(view, language);
           state.font_scale = scale;
-          ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
+          session::show_mistake(state, *session::find_lesson("pixel_edges"));
           if (std::string(view) == "3d") state.res_rows = 0.5;  // non-square: the res_c and res_l sliders
           headless::HeadlessRenderer renderer(screen.width, screen.height);
           renderer.run_frame(state);

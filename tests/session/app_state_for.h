@@ -9,8 +9,8 @@
 
 namespace raycam::test {
 
-inline ui::AppState state_for(const std::vector<std::string>& args) {
-  return ui::make_app_state(flags::parse_app_options(args));
+inline session::AppState state_for(const std::vector<std::string>& args) {
+  return session::make_app_state(flags::parse_app_options(args));
 }
 
 }  // namespace raycam::test

@@ -3,13 +3,15 @@
 // blocks.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <fstream>
 #include <thread>
 
+#include "../scratch_dir.h"
 #include "app_options.h"
 #include "camera_check.h"
 
 using namespace raycam;
-using namespace raycam::ui;
+using namespace raycam::session;
 
 namespace {
 AppState classic_2d() {
@@ -51,7 +53,7 @@ TEST_CASE("Check my camera grades the current camera in the background and names
 
   // A new camera is checked again: the right program passes there too.
   check.set_command(EXAMPLE_STUDENT_CPP, false);
-  state.orbit2d.theta += 0.5;
+  view2d(state).orbit.theta += 0.5;
   place_cameras(state);
   settle(check, state, now);
   CHECK(check.status() == "pass");
@@ -72,23 +74,49 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CHECK_FALSE(check.up_to_date());
 }  // the destructor does not wait either: the worker finishes on its own
 
+TEST_CASE("a host without a thread to spare (the page) has the verdict in the frame that asks for it",
+          "[ui][check][host]") {
+  const test::ScratchDir scratch("page-check");
+  const std::string answer = scratch.path("answer.json");
+  {
+    std::ofstream file(answer);
+    file << "{\"ids\": []}";  // the wrong size: a verdict at once, whatever it says
+  }
+  for (const bool in_background : {false, true}) {
+    AppState state = classic_2d();
+    state.host = in_background ? kDesktopHost : kPageHost;
+    CameraCheck check;
+    check.set_command(answer, true);
+    check.update(state, 0.0);
+    check.update(state, 10.0);  // past the quiet time: due
+    if (in_background) {
+      double now = 10.0;
+      settle(check, state, now);  // a worker's verdict arrives later
+    } else {
+      CHECK_FALSE(check.busy());  // graded in update() itself: no worker, nothing queued
+      CHECK(check.up_to_date());
+    }
+    CHECK_FALSE(check.status().empty());
+  }
+}
+
 TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
-  ui::CheckProgress progress;
-  CHECK(ui::check_header(progress).empty());  // no verdict yet
-  auto verdict = std::make_shared<ui::KeyedVerdict>();
+  session::CheckProgress progress;
+  CHECK(session::check_header(progress).empty());  // no verdict yet
+  auto verdict = std::make_shared<session::KeyedVerdict>();
   verdict->verdict.result.status = check::CaseStatus::fail;
   verdict->verdict.result.wrong_pixels = 27932;
   progress.latest = verdict;
   progress.current = true;
-  CHECK(ui::check_header(progress) == "CHECK: 27932 pixels wrong");
+  CHECK(session::check_header(progress) == "CHECK: 27932 pixels wrong");
   progress.running = true;  // checking again: the old verdict is not this image's any more
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
   progress.running = false;
   progress.current = false;  // made for the camera before the last change
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
   progress.current = true;
   verdict->verdict.result.status = check::CaseStatus::crash;
-  CHECK(ui::check_header(progress) == "CHECK: crash");
+  CHECK(session::check_header(progress) == "CHECK: crash");
   verdict->verdict.result.status = check::CaseStatus::pass;
-  CHECK(ui::check_header(progress).empty());
+  CHECK(session::check_header(progress).empty());
 }

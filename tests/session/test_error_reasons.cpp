@@ -203,18 +203,18 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(thrown_by([&] { write_png(ColourMap(2, 2, Rgb8{}), unwritable); }), {unwritable});
 
   // ---- the construction figure, exported from the window ----
-  ui::AppOptions options;
+  session::AppOptions options;
   options.language = Language::en;
-  const ui::AppState app = ui::make_app_state(options);
+  const session::AppState app = session::make_app_state(options);
   const std::string svg = scratch.path("no-such-folder/figure.svg");
-  const std::string no_svg = thrown_by([&] { ui::export_construction_figure(app, svg, false); });
+  const std::string no_svg = thrown_by([&] { session::export_construction_figure(app, svg, false); });
   add(no_svg, {svg, no_svg.substr(no_svg.rfind('(') + 1)});  // the drawing library's reason, as it is
   const std::string png_figure = scratch.path("no-such-folder/figure.png");
-  add(thrown_by([&] { ui::export_construction_figure(app, png_figure, false); }), {png_figure});
+  add(thrown_by([&] { session::export_construction_figure(app, png_figure, false); }), {png_figure});
   const std::string full = scratch.path("full.png");
   // A figure is written under a temporary name (figure_files.h) made to open /dev/full: every write fails.
   fs::create_symlink("/dev/full", full + ".part" + std::to_string(::getpid()));
-  add(thrown_by([&] { ui::export_construction_figure(app, full, false); }), {full});
+  add(thrown_by([&] { session::export_construction_figure(app, full, false); }), {full});
 
   // ---- io: the scene file against the command line's flags ----
   const std::string scene3d = scratch.path("three.json");
@@ -515,10 +515,10 @@ TEST_CASE("error reasons: a sample of real reasons reads exactly as French write
 TEST_CASE("error reasons: the window's messages and the check report show them in the window's language",
           "[session][language][reasons]") {
   test::ScratchDir scratch("reasons");
-  ui::AppState state;
+  session::AppState state;
   ui::set_language(Language::fr);
   const std::string missing = scratch.path("typo.json");
-  CHECK_FALSE(ui::open_scene(state, missing));
+  CHECK_FALSE(session::open_scene(state, missing));
   // The window's French puts a no-break space before a colon.
   CHECK(state.message ==
         "impossible d'ouvrir\u00a0: " + missing + "\u00a0: impossible d'ouvrir le fichier de scène");

@@ -30,7 +30,7 @@ std::string pdf_text(const std::string& file) {
 
 TEST_CASE("Export figure writes the step shown, or every step, in the window's language", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export");
-  ui::AppState state = test::state_for({"--view", "2d"});
+  session::AppState state = test::state_for({"--view", "2d"});
   struct Restore {
     ui::Language language = ui::current_language();
     ~Restore() { ui::set_language(language); }
@@ -38,64 +38,64 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
 
   ui::set_language(ui::Language::fr);
   state.construction_step = 1;  // the second frame: (b)
-  auto files = ui::export_construction_figure(state, scratch.path("b.pdf"), false);
+  auto files = session::export_construction_figure(state, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
   std::string text = pdf_text(files[0]);
   CHECK(text.find("cadre (b)") != std::string::npos);
   CHECK(text.find("cadre (a)") == std::string::npos);
 
   state.construction_step = -1;  // M_d itself: frame (d)
-  CHECK(pdf_text(ui::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
+  CHECK(pdf_text(session::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
   ui::set_language(ui::Language::en);
-  files = ui::export_construction_figure(state, scratch.path("all.pdf"), true);
+  files = session::export_construction_figure(state, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
   for (const char* title : {"frame (a)", "frame (b)", "frame (c)", "frame (d)"})
     CHECK(text.find(title) != std::string::npos);
 
-  files = ui::export_construction_figure(state, scratch.path("all.svg"), true);
+  files = session::export_construction_figure(state, scratch.path("all.svg"), true);
   CHECK(files.size() == 4);
   for (const std::string& file : files) CHECK(std::filesystem::file_size(file) > 1000);
 
-  CHECK_THROWS_AS(ui::export_construction_figure(state, scratch.path("figure.gif"), false), std::invalid_argument);
+  CHECK_THROWS_AS(session::export_construction_figure(state, scratch.path("figure.gif"), false), std::invalid_argument);
 }
 
 TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-3d");
-  ui::AppState state = test::state_for({"--view", "3d"});
-  const auto files = ui::export_construction_figure(state, scratch.path("steps.png"), true);
+  session::AppState state = test::state_for({"--view", "3d"});
+  const auto files = session::export_construction_figure(state, scratch.path("steps.png"), true);
   REQUIRE(files.size() == 6);
   CHECK(files.back() == scratch.path("steps-5.png"));
 }
 
 TEST_CASE("Export figure draws the matrix on screen, with the panel's format, rays and matrix choice", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-panel");
-  ui::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
+  session::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
   struct Restore {
     ui::Language language = ui::current_language();
     ~Restore() { ui::set_language(language); }
   } restore;
   ui::set_language(ui::Language::en);
   // The format chosen in the panel sets the name's extension.
-  CHECK(ui::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
-  CHECK(ui::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
-  CHECK(ui::figure_format_of("a.png") == 2);
+  CHECK(session::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
+  CHECK(session::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
+  CHECK(session::figure_format_of("a.png") == 2);
 
   state.construction_step = 1;  // on screen: construction_step(1) = H(1, d_f)
   state.figure_rays = 3;
   const std::string path = scratch.path("sub/../step.tex");
   std::filesystem::create_directories(scratch.path("sub"));
-  CHECK(ui::existing_figure_files(state, path, false).empty());
-  const auto files = ui::export_construction_figure(state, path, false);
+  CHECK(session::existing_figure_files(state, path, false).empty());
+  const auto files = session::export_construction_figure(state, path, false);
   REQUIRE(files == std::vector<std::string>{scratch.path("step.tex")});  // the full path, normalised
-  CHECK(ui::existing_figure_files(state, path, false) == files);
+  CHECK(session::existing_figure_files(state, path, false) == files);
   std::ifstream in(files[0]);
   const std::string tex((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(tex.find("frame (b)") != std::string::npos);
   // The matrix the panel shows for step 1 (H: d_f on the diagonal), and as many rays as chosen.
-  const glm::dmat3 shown = construction_step(state.camera2d.placement(), 1);
+  const glm::dmat3 shown = construction_step(session::view2d(state).camera.placement(), 1);
   CHECK(shown[1][1] == Approx(1.25));
   CHECK(tex.find("\\begin{pmatrix} 1.000 & 0.000 & 0.000 \\\\ 0.000 & 1.250 & 0.000 \\\\ 0.000 & 0.000 & 1.000 "
                  "\\end{pmatrix}") != std::string::npos);
@@ -103,7 +103,7 @@ TEST_CASE("Export figure draws the matrix on screen, with the panel's format, ra
   for (std::size_t at = 0; (at = tex.find("\\draw[ray]", at)) != std::string::npos; ++at) ++rays;
   CHECK(rays == 3);
   state.figure_matrix = false;
-  CHECK(ui::export_construction_figure(state, path, false) == files);
+  CHECK(session::export_construction_figure(state, path, false) == files);
   std::ifstream again(files[0]);
   const std::string without((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   CHECK(without.find("pmatrix") == std::string::npos);

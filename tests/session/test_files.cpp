@@ -15,11 +15,11 @@ using namespace raycam;
 namespace fs = std::filesystem;
 
 namespace {
-ui::AppState state_for(const std::vector<std::string>& args, bool demo_on_bad_scene = false) {
-  ui::AppOptions options;
+session::AppState state_for(const std::vector<std::string>& args, bool demo_on_bad_scene = false) {
+  session::AppOptions options;
   options.language = ui::Language::en;
   options.demo_on_bad_scene = demo_on_bad_scene;
-  return ui::make_app_state(flags::parse_app_options(args, options));
+  return session::make_app_state(flags::parse_app_options(args, options));
 }
 
 std::string read(const fs::path& path) {
@@ -33,14 +33,14 @@ struct Scratch : test::ScratchDir {
 }  // namespace
 
 TEST_CASE("Open with an empty box says what to type, and changes nothing else", "[ui][files]") {
-  ui::AppState state = state_for({"--theta", "40"});
-  const double theta = state.orbit3d.theta;
+  session::AppState state = state_for({"--theta", "40"});
+  const double theta = view3d(state).orbit.theta;
   const std::string title = state.window_title;
-  CHECK_FALSE(ui::open_scene(state, ""));
+  CHECK_FALSE(session::open_scene(state, ""));
   CHECK(state.message_is_error);
   CHECK(state.message.find("path") != std::string::npos);
   CHECK(state.message.find(": :") == std::string::npos);
-  CHECK(state.orbit3d.theta == theta);
+  CHECK(view3d(state).orbit.theta == theta);
   CHECK(state.window_title == title);
 }
 
@@ -48,21 +48,21 @@ TEST_CASE("a failed open leaves the scene, the camera and the Open box as they w
           "[ui][files]") {
   Scratch scratch;
   const std::string good = (scratch.dir / "good.json").string();
-  ui::AppState state = state_for({"--theta", "40"});
-  REQUIRE(ui::save_preset(state, good));
-  REQUIRE(ui::open_scene(state, good));
+  session::AppState state = state_for({"--theta", "40"});
+  REQUIRE(session::save_preset(state, good));
+  REQUIRE(session::open_scene(state, good));
   CHECK(state.path_input == good);
-  state.orbit3d.theta = 1.25;  // the student moved the camera since
-  const auto spheres = state.file.scene3d.spheres.size();
+  view3d(state).orbit.theta = 1.25;  // the student moved the camera since
+  const auto spheres = view3d(state).scene.spheres.size();
   const std::string missing = (scratch.dir / "typo.json").string();
   state.path_input = missing;  // typed in the box
-  CHECK_FALSE(ui::open_scene(state, missing));
+  CHECK_FALSE(session::open_scene(state, missing));
   CHECK(state.message_is_error);
-  CHECK(state.message_source == ui::MessageSource::files);
+  CHECK(state.message_source == session::MessageSource::files);
   CHECK_THAT(state.message, Catch::Contains("typo.json"));
-  CHECK(state.file.scene3d.spheres.size() == spheres);
-  CHECK(state.orbit3d.theta == 1.25);
-  CHECK(state.scene_path == good);
+  CHECK(view3d(state).scene.spheres.size() == spheres);
+  CHECK(view3d(state).orbit.theta == 1.25);
+  CHECK(scene_path(state) == good);
   CHECK(state.path_input == good);  // the box shows the file on screen again
 }
 
@@ -70,99 +70,100 @@ TEST_CASE("Save as never writes over a file without a yes, and never defaults to
           "[ui][files]") {
   Scratch scratch;
   const std::string opened = (scratch.dir / "lesson.json").string();
-  ui::AppState state = state_for({});
-  REQUIRE(ui::save_preset(state, opened));
-  REQUIRE(ui::open_scene(state, opened));
+  session::AppState state = state_for({});
+  REQUIRE(session::save_preset(state, opened));
+  REQUIRE(session::open_scene(state, opened));
   CHECK(state.save_path.empty());  // Save as starts empty after an open
   const std::string before = read(opened);
-  state.orbit3d.d = 3.5;
-  CHECK_FALSE(ui::save_preset_as(state, opened, false));  // exists: asks
+  view3d(state).orbit.d = 3.5;
+  CHECK_FALSE(session::save_preset_as(state, opened, false));  // exists: asks
   CHECK(state.overwrite_pending == opened);
   CHECK(read(opened) == before);                   // nothing written yet
-  CHECK(ui::save_preset_as(state, opened, true));  // the user said yes
+  CHECK(session::save_preset_as(state, opened, true));  // the user said yes
   CHECK(state.overwrite_pending.empty());
   CHECK(read(opened) != before);
   CHECK_THAT(state.message, Catch::Contains(opened));
   CHECK_FALSE(state.message_is_error);
   const std::string fresh = (scratch.dir / "new.json").string();
-  CHECK(ui::save_preset_as(state, fresh, false));  // a new file needs no question
+  CHECK(session::save_preset_as(state, fresh, false));  // a new file needs no question
   CHECK(fs::exists(fresh));
-  CHECK_FALSE(ui::save_preset_as(state, "", false));
+  CHECK_FALSE(session::save_preset_as(state, "", false));
   CHECK(state.message_is_error);
 }
 
 TEST_CASE("Open resets every field that belonged to the scene on screen before", "[ui][files]") {
   Scratch scratch;
   const std::string first = (scratch.dir / "first.json").string(), second = (scratch.dir / "second.json").string();
-  ui::AppState state = state_for({"--theta", "40", "--phi", "70"});
-  REQUIRE(ui::save_preset(state, second));  // the camera the second file holds
-  const Orbit3D saved = state.orbit3d;
-  REQUIRE(ui::save_preset(state, first));
-  REQUIRE(ui::open_scene(state, first));
+  session::AppState state = state_for({"--theta", "40", "--phi", "70"});
+  REQUIRE(session::save_preset(state, second));  // the camera the second file holds
+  const Orbit3D saved = session::view3d(state).orbit;
+  REQUIRE(session::save_preset(state, first));
+  REQUIRE(session::open_scene(state, first));
   // Everything a user can have left behind on the first scene.
   state.save_path = (scratch.dir / "typed-for-first.json").string();  // typed in Save as, not saved yet
   state.overwrite_pending = first;                                     // a Replace question not answered
   state.path_input = (scratch.dir / "half-typed").string();
-  state.pinned_pixel = ui::PixelIndex{3, 4};
+  state.pinned_pixel = session::PixelIndex{3, 4};
   state.construction_step = 2;
-  state.other_scene_path = first;
-  state.orbit3d.theta = 0.25;
-  state.orbit3d.d = 2.5;
+  // The other kind's view named a file too.
+  std::visit([&](auto& other) { other.scene_path = first; }, state.other_view);
+  session::view3d(state).orbit.theta = 0.25;
+  session::view3d(state).orbit.d = 2.5;
   state.res = 0.5;
   state.overhead_fit_pending = false;
   state.cameras_dirty = false;
-  ui::set_message(state, ui::MessageSource::camera, true, "an old error");
+  session::set_message(state, session::MessageSource::camera, true, "an old error");
   const std::uint64_t version = state.scene_version;
 
-  REQUIRE(ui::open_scene(state, second));
+  REQUIRE(session::open_scene(state, second));
   CHECK(state.save_path.empty());          // Save as never offers the old scene's path
   CHECK(state.overwrite_pending.empty());  // nor its pending Replace
   CHECK(state.path_input == second);
-  CHECK(state.scene_path == second);
-  CHECK(state.other_scene_path.empty());  // the other kind's scene is the demo again
+  CHECK(session::scene_path(state) == second);
+  CHECK(std::visit([](const auto& other) { return other.scene_path.empty(); }, state.other_view));  // the other kind's scene is the demo again
   CHECK_FALSE(state.pinned_pixel);
   CHECK(state.construction_step == -1);
-  CHECK(state.orbit3d.theta == Approx(saved.theta));  // the file's camera, not the one moved
-  CHECK(state.orbit3d.d == Approx(saved.d));
-  CHECK(state.preset_orbit3d.theta == state.orbit3d.theta);  // Reset camera returns to the file's camera
+  CHECK(session::view3d(state).orbit.theta == Approx(saved.theta));  // the file's camera, not the one moved
+  CHECK(session::view3d(state).orbit.d == Approx(saved.d));
+  CHECK(session::view3d(state).preset.theta == session::view3d(state).orbit.theta);  // Reset camera returns to the file's camera
   CHECK(state.res == 1.0);
   CHECK(state.preset_res == 1.0);
   CHECK(state.overhead_fit_pending);
   CHECK(state.cameras_dirty);
   CHECK(state.scene_version > version);
   CHECK_FALSE(state.message_is_error);
-  CHECK(state.message_source == ui::MessageSource::files);
-  ui::recast_if_needed(state);
+  CHECK(state.message_source == session::MessageSource::files);
+  session::recast_if_needed(state);
   CHECK_FALSE(state.pinned_pixel);  // no pin comes back on the new image
 }
 
 TEST_CASE("Replace writes the file the prompt names, as the panel's button calls it", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "lesson.json").string();
-  ui::AppState state = state_for({});
-  REQUIRE(ui::save_preset(state, path));
+  session::AppState state = state_for({});
+  REQUIRE(session::save_preset(state, path));
   const std::string before = read(path);
-  state.orbit3d.d = 3.5;
+  view3d(state).orbit.d = 3.5;
   state.save_path = path;
-  CHECK_FALSE(ui::save_preset_as(state, state.save_path, false));  // "… already exists. Replace it?"
+  CHECK_FALSE(session::save_preset_as(state, state.save_path, false));  // "… already exists. Replace it?"
   REQUIRE(state.overwrite_pending == path);
   // The Replace button hands the pending path itself (a reference to the state's own string).
-  CHECK(ui::save_preset_as(state, state.overwrite_pending, true));
+  CHECK(session::save_preset_as(state, state.overwrite_pending, true));
   CHECK_FALSE(state.message_is_error);
   CHECK(read(path) != before);
-  CHECK(ui::open_scene(state, path));
-  CHECK(state.orbit3d.d == 3.5);
+  CHECK(session::open_scene(state, path));
+  CHECK(view3d(state).orbit.d == 3.5);
 }
 
 TEST_CASE("a save that fails leaves the old file as it was and names the path typed", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "lesson.json").string();
-  ui::AppState state = state_for({});
-  REQUIRE(ui::save_preset(state, path));
+  session::AppState state = state_for({});
+  REQUIRE(session::save_preset(state, path));
   const std::string before = read(path);
   fs::create_directory(path + ".tmp");  // the temporary file cannot be made: the write fails
-  state.orbit3d.d = 3.5;
-  CHECK_FALSE(ui::save_preset(state, path));
+  view3d(state).orbit.d = 3.5;
+  CHECK_FALSE(session::save_preset(state, path));
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains(path + ":"));
   CHECK_THAT(state.message, !Catch::Contains(".tmp"));
@@ -174,8 +175,8 @@ TEST_CASE("a save that fails leaves the old file as it was and names the path ty
 TEST_CASE("saved angles are the degrees the user set", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "angles.json").string();
-  ui::AppState state = state_for({"--view", "3d", "--theta", "30", "--phi", "60"});
-  REQUIRE(ui::save_preset(state, path));
+  session::AppState state = state_for({"--view", "3d", "--theta", "30", "--phi", "60"});
+  REQUIRE(session::save_preset(state, path));
   const std::string text = read(path);
   CHECK_THAT(text, Catch::Contains("\"theta\": 30.0}") || Catch::Contains("\"theta\": 30.0,"));
   CHECK_THAT(text, Catch::Contains("\"phi\": 60.0,") || Catch::Contains("\"phi\": 60.0}"));
@@ -185,9 +186,9 @@ TEST_CASE("saved angles are the degrees the user set", "[ui][files]") {
 TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][files]") {
   Scratch scratch;
   const std::string path = (scratch.dir / "scene.json").string();
-  ui::AppState state = state_for({SCENES_DIR "/classic3d.json"});
-  const std::size_t objects = state.file.scene3d.spheres.size();
-  REQUIRE(ui::save_preset(state, path));
+  session::AppState state = state_for({SCENES_DIR "/classic3d.json"});
+  const std::size_t objects = view3d(state).scene.spheres.size();
+  REQUIRE(session::save_preset(state, path));
   const std::string text = read(path);
   std::istringstream lines(text);
   std::string line;
@@ -202,38 +203,39 @@ TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][
   }
   CHECK(centres == int(objects));
   CHECK(count <= int(objects) + 16);     // a few header lines, one line per object, the camera (dump(2): 60)
-  REQUIRE(ui::open_scene(state, path));  // and it still reads back
-  CHECK(state.file.scene3d.spheres.size() == objects);
+  REQUIRE(session::open_scene(state, path));  // and it still reads back
+  CHECK(view3d(state).scene.spheres.size() == objects);
 }
 
 TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
   Scratch scratch;
-  const std::string first = ui::next_screenshot_path(scratch.dir.string());
+  const std::string first = session::next_screenshot_path(scratch.dir.string());
   CHECK(fs::path(first).filename() == "raycam-screenshot-001.png");
   std::ofstream(first) << "x";
-  CHECK(fs::path(ui::next_screenshot_path(scratch.dir.string())).filename() == "raycam-screenshot-002.png");
-  ui::AppState state = state_for({});
-  ui::request_screenshot(state);
-  CHECK(state.request_screenshot);
-  CHECK(fs::path(state.screenshot_path).is_absolute());  // the message can say exactly where
+  CHECK(fs::path(session::next_screenshot_path(scratch.dir.string())).filename() == "raycam-screenshot-002.png");
+  session::AppState state = state_for({});
+  session::request_screenshot(state);
+  const session::HostRequest* shot = state.requests.find(session::HostRequestKind::screenshot);
+  REQUIRE(shot);
+  CHECK(fs::path(shot->path).is_absolute());  // the message can say exactly where
 }
 
 TEST_CASE("started with a scene that cannot be opened, the app shows the demo and the error naming the file",
           "[ui][files]") {
-  const ui::AppState state = state_for({"no_such_dir/lesson3.json"}, true);
-  CHECK(state.scene_path.empty());
-  CHECK(state.file.scene3d.spheres.size() == demo_scene_3d().spheres.size());
+  const session::AppState state = state_for({"no_such_dir/lesson3.json"}, true);
+  CHECK(scene_path(state).empty());
+  CHECK(view3d(state).scene.spheres.size() == demo_scene_3d().spheres.size());
   CHECK(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("no_such_dir/lesson3.json"));
-  CHECK(ui::window_title(state) == "raycam — 3D — demo scene");
+  CHECK(session::window_title(state) == "raycam — 3D — demo scene");
   // A bad flag still stops it; and raycam-cli shot (no fallback) refuses the file.
   CHECK_THROWS_WITH(state_for({"no_such_dir/lesson3.json", "--d", "-1"}, true), Catch::Contains("--d"));
   CHECK_THROWS(state_for({"no_such_dir/lesson3.json"}, false));
 }
 
 TEST_CASE("the window title names the mode and the scene file", "[ui][title]") {
-  const ui::AppState state = state_for({SCENES_DIR "/many3d.json"});
-  CHECK(ui::window_title(state) == "raycam — 3D — many3d.json");
-  CHECK(ui::window_title(state_for({"--view", "2d", "--lang", "fr"})) == "raycam — 2D — scène de démonstration");
+  const session::AppState state = state_for({SCENES_DIR "/many3d.json"});
+  CHECK(session::window_title(state) == "raycam — 3D — many3d.json");
+  CHECK(session::window_title(state_for({"--view", "2d", "--lang", "fr"})) == "raycam — 2D — scène de démonstration");
   ui::set_language(ui::Language::en);
 }

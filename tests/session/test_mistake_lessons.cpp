@@ -16,9 +16,9 @@ using raycam::test::state_for;
 
 namespace {
 
-std::vector<int> ids_now(ui::AppState& state) {
+std::vector<int> ids_now(session::AppState& state) {
   state.cameras_dirty = true;
-  REQUIRE(ui::recast_if_needed(state));
+  REQUIRE(session::recast_if_needed(state));
   return state.map.ids;
 }
 
@@ -32,40 +32,40 @@ int count_differences(const std::vector<int>& a, const std::vector<int>& b) {
 
 TEST_CASE("every classic mistake changes the image, at once or after its show me", "[ui][mistakes]") {
   for (const char* view : {"2d", "3d"})
-    for (const ui::MistakeLesson& lesson : ui::mistake_lessons()) {
-      ui::AppState state = state_for({"--view", view});
-      if (!ui::mistake_applies(state, lesson)) continue;
-      ui::show_mistake(state, lesson);
+    for (const session::MistakeLesson& lesson : session::mistake_lessons()) {
+      session::AppState state = state_for({"--view", view});
+      if (!session::mistake_applies(state, lesson)) continue;
+      session::show_mistake(state, lesson);
       CHECK(state.mistake_look_at == lesson.look_at);
-      CHECK(ui::mistakes_on(state) == ui::mistake_label(lesson));
+      CHECK(session::mistakes_on(state) == session::mistake_label(lesson));
       const std::vector<int> with_mistake = ids_now(state);
-      ui::mistake_flag(state, lesson) = false;
+      session::mistake_flag(state, lesson) = false;
       const std::vector<int> without = ids_now(state);
       INFO(view << " " << lesson.id << ": " << state.map.width << "x" << state.map.height << ", "
                 << count_differences(with_mistake, without) << " pixels differ");
       // At least 2% of the pixels (one pixel of a 13-pixel bar).
       CHECK(count_differences(with_mistake, without) * 50 >= int(without.size()));
-      CHECK(ui::mistakes_on(state).empty());
+      CHECK(session::mistakes_on(state).empty());
     }
 }
 
 TEST_CASE("show me moves to where the mistake shows", "[ui][mistakes]") {
   auto lesson = [](const std::string& id) {
-    const ui::MistakeLesson* found = ui::find_lesson(id);
+    const session::MistakeLesson* found = session::find_lesson(id);
     REQUIRE(found);
     return *found;
   };
-  ui::AppState edges = state_for({"--view", "2d"});
-  ui::show_mistake(edges, lesson("pixel_edges"));
+  session::AppState edges = state_for({"--view", "2d"});
+  session::show_mistake(edges, lesson("pixel_edges"));
   CHECK(edges.res == Approx(0.05));
-  ui::AppState arccos = state_for({"--view", "2d", "--theta", "5"});
-  ui::show_mistake(arccos, lesson("arccos"));
-  CHECK(arccos.dimension == 3);  // in 2D the error never moves a pixel
-  CHECK(arccos.orbit3d.phi < 1e-8);
-  CHECK(std::abs(arccos.orbit3d.theta) > 0.3);  // theta must not be ~0, or losing it would change nothing
-  ui::AppState renormalise = state_for({"--df", "3"});
-  ui::show_mistake(renormalise, lesson("skip_renormalise"));
-  CHECK(renormalise.orbit3d.df == 1.0);
+  session::AppState arccos = state_for({"--view", "2d", "--theta", "5"});
+  session::show_mistake(arccos, lesson("arccos"));
+  CHECK(dimension(arccos) == 3);  // in 2D the error never moves a pixel
+  CHECK(view3d(arccos).orbit.phi < 1e-8);
+  CHECK(std::abs(view3d(arccos).orbit.theta) > 0.3);  // theta must not be ~0, or losing it would change nothing
+  session::AppState renormalise = state_for({"--df", "3"});
+  session::show_mistake(renormalise, lesson("skip_renormalise"));
+  CHECK(view3d(renormalise).orbit.df == 1.0);
 }
 
 // One circle, so that each pixel's hit or miss is decided by that circle alone. With f = origin - centre,
@@ -76,15 +76,15 @@ TEST_CASE("show me moves to where the mistake shows", "[ui][mistakes]") {
 TEST_CASE("forgetting to renormalise does what the panel says, with both formulas", "[ui][mistakes]") {
   for (const IntersectFormula formula : {IntersectFormula::naive, IntersectFormula::stable})
     for (const double df : {1.0, 1.5, 3.0}) {
-      ui::AppState state =
+      session::AppState state =
           state_for({"--view", "2d", "--df", std::to_string(df), "--d", "6", "--mistake", "no-renormalise"});
       state.accuracy.options.formula = formula;
       const Circle circle{{0.4, 0.3}, 1.0, {200, 10, 10}, "lone"};
-      state.file.scene2d.circles = {circle};
+      view2d(state).scene.circles = {circle};
       ids_now(state);
       int predicted_hits = 0, hits = 0, disagreements = 0;
       for (int column = 0; column < state.map.width; ++column) {
-        const Ray2D ray = state.camera2d.primary_ray(state.camera2d.pixel_of_column(column));
+        const Ray2D ray = view2d(state).camera.primary_ray(view2d(state).camera.pixel_of_column(column));
         const double length = glm::length(ray.direction);
         const glm::dvec2 f = ray.origin - circle.centre;
         const double b_unit = glm::dot(f, ray.direction / length);
@@ -102,18 +102,18 @@ TEST_CASE("forgetting to renormalise does what the panel says, with both formula
       CHECK(disagreements <= 1);  // a ray grazing the predicted boundary may round either way
       // And the panel's words: the naive formula swells the circle (more hits than the correct camera); the
       // stable one loses it except where |u| ≈ 1 (d_f = 1, near the axis).
-      ui::AppState correct = state;
+      session::AppState correct = state;
       correct.mistakes.skip_renormalise = false;
       const std::vector<int> right = ids_now(correct);
       int right_hits = 0;
       for (int id : right) right_hits += id == 0;
       if (formula == IntersectFormula::naive) {
         CHECK(hits > right_hits);
-        CHECK_THAT(ui::mistake_text(state, *ui::find_lesson("skip_renormalise")), Catch::Contains("swells"));
+        CHECK_THAT(session::mistake_text(state, *session::find_lesson("skip_renormalise")), Catch::Contains("swells"));
       } else {
         CHECK(hits <= right_hits);
         if (df > 1.0) CHECK(hits == 0);
-        CHECK_THAT(ui::mistake_text(state, *ui::find_lesson("skip_renormalise")), Catch::Contains("background"));
+        CHECK_THAT(session::mistake_text(state, *session::find_lesson("skip_renormalise")), Catch::Contains("background"));
       }
     }
 }
@@ -121,13 +121,13 @@ TEST_CASE("forgetting to renormalise does what the panel says, with both formula
 TEST_CASE("the views draw the caster's hits, mistakes included", "[ui][mistakes]") {
   for (const char* intersect : {"naive", "stable"})
     for (const char* view : {"2d", "3d"}) {
-      ui::AppState state = state_for({"--view", view, "--mistake", "no-renormalise", "--intersect", intersect,
+      session::AppState state = state_for({"--view", view, "--mistake", "no-renormalise", "--intersect", intersect,
                                       "--size", view == std::string("2d") ? "64" : "64x64"});
       ids_now(state);
-      const std::vector<ui::InspectedRay> fan = ui::primary_ray_fan(state, 1000);
+      const std::vector<session::InspectedRay> fan = session::primary_ray_fan(state, 1000);
       REQUIRE(fan.size() == std::size_t(state.map.width));
       int hits = 0;
-      for (const ui::InspectedRay& ray : fan) {
+      for (const session::InspectedRay& ray : fan) {
         const int row = state.map.height / 2;
         CHECK(ray.hit.id == state.map.id_at(row, ray.pixel.column));
         if (ray.hit.id >= 0) {
@@ -146,20 +146,20 @@ TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the 
   // Hits behind the origin (no_t_min) and rays from the eye included: the end point is where the caster hit.
   for (const char* id : {"", "no_t_min", "eye_origin"})
     for (const char* view : {"2d", "3d"}) {
-      ui::AppState state = state_for({"--view", view, "--size", std::string(view) == "2d" ? "64" : "64x64"});
-      if (*id) ui::show_mistake(state, *ui::find_lesson(id));
+      session::AppState state = state_for({"--view", view, "--size", std::string(view) == "2d" ? "64" : "64x64"});
+      if (*id) session::show_mistake(state, *session::find_lesson(id));
       ids_now(state);
       int hits = 0;
-      for (const ui::InspectedRay& ray : ui::primary_ray_fan(state, 1000)) {
+      for (const session::InspectedRay& ray : session::primary_ray_fan(state, 1000)) {
         if (ray.hit.id < 0) continue;
         ++hits;
         const glm::dvec3 centre =
             std::string(view) == "2d"
-                ? glm::dvec3(state.file.scene2d.circles[std::size_t(ray.hit.id)].centre, 0.0)
-                : state.file.scene3d.spheres[std::size_t(ray.hit.id)].centre;
+                ? glm::dvec3(view2d(state).scene.circles[std::size_t(ray.hit.id)].centre, 0.0)
+                : view3d(state).scene.spheres[std::size_t(ray.hit.id)].centre;
         const double radius = std::string(view) == "2d"
-                                  ? state.file.scene2d.circles[std::size_t(ray.hit.id)].radius
-                                  : state.file.scene3d.spheres[std::size_t(ray.hit.id)].radius;
+                                  ? view2d(state).scene.circles[std::size_t(ray.hit.id)].radius
+                                  : view3d(state).scene.spheres[std::size_t(ray.hit.id)].radius;
         INFO(view << " " << id << " column " << ray.pixel.column);
         REQUIRE(std::isfinite(ray.hit.t));
         CHECK(glm::length(ray.end(0.0) - centre) == Approx(radius).epsilon(1e-9));
@@ -174,18 +174,18 @@ TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the 
 TEST_CASE("show me sets what its line says, and the image shows the mistake on part of it", "[ui][mistakes]") {
   for (const char* view : {"2d", "3d"}) {
     INFO(view);
-    ui::AppState focal = state_for({"--view", view, "--df", "2"});
-    ui::show_mistake(focal, *ui::find_lesson("no_focal_scale"));
-    CHECK(ui::active_orbit(focal).df == 3.0);
+    session::AppState focal = state_for({"--view", view, "--df", "2"});
+    session::show_mistake(focal, *session::find_lesson("no_focal_scale"));
+    CHECK(session::active_orbit(focal).df == 3.0);
     CHECK(std::string(focal.mistake_look_at).find("d_f = 3") != std::string::npos);
     for (const char* id : {"eye_origin", "no_t_min"}) {
       INFO(id);
-      ui::AppState state = state_for({"--view", view});
-      const ui::MistakeLesson& lesson = *ui::find_lesson(id);
+      session::AppState state = state_for({"--view", view});
+      const session::MistakeLesson& lesson = *session::find_lesson(id);
       CHECK(lesson.what_it_does != nullptr);  // a line says what the mistake does before any show-me
-      ui::show_mistake(state, lesson);
+      session::show_mistake(state, lesson);
       const std::vector<int> with_mistake = ids_now(state);
-      ui::mistake_flag(state, lesson) = false;
+      session::mistake_flag(state, lesson) = false;
       const std::vector<int> without = ids_now(state);
       const int differing = count_differences(with_mistake, without);
       CHECK(differing * 10 >= int(without.size()));      // the mistake shows…

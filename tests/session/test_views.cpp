@@ -17,7 +17,7 @@ using raycam::test::state_for;
 
 namespace {
 // Normalised device coordinates of a world point seen by the observer (x right, y up, both in [-1, 1]).
-glm::dvec2 ndc(const ui::ObserverCamera& observer, glm::dvec3 p) {
+glm::dvec2 ndc(const session::ObserverCamera& observer, glm::dvec3 p) {
   const glm::vec4 clip = observer.projection * observer.view * glm::vec4(glm::vec3(p), 1.0f);
   return {clip.x / clip.w, clip.y / clip.w};
 }
@@ -56,37 +56,37 @@ TEST_CASE("Reset camera returns to the scene file's preset, with the command lin
     file << R"({"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}],
                 "camera": {"target": [1, 2, 3], "d": 5, "theta": 40, "phi": 70, "df": 1.25, "res": 0.5}})";
   }
-  ui::AppState state = state_for({"--scene", preset_scene});
-  state.orbit3d.theta = 2.0, state.orbit3d.phi = 0.3, state.orbit3d.d = 30, state.orbit3d.df = 7,
+  session::AppState state = state_for({"--scene", preset_scene});
+  view3d(state).orbit.theta = 2.0, view3d(state).orbit.phi = 0.3, view3d(state).orbit.d = 30, view3d(state).orbit.df = 7,
   state.res = 1;
-  state.orbit3d.target = glm::dvec3(0.0);
-  ui::reset_camera(state);
-  CHECK(state.orbit3d.d == 5);
-  CHECK(state.orbit3d.theta == Approx(glm::radians(40.0)));
-  CHECK(state.orbit3d.phi == Approx(glm::radians(70.0)));
-  CHECK(state.orbit3d.df == 1.25);
-  CHECK(state.orbit3d.target == glm::dvec3(1, 2, 3));
+  view3d(state).orbit.target = glm::dvec3(0.0);
+  session::reset_camera(state);
+  CHECK(view3d(state).orbit.d == 5);
+  CHECK(view3d(state).orbit.theta == Approx(glm::radians(40.0)));
+  CHECK(view3d(state).orbit.phi == Approx(glm::radians(70.0)));
+  CHECK(view3d(state).orbit.df == 1.25);
+  CHECK(view3d(state).orbit.target == glm::dvec3(1, 2, 3));
   CHECK(state.res == 0.5);
   CHECK(state.overhead_fit_pending);
-  ui::AppState overridden = state_for({"--scene", preset_scene, "--d", "9"});
-  overridden.orbit3d.d = 2;
-  ui::reset_camera(overridden);
-  CHECK(overridden.orbit3d.d == 9);
+  session::AppState overridden = state_for({"--scene", preset_scene, "--d", "9"});
+  view3d(overridden).orbit.d = 2;
+  session::reset_camera(overridden);
+  CHECK(view3d(overridden).orbit.d == 9);
   // A scene opened later brings its own preset.
-  ui::AppState opened = state_for({});
-  REQUIRE(ui::open_scene(opened, preset_scene));
-  opened.orbit3d.phi = 0.1;
-  ui::reset_camera(opened);
-  CHECK(opened.orbit3d.phi == Approx(glm::radians(70.0)));
+  session::AppState opened = state_for({});
+  REQUIRE(session::open_scene(opened, preset_scene));
+  view3d(opened).orbit.phi = 0.1;
+  session::reset_camera(opened);
+  CHECK(view3d(opened).orbit.phi == Approx(glm::radians(70.0)));
 }
 
 TEST_CASE("the observer frames the camera and follows it round the orbit", "[ui][views]") {
-  ui::AppState state = state_for({});
-  ui::place_cameras(state);
+  session::AppState state = state_for({});
+  session::place_cameras(state);
   {  // Default settings: the camera's screen is at least a tenth of the view's height.
-    const ui::ObserverCamera observer = ui::observer_camera(state, kObserverAspect);
+    const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
     double low = 1, high = -1;
-    for (const glm::dvec3& corner : state.camera3d.screen_corners()) {
+    for (const glm::dvec3& corner : view3d(state).camera.screen_corners()) {
       low = std::min(low, ndc(observer, corner).y);
       high = std::max(high, ndc(observer, corner).y);
     }
@@ -94,12 +94,12 @@ TEST_CASE("the observer frames the camera and follows it round the orbit", "[ui]
   }
   for (double theta_deg : {-150.0, -60.0, 0.0, 30.0, 120.0})
     for (double phi_deg : {0.0, 30.0, 90.0, 150.0, 180.0}) {
-      state.orbit3d.theta = glm::radians(theta_deg);
-      state.orbit3d.phi = glm::radians(phi_deg);
-      ui::place_cameras(state);
-      const ui::ObserverCamera observer = ui::observer_camera(state, kObserverAspect);
-      std::vector<glm::dvec3> points{state.camera3d.eye(), state.orbit3d.target};
-      for (const glm::dvec3& corner : state.camera3d.screen_corners()) points.push_back(corner);
+      view3d(state).orbit.theta = glm::radians(theta_deg);
+      view3d(state).orbit.phi = glm::radians(phi_deg);
+      session::place_cameras(state);
+      const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
+      std::vector<glm::dvec3> points{view3d(state).camera.eye(), view3d(state).orbit.target};
+      for (const glm::dvec3& corner : view3d(state).camera.screen_corners()) points.push_back(corner);
       for (const glm::dvec3& p : points) {
         const glm::dvec2 at = ndc(observer, p);
         INFO("theta " << theta_deg << ", phi " << phi_deg << ": (" << at.x << ", " << at.y << ")");
@@ -114,26 +114,26 @@ TEST_CASE("dragging in the observer view moves the camera the way the mouse goes
     for (float pitch : {10.0f, 45.0f})
       for (double theta_deg : {-120.0, 0.0, 75.0})
         for (double phi_deg : {40.0, 90.0, 130.0}) {
-          ui::AppState state = state_for({});
+          session::AppState state = state_for({});
           state.observer.yaw_deg = yaw;
           state.observer.pitch_deg = pitch;
-          state.orbit3d.theta = glm::radians(theta_deg);
-          state.orbit3d.phi = glm::radians(phi_deg);
-          ui::place_cameras(state);
-          const ui::ObserverCamera observer = ui::observer_camera(state, kObserverAspect);
-          const glm::dvec2 before = ndc(observer, state.camera3d.screen_centre());
+          view3d(state).orbit.theta = glm::radians(theta_deg);
+          view3d(state).orbit.phi = glm::radians(phi_deg);
+          session::place_cameras(state);
+          const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
+          const glm::dvec2 before = ndc(observer, view3d(state).camera.screen_centre());
           INFO("yaw " << yaw << ", pitch " << pitch << ", theta " << theta_deg << ", phi " << phi_deg);
-          ui::AppState up = state;  // screen y grows downwards: up is dy < 0
-          ui::drag_camera_in_observer(up, observer, 0.0, -10.0);
-          ui::place_cameras(up);
-          CHECK(ndc(observer, up.camera3d.screen_centre()).y > before.y);
-          CHECK(up.camera3d.screen_centre().z > state.camera3d.screen_centre().z);
+          session::AppState up = state;  // screen y grows downwards: up is dy < 0
+          session::drag_camera_in_observer(up, observer, 0.0, -10.0);
+          session::place_cameras(up);
+          CHECK(ndc(observer, view3d(up).camera.screen_centre()).y > before.y);
+          CHECK(view3d(up).camera.screen_centre().z > view3d(state).camera.screen_centre().z);
           // Right: unless the camera moves (almost) along the line of sight, where left and right vanish.
-          const glm::dvec3 along_theta{-std::sin(state.orbit3d.theta), std::cos(state.orbit3d.theta), 0.0};
+          const glm::dvec3 along_theta{-std::sin(view3d(state).orbit.theta), std::cos(view3d(state).orbit.theta), 0.0};
           if (std::abs(glm::dot(along_theta, observer.right)) < 0.2) continue;
-          ui::AppState right = state;
-          ui::drag_camera_in_observer(right, observer, 10.0, 0.0);
-          ui::place_cameras(right);
-          CHECK(ndc(observer, right.camera3d.screen_centre()).x > before.x);
+          session::AppState right = state;
+          session::drag_camera_in_observer(right, observer, 10.0, 0.0);
+          session::place_cameras(right);
+          CHECK(ndc(observer, view3d(right).camera.screen_centre()).x > before.x);
         }
 }

@@ -53,9 +53,9 @@ class TextCapture {
   ImGuiContext* context_;
 };
 
-ui::AppState state_for(const std::vector<std::string>& args) {
-  ui::AppState state = ui::make_app_state(flags::parse_app_options(args));
-  ui::recast_if_needed(state);
+session::AppState state_for(const std::vector<std::string>& args) {
+  session::AppState state = session::make_app_state(flags::parse_app_options(args));
+  session::recast_if_needed(state);
   return state;
 }
 
@@ -132,10 +132,10 @@ void check_tuple(const std::vector<double>& printed, const glm::dvec3& expected,
 TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][inspector]") {
   TextCapture text;
   for (int column : {100, 17, 200}) {
-    ui::AppState state = state_for({"--view", "2d", "--inspect", std::to_string(column) + ",0"});
+    session::AppState state = state_for({"--view", "2d", "--inspect", std::to_string(column) + ",0"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO("column " << column << ", the panel says:\n" << shown);
-    const Camera2D& camera = state.camera2d;
+    const Camera2D& camera = view2d(state).camera;
     const int n = camera.pixel_count(), k = n - 1 - column;  // column 0 is the eye's left: k = n-1
     const glm::dvec2 p0(-1.0 + (2.0 * k + 1.0) / n, 0.0), u0 = p0 - glm::dvec2(0, 1);
     const glm::dmat3& m = camera.world_from_camera();  // M_d from the app's state
@@ -148,7 +148,7 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
     check_tuple(tuples[2], {p, 0}, 2);
     check_tuple(tuples[3], {u, 0}, 2);
     CHECK(number_after(shown, R"(k\s*=)") == Approx(k));
-    const auto [id, t] = nearest(state.file.scene2d.circles, p, u);
+    const auto [id, t] = nearest(view2d(state).scene.circles, p, u);
     CHECK(id == state.map.id_at(0, column));
     if (id >= 0) {
       CHECK(number_after(shown, "obje[ct]+") == Approx(id));
@@ -163,12 +163,12 @@ TEST_CASE("the ray inspector prints the core's P_k, u_k, hit and t (2D)", "[ui][
 TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][inspector]") {
   TextCapture text;
   for (const char* pixel : {"120,140", "10,10", "200,60"}) {
-    ui::AppState state = state_for({"--inspect", pixel, "--theta", "40", "--phi", "65"});
+    session::AppState state = state_for({"--inspect", pixel, "--theta", "40", "--phi", "65"});
     const std::string shown = text.capture([&] { ui::inspector_section(state); });
     INFO(pixel << ", the panel says:\n" << shown);
     const int column = std::stoi(pixel),
               row = std::stoi(std::string(pixel).substr(std::string(pixel).find(',') + 1));
-    const Camera3D& camera = state.camera3d;
+    const Camera3D& camera = view3d(state).camera;
     const glm::dvec3 p0(-1.0 + (2.0 * column + 1.0) / camera.columns(),
                         1.0 - (2.0 * row + 1.0) / camera.rows(), 0.0);
     const glm::dvec3 u0 = p0 - glm::dvec3(0, 0, 1);
@@ -186,7 +186,7 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
     check_tuple(tuples[1], u0, 3);
     check_tuple(tuples[2], p, 3);
     check_tuple(tuples[3], u, 3);
-    const auto [id, t] = nearest(state.file.scene3d.spheres, p, u);
+    const auto [id, t] = nearest(view3d(state).scene.spheres, p, u);
     CHECK(id == state.map.id_at(row, column));
     if (id >= 0) {
       CHECK(number_after(shown, "obje[ct]+") == Approx(id));
@@ -199,7 +199,7 @@ TEST_CASE("the ray inspector prints the core's P, u, hit and t (3D)", "[ui][insp
 TEST_CASE("the status line prints the cast's work counts", "[ui][status]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
-    ui::AppState state = state_for({"--view", view});
+    session::AppState state = state_for({"--view", view});
     const std::string shown = text.capture([&] { ui::status_counters(state); });  // the status line's tooltip
     INFO(shown);
     const CastStats& w = state.stats;
@@ -245,10 +245,10 @@ TEST_CASE("panel text wraps between words, never inside a number, and never past
 TEST_CASE("the French window shows no English word", "[ui][text]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
-    ui::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0"});
-    ui::show_mistake(state, *ui::find_lesson("pixel_edges"));
-    ui::open_scene(state, "/inexistant/fichier.json");  // a red message, in French
-    ui::recast_if_needed(state);
+    session::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0"});
+    session::show_mistake(state, *session::find_lesson("pixel_edges"));
+    session::open_scene(state, "/inexistant/fichier.json");  // a red message, in French
+    session::recast_if_needed(state);
     const std::string shown = text.capture([&] {
       ImGuiWindow* window = ImGui::GetCurrentWindow();
       for (const char* id : {"###camera", "###mistakes", "###caster", "###files", "###lecture", "###construction",
@@ -281,16 +281,16 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
   // Exporting twice: the second click asks before replacing. The first export's "wrote …" stayed under the
   // question, so the panel said both "… already exists. Replace it?" and "wrote …" at once.
   TextCapture text;
-  ui::AppState state = state_for({"--view", "2d"});
+  session::AppState state = state_for({"--view", "2d"});
   state.figure_path = "raycam-figure.svg";
   state.figure_replace_pending = 1;
-  ui::set_message(state, ui::MessageSource::construction, false, "wrote /somewhere/raycam-figure.svg");
+  session::set_message(state, session::MessageSource::construction, false, "wrote /somewhere/raycam-figure.svg");
   const std::string asking = text.capture([&] { ui::construction_section(state); });
   CHECK(asking.find("already exists. Replace it?") != std::string::npos);
   CHECK(asking.find("wrote") == std::string::npos);
   CHECK(state.message.empty());  // nor on the line above the status (lecture sizes): the question replaced it
   // Another panel's message stays.
-  ui::set_message(state, ui::MessageSource::files, false, "saved scene.json");
+  session::set_message(state, session::MessageSource::files, false, "saved scene.json");
   text.capture([&] { ui::construction_section(state); });
   CHECK(state.message == "saved scene.json");
 }
@@ -298,7 +298,7 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
 TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no rays", "[ui][figure]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
-    ui::AppState state = state_for({"--view", view});
+    session::AppState state = state_for({"--view", view});
     const std::string shown = text.capture([&] { ui::construction_section(state); });
     INFO(view);
     CHECK(shown.find("Export figure") != std::string::npos);

@@ -14,16 +14,16 @@ namespace raycam::flags {
 namespace {
 // --inspect COL,ROW (2D: COL alone, the bar column). Whether the pixel is in the image is checked by
 // make_app_state, which knows the image size.
-ValueRule<ui::PixelIndex> pixel_rule() {
+ValueRule<session::PixelIndex> pixel_rule() {
   const ValueRule<int> index = integer_in(0, 1 << 20);
   return {"COL or COL,ROW with integers in [0, 1048576]",
-          [index](const std::string& text) -> std::optional<ui::PixelIndex> {
+          [index](const std::string& text) -> std::optional<session::PixelIndex> {
             const std::size_t comma = text.find(',');
             const std::optional<int> column = index.parse(text.substr(0, comma));
             const std::optional<int> row =
                 comma == std::string::npos ? 0 : index.parse(text.substr(comma + 1));
             if (!column || !row) return std::nullopt;
-            ui::PixelIndex pixel;
+            session::PixelIndex pixel;
             pixel.column = *column;
             pixel.row = *row;
             return pixel;
@@ -31,7 +31,7 @@ ValueRule<ui::PixelIndex> pixel_rule() {
 }
 }  // namespace
 
-void add_app_options(CLI::App& command, ui::AppOptions& options) {
+void add_app_options(CLI::App& command, session::AppOptions& options) {
   add_view_options(command, options.view);
   add_caster_options(command, options.cast_options, options.accuracy);
   CLI::Option_group* group = command.add_option_group("App", "The window, the inspector and lecture mode");
@@ -39,9 +39,9 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
                           integer_in(320, 7680), [&options](int w) { options.width = w; });
   add_checked_option<int>(*group, "--height", "H", "window height in pixels (default 720; at most the screen's)",
                           integer_in(240, 4320), [&options](int h) { options.height = h; });
-  add_checked_option<ui::PixelIndex>(
+  add_checked_option<session::PixelIndex>(
       *group, "--inspect", "COL,ROW", "pin the ray inspector on a pixel (2D: COL is the bar column)",
-      pixel_rule(), [&options](ui::PixelIndex pixel) { options.inspect = pixel; });
+      pixel_rule(), [&options](session::PixelIndex pixel) { options.inspect = pixel; });
   add_checked_option<int>(*group, "--step", "K",
                           "show the construction of M_d up to step K (2D: 0..3, 3D: 0..5)", integer_in(0, 5),
                           [&options](int step) { options.step = step; });
@@ -68,7 +68,7 @@ void add_app_options(CLI::App& command, ui::AppOptions& options) {
       ->type_name("NAME")
       ->check(checked(mistake));
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",
-                             number_in({ui::kFontScaleOptionMin, ui::kFontScaleOptionMax}),
+                             number_in({session::kFontScaleOptionMin, session::kFontScaleOptionMax}),
                              [&options](double scale) { options.font_scale = float(scale); });
   add_checked_option<Language>(
       *group, "--lang", language_metavar(),
@@ -86,14 +86,14 @@ CLI::Option* add_scene_argument(CLI::App& command, std::string& scene) {
   return command.add_option("SCENE", scene, "scene file to open (same as --scene)");
 }
 
-void merge_scene_argument(const std::string& scene, ui::AppOptions& options) {
+void merge_scene_argument(const std::string& scene, session::AppOptions& options) {
   if (scene.empty()) return;
   if (options.view.scene_path) throw std::invalid_argument("SCENE: give the scene file once, as SCENE or --scene");
   options.view.scene_path = scene;
 }
 
-ui::AppOptions parse_app_options(const std::vector<std::string>& args, ui::AppOptions start) {
-  ui::AppOptions options = start;
+session::AppOptions parse_app_options(const std::vector<std::string>& args, session::AppOptions start) {
+  session::AppOptions options = start;
   CLI::App command;
   add_app_options(command, options);
   std::string scene;

@@ -1,0 +1,57 @@
+#include "view.h"
+
+namespace raycam::session {
+
+namespace {
+View2D view_of(const ViewSetup& setup, const Camera2D& camera) {
+  View2D view;
+  view.scene = setup.file.scene2d;
+  view.orbit = view.preset = camera.orbit();
+  view.max_pixels = camera.max_pixels();
+  view.camera = camera;
+  return view;
+}
+View3D view_of(const ViewSetup& setup, const Camera3D& camera) {
+  View3D view;
+  view.scene = setup.file.scene3d;
+  view.orbit = view.preset = camera.orbit();
+  view.max_columns = camera.max_columns();
+  view.max_rows = camera.max_rows();
+  view.camera = camera;
+  return view;
+}
+}  // namespace
+
+OpenedViews views_from_setup(const ViewSetup& setup) {
+  // ViewSetup (raycam_io) holds both cameras and says which is meant: the one place that reads it.
+  OpenedViews views{view_of(setup, setup.camera3d), view_of(setup, setup.camera2d)};
+  if (setup.dimension == 2) std::swap(views.on_screen, views.other);
+  std::visit([&](auto& view) { view.scene_path = setup.scene_path; }, views.on_screen);
+  return views;
+}
+
+void pack_scene(const View& view, PackedScene3D& packed) {
+  if (const auto* view3d = std::get_if<View3D>(&view)) packed.pack(view3d->scene);  // 2D casts its circles as they are
+}
+
+void cast_view(const View& view, const PackedScene3D& packed, ColourMap& map, const CastOptions& options,
+               CastStats* stats) {
+  std::visit(overloaded{[&](const View2D& v) { cast_primary_rays(v.camera, v.scene, map, options, stats); },
+                        [&](const View3D& v) { cast_primary_rays(v.camera, packed, map, options, stats); }},
+             view);
+}
+
+void validate(const View& view) {
+  std::visit([](const auto& v) { raycam::validate(v.scene); }, view);
+}
+
+SceneFile scene_file_of(const View& view, const CameraPreset& camera) {
+  SceneFile file;
+  file.camera = camera;
+  file.dimension = dimension_of(view);
+  std::visit(overloaded{[&](const View2D& v) { file.scene2d = v.scene; }, [&](const View3D& v) { file.scene3d = v.scene; }},
+             view);
+  return file;
+}
+
+}  // namespace raycam::session
