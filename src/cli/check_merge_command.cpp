@@ -2,6 +2,7 @@
 // CSV a single run would have written (docs/check.md, "A large course").
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "batch_record.h"
@@ -21,15 +22,7 @@ int run_check_merge(const Args& args) {
                "raycam-cli check merge"};
   app.add_option("--csv", out, "the merged CSV (its .battery.json is written beside it)")->required();
   app.add_option("shards", shards, "the shards' CSV files")->required();
-  try {
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    std::fputs(app.help().c_str(), stdout);
-    return 0;
-  } catch (const CLI::ParseError& error) {
-    throw std::invalid_argument(flags::usage_error_message(app, error));
-  }
+  if (const std::optional<int> done = flags::parse_command_line(app, args)) return *done;  // --help, bad usage
   const check::MergedCsv merged = check::merge_shard_csvs(shards);
   check::write_text_file(out, merged.text);
   check::write_text_file(check::battery_sidecar_path(out), check::battery_record_json(merged.record));
