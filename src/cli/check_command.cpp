@@ -49,7 +49,9 @@ struct CheckFlags {
 void require_output(const std::string& flag, const std::string& path, bool folder) {
   if (path.empty()) return;
   std::error_code error;
-  const fs::path target(path);
+  fs::path target(path);
+  // "reports/" (as the docs write a folder) names reports, whose folder is ".", not what parent_path() says.
+  while (!target.has_filename() && target.has_relative_path()) target = target.parent_path();
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const std::string expected = folder ? "a folder to write in (existing, or new in an existing folder)"
                                       : "a file to write (new, or a file to replace) in an existing folder";
