@@ -174,6 +174,11 @@ mutant dir-substituted-again src/cli/check_command.cpp 's/^      out += dir;/   
 mutant stderr-unescaped src/check/check_report.cpp 's/escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160)))/err.substr(start, std::min<std::size_t>(end - start, 160))/' "$CHECK" "$BOUNDS"
 mutant cpu-time-not-polled src/check/student_process.cpp 's/      if (group \&\& !exited \&\& group->cpu_seconds() > cpu_limit) {/      if (false) {/' "$CHECK" "$BOUNDS"
 mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.require_limits) throw/  if (false) throw/' "$CHECK" "$BOUNDS"
+# --- grader QA ---
+# An instructor's run of docs/check.md found these (a QA pass over issues 32, 37 and 38).
+mutant output-folder-trailing-slash-refused src/cli/check_command.cpp 's/^  while (!target.has_filename() \&\& target.has_relative_path()) target = target.parent_path();$/  (void)0;/' "$CHECK" "^check: ?bad outputs, a folder"
+mutant env-crlf-without-hint src/check/student_process.cpp 's/result.end == RunResult::End::exited \&\& result.exit_code == 127 \&\&/false \&\&/' "$CHECK" "^check: ?bounds: set-up errors"
+mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed) header.limits_note += /  if (false) header.limits_note += /' "$CHECK" "^check: run bounds as an ordinary user"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
