@@ -213,6 +213,11 @@ mutant figure-export-rays-in-3d src/ui/panels.cpp 's/^  if (dimension(state) == 
 mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
 mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
 mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(state, ImGui::IsAnyMouseDown());/  (void)0;/' "raycam_ui_tests" "^ui: ?the null host runs"
+# --- grader QA ---
+# An instructor's run of docs/check.md found these (a QA pass over issues 32, 37 and 38).
+mutant output-folder-trailing-slash-refused src/cli/check_command.cpp 's/^  while (!target.has_filename() \&\& target.has_relative_path()) target = target.parent_path();$/  (void)0;/' "$CHECK" "^check: ?bad outputs, a folder"
+mutant env-crlf-without-hint src/check/student_process.cpp 's/result.end == RunResult::End::exited \&\& result.exit_code == 127 \&\&/false \&\&/' "$CHECK" "^check: ?bounds: set-up errors"
+mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed) header.limits_note += /  if (false) header.limits_note += /' "$CHECK" "^check: run bounds as an ordinary user"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -593,6 +593,15 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
                                   : hint;
       if (!result.error.empty() && result.error.back() == '\n') result.error.pop_back();
     }
+    // "#!/usr/bin/env python3\r" starts env, which then finds no 'python3\r' (exit 127, its message quoting
+    // the \r as "\\r"): the script's line ends, as when the kernel finds no interpreter.
+    if (!result.infrastructure_failure && result.end == RunResult::End::exited && result.exit_code == 127 &&
+        (result.err.find('\r') != std::string::npos || result.err.find("\\r") != std::string::npos)) {
+      if (const std::string hint = launch_hint(argv); hint.find("(CRLF)") != std::string::npos) {
+        result.end = RunResult::End::could_not_start;
+        result.error = hint;
+      }
+    }
   } catch (const std::exception& error) {  // fork or pipe failed: the machine, not the program
     result.end = RunResult::End::could_not_start;
     result.error = error.what();

@@ -416,6 +416,12 @@ TEST_CASE("bad outputs, a folder as the program and a repeated flag are bad usag
   c = check(example + " --csv " + dir + "/missing/grades.csv", "usage_csv");
   CHECK(c.exit_code == 2);
   CHECK_THAT(c.output, Catch::Contains("--csv: expected a file") && Catch::Contains("does not exist"));
+  // A new folder written with a trailing slash, as docs/check.md writes them, is in an existing folder.
+  c = check("--write-cases " + dir + "/new-cases/", "usage_new_folder");
+  CHECK(c.exit_code == 0);
+  CHECK(fs::is_regular_file(dir + "/new-cases/case_01.json"));
+  c = check(example + " --diff-dir " + dir + "/new-diffs/", "usage_new_diffs");
+  CHECK(c.exit_code == 0);
   c = check("--student " + dir, "usage_student_folder");
   CHECK(c.exit_code == 2);
   CHECK_THAT(c.output, Catch::Contains("--student: expected a program") && Catch::Contains("(a folder)"));

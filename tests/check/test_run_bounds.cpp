@@ -364,6 +364,13 @@ TEST_CASE("bounds: set-up errors are the instructor's (exit 2 or checker-error),
                    scratch.path("reports"));
   CHECK_THAT(read_json(scratch.path("reports/carol.json"))["results"][0]["detail"].get<std::string>(),
              Catch::Contains("Windows line ends"));
+  // The usual Python first line: env starts, then finds no 'python3\r' (exit 127): the same hint.
+  const std::string env_crlf = submission(root, "erin", "") + "/run.sh";
+  std::ofstream(env_crlf, std::ios::binary) << "#!/usr/bin/env python3\r\nprint('{}')\r\n";
+  c = raycam_check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + csv + " --cases 1 --report " +
+                   scratch.path("reports"));
+  CHECK_THAT(read_json(scratch.path("reports/erin.json"))["results"][0]["detail"].get<std::string>(),
+             Catch::Contains("Windows line ends"));
   const std::string plain = scratch.path("camera");
   fs::copy_file(EXAMPLE_STUDENT_CPP, plain);
   fs::permissions(plain, fs::perms(0644));
@@ -429,6 +436,9 @@ TEST_CASE("bounds: without a control group the report says so once, and --requir
   const Cli c = raycam_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 1");
   CHECK(c.exit_code == 0);
   CHECK_THAT(c.output, Catch::Contains("memory not bounded per run"));
+  // A sandboxed run's CPU time then reads as bwrap's own (a few ms): said, not shown as the program's.
+  if (c.output.find("sandbox: bubblewrap") != std::string::npos)
+    CHECK_THAT(c.output, Catch::Contains("CPU seconds not counted"));
   const Cli refused = raycam_check(std::string("--student ") + EXAMPLE_STUDENT_CPP + " --cases 1 --require-limits");
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.output, Catch::Contains("--require-limits"));
