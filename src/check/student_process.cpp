@@ -2,7 +2,7 @@
 // only) · the parent's poll loop · the sandbox.
 #include "student_process.h"
 
-#include "close_descriptors.h"
+#include "process_calls.h"
 
 #include <fcntl.h>
 #if __has_include(<linux/keyctl.h>)
@@ -492,7 +492,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
         timed_out = cpu_out = true;
         break;
       }
-      if (!exited && wait4(pid, &status, WNOHANG, &usage) == pid) {
+      if (!exited && wait_with_usage(pid, &status, WNOHANG, &usage) == pid) {
         exited = true;
         drained_by = std::min(deadline, now + std::chrono::milliseconds(200));
       }
@@ -539,7 +539,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     }
     // Output closed: wait for the exit, still under the deadline (a program may close stdout and go on).
     pid_t done = exited ? pid : 0;
-    while (!exited && !timed_out && !too_large && (done = wait4(pid, &status, WNOHANG, &usage)) == 0) {
+    while (!exited && !timed_out && !too_large && (done = wait_with_usage(pid, &status, WNOHANG, &usage)) == 0) {
       if (Clock::now() >= deadline) timed_out = true;
       else if (group && group->cpu_seconds() > cpu_limit) timed_out = cpu_out = true;
       else usleep(2000);
@@ -547,7 +547,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     if (timed_out || too_large) {
       stop(pid);
       if (group) group->kill_all();
-      wait4(pid, &status, 0, &usage);
+      wait_with_usage(pid, &status, 0, &usage);
       result.end = timed_out ? RunResult::End::timed_out : RunResult::End::output_too_large;
       result.limit = timed_out ? kTimeLimit : kOutputLimit;
       if (cpu_out) result.error = "CPU time";
