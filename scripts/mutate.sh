@@ -218,6 +218,10 @@ mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(sta
 mutant output-folder-trailing-slash-refused src/cli/check_command.cpp 's/^  while (!target.has_filename() \&\& target.has_relative_path()) target = target.parent_path();$/  (void)0;/' "$CHECK" "^check: ?bad outputs, a folder"
 mutant env-crlf-without-hint src/check/student_process.cpp 's/result.end == RunResult::End::exited \&\& result.exit_code == 127 \&\&/false \&\&/' "$CHECK" "^check: ?bounds: set-up errors"
 mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed) header.limits_note += /  if (false) header.limits_note += /' "$CHECK" "^check: run bounds as an ordinary user"
+# --- the merged app, driven ---
+# A student's and an instructor's walk through the merged window (Tab, non-square, files, figures) found these.
+mutant demo-note-stays-over-the-file src/session/app_state.cpp 's/^  if (!state.message_is_error \&\& state.message == demo_note) state.message.clear();/  (void)demo_note;/' "$SESSION" "^session: ?the note that the other dimension"
+mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.res_rows) state.res_rows = res;$/  (void)0;/' "$SESSION" "^session: ?with non-square on, a show-me"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

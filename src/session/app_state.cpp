@@ -236,6 +236,10 @@ std::string window_title(const AppState& state) {
 void switch_dimension(AppState& state, int dimension) {
   if (dimension == session::dimension(state)) return;
   const bool left_a_file = !scene_path(state).empty();
+  // The note that the view on screen is the demo goes with it: left there, it would still say "demo" over
+  // the file the switch comes back to.
+  const std::string demo_note = trf("switched to the built-in %dD demo scene", dimension_of(state.view));
+  if (!state.message_is_error && state.message == demo_note) state.message.clear();
   std::swap(state.view, state.other_view);
   if (scene_path(state).empty() && left_a_file)  // leaving a file for the other kind's demo
     set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));

@@ -27,10 +27,16 @@ std::string pixel_edges_does(const AppState& state) {
   if (n > 32) text += " " + trf("At n = %d half a pixel is too small to see: show me.", n);
   return text;
 }
-void pixel_edges_show(AppState& state) { state.res = std::max(0.05, 1.0 / max_side(state)); }
+// A show-me's res is both sides': with "non-square" on, setting only res (the columns') would leave the
+// rows at their fine res, where the rows' half pixel or lost row is again too small to see.
+void show_at_res(AppState& state, double res) {
+  state.res = res;
+  if (state.res_rows) state.res_rows = res;
+}
+void pixel_edges_show(AppState& state) { show_at_res(state, std::max(0.05, 1.0 / max_side(state))); }
 
 // ---- res truncated -------------------------------------------------------------------------------------
-void res_truncated_show(AppState& state) { state.res = 12.75 / max_side(state); }  // round 13, floor 12
+void res_truncated_show(AppState& state) { show_at_res(state, 12.75 / max_side(state)); }  // round 13, floor 12
 
 // ---- square pixels ---------------------------------------------------------------------------------------
 // Only a non-square image shows it: the canonical screen is the square whatever nbc and nbl.

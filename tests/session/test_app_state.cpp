@@ -173,6 +173,16 @@ TEST_CASE("switching 2D/3D away from a file and back shows and names that file a
   CHECK_THAT(session::window_title(state), Catch::Contains("classic2d.json"));
 }
 
+TEST_CASE("the note that the other dimension is the demo goes when the switch comes back to the file",
+          "[ui][files]") {
+  session::AppState state = state_for({"--scene", RAYCAM_SOURCE_DIR "/scenes/classic2d.json"});
+  session::switch_dimension(state, 3);  // leaving the file for the 3D demo: said so
+  CHECK_THAT(state.message, Catch::Contains("3D demo"));
+  session::switch_dimension(state, 2);  // back on classic2d.json: the note would now say the wrong thing
+  CHECK_THAT(session::window_title(state), Catch::Contains("classic2d.json"));
+  CHECK_THAT(state.message, !Catch::Contains("demo"));
+}
+
 TEST_CASE("a pinned ray follows res: the same canonical point, not dropped, no drift", "[ui][state]") {
   session::AppState state = state_for({"--view", "3d", "--size", "200x100"});
   session::recast_if_needed(state, false);

@@ -195,3 +195,19 @@ TEST_CASE("show me sets what its line says, and the image shows the mistake on p
     }
   }
 }
+
+TEST_CASE("with non-square on, a show-me's coarse res reaches the rows too", "[ui][mistakes]") {
+  // 256 x 256 at res_c 1, res_l 0.5: 256 columns, 128 rows. The show-me's res is meant for both sides: the
+  // pixel edges' half pixel and the truncated res's lost pixel must show in the rows as in the columns.
+  for (const char* id : {"pixel_edges", "res_truncated"}) {
+    session::AppState state = state_for({"--view", "3d", "--size", "256x256", "--res", "1,0.5"});
+    REQUIRE(state.res_rows);
+    const session::MistakeLesson* lesson = session::find_lesson(id);
+    REQUIRE(lesson);
+    session::show_mistake(state, *lesson);
+    ids_now(state);
+    INFO(id << ": " << state.map.width << " x " << state.map.height);
+    CHECK(state.map.width <= 13);  // round(0.05 * 256) = 13; 12.75 / 256 rounds to 13, truncates to 12
+    CHECK(state.map.height == state.map.width);  // the same res on both sides of a square size
+  }
+}
