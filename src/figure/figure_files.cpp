@@ -185,6 +185,44 @@ void draw_markers(cairo_t* cr, const PageFrame& page) {
   }
 }
 
+// The overview of the whole scene: a light framed box (opaque, over the drawing), the objects, the screen,
+// the eye and C as dark red crosses (not the markers' coded blues), the zoomed region as a red rectangle.
+void draw_inset(cairo_t* cr, const PageFrame& page) {
+  const PageInset& inset = page.inset;
+  if (!inset.shown()) return;
+  const Box& b = inset.box;
+  cairo_save(cr);
+  cairo_rectangle(cr, b.left, b.top, b.width(), b.height());
+  cairo_set_source_rgb(cr, kInsetBackground[0], kInsetBackground[1], kInsetBackground[2]);
+  cairo_fill_preserve(cr);
+  cairo_set_source_rgb(cr, 0.4, 0.4, 0.4);
+  cairo_set_line_width(cr, 0.6);
+  cairo_stroke_preserve(cr);
+  cairo_clip(cr);
+  for (const PageDisc& disc : inset.discs) {
+    cairo_new_path(cr);
+    cairo_arc(cr, disc.centre.x, disc.centre.y, disc.radius, 0.0, 2.0 * M_PI);
+    cairo_set_source_rgba(cr, disc.colour.r / 255.0, disc.colour.g / 255.0, disc.colour.b / 255.0, 0.8);
+    cairo_fill(cr);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_line_width(cr, 1.0);
+  for (const Segment& s : inset.screen) line(cr, s.from, s.to);
+  cairo_stroke(cr);
+  cairo_set_source_rgb(cr, 0.55, 0, 0);
+  cairo_set_line_width(cr, 0.6);
+  for (const glm::dvec2& p : inset.crosses) {
+    line(cr, p - glm::dvec2(kInsetArm, 0.0), p + glm::dvec2(kInsetArm, 0.0));
+    line(cr, p - glm::dvec2(0.0, kInsetArm), p + glm::dvec2(0.0, kInsetArm));
+  }
+  cairo_stroke(cr);
+  cairo_rectangle(cr, inset.zoom.left, inset.zoom.top, inset.zoom.width(), inset.zoom.height());
+  cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+  cairo_set_line_width(cr, 0.6);
+  cairo_stroke(cr);
+  cairo_restore(cr);
+}
+
 void draw_labels(cairo_t* cr, const PageFrame& page) {
   for (const PlacedText& label : page.labels)
     if (label.leader) {
@@ -233,6 +271,7 @@ int paint_frame(cairo_t* cr, const Figure& figure, int index, const FigureOutput
   draw_discs(cr, page);
   draw_segments(cr, page);
   draw_markers(cr, page);
+  draw_inset(cr, page);
   draw_labels(cr, page);
   cairo_restore(cr);
   draw_matrix(cr, page);

@@ -239,6 +239,78 @@ void add_discs(const Frame& frame, PageFrame& page) {
   }
 }
 
+// ---- the inset -----------------------------------------------------------------------------------------
+
+struct PlaneBounds {
+  glm::dvec2 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+  void add(glm::dvec2 p, double r = 0.0) {
+    lo = glm::min(lo, p - r);
+    hi = glm::max(hi, p + r);
+  }
+  bool holds(glm::dvec2 p) const { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y; }
+};
+
+// What covering `box` would hide of the main drawing: the points above all, then rays and discs.
+double inset_cost(const PageFrame& page, const Box& box) {
+  double cost = 0.0;
+  for (const PageMarker& m : page.markers) cost += inside(grown(box, page.arm), m.at) ? 1e9 : 0.0;
+  for (const Segment& s : page.segments) cost += page.font_size * length_inside(s.from, s.to, box);
+  for (const PageDisc& d : page.discs) cost += disc_cover(d, box);
+  return cost;
+}
+
+// The overview of the whole scene, in the corner where it hides the least (the labels, placed next, avoid it).
+void add_inset(const Frame& frame, PageFrame& page) {
+  if (frame.objects_faded || frame.objects.empty()) return;
+  const PageTransform& t = page.to_page;
+  PlaneBounds view;  // the plane region the drawing area shows
+  view.add({(page.area.left - t.x0) / t.scale, (t.y0 - page.area.bottom) / t.scale});
+  view.add({(page.area.right - t.x0) / t.scale, (t.y0 - page.area.top) / t.scale});
+  PlaneBounds scene;
+  bool cut = false;
+  for (const Disc& disc : frame.objects) {
+    scene.add(disc.centre, disc.radius);
+    cut = cut || !view.holds(disc.centre);
+  }
+  for (const Marker& m : frame.markers) scene.add(m.at);
+  const glm::dvec2 extent = glm::max(scene.hi - scene.lo, glm::dvec2(1e-300)), shown = view.hi - view.lo;
+  const bool small = std::max(shown.x / extent.x, shown.y / extent.y) < kInsetBelowShare;
+  if (!cut && !small) return;
+
+  PageInset& inset = page.inset;
+  const double w = kInsetSize * page.area.width(), h = kInsetSize * page.area.height(), gap = 2.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int corner = 0; corner < 4; ++corner) {
+    const double left = corner % 2 ? page.area.right - gap - w : page.area.left + gap;
+    const double top = corner / 2 ? page.area.bottom - gap - h : page.area.top + gap;
+    const Box box{left, top, left + w, top + h};
+    const double cost = inset_cost(page, box) + 1e-3 * corner;  // ties: the upper left first
+    if (cost < best) {
+      best = cost;
+      inset.box = box;
+    }
+  }
+  const Box inner = grown(inset.box, -0.06 * std::min(w, h));
+  inset.to_inset.scale = std::min(inner.width() / extent.x, inner.height() / extent.y);
+  const glm::dvec2 middle = 0.5 * (scene.lo + scene.hi);
+  inset.to_inset.x0 = 0.5 * (inner.left + inner.right) - inset.to_inset.scale * middle.x;
+  inset.to_inset.y0 = 0.5 * (inner.top + inner.bottom) + inset.to_inset.scale * middle.y;
+  const PageTransform& to = inset.to_inset;
+  for (const Disc& disc : frame.objects)
+    inset.discs.push_back({to(disc.centre), std::max(0.6, to.scale * disc.radius), disc.colour, {}});
+  glm::dvec2 ends[2];
+  for (const Marker& m : frame.markers) {
+    if (m.point == Point::eye || m.point == Point::target) inset.crosses.push_back(to(m.at));
+    if (m.point == Point::screen_first_end) ends[0] = to(m.at);
+    if (m.point == Point::screen_last_end) ends[1] = to(m.at);
+  }
+  inset.screen.push_back({ends[0], ends[1], Stroke::camera});
+  // The zoomed region, at least a few points wide so that it shows on a scene a thousand times larger.
+  const glm::dvec2 a = to(view.lo), b = to(view.hi), c = 0.5 * (a + b);
+  const double half_w = std::max(0.5 * std::abs(b.x - a.x), 2.0), half_h = std::max(0.5 * std::abs(b.y - a.y), 2.0);
+  inset.zoom = {c.x - half_w, c.y - half_h, c.x + half_w, c.y + half_h};
+}
+
 // ---- label placement ------------------------------------------------------------------------------------
 
 struct Request {
@@ -295,6 +367,7 @@ class Placer {
     for (const PageDisc& disc : page_.discs) cost += disc_weight * disc_cover(disc, box);
     const Box& area = page_.area;
     cost += 1000.0 * (box.width() * box.height() - overlap_area(box, area));
+    if (page_.inset.shown()) cost += 1000.0 * overlap_area(grown(page_.inset.box, 0.3 * font_), box);
     return cost;
   }
 
@@ -408,6 +481,7 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
   const Box kept = grown(page.area, 20.0);
   for (const Marker& m : frame.markers)  // a point far out of view is left out (its label too)
     if (inside(kept, page.to_page(m.at))) page.markers.push_back({m.point, page.to_page(m.at)});
+  add_inset(frame, page);
   place_labels(frame, page, bands.font);
 
   if (output.title)

@@ -83,6 +83,23 @@ struct MatrixCell {
   double right = 0.0, baseline = 0.0;  // right-aligned in its column
 };
 
+// A small framed overview of the whole scene in a corner of the drawing area, when the final frame's zoom on
+// the camera shows too little of the scene (less than kInsetBelowShare of its extent, or an object's centre
+// out of view): the objects as discs, the screen, the eye, C, and the zoomed region as a rectangle.
+inline constexpr double kInsetBelowShare = 0.5;
+inline constexpr double kInsetSize = 0.3;  // of the drawing area's width and height
+inline constexpr double kInsetBackground[3] = {0.96, 0.96, 0.93};  // light: it reads as an inset
+inline constexpr double kInsetArm = 2.0;                             // pt: its crosses' half length
+struct PageInset {
+  Box box;                       // on the page; zero width: no inset
+  PageTransform to_inset;        // plane point → page point inside the box
+  std::vector<PageDisc> discs;   // every object (at least a dot)
+  std::vector<Segment> screen;   // the camera's screen
+  std::vector<glm::dvec2> crosses;  // the eye and C
+  Box zoom;                      // the main drawing's region
+  bool shown() const { return box.width() > 0.0; }
+};
+
 struct PageFrame {
   PageTransform to_page;
   Box area;  // the drawing area: everything of the plane is clipped to it
@@ -98,6 +115,7 @@ struct PageFrame {
   Box matrix_brackets;             // the brackets' extent (empty without a matrix)
   double font_size = 9.0;
   double arm = 3.0;  // a cross's half length
+  PageInset inset;
 };
 
 // The page layout of frame `index` of `figure`. The bands are the same for every frame of the figure, so

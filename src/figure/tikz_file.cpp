@@ -66,6 +66,30 @@ std::string colour(const Rgb8& c) {
   return "{rgb,255:red," + std::to_string(c.r) + ";green," + std::to_string(c.g) + ";blue," + std::to_string(c.b) + "}";
 }
 
+std::string rectangle(const Box& b, const Coordinates& at) {
+  return at({b.left, b.bottom}) + " rectangle " + at({b.right, b.top});
+}
+
+// The overview of the whole scene, as the cairo painter draws it (figure_files.cpp's draw_inset).
+std::string inset_commands(const PageInset& inset, const Coordinates& at) {
+  if (!inset.shown()) return "";
+  char background[96];
+  std::snprintf(background, sizeof background, "{rgb,255:red,%d;green,%d;blue,%d}", int(255 * kInsetBackground[0] + 0.5),
+                int(255 * kInsetBackground[1] + 0.5), int(255 * kInsetBackground[2] + 0.5));
+  std::string t = "\\filldraw[fill=" + std::string(background) + ", draw=gray, line width=0.6pt] " + rectangle(inset.box, at) +
+                  ";\n\\begin{scope}\n\\clip " + rectangle(inset.box, at) + ";\n";
+  for (const PageDisc& disc : inset.discs)
+    t += "\\fill[fill=" + colour(disc.colour) + ", fill opacity=0.8] " + at(disc.centre) + " circle[radius=" +
+         number(disc.radius * kCmPerPoint) + "cm];\n";
+  for (const Segment& s : inset.screen) t += "\\draw[line width=1pt] " + at(s.from) + " -- " + at(s.to) + ";\n";
+  const std::string arm = number(kInsetArm) + "pt";
+  for (const glm::dvec2& p : inset.crosses)
+    t += "\\draw[line width=0.6pt, color={rgb,255:red,140;green,0;blue,0}] " + at(p) + " +(-" + arm + ",0) -- +(" + arm +
+         ",0) " + at(p) + " +(0,-" + arm + ") -- +(0," + arm + ");\n";
+  t += "\\draw[line width=0.6pt, color={rgb,255:red,217;green,26;blue,26}] " + rectangle(inset.zoom, at) + ";\n";
+  return t + "\\end{scope}\n";
+}
+
 // One frame's drawing commands.
 std::string frame_commands(const Figure& figure, int index, const FigureOutput& output) {
   const PageFrame page = lay_out_frame(figure, index, output);
@@ -100,6 +124,7 @@ std::string frame_commands(const Figure& figure, int index, const FigureOutput& 
     t += "\\draw[cross] ([xshift=-" + arm + "]" + name + ") -- ([xshift=" + arm + "]" + name + ") ([yshift=-" + arm +
          "]" + name + ") -- ([yshift=" + arm + "]" + name + ");\n";
   }
+  t += inset_commands(page.inset, at);
   for (const PlacedText& label : page.labels)
     if (label.leader)
       t += "\\draw[leader] " + at(label.anchor) + " -- " +

@@ -72,7 +72,7 @@ void require_no_overlapping_words(const std::string& pdf, const std::string& wha
   }
 }
 
-// Every pair of placed labels in the layout itself: disjoint boxes.
+// Every pair of placed labels in the layout itself: disjoint boxes, and none over the inset.
 void require_disjoint_labels(const Figure& figure, const FigureOutput& output, const std::string& what) {
   for (int f = 0; f < int(figure.frames.size()); ++f) {
     const PageFrame page = lay_out_frame(figure, f, output);
@@ -81,6 +81,10 @@ void require_disjoint_labels(const Figure& figure, const FigureOutput& output, c
         INFO(what << ", frame " << f << ": '" << page.labels[i].markup << "' and '" << page.labels[j].markup << "'");
         CHECK(overlap_area(page.labels[i].box, page.labels[j].box) == 0.0);
       }
+    for (const PlacedText& label : page.labels) {  // nor the inset of the whole scene
+      INFO(what << ", frame " << f << ": '" << label.markup << "' over the inset");
+      CHECK(overlap_area(label.box, page.inset.box) == 0.0);
+    }
   }
 }
 
