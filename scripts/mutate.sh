@@ -217,6 +217,7 @@ mutant figure-inset-main-scale src/figure/figure_layout.cpp 's/^  inset.to_inset
 mutant figure-inset-not-in-tikz src/figure/tikz_file.cpp 's/^  t += inset_commands(page.inset, at);/  (void)0;/' "$FIGURE" "^figure:"
 mutant figure-inset-tikz-scope-open src/figure/tikz_file.cpp 's/^  return t + "\\\\end{scope}\\n";/  return t;/' "$FIGURE" "^figure:"
 mutant figure-inset-not-painted src/figure/figure_files.cpp 's/^  draw_inset(cr, page);/  (void)0;/' "$FIGURE" "^figure:"
+mutant figure-missing-folder-unnamed src/figure/figure_files.cpp 's/    if (!folder.empty() \&\& !std::filesystem::is_directory(folder))/    if (false)/' "$FIGURE" "^figure:"
 # --- one view model, host capabilities ---
 mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
 mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <memory>
@@ -40,6 +41,11 @@ class PendingFiles {
     for (const auto& file : files_) std::remove(file.first.c_str());
   }
   std::string add(const std::string& path) {
+    // Named before anything is drawn: the drawing library's own reason ("error while writing to output
+    // stream") did not say that the folder was the problem.
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder))
+      throw std::runtime_error(path + ": cannot write the figure: no folder " + folder.string());
     const std::string temporary = path + ".part" + std::to_string(::getpid());
     files_.push_back({temporary, path});
     return temporary;

@@ -78,6 +78,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
 
       // ---- the construction figure's files (src/figure), exported from the window ----
       {"{path}: cannot write the figure ({reason})", "{path} : impossible d'écrire la figure ({reason})"},
+      {"{path}: cannot write the figure: no folder {folder}",
+       "{path} : impossible d'écrire la figure : le dossier {folder} n'existe pas"},
       {"{path}: cannot open for writing", "{path} : impossible d'ouvrir le fichier en écriture"},
       {"{path}: cannot write the PNG", "{path} : impossible d'écrire le PNG"},
 

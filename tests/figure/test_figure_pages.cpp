@@ -331,7 +331,9 @@ TEST_CASE("a failed write leaves nothing, a good one no temporary file", "[figur
     CHECK_THROWS_AS(write_figure(figure, {0, 1}, output, scratch.path("fail." + ext)), std::runtime_error);
     CHECK(!std::filesystem::exists(scratch.path("fail-a." + ext)));
     CHECK(!std::filesystem::exists(scratch.path("fail-a." + ext + ".part" + std::to_string(::getpid()))));
-    CHECK_THROWS_AS(write_figure(figure, {0}, output, scratch.path("no/such/folder/x." + ext)), std::runtime_error);
+    // A missing folder is named as the reason, before anything is drawn.
+    CHECK_THROWS_WITH(write_figure(figure, {0}, output, scratch.path("no/such/folder/x." + ext)),
+                      Catch::EndsWith(": cannot write the figure: no folder " + scratch.path("no/such/folder")));
     std::filesystem::remove_all(scratch.path("fail-b." + ext + ".part" + std::to_string(::getpid())));
     write_figure(figure, {0, 1}, output, scratch.path("good." + ext));
   }
