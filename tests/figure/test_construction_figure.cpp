@@ -28,17 +28,41 @@ using namespace raycam::figure_tests;
 
 namespace {
 
+// Each "<path …>" element's stroke colour (the text inside "rgb(…)") and the first segment of its path data,
+// "M x0 y0 L x1 y1 " (more follows). Parsed by hand: std::regex recurses once per character and overflows
+// the stack on cairo's long glyph paths under the sanitizers.
+struct SvgSegment {
+  std::string stroke;
+  glm::dvec2 from{0.0}, to{0.0};
+};
+std::vector<SvgSegment> segments_in_svg(const std::string& svg) {
+  std::vector<SvgSegment> segments;
+  for (std::size_t at = svg.find("<path "); at != std::string::npos; at = svg.find("<path ", at + 1)) {
+    const std::string element = svg.substr(at, svg.find('>', at) - at);
+    const std::size_t stroke = element.find("stroke:rgb("), data = element.find("d=\"M ");
+    if (stroke == std::string::npos || data == std::string::npos) continue;
+    SvgSegment segment;
+    const std::size_t colour = stroke + std::string("stroke:rgb(").size();
+    segment.stroke = element.substr(colour, element.find(')', colour) - colour);
+    std::istringstream path(element.substr(data + 5));
+    std::string line_to;
+    if (path >> segment.from.x >> segment.from.y >> line_to >> segment.to.x >> segment.to.y && line_to == "L" &&
+        path.peek() == ' ')
+      segments.push_back(segment);
+  }
+  return segments;
+}
+
 // The crosses of the SVG by kind (figure_files.h: kind k stroked rgb(0, 0, k+1)): page position of each
 // cross's centre, the middle of its horizontal arm "M x0 y L x1 y".
 std::map<int, std::vector<glm::dvec2>> crosses_in_svg(const std::string& svg) {
   std::map<int, std::vector<glm::dvec2>> crosses;
-  const std::regex path(R"(<path [^>]*stroke:rgb\(0%,0%,([0-9.]+)%\)[^>]*d=\"M ([-0-9.e]+) ([-0-9.e]+) L ([-0-9.e]+) ([-0-9.e]+) )");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it) {
-    const double blue = std::stod((*it)[1]) / 100.0 * 255.0;
+  for (const SvgSegment& s : segments_in_svg(svg)) {
+    if (s.stroke.rfind("0%,0%,", 0) != 0 || s.stroke.back() != '%') continue;
+    const double blue = std::stod(s.stroke.substr(6)) / 100.0 * 255.0;
     const int kind = int(std::lround(blue)) - 1;
     if (kind < 0 || std::abs(blue - std::round(blue)) > 1e-3) continue;
-    const double x0 = std::stod((*it)[2]), y0 = std::stod((*it)[3]), x1 = std::stod((*it)[4]);
-    crosses[kind].push_back({0.5 * (x0 + x1), y0});
+    crosses[kind].push_back({0.5 * (s.from.x + s.to.x), s.from.y});
   }
   return crosses;
 }
@@ -134,9 +158,8 @@ bool near(glm::dvec2 a, glm::dvec2 b, double size) { return glm::length(a - b) <
 // The ray paths of an SVG (the ray stroke's colour, figure_files.cpp), as "M x0 y0 L x1 y1" page points.
 std::vector<std::pair<glm::dvec2, glm::dvec2>> rays_in_svg(const std::string& svg) {
   std::vector<std::pair<glm::dvec2, glm::dvec2>> rays;
-  const std::regex path(R"(<path [^>]*stroke:rgb\(80%,30%,5%\)[^>]*d=\"M ([-0-9.e]+) ([-0-9.e]+) L ([-0-9.e]+) ([-0-9.e]+) )");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), path); it != std::sregex_iterator(); ++it)
-    rays.push_back({{std::stod((*it)[1]), std::stod((*it)[2])}, {std::stod((*it)[3]), std::stod((*it)[4])}});
+  for (const SvgSegment& s : segments_in_svg(svg))
+    if (s.stroke == "80%,30%,5%") rays.push_back({s.from, s.to});
   return rays;
 }
 }  // namespace

@@ -96,7 +96,9 @@ def main(graph_path, root):
         if first_folder != folder:
             problems.append(f"{doc_path}: the row {target}: its folder is {folder}, the table says "
                             f"'{first_folder}'")
-        written = documented_links(links_column, known)
+        # A configuration without some targets (the sanitizer build has no app, no OSMesa, no Embree) links
+        # fewer: the row names the full build's links, so only targets this build has are compared.
+        written = {t for t in documented_links(links_column, known) if t in graph or t not in rows}
         if written != links:
             missing = ", ".join(sorted(short_name(t) for t in links - written)) or "none"
             extra = ", ".join(sorted(short_name(t) for t in written - links)) or "none"
