@@ -96,10 +96,11 @@ def main(graph_path, root):
         if first_folder != folder:
             problems.append(f"{doc_path}: the row {target}: its folder is {folder}, the table says "
                             f"'{first_folder}'")
-        # A configuration without some targets (the sanitizer build has no app, no OSMesa, no Embree) links
-        # fewer: the row names the full build's links, so only targets this build has are compared.
-        written = {t for t in documented_links(links_column, known) if t in graph or t not in rows}
-        if written != links:
+        written = documented_links(links_column, known)
+        # A configuration without some of the app's targets (the sanitizer build has no app, no OSMesa, no
+        # Embree) links fewer: the row names the full build's links, so there only missing links count.
+        partial = target in graph and any(t not in graph for t in rows if t != "raycam_web")
+        if (links - written) if partial else (written != links):
             missing = ", ".join(sorted(short_name(t) for t in links - written)) or "none"
             extra = ", ".join(sorted(short_name(t) for t in written - links)) or "none"
             problems.append(f"{doc_path}: the row {target}: links column misses [{missing}], names too many "
