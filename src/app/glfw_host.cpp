@@ -22,20 +22,6 @@ namespace {
 volatile std::sig_atomic_t quit_signal = 0;  // SIGINT / SIGTERM: leave the loop cleanly
 extern "C" void on_quit_signal(int) { quit_signal = 1; }
 
-GlfwHost& desktop_host_of(GLFWwindow* window) { return static_cast<GlfwHost&>(host_of(window)); }
-
-// Installed over ImGui's backend's key and character callbacks (which chain to ours): a key's changes reach
-// ImGui one per frame, characters in order with them (KeyEventQueue).
-void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  desktop_host_of(window).note_event();
-  if (action == GLFW_REPEAT || desktop_host_of(window).keys().arrive(key, action == GLFW_PRESS))
-    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-}
-void queued_char_callback(GLFWwindow* window, unsigned int character) {
-  desktop_host_of(window).note_event();
-  if (desktop_host_of(window).keys().arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
-}
-
 void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
   if (glfwGetWindowMonitor(window)) {
     glfwSetWindowMonitor(window, nullptr, saved[0], saved[1], saved[2], saved[3], 0);
@@ -62,17 +48,8 @@ void GlfwHost::install_own_callbacks() {
   glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { host_of(w).note_event(); });
 }
 
-void GlfwHost::after_imgui_backend() {
-  glfwSetKeyCallback(window_, queued_key_callback);  // over the backend's, which they call
-  glfwSetCharCallback(window_, queued_char_callback);
-}
-
 void GlfwHost::wait_for_frame(const session::AppState& state) {
-  // A key's changes held since the last frame, before this frame's events (key_queue.h).
-  for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
-    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
-    else ImGui_ImplGlfw_CharCallback(window_, e.character);
-  }
+  forward_held_keys();  // a key's changes held since the last frame, before this frame's events
   if (scripted_) {
     glfwPollEvents();
     return;
@@ -81,7 +58,7 @@ void GlfwHost::wait_for_frame(const session::AppState& state) {
   // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
   for (;;) {
     const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
-    const bool busy = !minimised && (has_work(state) || keys_.holding());
+    const bool busy = !minimised && has_work(state);
     if (busy || should_close()) break;
     glfwWaitEventsTimeout(kIdleWaitSeconds);
   }

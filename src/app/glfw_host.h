@@ -9,7 +9,6 @@
 
 #include "app_options.h"
 #include "glfw_host_base.h"
-#include "key_queue.h"
 
 struct GLFWwindow;
 
@@ -25,8 +24,8 @@ struct ScriptedRun {
 // returns the process's exit code. Prints one line at exit: frames drawn, casts and the CPU time used.
 int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state);
 
-// The desktop's loop over the shared GLFW host: it sleeps until there is something to draw, queues key
-// changes one per frame, toggles full screen and quits on Ctrl+Q.
+// The desktop's loop over the shared GLFW host: it sleeps until there is something to draw, toggles full
+// screen and quits on Ctrl+Q.
 class GlfwHost : public GlfwHostBase {
  public:
   // The longest sleep between two checks of the quit signal; a timeout draws nothing.
@@ -37,7 +36,6 @@ class GlfwHost : public GlfwHostBase {
   void present() override;
 
   bool should_close() const;
-  ui::KeyEventQueue& keys() { return keys_; }  // key events spread over frames (key_queue.h)
 
  private:
   void wait_for_frame(const session::AppState& state) override;
@@ -45,10 +43,8 @@ class GlfwHost : public GlfwHostBase {
   void frame_started() override;
   void key_pressed(int key) override;
   void install_own_callbacks() override;
-  void after_imgui_backend() override;
 
   bool scripted_;
-  ui::KeyEventQueue keys_;
 };
 
 }  // namespace raycam::app

@@ -33,6 +33,27 @@ void GlfwHostBase::key_callback(GLFWwindow* window, int key, int, int action, in
   host.key_pressed(key);
 }
 
+// Installed over ImGui's backend's key and character callbacks (which chain to key_callback): a key's changes
+// reach ImGui one per frame, characters in order with them (KeyEventQueue).
+void GlfwHostBase::queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  GlfwHostBase& host = host_of(window);
+  host.note_event();
+  if (action == GLFW_REPEAT || host.keys_.arrive(key, action == GLFW_PRESS))
+    ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+void GlfwHostBase::queued_char_callback(GLFWwindow* window, unsigned int character) {
+  GlfwHostBase& host = host_of(window);
+  host.note_event();
+  if (host.keys_.arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
+}
+
+void GlfwHostBase::forward_held_keys() {
+  for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
+    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
+    else ImGui_ImplGlfw_CharCallback(window_, e.character);
+  }
+}
+
 // A dropped file (the page's GLFW writes it into the page's file system first) opens as Open does, with the
 // same checks and messages: a bad file shows its error and keeps the current scene.
 void GlfwHostBase::drop_callback(GLFWwindow* window, int count, const char** paths) {
@@ -56,6 +77,8 @@ void GlfwHostBase::start_imgui() {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  glfwSetKeyCallback(window_, queued_key_callback);  // over the backend's, which they call
+  glfwSetCharCallback(window_, queued_char_callback);
   after_imgui_backend();
   ui::start_renderer_backend();
 }
@@ -72,7 +95,7 @@ void GlfwHostBase::note_event() {
 }
 
 bool GlfwHostBase::has_work(const session::AppState& state) const {
-  return settle_frames_ > 0 || ui::frame_needs_redraw(state);
+  return settle_frames_ > 0 || keys_.holding() || ui::frame_needs_redraw(state);
 }
 
 void GlfwHostBase::spend_settle_frame() { settle_frames_ = std::max(0, settle_frames_ - 1); }

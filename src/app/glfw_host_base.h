@@ -2,10 +2,12 @@
 // the input callbacks (each wakes the loop for a few settle frames, so that ImGui's press, release and hover
 // settle), the keys every host understands (F1 help, F11 full screen where the host can, F12 screenshot, a
 // dropped scene file), Dear ImGui's set-up on the window, the frame's start, the read-back and the title.
+// Key changes reach ImGui one per frame (key_queue.h): a tap, down and up between two frames, is seen.
 // A host overrides only its loop (how it waits for the next frame) and its routes for files and keys.
 #pragma once
 
 #include "frame_host.h"
+#include "key_queue.h"
 
 struct GLFWwindow;
 
@@ -37,6 +39,9 @@ class GlfwHostBase : public ui::FrameHost {
   // True while the loop must draw without waiting: settle frames left, or the state's pending work.
   bool has_work(const session::AppState& state) const;
   void spend_settle_frame();
+  // The key changes held since ImGui last read the keys, to ImGui now: call right after a frame read them and
+  // before new events arrive (the window: before it polls; the page: after each frame it draws).
+  void forward_held_keys();
 
   // ---- what a host overrides ----
   // Before the frame: a desktop window sleeps here until there is something to draw.
@@ -61,6 +66,9 @@ class GlfwHostBase : public ui::FrameHost {
  private:
   static void key_callback(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void drop_callback(GLFWwindow* window, int count, const char** paths);
+  static void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void queued_char_callback(GLFWwindow* window, unsigned int character);
+  ui::KeyEventQueue keys_;
   std::string applied_title_ = "raycam";
 };
 

@@ -13,11 +13,11 @@ struct HostCapabilities {
   // Scene files come from the browser's file picker (an Open button on the status line), not only from a
   // typed path.
   bool picks_files = false;
-  // F11 toggles full screen.
+  // F11 and the panel's button toggle full screen (a page: the browser's Fullscreen API).
   bool fullscreen = true;
 };
 
 inline constexpr HostCapabilities kDesktopHost{};
-inline constexpr HostCapabilities kPageHost{false, false, true, false};
+inline constexpr HostCapabilities kPageHost{false, false, true, true};
 
 }  // namespace raycam::session

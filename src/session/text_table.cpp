@@ -305,6 +305,7 @@ const std::vector<Translation>& translation_table() {
       {"this help", "cette aide"},
       {"F11", "F11"},
       {"fullscreen", "plein écran"},
+      {"The browser refused full screen for this page.", "Le navigateur a refusé le plein écran pour cette page."},
       {"F12", "F12"},
       {"numbered screenshot (raycam-screenshot-NNN.png)",
        "capture d'écran numérotée (raycam-screenshot-NNN.png)"},

@@ -17,6 +17,7 @@ namespace raycam::ui {
 namespace {
 constexpr const char* kKnownFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 float g_built_scale = -1.0f;
+float g_built_density = -1.0f;
 const ImGuiContext* g_built_for = nullptr;  // a new ImGui context starts with the default atlas
 bool g_truetype = false;
 
@@ -63,29 +64,34 @@ std::string find_ui_font() {
   return readable(kKnownFontPath) ? kKnownFontPath : "";
 }
 
-bool update_fonts(float font_scale) {
-  if (g_built_for == ImGui::GetCurrentContext() && std::abs(font_scale - g_built_scale) < 1e-4f) return false;
+bool update_fonts(float font_scale, float pixel_density) {
+  if (g_built_for == ImGui::GetCurrentContext() && std::abs(font_scale - g_built_scale) < 1e-4f &&
+      std::abs(pixel_density - g_built_density) < 1e-4f)
+    return false;
   static const std::string path = find_ui_font();
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
   g_truetype = false;
+  // The size in UI pixels, as at density 1; the glyphs rasterised at `pixel_density` times as many pixels.
+  const float shown_pixels = std::round(kBaseFontPixels * font_scale);
+  const float raster_pixels = std::round(kBaseFontPixels * font_scale * pixel_density);
   if (!path.empty()) {
     ImFontConfig config;
     config.OversampleH = 2;  // sharper at fractional positions; the atlas stays small at 1 oversample in y
     config.OversampleV = 1;
-    g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), std::round(kBaseFontPixels * font_scale), &config,
-                                              glyph_ranges()) != nullptr;
+    g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), raster_pixels, &config, glyph_ranges()) != nullptr;
   }
   if (!g_truetype) {
     ImFontConfig config;
-    config.SizePixels = std::round(13.0f * font_scale);  // the built-in bitmap font, scaled at build time
+    config.SizePixels = std::round(13.0f * font_scale * pixel_density);  // the built-in bitmap font, scaled at build time
     io.Fonts->AddFontDefault(&config);
   }
   io.Fonts->Build();
-  io.FontGlobalScale = 1.0f;
+  io.FontGlobalScale = g_truetype ? shown_pixels / raster_pixels : 1.0f / pixel_density;
   // The backend's next NewFrame re-creates its device objects, the font texture from the new atlas included.
   restart_renderer_backend();
   g_built_scale = font_scale;
+  g_built_density = pixel_density;
   g_built_for = ImGui::GetCurrentContext();
   return true;
 }

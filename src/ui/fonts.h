@@ -15,8 +15,10 @@ std::string find_ui_font();
 
 // Rebuilds the font atlas when the scale changed (or at the first call). Call it before the renderer
 // backend's NewFrame (ImGui_ImplOpenGL3_NewFrame), outside a frame: it re-creates the backend's font
-// texture. Returns true if it rebuilt.
-bool update_fonts(float font_scale);
+// texture. Returns true if it rebuilt. `pixel_density` is the screen's device pixels per UI pixel (a page on
+// a screen of pixel ratio 2): the glyphs are rasterised at that many pixels and drawn at the size they have
+// at density 1, so text stays crisp and the same size to the eye.
+bool update_fonts(float font_scale, float pixel_density = 1.0f);
 
 // True when the TrueType font is in use (false: built-in fallback).
 bool using_truetype_font();

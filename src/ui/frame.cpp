@@ -136,8 +136,8 @@ void apply_theme(const AppState& state, AppliedTheme& applied) {
   set_language(state.language);
 }
 
-void prepare_frame(const AppState& state) {
-  update_fonts(state.font_scale);
+void prepare_frame(const AppState& state, float pixel_density) {
+  update_fonts(state.font_scale, pixel_density);
   take_tab_key();
 }
 
@@ -457,7 +457,11 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
                 {glm::vec3(segment.from + shift), glm::vec3(segment.to + shift), colour});
           }
         }
-      const GLuint texture = observer_ ? observer_->render(frame, int(size.x), int(size.y)) : 0;
+      // One texel per framebuffer pixel (a screen of pixel ratio 2 has twice as many in each direction).
+      const ImVec2 density = ImGui::GetIO().DisplayFramebufferScale;
+      const GLuint texture =
+          observer_ ? observer_->render(frame, int(std::lround(size.x * density.x)), int(std::lround(size.y * density.y)))
+                    : 0;
       // GL textures are bottom-up: flip v.
       ImGui::GetWindowDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), top_left,
                                            {top_left.x + size.x, top_left.y + size.y}, {0, 1}, {1, 0});

@@ -88,8 +88,9 @@ class FrameRenderer {
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
-// the state's font scale when it changed (fonts.h). Both hosts (GLFW window, OSMesa) call it every frame.
-void prepare_frame(const session::AppState& state);
+// the state's font scale when it changed (fonts.h), at the host's pixel density (FrameHost::pixel_density).
+// Both hosts (GLFW window, OSMesa) call it every frame.
+void prepare_frame(const session::AppState& state, float pixel_density = 1.0f);
 
 // Dark or high-contrast theme and the font scale (lecture mode), when they differ from `applied`.
 void apply_theme(const session::AppState& state, AppliedTheme& applied);

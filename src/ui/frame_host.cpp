@@ -4,6 +4,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <chrono>
+#include <cmath>
 #include <exception>
 
 #include "gl.h"
@@ -16,12 +17,14 @@ using namespace session;  // the state the window shows and edits
 
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   FrameResult result;
-  prepare_frame(state);  // fonts at the current scale, before the backend's frame
+  prepare_frame(state, host.pixel_density());  // fonts at the current scale, before the backend's frame
   const FramebufferSize size = host.begin(state);
   if (size.empty()) return result;
   const auto start = std::chrono::steady_clock::now();
   ImGui::NewFrame();
-  result.layout = frame.build(state, size.width, size.height);
+  // Laid out in UI pixels: the framebuffer's size over the host's pixel density (ImGui's DisplaySize).
+  const ImVec2 ui_size = ImGui::GetIO().DisplaySize;
+  result.layout = frame.build(state, int(std::lround(ui_size.x)), int(std::lround(ui_size.y)));
   ImGui::Render();
   host.draw(size);
   if (const auto shot = state.requests.take(HostRequestKind::screenshot)) {

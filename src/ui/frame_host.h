@@ -33,6 +33,9 @@ class FrameHost {
   virtual void present() = 0;
   // The frame just drawn, read before present() (a window's back buffer), top row first.
   virtual gl::RgbaImage read_back() const = 0;
+  // Framebuffer pixels per UI pixel (a page on a screen of pixel ratio 2: 2): the fonts are rasterised at it.
+  // A host whose ratio is not 1 sets ImGui's DisplaySize in UI pixels and its DisplayFramebufferScale.
+  virtual float pixel_density() const { return 1.0f; }
 };
 
 // A host with no GL at all: it runs a whole frame's logic (input, the panels, the views' geometry, the casts,

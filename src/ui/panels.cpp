@@ -692,6 +692,7 @@ void lecture_section(AppState& state) {
                                                                     {Language::fr, tr_later("Français")}};
   choice(state, tr("Language / Langue###language"), state.language, kLanguages);
   if (button(tr("Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
+  record_item_rect(state, "###fullscreen");
   same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr("Help (F1)"))) state.show_help = !state.show_help;
 }

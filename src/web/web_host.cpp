@@ -7,6 +7,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 #include <string>
 
@@ -54,12 +55,80 @@ void listen_for_the_wheel() {
   });
 }
 
+// The canvas's drawing buffer is its CSS box × the screen's pixel ratio, whenever either changes: a resize
+// or the browser's zoom (the CSS box; ResizeObserver), a move to a screen of another ratio (the ratio alone: a
+// media query on the current one, armed again after each change). emscripten's GLFW kept the size it had at
+// load and the browser stretched it (spheres drawn as ellipses). The window's size as GLFW reports it
+// (glfwGetWindowSize and glfwGetFramebufferSize are the same in emscripten 3.1.6) is the buffer's; the host
+// lays the UI out in CSS pixels (frame_started).
+void follow_the_canvas_size() {
+  EM_ASM({
+    const canvas = Module.canvas;
+    let armed_for = 0;
+    const fit = function() {
+      const ratio = window.devicePixelRatio || 1;
+      if (ratio !== armed_for) {
+        armed_for = ratio;
+        window.matchMedia('(resolution: ' + ratio + 'dppx)').addEventListener('change', fit, {once: true});
+      }
+      const box = canvas.getBoundingClientRect();
+      const width = Math.max(1, Math.round(box.width * ratio));
+      const height = Math.max(1, Math.round(box.height * ratio));
+      if (canvas.width === width && canvas.height === height && Module.raycam_pixel_ratio === ratio) return;
+      canvas.width = width;
+      canvas.height = height;
+      GLFW.active.width = width;
+      GLFW.active.height = height;
+      Module.raycam_pixel_ratio = ratio;
+      Module.ccall('raycam_page_resized', null, ['number'], [ratio]);
+    };
+    // The device-pixel box also changes with the ratio alone; browsers without it observe the CSS box.
+    try {
+      new ResizeObserver(fit).observe(canvas, {box: 'device-pixel-content-box'});
+    } catch (error) {
+      new ResizeObserver(fit).observe(canvas);
+    }
+    fit();
+  });
+}
+
+// F1 (help), F11 (full screen) and F12 (screenshot) are the app's while the canvas has the focus: not the
+// browser's help, its own full screen (which a page cannot leave) or its developer tools. Escape leaves the
+// app's full screen (browsers do it themselves; this also covers those that pass the key on).
+void keep_the_app_keys() {
+  EM_ASM({
+    Module.canvas.addEventListener('keydown', function(event) {
+      if (event.key === 'F1' || event.key === 'F11' || event.key === 'F12') event.preventDefault();
+      if (event.key === 'Escape' && document.fullscreenElement) document.exitFullscreen().catch(function() {});
+    });
+  });
+}
+
+// F11 or the panel's button: the browser's Fullscreen API on the whole page (the canvas then follows its new
+// size). Asked within the key's or the click's user activation; a refusal (a frame without allowfullscreen)
+// is said on the status line.
+void toggle_fullscreen() {
+  EM_ASM({
+    if (document.fullscreenElement) {
+      document.exitFullscreen().catch(function() {});
+      return;
+    }
+    const page = document.documentElement;
+    if (!page.requestFullscreen) {
+      Module.ccall('raycam_page_fullscreen_refused', null, [], []);
+      return;
+    }
+    page.requestFullscreen().catch(function() { Module.ccall('raycam_page_fullscreen_refused', null, [], []); });
+  });
+}
+
 ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
 
 void tick() {
   if (!page.host->wants_frame(*page.state)) return;  // asleep until an event
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
+  page.host->frame_drawn();
   last_layout = result.layout;
   // Check my camera in the page: its case out as a download, its answer file asked of the browser.
   session::CheckRequest& request = page.frame->check().request();
@@ -81,7 +150,7 @@ void tick() {
     EM_ASM(document.getElementById('answer-picker').click(););  // within the click's user activation
   }
   page.downloads->offer_new_files();  // Save as, PNGs, screenshots, the check's case become downloads
-  page.state->requests.take(session::HostRequestKind::toggle_fullscreen);  // the browser's own (kPageHost)
+  if (page.state->requests.take(session::HostRequestKind::toggle_fullscreen)) toggle_fullscreen();
   page.host->apply_title();  // the tab's title
 }
 }  // namespace
@@ -110,7 +179,25 @@ bool WebHost::wants_frame(const session::AppState& state) {
   return false;
 }
 
-void WebHost::after_imgui_backend() { listen_for_the_wheel(); }
+void WebHost::after_imgui_backend() {
+  listen_for_the_wheel();
+  follow_the_canvas_size();
+  keep_the_app_keys();
+}
+
+void WebHost::resized(double pixel_ratio) {
+  pixel_ratio_ = float(pixel_ratio);
+  note_event();
+}
+
+// GLFW's window, its framebuffer and its mouse are in the canvas's device pixels; the UI is laid out in CSS
+// pixels and drawn at the ratio (ImGui's DisplayFramebufferScale), so it keeps its size to the eye.
+void WebHost::frame_started() {
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(float(size_.width) / pixel_ratio_, float(size_.height) / pixel_ratio_);
+  io.DisplayFramebufferScale = ImVec2(pixel_ratio_, pixel_ratio_);
+  if (io.MousePos.x > -FLT_MAX / 2) io.MousePos = ImVec2(io.MousePos.x / pixel_ratio_, io.MousePos.y / pixel_ratio_);
+}
 
 void run_page(session::AppState& state) {
   state.host = session::kPageHost;  // what the panels offer: the picker, answer files, no program to run
@@ -143,6 +230,31 @@ void run_page(session::AppState& state) {
 }
 
 }  // namespace raycam::web
+
+// The page's canvas listener (follow_the_canvas_size): the buffer has its new size, at this pixel ratio.
+extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_resized(double pixel_ratio) {
+  if (raycam::web::page.host) raycam::web::page.host->resized(pixel_ratio);
+}
+
+extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_fullscreen_refused() {
+  raycam::session::set_message(*raycam::web::page.state, raycam::session::MessageSource::general, true,
+                               raycam::ui::tr("The browser refused full screen for this page."));
+  raycam::web::wake_page();
+}
+
+// For the browser tests: the UI's size (CSS pixels), the pixel ratio, the text's size in UI pixels and the
+// pixels its glyphs are rasterised at.
+extern "C" EMSCRIPTEN_KEEPALIVE const char* raycam_page_display() {
+  static std::string json;
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImFont* font = io.Fonts->Fonts.empty() ? nullptr : io.Fonts->Fonts[0];
+  char text[256];
+  std::snprintf(text, sizeof text, "{\"ui\": [%.3f, %.3f], \"ratio\": %g, \"font\": %.4f, \"font_raster\": %g}",
+                io.DisplaySize.x, io.DisplaySize.y, double(raycam::web::page.host->pixel_density()),
+                font ? double(font->FontSize * io.FontGlobalScale) : 0.0, font ? double(font->FontSize) : 0.0);
+  json = text;
+  return json.c_str();
+}
 
 // The page's wheel listener (listen_for_the_wheel), in notches with the desktop's signs.
 extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_wheel(double x, double y) {

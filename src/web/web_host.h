@@ -3,6 +3,9 @@
 // owns the loop: each animation frame calls tick(), which draws only while something changed (an event,
 // then a few settle frames, or the state's pending work) and otherwise pauses the loop until the next event,
 // so an idle page casts and draws nothing, like the desktop window asleep in glfwWaitEvents.
+// The canvas's drawing buffer follows its CSS size × the screen's pixel ratio (resizes, zoom, another
+// screen); the UI is laid out in CSS pixels, drawn at the ratio (text rasterised at it, so it stays crisp and
+// the same size to the eye). Full screen is the browser's Fullscreen API (F11 or the panel's button).
 #pragma once
 
 #include "frame.h"
@@ -19,12 +22,20 @@ class WebHost : public app::GlfwHostBase {
 
   // True when this animation frame has something to draw; false puts the loop to sleep until an event.
   bool wants_frame(const session::AppState& state);
+  // After a frame drawn: ImGui read the keys; the changes held since go to it for the next frame.
+  void frame_drawn() { forward_held_keys(); }
+
+  float pixel_density() const override { return pixel_ratio_; }
+  // The canvas's new drawing buffer (already sized by the page's script) and the screen's pixel ratio.
+  void resized(double pixel_ratio);
 
  private:
   void woken() override;  // a paused loop resumes
-  void after_imgui_backend() override;  // the page's own wheel listener
+  void frame_started() override;  // ImGui's sizes and mouse from device pixels to CSS pixels
+  void after_imgui_backend() override;  // the page's own wheel, canvas size and key listeners
 
   bool sleeping_ = false;
+  float pixel_ratio_ = 1.0f;
 };
 
 // Creates the canvas's context and ImGui, then hands the loop to the browser (never returns to main's

@@ -16,7 +16,7 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
 
 
 class Page:
-    def __init__(self, folder, width=1280, height=800, downloads=None):
+    def __init__(self, folder, width=1280, height=800, downloads=None, flags=()):
         handler = functools.partial(QuietHandler, directory=folder)
         self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
         threading.Thread(target=self.server.serve_forever, daemon=True).start()
@@ -24,7 +24,7 @@ class Page:
         options = webdriver.ChromeOptions()
         for flag in ("--headless=new", "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader",
                      "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist", "--disable-dev-shm-usage",
-                     "--window-size=%d,%d" % (width, height)):
+                     "--window-size=%d,%d" % (width, height)) + tuple(flags):
             options.add_argument(flag)
         options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
         if downloads:
