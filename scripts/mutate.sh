@@ -13,6 +13,8 @@ SCRATCH=${MUTATE_DIR:-/tmp/raycam-mutate}
 JOBS=${JOBS:-2}
 TREE=$SCRATCH/tree
 BUILD=$TREE/build   # inside the tree, as in a checkout: ccache then hits on every untouched file
+WEB_BUILD=$TREE/build-web  # the web page (emcmake), built only for mutants whose targets say web:TARGET
+export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"  # emscripten's JavaScript optimiser (scripts/web.sh)
 # ccache when installed (rebuilds then take seconds), with ccache's own cache unless CCACHE_DIR says otherwise.
 launcher=()
 if command -v ccache > /dev/null; then
@@ -21,7 +23,7 @@ if command -v ccache > /dev/null; then
 fi
 
 names=() files=() edits=() targets=() tests=()
-# mutant NAME FILE SED-SCRIPT TARGETS CTEST-REGEX
+# mutant NAME FILE SED-SCRIPT TARGETS CTEST-REGEX   (a target web:NAME is built in the web page's build)
 mutant() { names+=("$1"); files+=("$2"); edits+=("$3"); targets+=("$4"); tests+=("$5"); }
 
 CORE="raycam_core_tests"
@@ -231,6 +233,15 @@ mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed)
 # A student's and an instructor's walk through the merged window (Tab, non-square, files, figures) found these.
 mutant demo-note-stays-over-the-file src/session/app_state.cpp 's/^  if (!state.message_is_error \&\& state.message == demo_note) state.message.clear();/  (void)demo_note;/' "$SESSION" "^session: ?the note that the other dimension"
 mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.res_rows) state.res_rows = res;$/  (void)0;/' "$SESSION" "^session: ?with non-square on, a show-me"
+# --- #34 page host ---
+# The page's canvas, full screen, idle loop and keys (tests/web/test_host.py, headless Chromium).
+WEB_HOST_TEST="^web: the page's host"
+mutant page-canvas-not-resized src/web/web_host.cpp 's/new ResizeObserver(fit)/new ResizeObserver(function() {})/g' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-pixel-ratio-ignored src/web/web_host.cpp 's/const ratio = window.devicePixelRatio || 1;/const ratio = 1;/' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-idle-loop-spins src/web/web_host.cpp 's/^  emscripten_pause_main_loop();/  (void)0;/' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-key-taps-unqueued src/app/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS)/true/' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' || event.key === 'F12') event.preventDefault();/event.key === 'F11') event.preventDefault();/" "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
@@ -247,11 +258,12 @@ wanted() {
 
 # A scratch copy of the working tree as it is (tracked and new files, build directories left out).
 mkdir -p "$TREE"
-find "$TREE" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
+find "$TREE" -mindepth 1 -maxdepth 1 ! -name build ! -name build-web -exec rm -rf {} +
 (cd "$ROOT" && git ls-files -co --exclude-standard -z | grep -zv '^build/' |
    tar --null --ignore-failed-read -T - -cf - 2>/dev/null) | tar -xf - -C "$TREE" ||
   { echo "mutate.sh: copying the tree failed" >&2; exit 2; }
-cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" > "$SCRATCH/configure.log" 2>&1 ||
+cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRAYCAM_WEB_DIR="$WEB_BUILD" "${launcher[@]}" \
+  > "$SCRATCH/configure.log" 2>&1 ||
   { echo "mutate.sh: configure failed, see $SCRATCH/configure.log" >&2; exit 2; }
 echo "mutate.sh: building the unmutated tree in $BUILD${launcher:+ (ccache)}"
 cmake --build "$BUILD" -j"$JOBS" > "$SCRATCH/build.log" 2>&1 || { echo "mutate.sh: the unmutated tree does not build, see $SCRATCH/build.log" >&2; exit 2; }
@@ -264,12 +276,26 @@ while IFS=$'\t' read -r mutant_name block_name; do
   block_of[$mutant_name]=$block_name
 done < <(awk '/^# --- .* ---$/ { sub(/^# --- /, ""); sub(/ ---$/, ""); block = $0 } /^mutant / { print $2 "\t" block }' "$0")
 known_targets=$(cmake --build "$BUILD" --target help 2>/dev/null)
+# A mutant's targets: native ones in $BUILD, web:NAME ones in $WEB_BUILD (configured at the first).
+build_targets() {
+  local native=() web=() target
+  for target in $1; do
+    case $target in web:*) web+=("${target#web:}") ;; *) native+=("$target") ;; esac
+  done
+  if [ ${#web[@]} -gt 0 ]; then
+    [ -f "$WEB_BUILD/CMakeCache.txt" ] ||
+      emcmake cmake -S "$TREE" -B "$WEB_BUILD" -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" || return 1
+    cmake --build "$WEB_BUILD" -j"$JOBS" --target "${web[@]}" || return 1
+  fi
+  [ ${#native[@]} -eq 0 ] || cmake --build "$BUILD" -j"$JOBS" --target "${native[@]}"
+}
 report=()
 for i in "${!names[@]}"; do
   name=${names[$i]} file=${files[$i]}
   wanted "$name" || continue
   missing=""
   for target in ${targets[$i]}; do
+    if [ "${target#web:}" != "$target" ]; then command -v emcmake > /dev/null || missing="$missing $target"; continue; fi
     grep -q -E "^\.\.\. $target( |$)" <<< "$known_targets" || missing="$missing $target"
   done
   if [ -n "$missing" ]; then  # e.g. the Embree test without libembree-dev
@@ -287,7 +313,7 @@ for i in "${!names[@]}"; do
   if cmp -s "$ROOT/$file" "$TREE/$file"; then
     result="NOT APPLIED (the code it edits moved: update the mutant)"
     broken=$((broken + 1))
-  elif ! cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > "$SCRATCH/$name.build.log" 2>&1; then
+  elif ! build_targets "${targets[$i]}" > "$SCRATCH/$name.build.log" 2>&1; then
     result="DOES NOT BUILD (see $SCRATCH/$name.build.log)"
     broken=$((broken + 1))
   elif ctest --test-dir "$BUILD" -j"$JOBS" -R "${tests[$i]}" -LE slow --timeout 120 > "$SCRATCH/$name.test.log" 2>&1; then
@@ -299,7 +325,7 @@ for i in "${!names[@]}"; do
     caught=$((caught + 1))
   fi
   cp "$ROOT/$file" "$TREE/$file"  # restored, and its targets rebuilt, before the next mutant
-  cmake --build "$BUILD" -j"$JOBS" --target ${targets[$i]} > /dev/null 2>&1
+  build_targets "${targets[$i]}" > /dev/null 2>&1
   printf '%-32s %s\n' "$name" "$result"
   report+=("$name: $result")
   b=${block_of[$name]:-?}

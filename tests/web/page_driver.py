@@ -1,8 +1,10 @@
 """The web page in headless Chromium, for the browser tests and the speed script: serves a built web folder
-(build-web/) on a free local port and opens it with Selenium (Debian's chromium + chromium-driver).
+(build-web/) on a free local port, or opens one of its files from a file:// URL, with Selenium (Debian's
+chromium + chromium-driver).
 WebGL 2 runs on SwiftShader, Chromium's CPU renderer, so no GPU is needed."""
 import functools
 import http.server
+import pathlib
 import threading
 import time
 
@@ -16,11 +18,16 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
 
 
 class Page:
-    def __init__(self, folder, width=1280, height=800, downloads=None, flags=()):
-        handler = functools.partial(QuietHandler, directory=folder)
-        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-        threading.Thread(target=self.server.serve_forever, daemon=True).start()
-        self.url = "http://127.0.0.1:%d/index.html" % self.server.server_address[1]
+    def __init__(self, folder, width=1280, height=800, downloads=None, flags=(), file_name=None):
+        """file_name: open folder/file_name from its file:// URL, with no server (the single-file page)."""
+        self.server = None
+        if file_name:
+            self.url = pathlib.Path(folder, file_name).resolve().as_uri()
+        else:
+            handler = functools.partial(QuietHandler, directory=folder)
+            self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+            threading.Thread(target=self.server.serve_forever, daemon=True).start()
+            self.url = "http://127.0.0.1:%d/index.html" % self.server.server_address[1]
         options = webdriver.ChromeOptions()
         for flag in ("--headless=new", "--no-sandbox", "--use-gl=angle", "--use-angle=swiftshader",
                      "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist", "--disable-dev-shm-usage",
@@ -51,4 +58,5 @@ class Page:
 
     def close(self):
         self.driver.quit()
-        self.server.shutdown()
+        if self.server:
+            self.server.shutdown()
