@@ -24,16 +24,23 @@ extern "C" void on_quit_signal(int) { quit_signal = 1; }
 
 GlfwHost& desktop_host_of(GLFWwindow* window) { return static_cast<GlfwHost&>(host_of(window)); }
 
-// Installed over ImGui's backend's key and character callbacks (which chain to ours): a key's changes reach
-// ImGui one per frame, characters in order with them (KeyEventQueue).
+// Installed over ImGui's backend's key, character and mouse button callbacks (which chain to ours): a key's
+// changes reach ImGui one per frame, characters in order with them, and what follows a click in the next
+// frame (KeyEventQueue).
 void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   desktop_host_of(window).note_event();
-  if (action == GLFW_REPEAT || desktop_host_of(window).keys().arrive(key, action == GLFW_PRESS))
+  const bool modifier = key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER;  // GLFW's eight modifiers
+  if (action == GLFW_REPEAT || desktop_host_of(window).keys().arrive(key, action == GLFW_PRESS, modifier))
     ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
 }
 void queued_char_callback(GLFWwindow* window, unsigned int character) {
   desktop_host_of(window).note_event();
   if (desktop_host_of(window).keys().arrive_character(character)) ImGui_ImplGlfw_CharCallback(window, character);
+}
+void queued_button_callback(GLFWwindow* window, int button, int action, int mods) {
+  desktop_host_of(window).note_event();
+  if (desktop_host_of(window).keys().arrive_button(button, action == GLFW_PRESS))
+    ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
 }
 
 void toggle_fullscreen(GLFWwindow* window, int saved[4]) {
@@ -65,12 +72,15 @@ void GlfwHost::install_own_callbacks() {
 void GlfwHost::after_imgui_backend() {
   glfwSetKeyCallback(window_, queued_key_callback);  // over the backend's, which they call
   glfwSetCharCallback(window_, queued_char_callback);
+  glfwSetMouseButtonCallback(window_, queued_button_callback);
 }
 
 void GlfwHost::wait_for_frame(const session::AppState& state) {
   // A key's changes held since the last frame, before this frame's events (key_queue.h).
   for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
-    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
+    const int action = e.press ? GLFW_PRESS : GLFW_RELEASE;
+    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, action, 0);
+    else if (e.button >= 0) ImGui_ImplGlfw_MouseButtonCallback(window_, e.button, action, 0);
     else ImGui_ImplGlfw_CharCallback(window_, e.character);
   }
   if (scripted_) {

@@ -295,6 +295,21 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
   CHECK(state.message == "saved scene.json");
 }
 
+TEST_CASE("Export figure's replace question shows the files found when asked, without drawing them again",
+          "[ui][figure]") {
+  // The question is drawn every frame: from the list found at the click, not by building the figure again
+  // to look for the files (a whole figure per frame; and a name no longer a figure's threw out of the frame).
+  TextCapture text;
+  session::AppState state = state_for({"--view", "2d"});
+  state.figure_replace_pending = 2;
+  state.figure_replace_files = {"/home/ada/figs/steps-a.svg", "/home/ada/figs/steps-b.svg",
+                                "/home/ada/figs/steps-c.svg", "/home/ada/figs/steps-d.svg"};
+  state.figure_path = "notes.gif";  // no figure's name: building the figure for it throws
+  std::string asking;
+  REQUIRE_NOTHROW(asking = text.capture([&] { ui::construction_section(state); }));
+  CHECK(asking.find("4 files already exist: /home/ada/figs/steps-a…d.svg. Replace them?") != std::string::npos);
+}
+
 TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no rays", "[ui][figure]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
