@@ -239,6 +239,12 @@ mutant clicks-not-spread src/ui/key_queue.h 's/  static bool changes_a_key(const
 mutant chord-split-by-its-modifier src/ui/key_queue.h 's/    return (changes_a_key(e) \&\& changed(id_of(e))) || (e.modifier \&\& pressed_key_);/    return changes_a_key(e) \&\& changed(id_of(e));/' "raycam_ui_tests" "^ui: ?a chord whose modifier"
 mutant figure-message-first-file-only src/session/figure_export_text.cpp 's/^  return (first.parent_path() \/ range).string();$/  return files.front();/' "$SESSION" "^session: ?Export figure's messages"
 mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool all = state.figure_replace_pending == 2;$/&\n    state.figure_replace_files = existing_figure_files(state, state.figure_path, all);/' "raycam_ui_tests" "^ui: ?Export figure's replace question shows"
+mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return tr(name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -104,8 +104,17 @@ const std::vector<Translation>& translation_table() {
       // ---- overhead_view.cpp: the construction's intermediate camera ----
       {"eye E: z = %.2f", "œil E : z = %.2f"},
       {"side view: x →, z ↑", "vue de côté : x →, z ↑"},
+      // ---- view.cpp: the built-in demo's objects (scenes/classic2d.json, classic3d.json), named in the
+      // window's language; a file's names are shown as written ----
+      {"red", "rouge"},
+      {"green", "vert"},
+      {"blue", "bleu"},
+      {"yellow", "jaune"},
+      {"ground", "sol"},
       {"k = 0", "k = 0"},
-      {"eye's left (column 0)", "gauche de l'œil (colonne 0)"},
+      {"k = 0 (eye's right)", "k = 0 (droite de l'œil)"},
+      {"column 0", "colonne 0"},
+      {"column 0 (eye's left)", "colonne 0 (gauche de l'œil)"},
 
       // ---- panels.cpp: the 3D construction, step by step (i11views) ----
       {"Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "

@@ -503,9 +503,7 @@ void inspector_section(const AppState& state) {
   if (ray.hit.id < 0) {
     wrapped_between_words(tr("hit: nothing (background)"));
   } else {
-    const std::string& name = std::visit(
-        [&](const auto& view) -> const std::string& { return objects_of(view.scene)[std::size_t(ray.hit.id)].name; },
-        state.view);
+    const std::string name = shown_object_name(state.view, std::size_t(ray.hit.id));
     wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }

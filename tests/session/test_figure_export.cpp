@@ -144,3 +144,24 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
     CHECK(question.size() < folder.size() + 70);
   }
 }
+
+TEST_CASE("Export figure names the demo's objects in the window's language", "[ui][figure]") {
+  struct Restore {
+    ui::Language language = ui::current_language();
+    ~Restore() { ui::set_language(language); }
+  } restore;
+  const test::ScratchDir scratch("figure-export-names");
+  session::AppState state = test::state_for({"--view", "2d"});
+  const auto tex_of = [&](ui::Language language) {
+    ui::set_language(language);
+    const auto files = session::export_construction_figure(state, scratch.path("names.tex"), false);
+    std::ifstream in(files.at(0));
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string french = tex_of(ui::Language::fr), english = tex_of(ui::Language::en);
+  for (const auto& [en, fr] : {std::pair{"{red}", "{rouge}"}, std::pair{"{green}", "{vert}"}}) {
+    CHECK(french.find(fr) != std::string::npos);
+    CHECK(french.find(en) == std::string::npos);
+    CHECK(english.find(en) != std::string::npos);
+  }
+}
