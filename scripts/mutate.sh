@@ -94,7 +94,7 @@ SESSION="raycam_session_tests"
 mutant save-straight-to-target src/io/scene_file.cpp 's/^  const std::string temporary = path + ".tmp";/  const std::string temporary = path;/' "$SESSION" "^session:"
 mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state);$/  (void)place_pin;/' "$SESSION" "^session:"
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
-mutant key-changes-not-spread src/ui/key_queue.h 's/    if (held_.empty() \&\& (e.key < 0 || !changed(e.key))) {/    if (true) {/' "raycam_ui_tests" "^ui:"
+mutant key-changes-not-spread src/ui/key_queue.h 's/    if (held_.empty() \&\& !must_wait(e)) {/    if (true) {/' "raycam_ui_tests" "^ui:"
 mutant characters-overtake-keys src/ui/key_queue.h 's/  bool arrive_character(unsigned int character) { return arrive(Event{-1, false, character}); }/  bool arrive_character(unsigned int) { return true; }/' "raycam_ui_tests" "^ui:"
 mutant inspector-row-plus-one src/ui/panels.cpp 's/    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));/    wrapped_between_words(trf("row %d, column %d", pixel->row + 1, pixel->column));/' "raycam_ui_tests" "^ui: ?the ray inspector"
 mutant checkbox-label-not-wrapped src/ui/panels.cpp 's/  if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)/  if (true)/' "raycam_render_tests" "^render: ?at 1x to 3x"
@@ -242,6 +242,20 @@ mutant page-idle-loop-spins src/web/web_host.cpp 's/^  emscripten_pause_main_loo
 mutant page-key-taps-unqueued src/app/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS)/true/' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' || event.key === 'F12') event.preventDefault();/event.key === 'F11') event.preventDefault();/" "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
+# --- #35 lecture words ---
+# The lecture-hall walk at 3x in French (issue 35 items 2, 5, 6, 8): what a typed path, an export and a label say.
+mutant open-failure-empties-box src/session/app_state.cpp 's/^    \/\/ place, not retyped); the message names the file and the reason.$/&\n    state.path_input = scene_path(state);/' "$SESSION" "^session: ?a failed open"
+mutant open-keeps-look-at src/session/app_state.cpp '/^    state.mistake_look_at.clear();  \/\/ a "show me" pointed at the old scene/d' "$SESSION" "^session: ?Open resets every field"
+mutant clicks-not-spread src/ui/key_queue.h 's/  static bool changes_a_key(const Event\& e) { return e.key >= 0 || e.button >= 0; }/  static bool changes_a_key(const Event\& e) { return e.key >= 0; }/' "raycam_ui_tests" "^ui: ?Ctrl\+A, Home and a double-click"
+mutant chord-split-by-its-modifier src/ui/key_queue.h 's/    return (changes_a_key(e) \&\& changed(id_of(e))) || (e.modifier \&\& pressed_key_);/    return changes_a_key(e) \&\& changed(id_of(e));/' "raycam_ui_tests" "^ui: ?a chord whose modifier"
+mutant figure-message-first-file-only src/session/figure_export_text.cpp 's/^  return (first.parent_path() \/ range).string();$/  return files.front();/' "$SESSION" "^session: ?Export figure's messages"
+mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool all = state.figure_replace_pending == 2;$/&\n    state.figure_replace_files = existing_figure_files(state, state.figure_path, all);/' "raycam_ui_tests" "^ui: ?Export figure's replace question shows"
+mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
+mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return tr(name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

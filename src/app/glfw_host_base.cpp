@@ -33,13 +33,21 @@ void GlfwHostBase::key_callback(GLFWwindow* window, int key, int, int action, in
   host.key_pressed(key);
 }
 
-// Installed over ImGui's backend's key and character callbacks (which chain to key_callback): a key's changes
-// reach ImGui one per frame, characters in order with them (KeyEventQueue).
+// Installed over ImGui's backend's key, character and mouse button callbacks (which chain to ours): a key's
+// changes reach ImGui one per frame, characters in order with them, and what follows a click in the next
+// frame (KeyEventQueue).
 void GlfwHostBase::queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   GlfwHostBase& host = host_of(window);
   host.note_event();
-  if (action == GLFW_REPEAT || host.keys_.arrive(key, action == GLFW_PRESS))
+  const bool modifier = key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER;  // GLFW's eight modifiers
+  if (action == GLFW_REPEAT || host.keys_.arrive(key, action == GLFW_PRESS, modifier))
     ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+void GlfwHostBase::queued_button_callback(GLFWwindow* window, int button, int action, int mods) {
+  GlfwHostBase& host = host_of(window);
+  host.note_event();
+  if (host.keys_.arrive_button(button, action == GLFW_PRESS))
+    ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
 }
 void GlfwHostBase::queued_char_callback(GLFWwindow* window, unsigned int character) {
   GlfwHostBase& host = host_of(window);
@@ -49,7 +57,9 @@ void GlfwHostBase::queued_char_callback(GLFWwindow* window, unsigned int charact
 
 void GlfwHostBase::forward_held_keys() {
   for (const ui::KeyEventQueue::Event& e : keys_.start_frame()) {
-    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, e.press ? GLFW_PRESS : GLFW_RELEASE, 0);
+    const int action = e.press ? GLFW_PRESS : GLFW_RELEASE;
+    if (e.key >= 0) ImGui_ImplGlfw_KeyCallback(window_, e.key, 0, action, 0);
+    else if (e.button >= 0) ImGui_ImplGlfw_MouseButtonCallback(window_, e.button, action, 0);
     else ImGui_ImplGlfw_CharCallback(window_, e.character);
   }
 }
@@ -79,6 +89,7 @@ void GlfwHostBase::start_imgui() {
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   glfwSetKeyCallback(window_, queued_key_callback);  // over the backend's, which they call
   glfwSetCharCallback(window_, queued_char_callback);
+  glfwSetMouseButtonCallback(window_, queued_button_callback);
   after_imgui_backend();
   ui::start_renderer_backend();
 }

@@ -68,6 +68,7 @@ class GlfwHostBase : public ui::FrameHost {
   static void drop_callback(GLFWwindow* window, int count, const char** paths);
   static void queued_key_callback(GLFWwindow* window, int key, int scancode, int action, int mods);
   static void queued_char_callback(GLFWwindow* window, unsigned int character);
+  static void queued_button_callback(GLFWwindow* window, int button, int action, int mods);
   ui::KeyEventQueue keys_;
   std::string applied_title_ = "raycam";
 };

@@ -108,7 +108,7 @@ CLI::Option_group* add_view_options(CLI::App& command, ViewFlags& view) {
                              number_in({0.0, kMaxCoordinate, true, false}),
                              [&camera](double d) { camera.d = d; });
   add_checked_option<double>(
-      *group, "--theta", "DEG", "azimuth of CP around C, degrees (2D default 90, 3D 30)",
+      *group, "--theta", "DEG", "azimuth of CP around C, degrees (default: the 2D demo 70, a 2D file 90, 3D 30)",
       number_in({-1e6, 1e6}, "an angle in degrees"), [&camera](double a) { camera.theta_deg = a; });
   add_checked_option<double>(
       *group, "--phi", "DEG", "3D: polar angle of CP from +z, degrees (default 60; 0 = above, 180 = below)",

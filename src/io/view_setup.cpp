@@ -39,6 +39,7 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     setup.file.dimension = flags.dimension.value_or(3);
     setup.file.scene2d = demo_scene_2d();
     setup.file.scene3d = demo_scene_3d();
+    if (setup.file.dimension == 2) setup.file.camera.theta_deg = kDemoTheta2DDegrees;  // --theta still wins
   }
   setup.dimension = setup.file.dimension;
   const bool is_2d = setup.dimension == 2;
@@ -67,6 +68,12 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     setup.camera3d = camera3d_from_preset(preset);
   }
   return setup;
+}
+
+Camera2D demo_camera_2d() {
+  CameraPreset preset;
+  preset.theta_deg = kDemoTheta2DDegrees;
+  return camera2d_from_preset(preset);
 }
 
 Camera2D camera2d_from_preset(const CameraPreset& preset) {

@@ -160,6 +160,7 @@ bool open_scene(AppState& state, const std::string& path) {
     adopt_view_setup(state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
+    state.mistake_look_at.clear();  // a "show me" pointed at the old scene's objects
     state.cameras_dirty = true;
     state.path_input = path;
     state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
@@ -167,8 +168,8 @@ bool open_scene(AppState& state, const std::string& path) {
     set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
-    // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
-    state.path_input = scene_path(state);
+    // The scene and the camera stay as they were; the Open box keeps what was typed (a typo is fixed in
+    // place, not retyped); the message names the file and the reason.
     set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
     return false;
   }

@@ -131,6 +131,7 @@ struct PanelState {
   int figure_rays = 5;         // primary rays per 2D frame, as raycam-cli figure --rays
   bool figure_matrix = true;   // each frame's matrix printed
   int figure_replace_pending = 0;  // Export figure asked to replace existing files: 1 the step, 2 every step
+  std::vector<std::string> figure_replace_files;  // the files it asked about (full paths), found once when asked
 };
 
 // The host: what it can do (set once by the executable), what the session asks of it, and the frame clock.

@@ -31,8 +31,8 @@ Export prepare(const AppState& state, const std::string& path, bool all_steps) {
                                                                          : figure::Language::en,
                                       state.figure_rays};
   e.drawn = std::visit(
-      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(view.scene, view.camera, options); },
-                 [&](const View3D& view) { return figure::construction_figure_3d(view.scene, view.camera, options); }},
+      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(scene_as_shown(view), view.camera, options); },
+                 [&](const View3D& view) { return figure::construction_figure_3d(scene_as_shown(view), view.camera, options); }},
       state.view);
   // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
   const int count = int(e.drawn.frames.size());

@@ -104,8 +104,17 @@ const std::vector<Translation>& translation_table() {
       // ---- overhead_view.cpp: the construction's intermediate camera ----
       {"eye E: z = %.2f", "œil E : z = %.2f"},
       {"side view: x →, z ↑", "vue de côté : x →, z ↑"},
+      // ---- view.cpp: the built-in demo's objects (scenes/classic2d.json, classic3d.json), named in the
+      // window's language; a file's names are shown as written ----
+      {"red", "rouge"},
+      {"green", "vert"},
+      {"blue", "bleu"},
+      {"yellow", "jaune"},
+      {"ground", "sol"},
       {"k = 0", "k = 0"},
-      {"eye's left (column 0)", "gauche de l'œil (colonne 0)"},
+      {"k = 0 (eye's right)", "k = 0 (droite de l'œil)"},
+      {"column 0", "colonne 0"},
+      {"column 0 (eye's left)", "colonne 0 (gauche de l'œil)"},
 
       // ---- panels.cpp: the 3D construction, step by step (i11views) ----
       {"Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
@@ -270,7 +279,8 @@ const std::vector<Translation>& translation_table() {
       {"format###figure_format", "format###figure_format"},
       {"rays###figure_rays", "rayons###figure_rays"},
       {"matrix###figure_matrix", "matrice###figure_matrix"},
-      {"wrote %d files: %s …", "%d fichiers écrits : %s …"},
+      {"wrote %d files: %s", "%d fichiers écrits : %s"},
+      {"%d files already exist: %s. Replace them?", "%d fichiers existent déjà : %s. Les remplacer ?"},
       {"Replace###figure_replace", "Remplacer###figure_replace"},
       {"Cancel###figure_cancel", "Annuler###figure_cancel"},
       {"Screenshot (F12)", "Capture d'écran (F12)"},

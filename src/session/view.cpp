@@ -1,5 +1,7 @@
 #include "view.h"
 
+#include "text.h"
+
 namespace raycam::session {
 
 namespace {
@@ -53,5 +55,24 @@ SceneFile scene_file_of(const View& view, const CameraPreset& camera) {
              view);
   return file;
 }
+
+namespace {
+template <class AnyView>
+std::string name_as_shown(const AnyView& view, const std::string& name) {
+  return view.scene_path.empty() ? tr(name.c_str()) : name;  // the demo's names are keys of the text table
+}
+template <class AnyView>
+auto with_names_as_shown(const AnyView& view) {
+  auto scene = view.scene;
+  for (auto& object : objects_of(scene)) object.name = name_as_shown(view, object.name);
+  return scene;
+}
+}  // namespace
+
+std::string shown_object_name(const View& view, std::size_t id) {
+  return std::visit([&](const auto& v) { return name_as_shown(v, objects_of(v.scene).at(id).name); }, view);
+}
+Scene2D scene_as_shown(const View2D& view) { return with_names_as_shown(view); }
+Scene3D scene_as_shown(const View3D& view) { return with_names_as_shown(view); }
 
 }  // namespace raycam::session

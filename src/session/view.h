@@ -117,4 +117,12 @@ void validate(const View& view);
 // The scene file holding a view's scene and a camera preset (for saving and for the checker's case).
 SceneFile scene_file_of(const View& view, const CameraPreset& camera);
 
+// The names the window shows (the inspector, the figures): the built-in demo is raycam's own scene (scenes/
+// classic2d.json and classic3d.json name its objects in English), so its names follow the window's language;
+// a file's names stay as written.
+std::string shown_object_name(const View& view, std::size_t id);
+// The view's scene with those names (for a figure drawn in the window's language).
+Scene2D scene_as_shown(const View2D& view);
+Scene3D scene_as_shown(const View3D& view);
+
 }  // namespace raycam::session

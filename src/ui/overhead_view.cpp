@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/trigonometric.hpp>
 #include <numeric>
 #include <vector>
 
@@ -17,6 +18,7 @@ using namespace session;  // the state the window shows and edits
 namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
 constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
+constexpr int kLabelRings = 7;         // a screen end's label is at most 4 px + 3 lines from it
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
@@ -197,11 +199,12 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   draw->PopClipRect();
 }
 
-// The 2D screen segment's landmarks: pixel k = 0 (the handout's first pixel, at canonical x near -1) and the
-// other end, the eye's left, where the colour bar's column 0 is; and, when the pixels are few enough to
-// tell apart, their edges as ticks (the rays leave from the centres between them, or from the ticks under
-// the "pixel edges" mistake).
-void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camera2D& camera) {
+// The 2D screen segment's landmarks: pixel k = 0 (the handout's first pixel, at canonical x near -1: the
+// eye's right) and the other end, the eye's left, where the colour bar's column 0 is; and, when the pixels
+// are few enough to tell apart, their edges as ticks (the rays leave from the centres between them, or from
+// the ticks under the "pixel edges" mistake). Each label sits beside its own end, whatever the font's size:
+// its long text where it fits, else its short one, off the discs, the markers and the other label.
+void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppState& state, const Camera2D& camera) {
   const glm::dmat3& world_from_camera = camera.world_from_camera();
   auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
   const int n = camera.pixel_count();
@@ -219,19 +222,41 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camer
     }
   const ImVec2 first = at(camera.canonical_pixel(0).x);
   draw->AddCircleFilled(first, 5.0f, kFirstPixelColour);
-  std::vector<std::pair<ImVec2, ImVec2>> placed;  // the labels never print over each other (3× fonts)
-  auto label = [&](ImVec2 end, double outward, const char* text) {
-    const ImVec2 size = ImGui::CalcTextSize(text);
-    const float x = end.x + float(outward * along.x * 12.0) - (outward * along.x < 0 ? size.x : 0.0f);
-    const float y = end.y + float(outward * along.y * 12.0) - 0.5f * size.y;
-    const ImVec2 at = place_label({x, y}, size, draw->GetClipRectMin(), draw->GetClipRectMax(), placed);
-    draw->AddText(at, kFirstPixelColour, text);
-    placed.push_back({at, size});
-  };
-  label(minus, -1.0, tr("k = 0"));
-  label(plus, 1.0, tr("eye's left (column 0)"));
-}
 
+  // What a label must not cover: every disc, the eye, the target and both ends' markers.
+  std::vector<ScreenDisc> avoid;
+  for (const gl::Disc& disc : overhead_discs(state)) avoid.push_back({m.to_screen(disc.centre), float(disc.radius) * m.scale});
+  avoid.push_back({m.to_screen(camera.eye()), 6.0f});
+  avoid.push_back({m.to_screen(active_target_xy(state)), 8.0f});
+  avoid.push_back({first, 6.0f});
+  std::vector<LabelBox> placed;
+  auto label = [&](ImVec2 end, glm::dvec2 outward, const char* long_text, const char* short_text, const char* id) {
+    // The long text only right at the end (far from it, it would read as the other end's); else the short.
+    const char* text = long_text;
+    std::optional<ImVec2> spot = label_beside(end, outward, ImGui::CalcTextSize(long_text), draw->GetClipRectMin(),
+                                              draw->GetClipRectMax(), placed, avoid, 2);
+    if (!spot) {
+      text = short_text;
+      spot = label_beside(end, outward, ImGui::CalcTextSize(short_text), draw->GetClipRectMin(),
+                          draw->GetClipRectMax(), placed, avoid, kLabelRings);
+    }
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    // Nowhere free (a view smaller than the text): beyond the end, kept inside the view and off the other.
+    const ImVec2 top_left =
+        spot ? *spot
+             : place_label({end.x + float(outward.x * 12.0) - (outward.x < 0 ? size.x : 0.0f), end.y - 0.5f * size.y},
+                           size, draw->GetClipRectMin(), draw->GetClipRectMax(), boxes_as_pairs(placed));
+    // Pushed away from its end by discs: a thin line from the end to the label says whose it is.
+    const ImVec2 nearest{std::clamp(end.x, top_left.x, top_left.x + size.x), std::clamp(end.y, top_left.y, top_left.y + size.y)};
+    if (std::hypot(nearest.x - end.x, nearest.y - end.y) > 0.6f * size.y)
+      draw->AddLine(end, nearest, (kFirstPixelColour & 0x00FFFFFF) | 0xA0000000, 1.0f);
+    draw->AddText(top_left, kFirstPixelColour, text);
+    placed.push_back({top_left, size});
+    if (state.widget_rects) (*state.widget_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
+  };
+  label(minus, -along, tr("k = 0 (eye's right)"), tr("k = 0"), "###label_k0");
+  label(plus, along, tr("column 0 (eye's left)"), tr("column 0"), "###label_column0");
+}
 
 // Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
 // the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
@@ -273,6 +298,55 @@ void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
   }
 }
 }  // namespace
+
+std::vector<std::pair<ImVec2, ImVec2>> boxes_as_pairs(const std::vector<LabelBox>& boxes) {
+  std::vector<std::pair<ImVec2, ImVec2>> pairs;
+  for (const LabelBox& box : boxes) pairs.push_back({box.at, box.size});
+  return pairs;
+}
+
+bool box_meets_disc(const LabelBox& box, const ScreenDisc& disc) {
+  const float x = std::clamp(disc.centre.x, box.at.x, box.at.x + box.size.x);
+  const float y = std::clamp(disc.centre.y, box.at.y, box.at.y + box.size.y);
+  const float dx = x - disc.centre.x, dy = y - disc.centre.y;
+  return dx * dx + dy * dy < disc.radius * disc.radius;
+}
+
+std::optional<ImVec2> label_beside(ImVec2 anchor, glm::dvec2 outward, ImVec2 size, ImVec2 low, ImVec2 high,
+                                   const std::vector<LabelBox>& placed, const std::vector<ScreenDisc>& avoid,
+                                   int rings) {
+  const glm::dvec2 o = glm::length(outward) > 0 ? glm::normalize(outward) : glm::dvec2(1, 0);
+  // Half the box's extent along a unit direction: a box centred at anchor + v·(gap + extent(v)) starts gap
+  // pixels from the anchor along v.
+  const auto extent = [&](glm::dvec2 v) { return std::abs(v.x) * 0.5 * size.x + std::abs(v.y) * 0.5 * size.y; };
+  const glm::dvec2 a{anchor.x, anchor.y};
+  const auto overlaps = [](const LabelBox& p, const LabelBox& q) {
+    return p.at.x < q.at.x + q.size.x && q.at.x < p.at.x + p.size.x && p.at.y < q.at.y + q.size.y &&
+           q.at.y < p.at.y + p.size.y;
+  };
+  // Beyond the end first, then turning away from that direction either way, 30° at a time.
+  constexpr double kTurns[] = {0, 30, -30, 60, -60, 90, -90, 120, -120, 150, -150};
+  for (int ring = 0; ring < rings; ++ring) {
+    const double gap = 4.0 + ring * 0.5 * size.y;  // half a line further each time
+    for (const double turn : kTurns) {
+      const double c = std::cos(glm::radians(turn)), s = std::sin(glm::radians(turn));
+      const glm::dvec2 v{c * o.x - s * o.y, s * o.x + c * o.y};
+      glm::dvec2 centre = a + v * (gap + extent(v));
+      // Never reaching back past the anchor towards the segment's other end (it would read as that end's).
+      const double back = glm::dot(centre - a, o) - extent(o);
+      if (back < -4.0) centre += o * (-4.0 - back);
+      const LabelBox box{{float(centre.x - 0.5 * size.x), float(centre.y - 0.5 * size.y)}, size};
+      const bool inside = box.at.x >= low.x + 2 && box.at.y >= low.y + 2 && box.at.x + size.x <= high.x - 2 &&
+                          box.at.y + size.y <= high.y - 2;
+      if (!inside) continue;
+      if (std::any_of(placed.begin(), placed.end(), [&](const LabelBox& other) { return overlaps(box, other); }))
+        continue;
+      if (std::any_of(avoid.begin(), avoid.end(), [&](const ScreenDisc& d) { return box_meets_disc(box, d); })) continue;
+      return box.at;
+    }
+  }
+  return std::nullopt;
+}
 
 ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
                    const std::vector<std::pair<ImVec2, ImVec2>>& placed) {
@@ -338,7 +412,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
   const int step = state.construction_step;
   std::visit(overloaded{[&](const View2D& view) {
-                          mark_screen_segment(draw, m, view.camera);
+                          mark_screen_segment(draw, m, state, view.camera);
                           if (!final_camera)
                             draw_camera(draw, m, construction_step(view.camera.placement(), step),
                                         kConstructionColour, far_length * 0.3, true);

@@ -46,6 +46,26 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const sessi
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const session::AppState& state, ImVec2 screen_point);
 
+// A label's box on screen (top-left, size), and a disc on screen a label must not cover.
+struct LabelBox {
+  ImVec2 at, size;
+};
+struct ScreenDisc {
+  ImVec2 centre;
+  float radius = 0.0f;
+};
+std::vector<std::pair<ImVec2, ImVec2>> boxes_as_pairs(const std::vector<LabelBox>& boxes);
+bool box_meets_disc(const LabelBox& box, const ScreenDisc& disc);
+
+// Where (top-left) a label of `size` goes beside `anchor`, an end of the 2D screen segment (`outward`: the
+// direction on screen away from the segment's other end): beyond the end, else turned from there by 30°,
+// 60°, … either way, never reaching back past the end towards the other one; 4 px from the end, then half a
+// line further for each of `rings` rings. The first spot inside [low, high] that covers no placed label and
+// no disc of `avoid`; none when there is no such spot.
+std::optional<ImVec2> label_beside(ImVec2 anchor, glm::dvec2 outward, ImVec2 size, ImVec2 low, ImVec2 high,
+                                   const std::vector<LabelBox>& placed, const std::vector<ScreenDisc>& avoid,
+                                   int rings);
+
 // Where a label of `size` goes at `wanted` (its top-left) so that it stays inside [low, high] and off the
 // labels already placed (top-left, size pairs): moved down, then up, a line at a time, past each it meets.
 ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,

@@ -380,21 +380,23 @@ void placement_tables(AppState& state, const View3D& view, int step, int steps) 
 void export_figure_now(AppState& state, bool all) {
   try {
     const std::vector<std::string> files = export_construction_figure(state, state.figure_path, all);
-    set_message(state, MessageSource::construction, false,
-                files.size() == 1 ? trf("wrote %s", files[0].c_str())
-                                  : trf("wrote %d files: %s …", int(files.size()), files[0].c_str()));
+    set_message(state, MessageSource::construction, false, figure_files_message(files));
   } catch (const std::exception& error) {
     set_message(state, MessageSource::construction, true, tr_reason(error.what()));
   }
 }
 
 void figure_export_row(AppState& state) {
-  labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); });
+  // A name edited while the question shows: the question was about other files.
+  if (labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
+    state.figure_replace_pending = 0;
   static const char* const kFormats[] = {"SVG", "PDF", "PNG", "TikZ"};  // figure_export.h's order
   if (figure_format_of(state.figure_path) >= 0) state.figure_format = figure_format_of(state.figure_path);
   if (labelled(state, tr("format###figure_format"),
-               [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); }))
+               [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); })) {
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
+    state.figure_replace_pending = 0;
+  }
   if (dimension(state) == 2)  // the 3D steps draw no rays: a slider there would change nothing
     labelled(state, tr("rays###figure_rays"),
              [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
@@ -406,7 +408,10 @@ void figure_export_row(AppState& state) {
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
     state.figure_replace_pending = 0;
     try {
-      if (existing_figure_files(state, state.figure_path, asked == 2).empty())
+      // Found once, here: the question below is drawn every frame from this list (drawing the figure again
+      // each frame to find them cost a whole figure build per frame, and threw on a name edited meanwhile).
+      state.figure_replace_files = existing_figure_files(state, state.figure_path, asked == 2);
+      if (state.figure_replace_files.empty())
         export_figure_now(state, asked == 2);
       else
         state.figure_replace_pending = asked;
@@ -420,11 +425,10 @@ void figure_export_row(AppState& state) {
     // the line above the status at lecture sizes) it read as done.
     if (state.message_source == MessageSource::construction) state.message.clear();
     const bool all = state.figure_replace_pending == 2;
-    const std::vector<std::string> existing = existing_figure_files(state, state.figure_path, all);
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", trf("%s already exists. Replace it?", existing.empty() ? state.figure_path.c_str()
-                                                                                    : existing[0].c_str())
-                                 .c_str());
+    ImGui::TextWrapped("%s", state.figure_replace_files.empty()
+                                 ? trf("%s already exists. Replace it?", state.figure_path.c_str()).c_str()
+                                 : figure_replace_question(state.figure_replace_files).c_str());
     ImGui::PopStyleColor();
     if (button(tr("Replace###figure_replace"))) {
       state.figure_replace_pending = 0;
@@ -499,9 +503,7 @@ void inspector_section(const AppState& state) {
   if (ray.hit.id < 0) {
     wrapped_between_words(tr("hit: nothing (background)"));
   } else {
-    const std::string& name = std::visit(
-        [&](const auto& view) -> const std::string& { return objects_of(view.scene)[std::size_t(ray.hit.id)].name; },
-        state.view);
+    const std::string name = shown_object_name(state.view, std::size_t(ray.hit.id));
     wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }

@@ -14,6 +14,7 @@
 #include "../scratch_dir.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
+#include "raycam/view_setup.h"
 
 using namespace raycam;
 
@@ -126,6 +127,10 @@ TEST_CASE("the built-in demo scenes are scenes/classic2d.json and classic3d.json
     CHECK(file2d.scene2d.circles[i].colour == demo2d.circles[i].colour);
     CHECK(file2d.scene2d.circles[i].name == demo2d.circles[i].name);
   }
+  // Its camera too: the 2D demo opens at θ = 70°, where every construction step moves the camera.
+  REQUIRE(file2d.camera.theta_deg);
+  CHECK(*file2d.camera.theta_deg == kDemoTheta2DDegrees);
+  CHECK(demo_camera_2d().orbit().theta == Approx(glm::radians(*file2d.camera.theta_deg)));
   const SceneFile file3d = load_scene_file(std::string(RAYCAM_SCENES) + "/classic3d.json");
   const Scene3D demo3d = demo_scene_3d();
   REQUIRE(file3d.scene3d.spheres.size() == demo3d.spheres.size());

@@ -108,3 +108,60 @@ TEST_CASE("Export figure draws the matrix on screen, with the panel's format, ra
   const std::string without((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   CHECK(without.find("pmatrix") == std::string::npos);
 }
+
+TEST_CASE("Export figure's messages name the full path, and several files briefly", "[ui][figure]") {
+  struct Restore {
+    ui::Language language = ui::current_language();
+    std::filesystem::path folder = std::filesystem::current_path();
+    ~Restore() { ui::set_language(language), std::filesystem::current_path(folder); }
+  } restore;
+  const test::ScratchDir scratch("figure-export-message");
+  session::AppState state = test::state_for({"--view", "3d"});
+  std::filesystem::current_path(scratch.path("."));
+  for (const ui::Language language : {ui::Language::en, ui::Language::fr}) {
+    ui::set_language(language);
+    // A relative name is written in the working folder: the message says which, in full.
+    const auto one = session::export_construction_figure(state, "raycam-figure.svg", false);
+    REQUIRE(one.size() == 1);
+    const std::string folder = std::filesystem::canonical(scratch.path(".")).string();
+    const std::string said = session::figure_files_message(one);
+    INFO(said);
+    CHECK(said.find(folder + "/raycam-figure.svg") != std::string::npos);
+    // Six files: one full path that spans them, not six paths (at 3× a message above the status line that
+    // long covered half the views).
+    const auto six = session::export_construction_figure(state, "steps.svg", true);
+    REQUIRE(six == (std::vector<std::string>{folder + "/steps-0.svg", folder + "/steps-1.svg", folder + "/steps-2.svg",
+                                             folder + "/steps-3.svg", folder + "/steps-4.svg", folder + "/steps-5.svg"}));
+    const std::string brief = session::figure_files_message(six);
+    INFO(brief);
+    CHECK(brief.find("6 ") != std::string::npos);  // how many
+    CHECK(brief.find(folder + "/steps-0…5.svg") != std::string::npos);
+    CHECK(brief.size() < folder.size() + 40);  // one path and a few words
+    // The question before replacing them says as much, as briefly.
+    const std::string question = session::figure_replace_question(session::existing_figure_files(state, "steps.svg", true));
+    INFO(question);
+    CHECK(question.find(folder + "/steps-0…5.svg") != std::string::npos);
+    CHECK(question.size() < folder.size() + 70);
+  }
+}
+
+TEST_CASE("Export figure names the demo's objects in the window's language", "[ui][figure]") {
+  struct Restore {
+    ui::Language language = ui::current_language();
+    ~Restore() { ui::set_language(language); }
+  } restore;
+  const test::ScratchDir scratch("figure-export-names");
+  session::AppState state = test::state_for({"--view", "2d"});
+  const auto tex_of = [&](ui::Language language) {
+    ui::set_language(language);
+    const auto files = session::export_construction_figure(state, scratch.path("names.tex"), false);
+    std::ifstream in(files.at(0));
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  const std::string french = tex_of(ui::Language::fr), english = tex_of(ui::Language::en);
+  for (const auto& [en, fr] : {std::pair{"{red}", "{rouge}"}, std::pair{"{green}", "{vert}"}}) {
+    CHECK(french.find(fr) != std::string::npos);
+    CHECK(french.find(en) == std::string::npos);
+    CHECK(english.find(en) != std::string::npos);
+  }
+}

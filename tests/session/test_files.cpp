@@ -44,7 +44,7 @@ TEST_CASE("Open with an empty box says what to type, and changes nothing else", 
   CHECK(state.window_title == title);
 }
 
-TEST_CASE("a failed open leaves the scene, the camera and the Open box as they were, and says why",
+TEST_CASE("a failed open leaves the scene and the camera as they were, keeps the typed path, and says why",
           "[ui][files]") {
   Scratch scratch;
   const std::string good = (scratch.dir / "good.json").string();
@@ -63,7 +63,7 @@ TEST_CASE("a failed open leaves the scene, the camera and the Open box as they w
   CHECK(view3d(state).scene.spheres.size() == spheres);
   CHECK(view3d(state).orbit.theta == 1.25);
   CHECK(scene_path(state) == good);
-  CHECK(state.path_input == good);  // the box shows the file on screen again
+  CHECK(state.path_input == missing);  // the box keeps the typo, to be fixed in place
 }
 
 TEST_CASE("Save as never writes over a file without a yes, and never defaults to the opened file",
@@ -105,6 +105,7 @@ TEST_CASE("Open resets every field that belonged to the scene on screen before",
   state.path_input = (scratch.dir / "half-typed").string();
   state.pinned_pixel = session::PixelIndex{3, 4};
   state.construction_step = 2;
+  state.mistake_look_at = "the colour bar";  // a "show me" on the first scene
   // The other kind's view named a file too.
   std::visit([&](auto& other) { other.scene_path = first; }, state.other_view);
   session::view3d(state).orbit.theta = 0.25;
@@ -123,6 +124,7 @@ TEST_CASE("Open resets every field that belonged to the scene on screen before",
   CHECK(std::visit([](const auto& other) { return other.scene_path.empty(); }, state.other_view));  // the other kind's scene is the demo again
   CHECK_FALSE(state.pinned_pixel);
   CHECK(state.construction_step == -1);
+  CHECK(state.mistake_look_at.empty());
   CHECK(session::view3d(state).orbit.theta == Approx(saved.theta));  // the file's camera, not the one moved
   CHECK(session::view3d(state).orbit.d == Approx(saved.d));
   CHECK(session::view3d(state).preset.theta == session::view3d(state).orbit.theta);  // Reset camera returns to the file's camera

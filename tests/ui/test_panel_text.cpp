@@ -8,11 +8,14 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <map>
+#include <set>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../scratch_dir.h"
 #include "app_flags.h"
 #include "app_options.h"
 #include "mistake_lessons.h"
@@ -295,6 +298,21 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
   CHECK(state.message == "saved scene.json");
 }
 
+TEST_CASE("Export figure's replace question shows the files found when asked, without drawing them again",
+          "[ui][figure]") {
+  // The question is drawn every frame: from the list found at the click, not by building the figure again
+  // to look for the files (a whole figure per frame; and a name no longer a figure's threw out of the frame).
+  TextCapture text;
+  session::AppState state = state_for({"--view", "2d"});
+  state.figure_replace_pending = 2;
+  state.figure_replace_files = {"/home/ada/figs/steps-a.svg", "/home/ada/figs/steps-b.svg",
+                                "/home/ada/figs/steps-c.svg", "/home/ada/figs/steps-d.svg"};
+  state.figure_path = "notes.gif";  // no figure's name: building the figure for it throws
+  std::string asking;
+  REQUIRE_NOTHROW(asking = text.capture([&] { ui::construction_section(state); }));
+  CHECK(asking.find("4 files already exist: /home/ada/figs/steps-a…d.svg. Replace them?") != std::string::npos);
+}
+
 TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no rays", "[ui][figure]") {
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
@@ -304,4 +322,49 @@ TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no
     CHECK(shown.find("Export figure") != std::string::npos);
     CHECK((shown.find("rays") != std::string::npos) == (std::string(view) == "2d"));
   }
+}
+
+// The demo is raycam's own scene: its objects are named in the window's language (the test's own French
+// words, not the table's), where the inspector names the object a ray hit. A file's names stay as written,
+// in any language.
+TEST_CASE("the inspector names the demo's objects in the window's language and a file's as written",
+          "[ui][text]") {
+  const std::map<std::string, std::string> kFrench = {
+      {"red", "rouge"}, {"green", "vert"}, {"blue", "bleu"}, {"yellow", "jaune"}, {"ground", "sol"}};
+  const test::ScratchDir scratch("demo-names");
+  TextCapture text;
+  for (const char* view : {"2d", "3d"})
+    for (const char* language : {"fr", "en"})
+      for (const bool from_file : {false, true}) {
+        session::AppState state = state_for({"--view", view, "--lang", language});
+        ui::set_language(state.language);
+        if (from_file) {  // the demo saved as a file, opened again: a user's file naming its objects in English
+          const std::string file = scratch.path(std::string("demo") + view + ".json");
+          REQUIRE(session::save_preset(state, file));
+          REQUIRE(session::open_scene(state, file));
+          session::recast_if_needed(state);
+        }
+        const auto& names = std::visit(
+            [](const auto& v) {
+              std::vector<std::string> out;
+              for (const auto& object : session::objects_of(v.scene)) out.push_back(object.name);
+              return out;
+            },
+            state.view);
+        std::set<int> seen;
+        for (int row = 0; row < state.map.height; ++row)
+          for (int column = 0; column < state.map.width; ++column) {
+            const int id = state.map.id_at(row, column);
+            if (id < 0 || !seen.insert(id).second) continue;
+            state.pinned_pixel = session::PixelIndex{row, column};
+            const std::string shown = text.capture([&] { ui::inspector_section(state); });
+            const std::string& name = names[std::size_t(id)];
+            const bool french = std::string(language) == "fr" && !from_file;
+            const std::string expected = french ? kFrench.at(name) : name;
+            INFO(view << " " << language << (from_file ? " file" : " demo") << ": " << shown);
+            CHECK(shown.find(" " + std::to_string(id) + " " + expected + " ") != std::string::npos);
+          }
+        CHECK(seen.size() >= 4);  // every demo object in sight
+      }
+  ui::set_language(ui::Language::en);
 }

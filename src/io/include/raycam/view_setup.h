@@ -22,11 +22,18 @@ struct ViewFlags {
   CameraPreset camera;           // --target --d --theta --phi --df --res --size
 };
 
+// The built-in 2D demo's camera angle θ, in degrees (the core's default, 90°, stays for a file that sets
+// none). At 90° the construction's rotation R(θ − 90°) is the identity, so its step c showed the very picture
+// of step b; at 70° every step moves the camera, and the bar still shows all four circles.
+inline constexpr double kDemoTheta2DDegrees = 70.0;
+// The 2D demo's camera: the core's defaults but θ.
+Camera2D demo_camera_2d();
+
 struct ViewSetup {
   int dimension = 3;
   std::string scene_path;  // empty: the built-in demo scene
   SceneFile file;          // scene and the camera preset in effect (defaults ⊕ file ⊕ flags)
-  Camera2D camera2d{256};
+  Camera2D camera2d = demo_camera_2d();  // the other kind's camera when the setup is 3D: the 2D demo's
   Camera3D camera3d{256, 256};
 };
 
