@@ -177,33 +177,45 @@ void explain(const char* text) {
   ImGui::PopStyleColor();
 }
 
-// Always three decimals, right-aligned: where the panel is narrower than the table (lecture sizes), the table
-// scrolls sideways in its own strip rather than dropping decimals or cutting a column.
+// Right-aligned, with three decimals where the panel has room for every column. Where it has not (lecture
+// sizes), two decimals, then the table alone in a smaller font (down to kMinTableFontScale of the panel's),
+// so that every column shows whole, the translation column the lesson ends on included; only past that
+// does the table scroll sideways in its own strip.
+constexpr float kMinTableFontScale = 0.55f;
 template <int N, class Matrix>
 void matrix_table(const char* id, const Matrix& m) {
-  constexpr int kDecimals = 3;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float rows_height = N * (ImGui::GetTextLineHeight() + 2 * style.CellPadding.y + 1.0f) + 2.0f;
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
   char text[64];
-  std::snprintf(text, sizeof text, "%.*f", kDecimals, -widest);  // the sign takes room too
-  const float cell = ImGui::CalcTextSize(text).x + 2 * style.CellPadding.x + 2;
-  const bool fits = N * cell <= ImGui::GetContentRegionAvail().x;
+  const float avail = ImGui::GetContentRegionAvail().x;
+  // A cell's width with `decimals`, the text at `scale` of the font (the sign takes room too).
+  auto cell = [&](int decimals, float scale) {
+    std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
+    return ImGui::CalcTextSize(text).x * scale + 2 * style.CellPadding.x + 2;
+  };
+  const int decimals = N * cell(3, 1.0f) <= avail ? 3 : 2;
+  const float text_width = cell(decimals, 1.0f) - 2 * style.CellPadding.x - 2;
+  const float scale = std::clamp((avail / N - 2 * style.CellPadding.x - 2) / text_width * 0.98f,
+                                 kMinTableFontScale, 1.0f);
+  const bool fits = N * cell(decimals, scale) <= avail;
+  ImGui::SetWindowFontScale(scale);
+  const float rows_height = N * (ImGui::GetTextLineHeight() + 2 * style.CellPadding.y + 1.0f) + 2.0f;
   const ImVec2 outer(0.0f, fits ? 0.0f : rows_height + style.ScrollbarSize);
-  if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame |
-                                    (fits ? 0 : ImGuiTableFlags_ScrollX), outer))
-    return;
-  for (int row = 0; row < N; ++row)
-    for (int column = 0; column < N; ++column) {
-      ImGui::TableNextColumn();
-      std::snprintf(text, sizeof text, "%.*f", kDecimals, without_negative_zero(m[column][row], kDecimals));
-      const float pad = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(text).x;
-      if (pad > 0) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + pad);
-      ImGui::TextUnformatted(text);  // GLM is column-major: m[column][row]
-    }
-  ImGui::EndTable();
+  if (ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame |
+                                   (fits ? 0 : ImGuiTableFlags_ScrollX), outer)) {
+    for (int row = 0; row < N; ++row)
+      for (int column = 0; column < N; ++column) {
+        ImGui::TableNextColumn();
+        std::snprintf(text, sizeof text, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
+        const float pad = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(text).x;
+        if (pad > 0) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + pad);
+        ImGui::TextUnformatted(text);  // GLM is column-major: m[column][row]
+      }
+    ImGui::EndTable();
+  }
+  ImGui::SetWindowFontScale(1.0f);
 }
 
 }  // namespace
