@@ -114,8 +114,8 @@ void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVe
   draw->AddLine({clip_min.x, m.origin.y}, {clip_max.x, m.origin.y}, axis);
   draw->AddLine({m.origin.x, clip_min.y}, {m.origin.x, clip_max.y}, axis);
   const ImVec2 x_size = ImGui::CalcTextSize("x"), y_size = ImGui::CalcTextSize("y");
-  if (m.origin.y >= clip_min.y && m.origin.y <= clip_max.y) {  // above its axis, below the top edge
-    const ImVec2 at{clip_max.x - x_size.x - 5, std::max(clip_min.y + 2, m.origin.y - x_size.y - 1)};
+  if (m.origin.y >= clip_min.y && m.origin.y <= clip_max.y) {  // above its axis, below the top edge (14 px in at 1×)
+    const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5), std::max(clip_min.y + 2, m.origin.y - x_size.y - 1)};
     draw->AddText(at, name, "x");
     placed.push_back({at, x_size});
   }
@@ -239,7 +239,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   const std::string side_title = beside_eye ? tr("side view: x →, z ↑") : std::string(tr("side view: x →, z ↑")) + "\n" + height;
   const bool title_inside = ImGui::CalcTextSize(side_title.c_str()).x <= side - 8;
   const FittedLabel title =
-      fit_label(side_title, title_inside ? side - 8 : clip_max.x - clip_min.x - 20, kInsetFontScale);
+      fit_label(side_title, title_inside ? side - 8 : clip_max.x - clip_min.x - 20, title_inside ? 1.0f : kInsetFontScale);
   const ImVec2 title_at = title_inside ? ImVec2{low.x + 4, low.y + 2} : ImVec2{low.x + 4, low.y - title.size.y - 4};
   draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
   draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
