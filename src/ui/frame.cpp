@@ -314,7 +314,13 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
   layout.image_title = header.title;
   // Begin()'s last item is the title bar: what the line left out, whole, under the mouse.
-  if (!header.tooltip.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", header.tooltip.c_str());
+  if (!header.tooltip.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(0.5f * ImGui::GetIO().DisplaySize.x);  // a long name wraps on the screen
+    ImGui::TextUnformatted(header.tooltip.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
   if (open) {
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
