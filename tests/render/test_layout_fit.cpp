@@ -3,7 +3,7 @@
 // window of the frame has content wider than what it shows without a horizontal scroll bar (a text, a button
 // or a box that extends past its window's clip rectangle is cut) and no window title is wider than its
 // window. ImGui measures every item it lays out into its window's content size, so this reads what the frame
-// itself measured, item by item. Text drawn straight into a draw list (the views' labels) is checked glyph by
+// itself measured, item by item; a combo's shown choice fits beside its arrow. Text drawn straight into a draw list (the views' labels) is checked glyph by
 // glyph against the clip rectangle it is drawn in; the picture keeps its size whatever its header says (a
 // mistake, a check's verdict); and no table scrolls sideways (M_d's translation column shows whole).
 #include <imgui.h>
@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <map>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -130,6 +131,20 @@ std::vector<std::string> cut_image_title(const ui::FrameLayout& layout) {
   return {"the image's title '" + layout.image_title + "'"};
 }
 
+// Combos whose shown choice is wider than the combo leaves it beside its arrow ("stable (Ray Tra" at 3×):
+// the panel records each combo's rectangle and its preview's width (the panels' test hook).
+std::vector<std::string> cut_combos(const std::map<std::string, session::WidgetRect>& rects) {
+  std::vector<std::string> cut;
+  for (const auto& [id, preview] : rects) {
+    const std::size_t slash = id.find("/preview");
+    if (slash == std::string::npos) continue;
+    const session::WidgetRect& combo = rects.at(id.substr(0, slash));
+    const float room = combo.x1 - combo.x0 - ImGui::GetFrameHeight() - 2 * GImGui->Style.FramePadding.x;
+    if (preview.x1 > room + 1.0f) cut.push_back("combo '" + id.substr(0, slash) + "' shows its choice cut");
+  }
+  return cut;
+}
+
 // Everything the layout test finds cut or hidden in the frame just drawn, a line each.
 std::string everything_cut(const ui::FrameLayout& layout) {
   std::vector<std::string> cut = cut_windows();
@@ -158,11 +173,15 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           state.font_scale = scale;
           session::show_mistake(state, *session::find_lesson("pixel_edges"));
           if (std::string(view) == "3d") state.res_rows = 0.5;  // non-square: the res_c and res_l sliders
+          std::map<std::string, session::WidgetRect> rects;
+          state.widget_rects = &rects;
           headless::HeadlessRenderer renderer(screen.width, screen.height);
           renderer.run_frame(state);
           open_every_section();
           renderer.render_settled(state, 4);
-          const std::string cut = everything_cut(renderer.layout());
+          std::string cut = everything_cut(renderer.layout());
+          for (const std::string& c : cut_combos(rects)) cut += "\n  " + c;
+          CHECK(rects.count("###intersection/preview") == 1);  // the caster's combos were laid out
           INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":"
                             << cut);
           CHECK(cut.empty());
@@ -187,10 +206,12 @@ TEST_CASE("a label placed beside others moves off them and stays in the view", "
 }
 
 // Every step of the construction, where the views draw their own labels ("eye E: z = …", the side view's
-// title, the axes' names): none runs past its view's edge, at any font scale, on any screen.
+// title, the axes' names) and M_d's tables change: nothing runs past its window's edge, at any font scale,
+// on any screen. Each screen is also laid out 4000 px tall (the panel as wide, every section in sight: a
+// glyph below the panel's fold is not drawn at all, cut or not).
 TEST_CASE("at 1x to 3x, every construction step's drawn labels show whole", "[render][lecture][layout]") {
   int checked = 0;
-  for (const Screen screen : kScreens)
+  for (const Screen screen : {kScreens[0], kScreens[1], kScreens[2], Screen{1024, 4000}, Screen{1280, 4000}})
     for (const float scale : {1.0f, 2.0f, 3.0f})
       for (const char* view : {"2d", "3d"})
         for (int step = 0; step <= (std::string(view) == "2d" ? 3 : 5); ++step) {
@@ -205,7 +226,7 @@ TEST_CASE("at 1x to 3x, every construction step's drawn labels show whole", "[re
           CHECK(cut.empty());
           ++checked;
         }
-  CHECK(checked == 3 * 3 * (4 + 6));
+  CHECK(checked == 5 * 3 * (4 + 6));
 }
 
 namespace {
@@ -225,7 +246,7 @@ void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& stat
 // What the header says never takes the picture's height: the picture is drawn as big with a mistake on, with
 // a failing and with a passing check as with nothing to say; the header stays one line that fits, the
 // verdict whole in it; and the verdict, in the panel, is scrolled into sight when it arrives.
-TEST_CASE("the picture keeps its size whatever its header says; the check's verdict is in sight",
+TEST_CASE("the picture keeps its size whatever its header says and the check's verdict is in sight",
           "[render][lecture][layout]") {
   const std::string student = EXAMPLE_STUDENT_CPP, mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
   for (const Screen screen : kScreens)
