@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -236,6 +237,10 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     construction_section(state);
     inspector_section(state);
     check_section(check_, state.host, ImGui::GetTime());
+    // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
+    // would leave the verdict below the fold until the next event).
+    const ImGuiWindow* panel = ImGui::GetCurrentWindow();
+    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
   }
   ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {

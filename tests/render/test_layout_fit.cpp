@@ -21,6 +21,7 @@
 #include "app_flags.h"
 #include "app_options.h"
 #include "check_panel.h"
+#include "frame_host.h"
 #include "headless_renderer.h"
 #include "mistake_lessons.h"
 #include "overhead_view.h"
@@ -231,15 +232,15 @@ TEST_CASE("at 1x to 3x, every construction step's drawn labels show whole", "[re
 
 namespace {
 // Runs frames until the check's verdict is in (the quiet time is counted on the frames' 60 Hz clock, the
-// program runs on a thread of its own), or 60 s pass.
+// program runs on a thread of its own) and then as long as the app's idle loop would (frame_needs_redraw):
+// what is left on screen is what an idle window shows. At most 60 s.
 void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& state) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   int frames = 0;
   do {
     renderer.run_frame(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  } while ((++frames < 30 || state.check_waiting) && std::chrono::steady_clock::now() < deadline);
-  renderer.render_settled(state, 3);
+  } while ((++frames < 30 || ui::frame_needs_redraw(state)) && std::chrono::steady_clock::now() < deadline);
 }
 }  // namespace
 
