@@ -39,7 +39,7 @@ using namespace session;  // the state the window shows and edits
 namespace {
 constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
 const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
-const ImVec4 kPassHeader{0.08f, 0.4f, 0.15f, 1.0f};     // while the check passes (white text: 7:1)
+const ImVec4 kPassHeader{0.08f, 0.4f, 0.15f, 1.0f};     // while the check passes
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
@@ -309,10 +309,11 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
                         tr("MISTAKE ON"), {full, brief}},
                        area.w);
   const bool alarm = !mistakes.empty() || (!check.forms.empty() && !check.passed);
-  const int header_colours = alarm || !check.forms.empty() ? 2 : 0;
+  const int header_colours = alarm || !check.forms.empty() ? 3 : 0;
   if (header_colours) {
     ImGui::PushStyleColor(ImGuiCol_TitleBg, alarm ? kMistakeHeader : kPassHeader);
     ImGui::PushStyleColor(ImGuiCol_TitleBgActive, alarm ? kMistakeHeader : kPassHeader);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));  // white on both (7:1), in either theme
   }
   const bool open = begin_fixed_window((header.title + "###image").c_str(), area, ImGuiWindowFlags_NoScrollbar);
   ImGui::PopStyleColor(header_colours);
