@@ -256,6 +256,18 @@ mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!insi
 mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
 mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return tr(name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
 mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
+# --- #35 lecture layout ---
+# The picture keeps its size under a mistake's or a check's header, the verdict whole and in sight, M_d whole,
+# the views' drawn labels whole at 3× (tests/render/test_layout_fit.cpp).
+mutant header-line-steals-picture src/ui/frame.cpp 's/^  layout.image_title = header.title;$/&\n  if (!header.tooltip.empty()) ImGui::TextUnformatted("MISTAKE ON");/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^             trf("✗ %lld wrong", r.wrong_pixels)}};$/             }};/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^  if (arrived) ImGui::ScrollToItem();.*$/  (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant md-table-scrolls-sideways src/ui/panels.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
+mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5),/const ImVec2 at{clip_max.x - 14,/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
+mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
+mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant combo-choice-cut src/ui/panels.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
+mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -202,12 +202,15 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
-std::string check_header(const CheckProgress& progress) {
+CheckHeader check_header(const CheckProgress& progress) {
   if (progress.running || !progress.latest || !progress.current) return {};
   const check::CaseResult& r = progress.latest->verdict.result;
-  if (r.status == check::CaseStatus::pass) return {};
-  if (r.status == check::CaseStatus::fail) return trf("CHECK: %lld pixels wrong", r.wrong_pixels);
-  return trf("CHECK: %s", check::text(current_language(), check::status_name(r.status)));
+  if (r.status == check::CaseStatus::pass) return {{tr("CHECK: passed"), tr("✓ passed")}, true};
+  if (r.status == check::CaseStatus::fail)
+    return {{trf("CHECK: %lld pixels wrong", r.wrong_pixels), trf("✗ %lld pixels wrong", r.wrong_pixels),
+             trf("✗ %lld wrong", r.wrong_pixels)}};
+  const char* status = check::text(current_language(), check::status_name(r.status));
+  return {{trf("CHECK: %s", status), trf("✗ %s", status)}};
 }
 
 }  // namespace raycam::session

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "app_state.h"
 #include "case_verdict.h"
@@ -46,10 +47,15 @@ struct CheckProgress {
 // (the page offers it as a download: it runs no program, and grades the answer file given back).
 SceneFile camera_case(const Lesson& state);
 
-// What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
-// wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty
-// while none, while a run is going (the old verdict is no longer the image's), or when it passed.
-std::string check_header(const CheckProgress& progress);
+// What the image's header says about the check, as it names a mistake that is on, longest first (the header
+// takes the longest that fits, and the last always fits: a verdict is never cut): "CHECK: 27932 pixels
+// wrong", "✗ 27932 pixels wrong", "✗ 27932 wrong" (or the failing status), or "CHECK: passed", "✓ passed";
+// empty while none, or while a run is going (the old verdict is no longer the image's).
+struct CheckHeader {
+  std::vector<std::string> forms;
+  bool passed = false;
+};
+CheckHeader check_header(const CheckProgress& progress);
 
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 

@@ -350,6 +350,11 @@ const std::vector<Translation>& translation_table() {
       // ---- check_panel.cpp: Check my camera ----
       {"CHECK: %lld pixels wrong", "VÉRIFICATION : %lld pixels faux"},
       {"CHECK: %s", "VÉRIFICATION : %s"},
+      {"✗ %lld pixels wrong", "✗ %lld pixels faux"},
+      {"✗ %lld wrong", "✗ %lld faux"},
+      {"✗ %s", "✗ %s"},
+      {"CHECK: passed", "VÉRIFICATION : réussie"},
+      {"✓ passed", "✓ réussie"},
       {"Running your program needs the desktop app (docs/web.md).",
        "Lancer votre programme demande l'application de bureau (docs/web.md)."},
       {"Check my camera###check", "Vérifier ma caméra###check"},

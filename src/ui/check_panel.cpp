@@ -3,6 +3,7 @@
 
 #include <cfloat>
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::ScrollToItem
 #include <imgui_stdlib.h>
 
 #include "check_texts.h"
@@ -15,7 +16,31 @@ namespace raycam::ui {
 using namespace session;  // the state the window shows and edits
 
 // ---- the panel section -----------------------------------------------------------------------------------
+namespace {
+// A verdict that has just arrived is brought into sight: the first one opens the section (a program given on
+// the command line), and each is scrolled into the panel's view once (the last section: below the fold at
+// lecture sizes); the panel is the instructor's to scroll after that.
+struct VerdictInView {
+  std::weak_ptr<const KeyedVerdict> shown;  // keeps its control block: a new verdict never matches it
+  bool any = false;
+  ImVec4 drawn_at{0, 0, 0, 0};  // where the verdict was last drawn
+  bool arrived(const CheckProgress& progress) const {
+    return progress.latest && !progress.running &&
+           (shown.owner_before(progress.latest) || progress.latest.owner_before(shown));
+  }
+};
+VerdictInView& verdict_in_view() {
+  static VerdictInView in_view;
+  return in_view;
+}
+}  // namespace
+
 void check_section(CameraCheck& check, const HostCapabilities& host, double now) {
+  const CheckProgress progress = check.progress();
+  VerdictInView& in_view = verdict_in_view();
+  const bool arrived = in_view.arrived(progress);
+  if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
+  if (arrived) in_view = {progress.latest, true};
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
@@ -38,7 +63,6 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
     if (button(tr("Check now###check_now"))) request.check_now = true;
   }
 
-  const CheckProgress progress = check.progress();
   if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));
   if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
@@ -46,6 +70,7 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
   const ImVec4 colour =
       r.status == check::CaseStatus::pass ? current_theme().confirmation : current_theme().error;
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::BeginGroup();  // one item: the verdict
   if (r.status == check::CaseStatus::pass)
     wrapped_between_words(tr("pass: every pixel agrees"));
   else if (r.status == check::CaseStatus::fail)
@@ -53,7 +78,11 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
   else
     wrapped_between_words(trf("%s: %s", check::text(current_language(), check::status_name(r.status)),
                               tr_reason(r.detail).c_str()));
+  ImGui::EndGroup();
   ImGui::PopStyleColor();
+  if (arrived) ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
+  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+  in_view.drawn_at = {low.x, low.y, high.x, high.y};
   if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr("no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
@@ -71,6 +100,8 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
     ImGui::PopStyleColor();
   }
 }
+
+ImVec4 drawn_verdict_rect() { return verdict_in_view().drawn_at; }
 
 // ---- the overlay -----------------------------------------------------------------------------------------
 void check_overlay(const CameraCheck& check, const AppState& state, ImDrawList* list, float x0, float y0,

@@ -2,6 +2,8 @@
 // session's CameraCheck (session/camera_check.h), and the wrong pixels in red over the image.
 #pragma once
 
+#include <imgui.h>
+
 #include "camera_check.h"
 
 struct ImDrawList;
@@ -10,6 +12,8 @@ namespace raycam::ui {
 
 // The panel section: the command, the verdict, the diagnosis, the program's stderr.
 void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now);
+// Where the panel last drew a verdict (x0, y0, x1, y1 in screen pixels), for the tests.
+ImVec4 drawn_verdict_rect();
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict
 // is for the image on screen).
 void check_overlay(const session::CameraCheck& check, const session::AppState& state, ImDrawList* list, float x0, float y0,

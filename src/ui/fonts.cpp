@@ -19,6 +19,7 @@ constexpr const char* kKnownFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuS
 float g_built_scale = -1.0f;
 float g_built_density = -1.0f;
 const ImGuiContext* g_built_for = nullptr;  // a new ImGui context starts with the default atlas
+const ImFont* g_built_font = nullptr;       // the first font of the atlas built last
 bool g_truetype = false;
 
 bool readable(const std::string& path) { return !path.empty() && std::ifstream(path).good(); }
@@ -65,7 +66,11 @@ std::string find_ui_font() {
 }
 
 bool update_fonts(float font_scale, float pixel_density) {
-  if (g_built_for == ImGui::GetCurrentContext() && std::abs(font_scale - g_built_scale) < 1e-4f &&
+  // A context made where a destroyed one was (the tests make one per window size) has the same address and
+  // a new atlas: the atlas's first font tells whether it is the one built here.
+  const ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+  const bool atlas_is_ours = !atlas->Fonts.empty() && atlas->Fonts[0] == g_built_font;
+  if (g_built_for == ImGui::GetCurrentContext() && atlas_is_ours && std::abs(font_scale - g_built_scale) < 1e-4f &&
       std::abs(pixel_density - g_built_density) < 1e-4f)
     return false;
   static const std::string path = find_ui_font();
@@ -93,6 +98,7 @@ bool update_fonts(float font_scale, float pixel_density) {
   g_built_scale = font_scale;
   g_built_density = pixel_density;
   g_built_for = ImGui::GetCurrentContext();
+  g_built_font = io.Fonts->Fonts[0];
   return true;
 }
 

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,6 +22,7 @@
 #include "camera_ranges.h"
 #include "construction_view.h"
 #include "fonts.h"
+#include "image_header.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "observer_renderer.h"
@@ -37,13 +39,14 @@ using namespace session;  // the state the window shows and edits
 namespace {
 constexpr int kObserverFanRays = 24;                   // rays of the middle row drawn in the observer view
 const ImVec4 kMistakeHeader{0.65f, 0.1f, 0.1f, 1.0f};  // the image's header while a mistake is on
+const ImVec4 kPassHeader{0.08f, 0.4f, 0.15f, 1.0f};     // while the check passes
 constexpr ImGuiWindowFlags kFixedWindow =
     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
 
 // The first of `candidates` (longest first) whose shown part fits a title bar `width` wide; the last one
 // whatever: a title is never cut.
 std::string first_fitting(const std::vector<std::string>& candidates, float width) {
-  const float room = width - 2 * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().WindowPadding.x;
+  const float room = title_room(width);
   for (const std::string& c : candidates)
     if (ImGui::CalcTextSize(c.substr(0, c.find("##")).c_str()).x <= room) return c;
   return candidates.back();
@@ -234,6 +237,10 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     construction_section(state);
     inspector_section(state);
     check_section(check_, state.host, ImGui::GetTime());
+    // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
+    // would leave the verdict below the fold until the next event).
+    const ImGuiWindow* panel = ImGui::GetCurrentWindow();
+    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
   }
   ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {
@@ -286,40 +293,41 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_bar = image_is_bar(state.view);
-  const std::string full = is_bar ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-                                  : trf("Image: %d × %d###image", state.map.width, state.map.height);
-  const std::string brief = is_bar ? trf("Colour bar: n = %d###image", state.map.width)
-                                  : trf("%d × %d###image", state.map.width, state.map.height);
+  auto shown = [](const std::string& label) { return label.substr(0, label.find("###")); };
+  const std::string full =
+      shown(is_bar ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+                   : trf("Image: %d × %d###image", state.map.width, state.map.height));
+  const std::string brief = shown(is_bar ? trf("Colour bar: n = %d###image", state.map.width)
+                                         : trf("%d × %d###image", state.map.width, state.map.height));
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not, and so
-  // does a failing check: where the eye is. Where the header is too narrow for the name (lecture sizes), it
-  // says "MISTAKE ON" and the name goes on a red line above the image.
+  // is the check's verdict: where the eye is. One line whatever it says (image_header.h): the picture under
+  // it keeps its height, so that turning a mistake on changes the picture, not its size.
   const std::string mistakes = mistakes_on(state);
-  const std::string check = check_header(check_.progress());
-  const std::string lead = check.empty() ? "" : check + "  |  ";
-  std::vector<std::string> candidates;
-  if (mistakes.empty()) {
-    candidates = {lead + full, lead + brief, check.empty() ? brief : check + "###image"};
-  } else {
-    const std::string named = trf("MISTAKE ON: %s", mistakes.c_str());
-    candidates = {lead + named + "  |  " + full, lead + named + "  |  " + brief, lead + named + "###image",
-                  lead + tr("MISTAKE ON") + "###image", std::string(tr("MISTAKE ON")) + "###image"};
-  }
-  const std::string title = first_fitting(candidates, area.w);
-  const bool mistake_named = mistakes.empty() || title.find(mistakes) != std::string::npos;
-  const int header_colours = mistakes.empty() && check.empty() ? 0 : 2;
+  const CheckHeader check = check_header(check_.progress());
+  const ImageHeader header =
+      fit_image_header({check.forms, mistakes.empty() ? "" : trf("MISTAKE ON: %s", mistakes.c_str()),
+                        tr("MISTAKE ON"), {full, brief}},
+                       area.w);
+  const bool alarm = !mistakes.empty() || (!check.forms.empty() && !check.passed);
+  const int header_colours = alarm || !check.forms.empty() ? 3 : 0;
   if (header_colours) {
-    ImGui::PushStyleColor(ImGuiCol_TitleBg, kMistakeHeader);
-    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, kMistakeHeader);
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, alarm ? kMistakeHeader : kPassHeader);
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, alarm ? kMistakeHeader : kPassHeader);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));  // white on both (7:1), in either theme
   }
-  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  const bool open = begin_fixed_window((header.title + "###image").c_str(), area, ImGuiWindowFlags_NoScrollbar);
   ImGui::PopStyleColor(header_colours);
   layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
+  layout.image_title = header.title;
+  // Begin()'s last item is the title bar: what the line left out, whole, under the mouse.
+  if (!header.tooltip.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(0.5f * ImGui::GetIO().DisplaySize.x);  // a long name wraps on the screen
+    ImGui::TextUnformatted(header.tooltip.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
   if (open) {
-    if (!mistake_named) {
-      ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-      wrapped_between_words(trf("MISTAKE ON: %s", mistakes.c_str()));
-      ImGui::PopStyleColor();
-    }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
     // 3D: the canonical screen is square, so the image is shown square (pixels are square when nbc = nbl).
     const ImVec2 size = is_bar ? ImVec2(std::floor(avail.x), std::floor(std::max(8.0f, avail.y)))

@@ -36,6 +36,7 @@ struct FrameLayout {
   Rect panel;
   Rect image;     // the colour bar or texture, exactly
   Rect image_header;  // the image window's title bar (names a classic mistake that is on)
+  std::string image_title;  // what that title bar says (ImGui keeps a window's first name, not the shown one)
   Rect overhead;  // the overhead view's drawing area
   OverheadMapping overhead_mapping;
   Rect observer;  // 3D only

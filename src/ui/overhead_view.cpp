@@ -2,10 +2,13 @@
 #include "overhead_view.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
-#include <glm/trigonometric.hpp>
 #include <numeric>
+#include <string>
 #include <vector>
+
+#include <glm/trigonometric.hpp>
 
 #include "construction_view.h"
 #include "raycam/transform.h"
@@ -104,12 +107,64 @@ void draw_cross(ImDrawList* draw, ImVec2 p, float size, ImU32 colour) {
   draw->AddLine({p.x, p.y - size}, {p.x, p.y + size}, colour, 2.0f);
 }
 
-void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVec2 clip_max) {
-  const ImU32 axis = IM_COL32(255, 255, 255, 40);
+using PlacedLabels = std::vector<std::pair<ImVec2, ImVec2>>;  // top-left, size: place_label's
+
+// The axes through the world origin, each named inside the view at its end, whole at any font size: "x" left
+// of the right edge, "y" under the top edge (a name is left out when its axis is out of the view). The names'
+// rectangles go into `placed`, for the labels placed after them.
+void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVec2 clip_max, PlacedLabels& placed) {
+  const ImU32 axis = IM_COL32(255, 255, 255, 40), name = IM_COL32(255, 255, 255, 90);
   draw->AddLine({clip_min.x, m.origin.y}, {clip_max.x, m.origin.y}, axis);
   draw->AddLine({m.origin.x, clip_min.y}, {m.origin.x, clip_max.y}, axis);
-  draw->AddText({clip_max.x - 14, m.origin.y - 16}, IM_COL32(255, 255, 255, 90), "x");
-  draw->AddText({m.origin.x + 4, clip_min.y + 2}, IM_COL32(255, 255, 255, 90), "y");
+  const ImVec2 x_size = ImGui::CalcTextSize("x"), y_size = ImGui::CalcTextSize("y");
+  if (m.origin.y >= clip_min.y && m.origin.y <= clip_max.y) {  // above its axis, below the top edge (14 px in at 1×)
+    const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5), std::max(clip_min.y + 2, m.origin.y - x_size.y - 1)};
+    draw->AddText(at, name, "x");
+    placed.push_back({at, x_size});
+  }
+  if (m.origin.x >= clip_min.x && m.origin.x <= clip_max.x) {  // right of its axis, left of the right edge
+    const ImVec2 at{std::min(m.origin.x + 4, clip_max.x - y_size.x - 2), clip_min.y + 2};
+    draw->AddText(at, name, "y");
+    placed.push_back({at, y_size});
+  }
+}
+
+// Whether a label at `at`, `size` big, would print over one of `placed`.
+bool overlaps_any(ImVec2 at, ImVec2 size, const PlacedLabels& placed) {
+  for (const auto& [q, s] : placed)
+    if (at.x < q.x + s.x && q.x < at.x + size.x && at.y < q.y + s.y && q.y < at.y + size.y) return true;
+  return false;
+}
+
+// A label drawn into a view no wider than `width`: on one line, else on two (broken after its ": ", else at
+// the space that makes the wider line narrowest), else on two lines in a smaller font (down to
+// kMinLabelScale of the window's, still bigger than the 1× font at lecture sizes). `largest`: of the window's
+// font, the largest size to use.
+constexpr float kMinLabelScale = 0.5f;
+constexpr float kInsetFontScale = 0.7f;  // the side view's lines above it: smaller, to hide less of the view
+struct FittedLabel {
+  std::string text;  // with '\n' where it is broken
+  float font_size;
+  ImVec2 size;
+};
+FittedLabel fit_label(const std::string& text, float width, float largest = 1.0f) {
+  ImFont* font = ImGui::GetFont();
+  const float full = ImGui::GetFontSize() * largest;
+  auto measure = [&](const std::string& t, float size) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, t.c_str()); };
+  if (measure(text, full).x <= width) return {text, full, measure(text, full)};
+  std::string two = text;
+  if (const std::size_t colon = text.find(": "); colon != std::string::npos) {
+    two[colon + 1] = '\n';
+  } else {
+    float narrowest = FLT_MAX;
+    for (std::size_t space = text.find(' '); space != std::string::npos; space = text.find(' ', space + 1)) {
+      std::string broken = text;
+      broken[space] = '\n';
+      if (measure(broken, full).x < narrowest) narrowest = measure(broken, full).x, two = broken;
+    }
+  }
+  const float size = std::clamp(full * width / measure(two, full).x, std::min(full, ImGui::GetFontSize() * kMinLabelScale), full);
+  return {two, size, measure(two, size)};
 }
 
 // The camera (screen, eye, field-of-view edges) through a matrix: the final M_d or a construction step.
@@ -133,7 +188,8 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
 
 // The 3D construction's intermediate camera seen from above (construction_view.h). Axes that point straight
 // up or down (the view before R_y tilts it) shrink to a point: marked ⊗ (into the ground) or ⊙ (out of it).
-void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera) {
+void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera,
+                          const PlacedLabels& placed) {
   constexpr double kAxisLength = 1.5;
   auto colour = [](ConstructionPart part) {
     const glm::vec4 c = construction_colour(part);
@@ -167,19 +223,35 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
       }
     }
   }
+  // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in the
+  // corner shows it, and the tilt, at a fixed scale. The eye's height is written beside the eye where it
+  // fits whole there, off the axes' names; else (narrow views at lecture sizes) under the side view's title,
+  // which goes inside its frame where it fits there, else on lines of its own above it, as wide as the view.
+  const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   const glm::dvec3 eye = eye_of(world_from_camera);
   const ImVec2 at = m.to_screen(xy(eye));
   draw->AddCircleFilled(at, 5.0f, kConstructionColour);
-  draw->AddText({at.x + 8, at.y - 18}, kConstructionColour, trf("eye E: z = %.2f", eye.z).c_str());
+  const std::string height = trf("eye E: z = %.2f", eye.z);
+  const ImVec2 height_size = ImGui::CalcTextSize(height.c_str()), height_at{at.x + 8, at.y - 18};
+  const bool beside_eye = height_at.x >= clip_min.x && height_at.y >= clip_min.y &&
+                          height_at.x + height_size.x <= clip_max.x && height_at.y + height_size.y <= clip_max.y &&
+                          !overlaps_any(height_at, height_size, placed);
 
-  // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in the
-  // corner shows it, and the tilt, at a fixed scale.
-  const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   const float side = std::min(170.0f, 0.4f * std::min(clip_max.x - clip_min.x, clip_max.y - clip_min.y));
   const ImVec2 low{clip_min.x + 6, clip_max.y - side - 6}, high{clip_min.x + 6 + side, clip_max.y - 6};
+  const std::string side_title = beside_eye ? tr("side view: x →, z ↑") : std::string(tr("side view: x →, z ↑")) + "\n" + height;
+  const bool title_inside = ImGui::CalcTextSize(side_title.c_str()).x <= side - 8;
+  const FittedLabel title =
+      fit_label(side_title, title_inside ? side - 8 : clip_max.x - clip_min.x - 20, title_inside ? 1.0f : kInsetFontScale);
+  const ImVec2 title_at = title_inside ? ImVec2{low.x + 4, low.y + 2} : ImVec2{low.x + 4, low.y - title.size.y - 4};
   draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
   draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
-  draw->AddText({low.x + 4, low.y + 2}, IM_COL32(200, 200, 210, 255), tr("side view: x →, z ↑"));
+  // Above the frame, the lines leave the construction under them visible: a dark shadow keeps them readable.
+  if (!title_inside)
+    draw->AddText(ImGui::GetFont(), title.font_size, {title_at.x + 1, title_at.y + 1}, IM_COL32(0, 0, 0, 255), title.text.c_str());
+  draw->AddText(ImGui::GetFont(), title.font_size, title_at, IM_COL32(200, 200, 210, 255), title.text.c_str());
+  if (beside_eye) draw->AddText(height_at, kConstructionColour, height.c_str());
+
   double reach = 1.0;
   for (const ConstructionSegment& segment : segments)
     reach = std::max({reach, std::abs(segment.from.x), std::abs(segment.from.z), std::abs(segment.to.x),
@@ -355,11 +427,7 @@ ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
     return ImVec2{std::clamp(p.x, low.x + 2, std::max(low.x + 2, high.x - size.x - 2)),
                   std::clamp(p.y, low.y + 2, std::max(low.y + 2, high.y - size.y - 2))};
   };
-  const auto overlaps = [&](ImVec2 p) {
-    for (const auto& [q, s] : placed)
-      if (p.x < q.x + s.x && q.x < p.x + size.x && p.y < q.y + s.y && q.y < p.y + size.y) return true;
-    return false;
-  };
+  const auto overlaps = [&](ImVec2 p) { return overlaps_any(p, size, placed); };
   const ImVec2 start = inside(wanted);
   const int lines = int((high.y - low.y) / (size.y + 2)) + 1;  // every line of the view, both ways
   for (int step = 0; step <= 2 * lines; ++step) {
@@ -390,7 +458,8 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
                    const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
-  draw_axes(draw, m, clip_min, clip_max);
+  PlacedLabels placed;  // the labels drawn so far: the next ones go beside them
+  draw_axes(draw, m, clip_min, clip_max, placed);
   const double far_length = 3.0 * camera_reach(state);
 
   // One texel per framebuffer pixel (a HiDPI window has more of them than UI pixels).
@@ -419,7 +488,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
                         },
                         [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
                           if (!final_camera)
-                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step));
+                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step), placed);
                         }},
              state.view);
   const glm::dvec2 target = active_target_xy(state);

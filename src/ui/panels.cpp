@@ -22,6 +22,7 @@
 
 #include "camera_ranges.h"
 #include "figure_export.h"
+#include "image_header.h"  // ellipsized
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "raycam/image_files.h"
@@ -177,33 +178,53 @@ void explain(const char* text) {
   ImGui::PopStyleColor();
 }
 
-// Always three decimals, right-aligned: where the panel is narrower than the table (lecture sizes), the table
-// scrolls sideways in its own strip rather than dropping decimals or cutting a column.
+// Right-aligned, with three decimals where the panel has room for every column. Where it has not (lecture
+// sizes), two decimals, then the table alone in a smaller font (down to kMinTableFontScale of the panel's),
+// so that every column shows whole, the translation column the lesson ends on included; only past that
+// does the table scroll sideways in its own strip. Drawn as a grid of its own, every cell exactly as wide
+// as computed here (an ImGui table sizes its columns from an earlier frame's text, wider at another scale).
+constexpr float kMinTableFontScale = 0.55f;
 template <int N, class Matrix>
 void matrix_table(const char* id, const Matrix& m) {
-  constexpr int kDecimals = 3;
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float rows_height = N * (ImGui::GetTextLineHeight() + 2 * style.CellPadding.y + 1.0f) + 2.0f;
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
   char text[64];
-  std::snprintf(text, sizeof text, "%.*f", kDecimals, -widest);  // the sign takes room too
-  const float cell = ImGui::CalcTextSize(text).x + 2 * style.CellPadding.x + 2;
-  const bool fits = N * cell <= ImGui::GetContentRegionAvail().x;
-  const ImVec2 outer(0.0f, fits ? 0.0f : rows_height + style.ScrollbarSize);
-  if (!ImGui::BeginTable(id, N, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedSame |
-                                    (fits ? 0 : ImGuiTableFlags_ScrollX), outer))
-    return;
+  const float avail = ImGui::GetContentRegionAvail().x - 1;  // the right border
+  auto text_width = [&](int decimals) {  // the widest value's, the sign included
+    std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
+    return ImGui::CalcTextSize(text).x;
+  };
+  const float padding = style.CellPadding.x;
+  const int decimals = N * (text_width(3) + 2 * padding) <= avail ? 3 : 2;
+  const float scale =
+      std::clamp((avail / N - 2 * padding) / text_width(decimals), kMinTableFontScale, 1.0f);
+  const float font_size = ImGui::GetFontSize() * scale;
+  ImVec2 cell{text_width(decimals) * scale + 2 * padding, font_size + 2 * style.CellPadding.y};
+  const ImVec2 size{N * cell.x + 1, N * cell.y + 1};
+  const bool fits = size.x <= avail + 1;
+  if (fits) cell.x = std::floor(avail / N);  // the columns share the panel's width (no empty strip at the right)
+  if (!fits) ImGui::BeginChild(id, {0, size.y + style.ScrollbarSize}, false, ImGuiWindowFlags_HorizontalScrollbar);
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = fits ? N * cell.x : size.x;
+  ImGui::Dummy({width, size.y});  // the grid's place in the layout
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 inner = ImGui::GetColorU32(ImGuiCol_TableBorderLight), outer = ImGui::GetColorU32(ImGuiCol_TableBorderStrong);
+  for (int i = 1; i <= N; ++i) {
+    draw->AddLine({at.x + i * cell.x, at.y}, {at.x + i * cell.x, at.y + N * cell.y}, inner);
+    if (i < N) draw->AddLine({at.x, at.y + i * cell.y}, {at.x + width, at.y + i * cell.y}, inner);
+  }
+  draw->AddRect(at, {at.x + width, at.y + N * cell.y + 1}, outer);
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) {
-      ImGui::TableNextColumn();
-      std::snprintf(text, sizeof text, "%.*f", kDecimals, without_negative_zero(m[column][row], kDecimals));
-      const float pad = ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(text).x;
-      if (pad > 0) ImGui::SetCursorPosX(ImGui::GetCursorPosX() + pad);
-      ImGui::TextUnformatted(text);  // GLM is column-major: m[column][row]
+      std::snprintf(text, sizeof text, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
+      const float width = ImGui::CalcTextSize(text).x * scale;  // GLM is column-major: m[column][row]
+      draw->AddText(ImGui::GetFont(), font_size,
+                    {at.x + (column + 1) * cell.x - padding - width, at.y + row * cell.y + style.CellPadding.y},
+                    ImGui::GetColorU32(ImGuiCol_Text), text);
     }
-  ImGui::EndTable();
+  if (!fits) ImGui::EndChild();
 }
 
 }  // namespace
@@ -566,6 +587,17 @@ void mistakes_section(AppState& state) {
 
 // ---- caster and accuracy -------------------------------------------------------------------------------
 namespace {
+// What a combo shows of its choice: the whole name where it fits the combo, else the name without its
+// parenthesis ("stable (Ray Tracing Gems)" → "stable"), else that cut with "…" (its list shows every name
+// whole). Recorded for the tests as "<id>/preview", its width in x1.
+std::string combo_preview(const AppState& state, const std::string& id, const char* name) {
+  const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().FramePadding.x;
+  const std::string whole = name;
+  const std::string shown = ImGui::CalcTextSize(name).x <= room ? whole : ellipsized(whole.substr(0, whole.find(" (")), room);
+  if (state.widget_rects) (*state.widget_rects)[id + "/preview"] = {0, 0, ImGui::CalcTextSize(shown.c_str()).x, 0};
+  return shown;
+}
+
 // A combo over a fixed list of (value, name); returns true when the user picked another value.
 template <class T, class Options>  // Options: a range of std::pair<T, const char*>
 bool choice(const AppState& state, const char* label, T& value, const Options& options) {
@@ -573,7 +605,9 @@ bool choice(const AppState& state, const char* label, T& value, const Options& o
   for (const auto& [v, name] : options)
     if (v == value) current = name;
   bool changed = false;
-  if (labelled(state, label, [&](const char* l) { return ImGui::BeginCombo(l, tr(current)); })) {
+  const std::string id = label_parts(label).id;
+  if (labelled(state, label,
+               [&](const char* l) { return ImGui::BeginCombo(l, combo_preview(state, id, tr(current)).c_str()); })) {
     for (const auto& [v, name] : options)
       if (ImGui::Selectable(tr(name), v == value) && v != value) {
         value = v;

@@ -3,17 +3,25 @@
 // window of the frame has content wider than what it shows without a horizontal scroll bar (a text, a button
 // or a box that extends past its window's clip rectangle is cut) and no window title is wider than its
 // window. ImGui measures every item it lays out into its window's content size, so this reads what the frame
-// itself measured, item by item.
+// itself measured, item by item; a combo's shown choice fits beside its arrow. Text drawn straight into a draw list (the views' labels) is checked glyph by
+// glyph against the clip rectangle it is drawn in; the picture keeps its size whatever its header says (a
+// mistake, a check's verdict); and no table scrolls sideways (M_d's translation column shows whole).
 #include <imgui.h>
 #include <imgui_internal.h>
 
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <map>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <tuple>
 #include <vector>
 
 #include "app_flags.h"
 #include "app_options.h"
+#include "check_panel.h"
+#include "frame_host.h"
 #include "headless_renderer.h"
 #include "mistake_lessons.h"
 #include "overhead_view.h"
@@ -66,15 +74,99 @@ std::vector<std::string> cut_windows() {
   return cut;
 }
 
+// Windows that scroll sideways: a table or panel whose last columns hide behind a scroll bar (M_d's
+// translation column at 3×).
+std::vector<std::string> sideways_scrolling() {
+  std::vector<std::string> found;
+  for (ImGuiWindow* window : GImGui->Windows)
+    if (window->WasActive && !window->Hidden && window->ScrollbarX) found.push_back("'" + std::string(window->Name) + "' scrolls sideways");
+  return found;
+}
+
+// Text drawn cut: a glyph of a window's draw list that crosses the clip rectangle it is drawn in. ImGui
+// drops the glyphs wholly outside that rectangle and keeps the others whole (draw-list text is not clipped
+// finely), so a label that runs past a view's edge leaves a glyph across it ("vue de côt|é"). Sideways in
+// every window; up and down too in windows that do not scroll (a scrolled panel cuts its top and bottom
+// lines by design). A glyph is a vertex textured from the font atlas, neither its white pixel nor its baked
+// thick lines.
+std::vector<std::string> cut_drawn_text() {
+  const ImFontAtlas* atlas = ImGui::GetIO().Fonts;
+  const ImVec2 white = atlas->TexUvWhitePixel;
+  ImVec4 lines = atlas->TexUvLines[0];
+  for (const ImVec4& uv : atlas->TexUvLines)
+    lines = {std::min(lines.x, uv.x), std::min(lines.y, uv.y), std::max(lines.z, uv.z), std::max(lines.w, uv.w)};
+  auto is_glyph = [&](ImVec2 uv) {
+    const bool on_white = std::abs(uv.x - white.x) < 1e-6f && std::abs(uv.y - white.y) < 1e-6f;
+    const bool on_lines = uv.x >= lines.x && uv.x <= lines.z && uv.y >= lines.y && uv.y <= lines.w;
+    return !on_white && !on_lines;
+  };
+  std::vector<std::string> cut;
+  for (ImGuiWindow* window : GImGui->Windows) {
+    if (!window->WasActive || window->Hidden) continue;
+    const bool scrolls = window->ScrollMax.y > 0;
+    const ImDrawList* list = window->DrawList;
+    for (const ImDrawCmd& cmd : list->CmdBuffer) {
+      if (cmd.UserCallback || cmd.TextureId != atlas->TexID) continue;
+      const ImVec4 clip = cmd.ClipRect;
+      for (unsigned i = cmd.IdxOffset; i < cmd.IdxOffset + cmd.ElemCount; ++i) {
+        const ImDrawVert& v = list->VtxBuffer[int(cmd.VtxOffset + list->IdxBuffer[int(i)])];
+        if (!is_glyph(v.uv)) continue;
+        const bool across = v.pos.x < clip.x - 0.5f || v.pos.x > clip.z + 0.5f ||
+                            (!scrolls && (v.pos.y < clip.y - 0.5f || v.pos.y > clip.w + 0.5f));
+        if (!across) continue;
+        std::ostringstream out;
+        out << "'" << window->Name << "': a glyph at " << v.pos.x << "," << v.pos.y << " across its clip "
+            << clip.x << "," << clip.y << " - " << clip.z << "," << clip.w;
+        cut.push_back(out.str());
+        break;  // one a draw command says it
+      }
+    }
+  }
+  return cut;
+}
+
+// The image window's title as drawn, when it is wider than its title bar: cut.
+std::vector<std::string> cut_image_title(const ui::FrameLayout& layout) {
+  const float title = ImGui::CalcTextSize(layout.image_title.c_str()).x + 2 * GImGui->Style.FramePadding.x;
+  if (title <= layout.image_header.w + 1.0f) return {};
+  return {"the image's title '" + layout.image_title + "'"};
+}
+
+// Combos whose shown choice is wider than the combo leaves it beside its arrow ("stable (Ray Tra" at 3×):
+// the panel records each combo's rectangle and its preview's width (the panels' test hook).
+std::vector<std::string> cut_combos(const std::map<std::string, session::WidgetRect>& rects) {
+  std::vector<std::string> cut;
+  for (const auto& [id, preview] : rects) {
+    const std::size_t slash = id.find("/preview");
+    if (slash == std::string::npos) continue;
+    const session::WidgetRect& combo = rects.at(id.substr(0, slash));
+    const float room = combo.x1 - combo.x0 - ImGui::GetFrameHeight() - 2 * GImGui->Style.FramePadding.x;
+    if (preview.x1 > room + 1.0f) cut.push_back("combo '" + id.substr(0, slash) + "' shows its choice cut");
+  }
+  return cut;
+}
+
+// Everything the layout test finds cut or hidden in the frame just drawn, a line each.
+std::string everything_cut(const ui::FrameLayout& layout) {
+  std::vector<std::string> cut = cut_windows();
+  for (auto found : {cut_titles(), cut_image_title(layout), sideways_scrolling(), cut_drawn_text()})
+    for (const std::string& c : found) cut.push_back(c);
+  std::string all;
+  for (const std::string& c : cut) all += "\n  " + c;
+  return all;
+}
+
+struct Screen {
+  int width, height;
+};
+constexpr Screen kScreens[] = {{1024, 768}, {1280, 800}, {1920, 1080}};
+
 }  // namespace
 
 TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's content is cut",
           "[render][lecture][layout]") {
-  struct Screen {
-    int width, height;
-  };
   int checked = 0;
-  for (const Screen screen : {Screen{1024, 768}, Screen{1280, 800}, Screen{1920, 1080}})
+  for (const Screen screen : kScreens)
     for (const float scale : {1.0f, 2.0f, 3.0f})
       for (const char* language : {"fr", "en"})
         for (const char* view : {"2d", "3d"}) {
@@ -82,16 +174,17 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           state.font_scale = scale;
           session::show_mistake(state, *session::find_lesson("pixel_edges"));
           if (std::string(view) == "3d") state.res_rows = 0.5;  // non-square: the res_c and res_l sliders
+          std::map<std::string, session::WidgetRect> rects;
+          state.widget_rects = &rects;
           headless::HeadlessRenderer renderer(screen.width, screen.height);
           renderer.run_frame(state);
           open_every_section();
           renderer.render_settled(state, 4);
-          std::vector<std::string> cut = cut_windows();
-          for (const std::string& title : cut_titles()) cut.push_back(title);
-          std::string all;
-          for (const std::string& c : cut) all += "\n  " + c;
+          std::string cut = everything_cut(renderer.layout());
+          for (const std::string& c : cut_combos(rects)) cut += "\n  " + c;
+          CHECK(rects.count("###intersection/preview") == 1);  // the caster's combos were laid out
           INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":"
-                            << all);
+                            << cut);
           CHECK(cut.empty());
           ++checked;
         }
@@ -111,4 +204,97 @@ TEST_CASE("a label placed beside others moves off them and stays in the view", "
     CHECK((at.x >= low.x && at.y >= low.y && at.x + size.x <= high.x && at.y + size.y <= high.y));
     placed.push_back({at, size});
   }
+}
+
+// Every step of the construction, where the views draw their own labels ("eye E: z = …", the side view's
+// title, the axes' names) and M_d's tables change: nothing runs past its window's edge, at any font scale,
+// on any screen. Each screen is also laid out 4000 px tall (the panel as wide, every section in sight: a
+// glyph below the panel's fold is not drawn at all, cut or not).
+TEST_CASE("at 1x to 3x, every construction step's drawn labels show whole", "[render][lecture][layout]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1], kScreens[2], Screen{1024, 4000}, Screen{1280, 4000}})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"})
+        for (int step = 0; step <= (std::string(view) == "2d" ? 3 : 5); ++step) {
+          session::AppState state = lecture_state(view, "fr");  // the longer words
+          state.font_scale = scale;
+          state.construction_step = step;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.render_settled(state, 3);
+          const std::string cut = everything_cut(renderer.layout());
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ", step " << step << ":"
+                            << cut);
+          CHECK(cut.empty());
+          ++checked;
+        }
+  CHECK(checked == 5 * 3 * (4 + 6));
+}
+
+namespace {
+// Runs frames until the check's verdict is in (the quiet time is counted on the frames' 60 Hz clock, the
+// program runs on a thread of its own) and then as long as the app's idle loop would (frame_needs_redraw):
+// what is left on screen is what an idle window shows. At most 60 s.
+void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& state) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int frames = 0;
+  do {
+    renderer.run_frame(state);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  } while ((++frames < 30 || ui::frame_needs_redraw(state)) && std::chrono::steady_clock::now() < deadline);
+}
+}  // namespace
+
+// What the header says never takes the picture's height: the picture is drawn as big with a mistake on, with
+// a failing and with a passing check as with nothing to say; the header stays one line that fits, the
+// verdict whole in it; and the verdict, in the panel, is scrolled into sight when it arrives.
+TEST_CASE("the picture keeps its size whatever its header says and the check's verdict is in sight",
+          "[render][lecture][layout]") {
+  const std::string student = EXAMPLE_STUDENT_CPP, mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        auto picture = [&](const char* what, const char* mistake, const std::string& program) {
+          session::AppState state = lecture_state(view, "fr");
+          state.font_scale = scale;
+          if (mistake) {
+            session::show_mistake(state, *session::find_lesson(mistake));
+            state.mistakes.mirrored = true;  // two names: the longest header
+          }
+          state.check_command = program;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.run_frame(state);
+          open_every_section();
+          if (program.empty()) renderer.render_settled(state, 4);
+          else until_verdict(renderer, state);
+          const std::string& title = renderer.layout().image_title;
+          const std::string cut = everything_cut(renderer.layout());
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ", " << what
+                            << ": header '" << title << "'" << cut);
+          CHECK(cut.empty());
+          if (!program.empty()) {  // the verdict whole in the header, and in the panel's view
+            const bool failing = program == mistaken;  // its long form, or its short one, whole
+            CHECK((title.find("VÉRIFICATION : ") != std::string::npos || title.find(failing ? "✗ " : "✓ ") == 0));
+            CHECK(title.find(failing ? " faux" : "réussie") != std::string::npos);
+            const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+            const ImVec4 verdict = ui::drawn_verdict_rect();
+            INFO("verdict at y " << verdict.y << " - " << verdict.w << ", the panel shows y " << panel->InnerClipRect.Min.y
+                                 << " - " << panel->InnerClipRect.Max.y);
+            CHECK(verdict.y >= panel->InnerClipRect.Min.y);
+            CHECK(verdict.w <= panel->InnerClipRect.Max.y + 0.5f);
+          }
+          return renderer.layout().image;
+        };
+        const ui::Rect plain = picture("nothing to say", nullptr, "");
+        for (const auto& [what, mistake, program] :
+             {std::tuple<const char*, const char*, std::string>{"two mistakes", "pixel_edges", ""},
+              {"a failing check", nullptr, mistaken},
+              {"a passing check", nullptr, student}}) {
+          if (scale == 2.0f && !std::string(program).empty()) continue;  // checks at 1× and 3× (each runs a program)
+          const ui::Rect shown = picture(what, mistake, program);
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ", " << what << ": "
+                            << shown.w << "x" << shown.h << " instead of " << plain.w << "x" << plain.h);
+          CHECK(shown.w == plain.w);
+          CHECK(shown.h == plain.h);
+        }
+      }
 }

@@ -100,23 +100,32 @@ TEST_CASE("a host without a thread to spare (the page) has the verdict in the fr
   }
 }
 
-TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
+TEST_CASE("the check's verdict names itself in the image's header, a re-run clears it", "[ui][check]") {
   session::CheckProgress progress;
-  CHECK(session::check_header(progress).empty());  // no verdict yet
+  CHECK(session::check_header(progress).forms.empty());  // no verdict yet
   auto verdict = std::make_shared<session::KeyedVerdict>();
   verdict->verdict.result.status = check::CaseStatus::fail;
   verdict->verdict.result.wrong_pixels = 27932;
   progress.latest = verdict;
   progress.current = true;
-  CHECK(session::check_header(progress) == "CHECK: 27932 pixels wrong");
+  // Longest first, each shorter than the one before, every one naming the count.
+  const std::vector<std::string> failing = session::check_header(progress).forms;
+  REQUIRE(failing.size() == 3);
+  CHECK(failing[0] == "CHECK: 27932 pixels wrong");
+  for (std::size_t i = 0; i < failing.size(); ++i) {
+    CHECK(failing[i].find("27932") != std::string::npos);
+    if (i > 0) CHECK(failing[i].size() < failing[i - 1].size());
+  }
+  CHECK_FALSE(session::check_header(progress).passed);
   progress.running = true;  // checking again: the old verdict is not this image's any more
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(progress).forms.empty());
   progress.running = false;
   progress.current = false;  // made for the camera before the last change
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(progress).forms.empty());
   progress.current = true;
   verdict->verdict.result.status = check::CaseStatus::crash;
-  CHECK(session::check_header(progress) == "CHECK: crash");
-  verdict->verdict.result.status = check::CaseStatus::pass;
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(progress).forms.front() == "CHECK: crash");
+  verdict->verdict.result.status = check::CaseStatus::pass;  // a pass is said too: where the eye is
+  CHECK(session::check_header(progress).passed);
+  CHECK(session::check_header(progress).forms.front() == "CHECK: passed");
 }
