@@ -231,6 +231,8 @@ mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed)
 # A student's and an instructor's walk through the merged window (Tab, non-square, files, figures) found these.
 mutant demo-note-stays-over-the-file src/session/app_state.cpp 's/^  if (!state.message_is_error \&\& state.message == demo_note) state.message.clear();/  (void)demo_note;/' "$SESSION" "^session: ?the note that the other dimension"
 mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.res_rows) state.res_rows = res;$/  (void)0;/' "$SESSION" "^session: ?with non-square on, a show-me"
+# --- #33 view model leftovers ---
+mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  setup.dimension = setup.file.dimension;$/&\n  const bool is_2d = setup.dimension == 2, is_3d = !is_2d;\n  (void)is_2d;\n  (void)is_3d;/' "raycam_io" "^structure: at most 30 dimension branches"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

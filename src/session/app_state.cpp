@@ -21,8 +21,9 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.other_view = std::move(views.other);
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
   state.res = std::visit([](const auto& view) { return res_of(view.camera); }, state.view);
-  // The rows' res of a non-square 3D preset (the handout's second resolution variable).
-  state.res_rows = std::holds_alternative<View3D>(state.view) ? setup.file.camera.res_rows : std::nullopt;
+  // The rows' res of a non-square 3D preset (the handout's second resolution variable; a 2D setup has none:
+  // its file and flags refuse a second res).
+  state.res_rows = setup.file.camera.res_rows;
   state.preset_res = state.res;
   state.preset_res_rows = state.res_rows;
   state.overhead_fit_pending = true;

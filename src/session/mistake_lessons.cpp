@@ -184,7 +184,7 @@ bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
 bool mistake_applies(const Lesson& state, const MistakeLesson& lesson) {
-  return !lesson.info || (dimension(state) == 2 ? lesson.info->in_2d : lesson.info->in_3d);
+  return !lesson.info || exists_in(*lesson.info, dimension(state));
 }
 const char* mistake_label(const MistakeLesson& lesson) {
   return lesson.info ? lesson.info->label[current_language()]

@@ -31,7 +31,9 @@ OpenedViews views_from_setup(const ViewSetup& setup) {
 }
 
 void pack_scene(const View& view, PackedScene3D& packed) {
-  if (const auto* view3d = std::get_if<View3D>(&view)) packed.pack(view3d->scene);  // 2D casts its circles as they are
+  std::visit(overloaded{[](const View2D&) {},  // 2D casts its circles as they are
+                        [&](const View3D& v) { packed.pack(v.scene); }},
+             view);
 }
 
 void cast_view(const View& view, const PackedScene3D& packed, ColourMap& map, const CastOptions& options,

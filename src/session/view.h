@@ -60,16 +60,8 @@ inline int dimension_of(const View& view) {
 // The longest side the camera may use: N in 2D, max(W, H) in 3D.
 inline int max_side(const View2D& view) { return view.max_pixels; }
 inline int max_side(const View3D& view) { return std::max(view.max_columns, view.max_rows); }
-// The scene's objects (circles or spheres), in id order.
-inline std::vector<Circle>& objects_of(Scene2D& scene) { return scene.circles; }
-inline std::vector<Sphere>& objects_of(Scene3D& scene) { return scene.spheres; }
-inline const std::vector<Circle>& objects_of(const Scene2D& scene) { return scene.circles; }
-inline const std::vector<Sphere>& objects_of(const Scene3D& scene) { return scene.spheres; }
-// The image a camera casts: N × 1 in 2D (the colour bar), W × H in 3D.
-inline int image_columns(const Camera2D& camera) { return camera.pixel_count(); }
-inline int image_rows(const Camera2D&) { return 1; }
-inline int image_columns(const Camera3D& camera) { return camera.columns(); }
-inline int image_rows(const Camera3D& camera) { return camera.rows(); }
+// The scene's objects: objects_of(scene) (raycam/scene.h).
+// The image a camera casts: image_columns/image_rows(camera) (raycam/view_setup.h).
 // The primary rays one cast sends.
 template <class Camera>
 double ray_count(const Camera& camera) {
