@@ -235,6 +235,7 @@ mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.
 mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  setup.dimension = setup.file.dimension;$/&\n  const bool is_2d = setup.dimension == 2, is_3d = !is_2d;\n  (void)is_2d;\n  (void)is_3d;/' "raycam_io" "^structure: at most 30 dimension branches"
 mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(language, n == 1 ? english_one : english_many, n);/  return textf(language, english_many, n);/' "raycam_check_tests raycam-cli" "^check: ?(batch counts one|check's counts|check merge of one shard)"
 mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
+mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

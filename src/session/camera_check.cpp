@@ -202,12 +202,12 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
-std::string check_header(const CheckProgress& progress) {
+std::string check_header(Language language, const CheckProgress& progress) {
   if (progress.running || !progress.latest || !progress.current) return {};
   const check::CaseResult& r = progress.latest->verdict.result;
   if (r.status == check::CaseStatus::pass) return {};
-  if (r.status == check::CaseStatus::fail) return trf("CHECK: %lld pixels wrong", r.wrong_pixels);
-  return trf("CHECK: %s", check::text(current_language(), check::status_name(r.status)));
+  if (r.status == check::CaseStatus::fail) return trf(language, "CHECK: %lld pixels wrong", r.wrong_pixels);
+  return trf(language, "CHECK: %s", check::text(language, check::status_name(r.status)));
 }
 
 }  // namespace raycam::session

@@ -49,7 +49,7 @@ SceneFile camera_case(const Lesson& state);
 // What the image's header says about the check, as it names a mistake that is on: "CHECK: 27932 pixels
 // wrong" (or the failing status) when the latest verdict is for the camera shown and did not pass; empty
 // while none, while a run is going (the old verdict is no longer the image's), or when it passed.
-std::string check_header(const CheckProgress& progress);
+std::string check_header(Language language, const CheckProgress& progress);
 
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 

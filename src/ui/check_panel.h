@@ -9,7 +9,7 @@ struct ImDrawList;
 namespace raycam::ui {
 
 // The panel section: the command, the verdict, the diagnosis, the program's stderr.
-void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now);
+void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now, Language language);
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict
 // is for the image on screen).
 void check_overlay(const session::CameraCheck& check, const session::AppState& state, ImDrawList* list, float x0, float y0,

@@ -133,7 +133,6 @@ void apply_theme(const AppState& state, AppliedTheme& applied) {
     set_current_theme(state.high_contrast);
     applied = {state.high_contrast, state.font_scale, ImGui::GetCurrentContext()};
   }
-  set_language(state.language);
 }
 
 void prepare_frame(const AppState& state) {
@@ -233,7 +232,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_section(check_, state.host, ImGui::GetTime());
+    check_section(check_, state.host, ImGui::GetTime(), state.language);
   }
   ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {
@@ -286,23 +285,23 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
 // ---- image window --------------------------------------------------------------------------------------
 void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const bool is_bar = image_is_bar(state.view);
-  const std::string full = is_bar ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-                                  : trf("Image: %d × %d###image", state.map.width, state.map.height);
-  const std::string brief = is_bar ? trf("Colour bar: n = %d###image", state.map.width)
-                                  : trf("%d × %d###image", state.map.width, state.map.height);
+  const std::string full = is_bar ? trf(state.language, "Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+                                  : trf(state.language, "Image: %d × %d###image", state.map.width, state.map.height);
+  const std::string brief = is_bar ? trf(state.language, "Colour bar: n = %d###image", state.map.width)
+                                  : trf(state.language, "%d × %d###image", state.map.width, state.map.height);
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not, and so
   // does a failing check: where the eye is. Where the header is too narrow for the name (lecture sizes), it
   // says "MISTAKE ON" and the name goes on a red line above the image.
   const std::string mistakes = mistakes_on(state);
-  const std::string check = check_header(check_.progress());
+  const std::string check = check_header(state.language, check_.progress());
   const std::string lead = check.empty() ? "" : check + "  |  ";
   std::vector<std::string> candidates;
   if (mistakes.empty()) {
     candidates = {lead + full, lead + brief, check.empty() ? brief : check + "###image"};
   } else {
-    const std::string named = trf("MISTAKE ON: %s", mistakes.c_str());
+    const std::string named = trf(state.language, "MISTAKE ON: %s", mistakes.c_str());
     candidates = {lead + named + "  |  " + full, lead + named + "  |  " + brief, lead + named + "###image",
-                  lead + tr("MISTAKE ON") + "###image", std::string(tr("MISTAKE ON")) + "###image"};
+                  lead + tr(state.language, "MISTAKE ON") + "###image", std::string(tr(state.language, "MISTAKE ON")) + "###image"};
   }
   const std::string title = first_fitting(candidates, area.w);
   const bool mistake_named = mistakes.empty() || title.find(mistakes) != std::string::npos;
@@ -317,7 +316,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   if (open) {
     if (!mistake_named) {
       ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-      wrapped_between_words(trf("MISTAKE ON: %s", mistakes.c_str()));
+      wrapped_between_words(trf(state.language, "MISTAKE ON: %s", mistakes.c_str()));
       ImGui::PopStyleColor();
     }
     const ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -343,17 +342,17 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const std::string title = first_fitting({dimension(state) == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                                                                : tr("Overhead view: looking down the z axis###overhead"),
-                                            tr("Overhead view###overhead"), tr("Overhead###overhead")},
+  const std::string title = first_fitting({dimension(state) == 2 ? tr(state.language, "Overhead view: the plane, the camera and its rays###overhead")
+                                                                : tr(state.language, "Overhead view: looking down the z axis###overhead"),
+                                            tr(state.language, "Overhead view###overhead"), tr(state.language, "Overhead###overhead")},
                                            area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
-    const char* fit = tr("Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
+    const char* fit = tr(state.language, "Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
     if (ImGui::CalcTextSize(fit).x + 2 * ImGui::GetStyle().FramePadding.x > ImGui::GetContentRegionAvail().x)
-      fit = tr("Fit (F)###fit");
+      fit = tr(state.language, "Fit (F)###fit");
     if (ImGui::SmallButton(fit)) state.overhead_fit_pending = true;
     // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
-    const char* hint = tr("holds still while the camera moves; drag: the camera around C");
+    const char* hint = tr(state.language, "holds still while the camera moves; drag: the camera around C");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);
     ImGui::SameLine();
     if (ImGui::CalcTextSize(hint).x <= ImGui::GetContentRegionAvail().x) ImGui::TextDisabled("%s", hint);
@@ -379,10 +378,10 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
 // ---- observer window -----------------------------------------------------------------------------------
 void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const std::string title =
-      fitting_title(tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+      fitting_title(tr(state.language, "Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
                        "turn the observer, ctrl+wheel: zoom)###observer"),
-                    fitting_title(tr("Observer: the camera among the spheres###observer"),
-                                  tr("Observer###observer"), area.w),
+                    fitting_title(tr(state.language, "Observer: the camera among the spheres###observer"),
+                                  tr(state.language, "Observer###observer"), area.w),
                     area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();

@@ -131,7 +131,7 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
 
 // The 3D construction's intermediate camera seen from above (construction_view.h). Axes that point straight
 // up or down (the view before R_y tilts it) shrink to a point: marked ⊗ (into the ground) or ⊙ (out of it).
-void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera) {
+void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera, Language language) {
   constexpr double kAxisLength = 1.5;
   auto colour = [](ConstructionPart part) {
     const glm::vec4 c = construction_colour(part);
@@ -168,7 +168,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   const glm::dvec3 eye = eye_of(world_from_camera);
   const ImVec2 at = m.to_screen(xy(eye));
   draw->AddCircleFilled(at, 5.0f, kConstructionColour);
-  draw->AddText({at.x + 8, at.y - 18}, kConstructionColour, trf("eye E: z = %.2f", eye.z).c_str());
+  draw->AddText({at.x + 8, at.y - 18}, kConstructionColour, trf(language, "eye E: z = %.2f", eye.z).c_str());
 
   // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in the
   // corner shows it, and the tilt, at a fixed scale.
@@ -177,7 +177,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   const ImVec2 low{clip_min.x + 6, clip_max.y - side - 6}, high{clip_min.x + 6 + side, clip_max.y - 6};
   draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
   draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
-  draw->AddText({low.x + 4, low.y + 2}, IM_COL32(200, 200, 210, 255), tr("side view: x →, z ↑"));
+  draw->AddText({low.x + 4, low.y + 2}, IM_COL32(200, 200, 210, 255), tr(language, "side view: x →, z ↑"));
   double reach = 1.0;
   for (const ConstructionSegment& segment : segments)
     reach = std::max({reach, std::abs(segment.from.x), std::abs(segment.from.z), std::abs(segment.to.x),
@@ -201,7 +201,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
 // other end, the eye's left, where the colour bar's column 0 is; and, when the pixels are few enough to
 // tell apart, their edges as ticks (the rays leave from the centres between them, or from the ticks under
 // the "pixel edges" mistake).
-void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camera2D& camera) {
+void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camera2D& camera, Language language) {
   const glm::dmat3& world_from_camera = camera.world_from_camera();
   auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
   const int n = camera.pixel_count();
@@ -228,8 +228,8 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Camer
     draw->AddText(at, kFirstPixelColour, text);
     placed.push_back({at, size});
   };
-  label(minus, -1.0, tr("k = 0"));
-  label(plus, 1.0, tr("eye's left (column 0)"));
+  label(minus, -1.0, tr(language, "k = 0"));
+  label(plus, 1.0, tr(language, "eye's left (column 0)"));
 }
 
 
@@ -338,14 +338,14 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
   const int step = state.construction_step;
   std::visit(overloaded{[&](const View2D& view) {
-                          mark_screen_segment(draw, m, view.camera);
+                          mark_screen_segment(draw, m, view.camera, state.language);
                           if (!final_camera)
                             draw_camera(draw, m, construction_step(view.camera.placement(), step),
                                         kConstructionColour, far_length * 0.3, true);
                         },
                         [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
                           if (!final_camera)
-                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step));
+                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step), state.language);
                         }},
              state.view);
   const glm::dvec2 target = active_target_xy(state);

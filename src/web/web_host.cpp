@@ -70,7 +70,7 @@ void tick() {
       save_scene_file(downloaded, "raycam-case.json");
       page.downloaded_case = scene_to_json(downloaded);
     } catch (const std::exception& error) {
-      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(error.what()));
+      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(page.state->language, error.what()));
     }
   }
   if (page.state->requests.take(session::HostRequestKind::pick_scene_file)) {  // the status line's button

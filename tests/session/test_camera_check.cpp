@@ -102,21 +102,21 @@ TEST_CASE("a host without a thread to spare (the page) has the verdict in the fr
 
 TEST_CASE("a failing check names itself in the image's header, a re-run clears it", "[ui][check]") {
   session::CheckProgress progress;
-  CHECK(session::check_header(progress).empty());  // no verdict yet
+  CHECK(session::check_header(Language::en, progress).empty());  // no verdict yet
   auto verdict = std::make_shared<session::KeyedVerdict>();
   verdict->verdict.result.status = check::CaseStatus::fail;
   verdict->verdict.result.wrong_pixels = 27932;
   progress.latest = verdict;
   progress.current = true;
-  CHECK(session::check_header(progress) == "CHECK: 27932 pixels wrong");
+  CHECK(session::check_header(Language::en, progress) == "CHECK: 27932 pixels wrong");
   progress.running = true;  // checking again: the old verdict is not this image's any more
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(Language::en, progress).empty());
   progress.running = false;
   progress.current = false;  // made for the camera before the last change
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(Language::en, progress).empty());
   progress.current = true;
   verdict->verdict.result.status = check::CaseStatus::crash;
-  CHECK(session::check_header(progress) == "CHECK: crash");
+  CHECK(session::check_header(Language::en, progress) == "CHECK: crash");
   verdict->verdict.result.status = check::CaseStatus::pass;
-  CHECK(session::check_header(progress).empty());
+  CHECK(session::check_header(Language::en, progress).empty());
 }

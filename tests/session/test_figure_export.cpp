@@ -31,12 +31,8 @@ std::string pdf_text(const std::string& file) {
 TEST_CASE("Export figure writes the step shown, or every step, in the window's language", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export");
   session::AppState state = test::state_for({"--view", "2d"});
-  struct Restore {
-    ui::Language language = ui::current_language();
-    ~Restore() { ui::set_language(language); }
-  } restore;
 
-  ui::set_language(ui::Language::fr);
+  state.language = ui::Language::fr;
   state.construction_step = 1;  // the second frame: (b)
   auto files = session::export_construction_figure(state, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
@@ -48,7 +44,7 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
   CHECK(pdf_text(session::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
-  ui::set_language(ui::Language::en);
+  state.language = ui::Language::en;
   files = session::export_construction_figure(state, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
@@ -73,11 +69,7 @@ TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
 TEST_CASE("Export figure draws the matrix on screen, with the panel's format, rays and matrix choice", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-panel");
   session::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
-  struct Restore {
-    ui::Language language = ui::current_language();
-    ~Restore() { ui::set_language(language); }
-  } restore;
-  ui::set_language(ui::Language::en);
+  state.language = ui::Language::en;
   // The format chosen in the panel sets the name's extension.
   CHECK(session::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
   CHECK(session::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
