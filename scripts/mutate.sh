@@ -268,6 +268,12 @@ mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, f
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant combo-choice-cut src/ui/panels.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
+# --- #33 view model leftovers ---
+mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  preset = merged(preset, flags.camera);$/&\n  const bool is_2d = setup.dimension == 2;\n  if (is_2d \&\& flags.camera.phi_deg) throw std::invalid_argument("--phi: 3D only");\n  if (is_2d \&\& flags.camera.res_rows) throw std::invalid_argument("--res: one in 2D");\n  if (is_2d \&\& preset.size \&\& preset.size->size() != 1) throw std::invalid_argument("--size: N in 2D");\n  if (!is_2d \&\& preset.size \&\& preset.size->empty()) throw std::invalid_argument("--size: WxH in 3D");\n  if (is_2d) setup.camera2d = camera2d_from_preset(preset);/' "raycam_io" "^structure: at most 30 dimension branches"
+# (the six branches make_view_setup had before visit_view_setup: 25 + 6 > 30)
+mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(language, n == 1 ? english_one : english_many, n);/  return textf(language, english_many, n);/' "raycam_check_tests raycam-cli" "^check: ?(batch counts one|check's counts|check merge of one shard)"
+mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
+mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -66,6 +66,8 @@ inline constexpr std::size_t kClassicMistakeCount = 14;
 // Every mistake, in the order the app lists them and the diagnosis breaks ties.
 extern const MistakeInfo kClassicMistakes[kClassicMistakeCount];
 
+// Whether the mistake exists in a 2D or a 3D camera (`dimension` 2 or 3).
+inline bool exists_in(const MistakeInfo& mistake, int dimension) { return dimension == 2 ? mistake.in_2d : mistake.in_3d; }
 // nullptr when `id` names no mistake.
 const MistakeInfo* find_mistake(std::string_view id);
 bool any_mistake(const ClassicMistakes& mistakes);

@@ -42,6 +42,12 @@ struct Scene3D {
   std::vector<Sphere> spheres;
 };
 
+// The scene's objects (circles or spheres), in id order: what code written once for both dimensions calls.
+inline std::vector<Circle>& objects_of(Scene2D& scene) { return scene.circles; }
+inline std::vector<Sphere>& objects_of(Scene3D& scene) { return scene.spheres; }
+inline const std::vector<Circle>& objects_of(const Scene2D& scene) { return scene.circles; }
+inline const std::vector<Sphere>& objects_of(const Scene3D& scene) { return scene.spheres; }
+
 // The spheres of a 3D scene in clusters of neighbours, each with a sphere that holds it: what the fast caster
 // projects, so that a cluster out of view is culled in one test, not kSize (a third of 10⁵ spheres can lie
 // outside a view). Neighbours: the spheres split in halves along the longest side of their centres' bounds,

@@ -10,6 +10,10 @@ namespace raycam::check {
 namespace {
 using json = nlohmann::json;
 
+// How the protocol lays out the ids in each dimension: 2D's "ids" is one flat list (the bar's n ids), 3D's a
+// list of rows.
+bool ids_are_flat(int dimension) { return dimension == 2; }
+
 constexpr int kMaxIgnoredDepth = 64;  // members the protocol ignores may nest, within reason
 
 // Reads the answer as nlohmann's parser streams it (SAX), so that no student output can make the checker
@@ -18,8 +22,9 @@ constexpr int kMaxIgnoredDepth = 64;  // members the protocol ignores may nest, 
 // error naming its field, not an exception. The first problem stops the reading.
 class AnswerReader final : public nlohmann::json_sax<json> {
  public:
-  AnswerReader(int dimension, int rows, int columns) : dimension_(dimension), rows_(rows), columns_(columns) {
-    answer.rows = dimension == 2 ? 1 : 0;  // 3D: counted as the rows come
+  AnswerReader(int dimension, int rows, int columns)
+      : dimension_(dimension), flat_(ids_are_flat(dimension)), rows_(rows), columns_(columns) {
+    answer.rows = flat_ ? 1 : 0;  // rows: counted as they come
   }
 
   Answer answer;
@@ -91,7 +96,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
       ++md_rows_;
     } else if (kind == Kind::md && md_rows_ != dimension_ + 1) {
       return fail(md_expected());
-    } else if (kind == Kind::ids && dimension_ == 2) {
+    } else if (kind == Kind::ids && flat_) {
       answer.columns = int(answer.ids.size());
     }
     return pop();
@@ -118,7 +123,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
       case Kind::root:
         return top.key == "ids" ? Place::ids : top.key == "md" ? Place::md : Place::ignored;
       case Kind::ids:
-        return dimension_ == 2 ? Place::ids_number : Place::ids_row;
+        return flat_ ? Place::ids_number : Place::ids_row;
       case Kind::row:
         return Place::ids_number;
       case Kind::md:
@@ -141,7 +146,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
       case Place::root_value:
         return "a JSON object with \"ids\"";
       case Place::ids:
-        return dimension_ == 2 ? "a list of integers" : "a list of rows";
+        return flat_ ? "a list of integers" : "a list of rows";
       case Place::ids_row:
         return "a list of integers";
       case Place::ids_number:
@@ -160,7 +165,7 @@ class AnswerReader final : public nlohmann::json_sax<json> {
   }
   bool too_many() {
     too_big = true;
-    return fail(dimension_ == 2 ? "expected " + std::to_string(columns_) + " ids, got more"
+    return fail(flat_ ? "expected " + std::to_string(columns_) + " ids, got more"
                                 : "expected " + std::to_string(rows_) + " rows of " + std::to_string(columns_) +
                                       " ids, got more");
   }
@@ -193,10 +198,10 @@ class AnswerReader final : public nlohmann::json_sax<json> {
     if (at != Place::ids_number) return scalar("the number " + std::to_string(exact), std::nullopt);
     if (exact < -(number_integer_t(1) << 31) || exact > (number_integer_t(1) << 31) - 1)
       return fail(where() + ": " + std::to_string(exact) + " is not an id");
-    if (dimension_ == 3 && answer.rows > 0 && row_length_ >= answer.columns)  // ragged: named before "too many"
+    if (!flat_ && answer.rows > 0 && row_length_ >= answer.columns)  // ragged: named before "too many"
       return fail("ids[" + std::to_string(answer.rows) + "]: " + std::to_string(row_length_ + 1) +
                   " columns (or more) where row 0 has " + std::to_string(answer.columns));
-    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();
+    if (flat_ ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();
     answer.ids.push_back(int(exact));
     ++row_length_;
     return advance();
@@ -208,7 +213,9 @@ class AnswerReader final : public nlohmann::json_sax<json> {
     return advance();
   }
 
-  int dimension_, rows_, columns_;
+  int dimension_;
+  bool flat_;
+  int rows_, columns_;
   std::vector<Level> stack_;
   int row_length_ = 0, md_rows_ = 0, md_columns_ = 0;
 };
@@ -235,11 +242,12 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
     return parsed;
   }
   Answer& answer = reader.answer;
-  if (dimension == 2) answer.rows = 1;
+  const bool flat = ids_are_flat(dimension);
+  if (flat) answer.rows = 1;
   const std::size_t width = std::size_t(std::max(answer.columns, 1));
   for (std::size_t i = 0; i < answer.ids.size(); ++i)
     if (answer.ids[i] < -1 || answer.ids[i] >= objects) {
-      const std::string at = dimension == 2 ? "ids[" + std::to_string(i) + "]"
+      const std::string at = flat ? "ids[" + std::to_string(i) + "]"
                                             : "ids[" + std::to_string(i / width) + "][" +
                                                   std::to_string(i % width) + "]";
       parsed.error = at + " = " + std::to_string(answer.ids[i]) + ": expected an id in [-1, " +
@@ -248,7 +256,7 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
     }
   if (answer.rows != rows || answer.columns != columns) {
     parsed.wrong_size = true;
-    parsed.error = dimension == 2 ? "expected " + std::to_string(columns) + " ids, got " + std::to_string(answer.columns)
+    parsed.error = flat ? "expected " + std::to_string(columns) + " ids, got " + std::to_string(answer.columns)
                                   : "expected " + std::to_string(rows) + " rows of " + std::to_string(columns) +
                                         " ids, got " + std::to_string(answer.rows) + " of " +
                                         std::to_string(answer.columns);
@@ -259,7 +267,7 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
 
 std::string answer_to_json(const Answer& answer, int dimension) {
   json root;
-  if (dimension == 2) {
+  if (ids_are_flat(dimension)) {
     root["ids"] = answer.ids;
   } else {
     json rows = json::array();

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
@@ -12,11 +12,27 @@
 namespace raycam::check {
 
 namespace {
-const CameraPreset& complete_camera(const SceneFile& file) {
-  const CameraPreset& c = file.camera;
-  const bool complete = c.target && c.d && c.theta_deg && c.df && c.res && c.size && (file.dimension == 2 || c.phi_deg);
-  if (!complete) throw std::invalid_argument("camera: a check case needs target, d, theta, (phi), df, res and size");
-  return c;
+// The case's camera in each dimension, from its preset: a case has every field (3D's also phi).
+bool has_common_fields(const CameraPreset& c) { return c.target && c.d && c.theta_deg && c.df && c.res && c.size; }
+const char* const kIncompleteCamera = "camera: a check case needs target, d, theta, (phi), df, res and size";
+
+Camera2D case_camera(const CameraPreset& c, const Scene2D&) {
+  if (!has_common_fields(c)) throw std::invalid_argument(kIncompleteCamera);
+  if (c.target->size() != 2) throw std::invalid_argument("camera.target: expected 2 components in 2D");
+  return camera2d_from_preset(c);
+}
+Camera3D case_camera(const CameraPreset& c, const Scene3D&) {
+  if (!has_common_fields(c) || !c.phi_deg) throw std::invalid_argument(kIncompleteCamera);
+  if (c.target->size() != 3 || c.size->size() != 2)
+    throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
+  return camera3d_from_preset(c);
+}
+
+// The centre ray of a pixel given by its protocol index.
+Ray2D ray_at(const Camera2D& camera, std::size_t index) { return camera.primary_ray(int(index)); }
+Ray3D ray_at(const Camera3D& camera, std::size_t index) {
+  const std::size_t columns = std::size_t(camera.columns());
+  return camera.primary_ray(int(index / columns), int(index % columns));
 }
 
 // What one centre ray sees, and whether double rounding could change it (kAmbiguityTolerance).
@@ -69,86 +85,68 @@ std::vector<double> row_major(const Matrix& m) {
 }  // namespace
 
 int object_count(const SceneFile& file) {
-  return int(file.dimension == 2 ? file.scene2d.circles.size() : file.scene3d.spheres.size());
+  return visit_scene(file, [](const auto& scene) { return int(objects_of(scene).size()); });
 }
 
 namespace {
-// The case's camera with the mistakes on, and what one pixel (protocol index) sees.
+// The case's camera with the mistakes on, and what one pixel (protocol index) sees, over the case's scene.
+template <class Scene>
 class CaseCamera {
  public:
-  CaseCamera(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula)
-      : file_(file), any_sign_(mistakes.no_t_min), formula_(formula) {
-    const CameraPreset& preset = complete_camera(file);
-    const std::vector<double>& target = *preset.target;
-    if (file.dimension == 2) {
-      if (target.size() != 2) throw std::invalid_argument("camera.target: expected 2 components in 2D");
-      camera2d_.emplace(camera2d_from_preset(preset));
-      camera2d_->set_mistakes(mistakes);
-      columns_ = camera2d_->pixel_count();
-      md_ = row_major<3>(camera2d_->world_from_camera());
-      return;
-    }
-    if (target.size() != 3 || preset.size->size() != 2)
-      throw std::invalid_argument("camera: expected a 3-component target and size [columns, rows] in 3D");
-    camera3d_.emplace(camera3d_from_preset(preset));
-    camera3d_->set_mistakes(mistakes);
-    rows_ = camera3d_->rows();
-    columns_ = camera3d_->columns();
-    md_ = row_major<4>(camera3d_->world_from_camera());
+  CaseCamera(const Scene& scene, const CameraPreset& preset, const ClassicMistakes& mistakes, IntersectFormula formula)
+      : scene_(scene), camera_(case_camera(preset, scene)), any_sign_(mistakes.no_t_min), formula_(formula) {
+    camera_.set_mistakes(mistakes);
+    const auto& m = camera_.world_from_camera();
+    md_ = row_major<std::decay_t<decltype(m)>::length()>(m);
   }
-  int rows() const { return rows_; }
-  int columns() const { return columns_; }
+  int rows() const { return image_rows(camera_); }
+  int columns() const { return image_columns(camera_); }
   const std::vector<double>& md() const { return md_; }
-  Verdict at(std::size_t index) const {
-    if (camera2d_)
-      return classify(file_.scene2d.circles, camera2d_->primary_ray(int(index)), any_sign_, formula_);
-    return classify(
-        file_.scene3d.spheres,
-        camera3d_->primary_ray(int(index / std::size_t(columns_)), int(index % std::size_t(columns_))),
-        any_sign_, formula_);
-  }
+  Verdict at(std::size_t index) const { return classify(objects_of(scene_), ray_at(camera_, index), any_sign_, formula_); }
 
  private:
-  const SceneFile& file_;
+  const Scene& scene_;
+  decltype(case_camera(CameraPreset{}, Scene{})) camera_;
   bool any_sign_;
   IntersectFormula formula_;
-  std::optional<Camera2D> camera2d_;
-  std::optional<Camera3D> camera3d_;
-  int rows_ = 1, columns_ = 0;
   std::vector<double> md_;
 };
 }  // namespace
 
 CaseImage render_case(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula) {
-  const CaseCamera camera(file, mistakes, formula);
-  CaseImage image;
-  image.dimension = file.dimension;
-  image.rows = camera.rows();
-  image.columns = camera.columns();
-  image.md = camera.md();
-  const std::size_t pixels = std::size_t(image.rows) * std::size_t(image.columns);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const Verdict v = camera.at(i);
-    image.ids.push_back(v.id);
-    image.ambiguous.push_back(v.ambiguous);
-  }
-  return image;
+  return visit_scene(file, [&](const auto& scene) {
+    const CaseCamera camera(scene, file.camera, mistakes, formula);
+    CaseImage image;
+    image.dimension = file.dimension;
+    image.rows = camera.rows();
+    image.columns = camera.columns();
+    image.md = camera.md();
+    const std::size_t pixels = std::size_t(image.rows) * std::size_t(image.columns);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      const Verdict v = camera.at(i);
+      image.ids.push_back(v.id);
+      image.ambiguous.push_back(v.ambiguous);
+    }
+    return image;
+  });
 }
 
 bool case_reproduces(const SceneFile& file, const ClassicMistakes& mistakes, IntersectFormula formula,
                      int rows, int columns, const std::vector<int>& ids, const std::vector<double>* md) {
-  const CaseCamera camera(file, mistakes, formula);
-  if (camera.rows() != rows || camera.columns() != columns) return false;
-  if (md && !md_matches(*md, camera.md())) return false;
-  // Pixels in a scattered order (a stride prime to their count): a wrong candidate usually fails within a
-  // few pixels, instead of after a whole background row.
-  const std::size_t pixels = std::size_t(rows) * std::size_t(columns);
-  const std::size_t stride = pixels % 7919 != 0 ? 7919 : 1;
-  for (std::size_t n = 0, i = 0; n < pixels; ++n, i = (i + stride) % pixels) {
-    const Verdict v = camera.at(i);
-    if (pixel_is_wrong(v.ambiguous, v.id, ids[i])) return false;
-  }
-  return true;
+  return visit_scene(file, [&](const auto& scene) {
+    const CaseCamera camera(scene, file.camera, mistakes, formula);
+    if (camera.rows() != rows || camera.columns() != columns) return false;
+    if (md && !md_matches(*md, camera.md())) return false;
+    // Pixels in a scattered order (a stride prime to their count): a wrong candidate usually fails within a
+    // few pixels, instead of after a whole background row.
+    const std::size_t pixels = std::size_t(rows) * std::size_t(columns);
+    const std::size_t stride = pixels % 7919 != 0 ? 7919 : 1;
+    for (std::size_t n = 0, i = 0; n < pixels; ++n, i = (i + stride) % pixels) {
+      const Verdict v = camera.at(i);
+      if (pixel_is_wrong(v.ambiguous, v.id, ids[i])) return false;
+    }
+    return true;
+  });
 }
 
 bool md_matches(const std::vector<double>& answer, const std::vector<double>& expected) {

@@ -235,10 +235,12 @@ constexpr Rgb8 kWrong{255, 0, 0};
 constexpr Rgb8 kAmbiguous{255, 220, 0};
 
 Rgb8 colour_of(const SceneFile& file, int id) {
-  const std::size_t count = file.dimension == 2 ? file.scene2d.circles.size() : file.scene3d.spheres.size();
-  if (id < 0) return file.dimension == 2 ? file.scene2d.background : file.scene3d.background;
-  if (std::size_t(id) >= count) return kInvalid;
-  return file.dimension == 2 ? file.scene2d.circles[std::size_t(id)].colour : file.scene3d.spheres[std::size_t(id)].colour;
+  return visit_scene(file, [id](const auto& scene) {
+    const auto& objects = objects_of(scene);
+    if (id < 0) return scene.background;
+    if (std::size_t(id) >= objects.size()) return kInvalid;
+    return objects[std::size_t(id)].colour;
+  });
 }
 
 // Protocol index → where it is drawn: a 2D bar in image order (column 0 = the eye's left = pixel n-1).

@@ -49,7 +49,13 @@ const std::vector<Translation>& table() {
        "si --no-sandbox est donné"},
       {"running student programs WITHOUT a sandbox (%s): they can read and write what you can",
        "programmes des étudiants lancés SANS bac à sable (%s) : ils peuvent lire et écrire ce que vous pouvez"},
-      {"%zu submissions x %zu cases on %d threads\n", "%zu rendus × %zu cas, %d exécutions à la fois\n"},
+      {"%s x %s on %s\n", "%s × %s, %s\n"},  // submissions x cases on threads, each counted()
+      {"%zu submission", "%zu rendu"},
+      {"%zu submissions", "%zu rendus"},
+      {"%zu case", "%zu cas"},
+      {"%zu cases", "%zu cas"},
+      {"%zu thread", "%zu exécution à la fois"},
+      {"%zu threads", "%zu exécutions à la fois"},
       {"wrote %s (%zu students)\n", "%s écrit (%zu étudiants)\n"},
       {"memory-limit: the run reached its memory bound (--memory), all its processes together",
        "memory-limit : l'exécution a atteint sa borne de mémoire (--memory), tous ses processus ensemble"},
@@ -81,6 +87,10 @@ std::string textf(Language language, const char* english_format, ...) {
   std::string out = format_text(text(language, english_format), args);
   va_end(args);
   return out;
+}
+
+std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many) {
+  return textf(language, n == 1 ? english_one : english_many, n);
 }
 
 }  // namespace raycam::check

@@ -21,6 +21,9 @@ std::string textf(Language language, const char* english_format, ...)
 #endif
     ;
 
+// A count and its noun, singular for one: counted(language, n, "%zu thread", "%zu threads") ("1 thread").
+std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many);
+
 // --lang's language, or the environment's (LANGUAGE, LC_ALL, LC_MESSAGES, LANG) when it was not given.
 Language check_language(std::optional<Language> flag);
 

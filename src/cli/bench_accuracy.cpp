@@ -136,6 +136,23 @@ Camera2D make_camera(const StandardScene& s, Placement placement) {
 Camera3D make_camera_3d(const StandardScene& s, Placement placement) {
   return placed(Camera3D(s.size, s.size), s.orbit3d, placement);
 }
+// Calls function(camera, scene) with the scene's camera placed by `placement` and its objects, 2D or 3D: the
+// sweep is written once over the core's overloads (cast_primary_rays, reference_cast).
+template <class Function>
+void with_camera(const StandardScene& s, Placement placement, Function&& function) {
+  if (s.dimension == 2)
+    function(make_camera(s, placement), s.scene2d);
+  else
+    function(make_camera_3d(s, placement), s.scene3d);
+}
+
+// The exact reference: 2D, the exact bar (analytic footprints); 3D, long double, stable, camera-relative.
+CoverageImage reference_image(const Camera2D& camera, const Scene2D& scene, bool) {
+  return exact_bar_image(exact_bar(camera, scene), scene);
+}
+CoverageImage reference_image(const Camera3D& camera, const Scene3D& scene, bool quick) {
+  return reference_cast(camera, scene, ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
+}
 
 std::vector<StandardScene> standard_scenes(bool quick) {
   std::vector<StandardScene> scenes;
@@ -169,16 +186,10 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   t.scene3d = cluster_3d({1e6, 1e6, -1e6});
   t.orbit3d = Orbit3D{{1e6, 1e6, -1e6}, 8.0, 0.5, 1.0, 2.0};
   scenes.push_back(t);
-  for (StandardScene& scene : scenes) {
-    if (scene.dimension == 2) {
-      scene.reference =
-          exact_bar_image(exact_bar(make_camera(scene, Placement::orbit), scene.scene2d), scene.scene2d);
-    } else {
-      scene.reference = reference_cast(
-          make_camera_3d(scene, Placement::orbit), scene.scene3d,
-          ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
-    }
-  }
+  for (StandardScene& scene : scenes)
+    with_camera(scene, Placement::orbit, [&](const auto& camera, const auto& objects) {
+      scene.reference = reference_image(camera, objects, quick);
+    });
   return scenes;
 }
 
@@ -260,13 +271,9 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
     {  // The plain core caster, for comparison: double, stable, world, 1 spp (conversion not timed).
       Point p{s.name, "core", "double", "stable", "world", "orbit", 1};
       ColourMap map;
-      if (s.dimension == 2) {
-        const Camera2D camera = make_camera(s, Placement::orbit);
-        p.median_ms = median_ms(o.repeats, [&] { map = cast_primary_rays(camera, s.scene2d); });
-      } else {
-        const Camera3D camera = make_camera_3d(s, Placement::orbit);
-        p.median_ms = median_ms(o.repeats, [&] { map = cast_primary_rays(camera, s.scene3d); });
-      }
+      with_camera(s, Placement::orbit, [&](const auto& camera, const auto& scene) {
+        p.median_ms = median_ms(o.repeats, [&] { map = cast_primary_rays(camera, scene); });
+      });
       const CoverageImage image = from_colour_map(map);
       p.id_error = id_disagreement(image, s.reference);
       p.colour_error = mean_colour_error(image, s.reference);
@@ -299,15 +306,9 @@ std::vector<Point> sweep(const BenchOptions& o, const std::vector<StandardScene>
                       placement_name(placement),
                       spp};
               CoverageImage image;
-              if (s.dimension == 2) {
-                const Camera2D camera = make_camera(s, placement);
-                p.median_ms =
-                    median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene2d, options); });
-              } else {
-                const Camera3D camera = make_camera_3d(s, placement);
-                p.median_ms =
-                    median_ms(o.repeats, [&] { image = reference_cast(camera, s.scene3d, options); });
-              }
+              with_camera(s, placement, [&](const auto& camera, const auto& scene) {
+                p.median_ms = median_ms(o.repeats, [&] { image = reference_cast(camera, scene, options); });
+              });
               p.id_error = id_disagreement(image, s.reference);
               p.colour_error = mean_colour_error(image, s.reference);
               points.push_back(p);

@@ -620,7 +620,7 @@ int run_scene(const SpeedOptions& o) {
   const session::View view = session::views_from_setup(setup).on_screen;  // the app's view of the scene
   session::validate(view);
   const double pixels = std::visit([](const auto& v) { return session::ray_count(v.camera); }, view);
-  const std::size_t objects = std::visit([](const auto& v) { return session::objects_of(v.scene).size(); }, view);
+  const std::size_t objects = std::visit([](const auto& v) { return objects_of(v.scene).size(); }, view);
   const bool plain_affordable = pixels * double(objects) <= kMaxPlainTests;
   // Packed once, as the app packs its scene once per scene (packing is not a frame's cost).
   PackedScene3D packed;

@@ -221,8 +221,13 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   const std::string header_line = with_last_field(csv_header(), grade_column_name(flags.scale));
   csv << header_line << std::flush;
   const int threads = detail::resolve_threads(flags.threads);
-  std::fprintf(stderr, "%s", textf(header.language, "%zu submissions x %zu cases on %d threads\n", submissions.size(),
-                                   cases.size(), threads).c_str());
+  const Language language = header.language;
+  std::fprintf(stderr, "%s",
+               textf(language, "%s x %s on %s\n",
+                     counted(language, submissions.size(), "%zu submission", "%zu submissions").c_str(),
+                     counted(language, cases.size(), "%zu case", "%zu cases").c_str(),
+                     counted(language, std::size_t(threads), "%zu thread", "%zu threads").c_str())
+                   .c_str());
   const bool terminal = isatty(2);
   std::size_t students_done = 0;
   auto on_run = [&](std::size_t done, std::size_t total) {

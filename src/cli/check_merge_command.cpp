@@ -7,6 +7,7 @@
 
 #include "batch_record.h"
 #include "check_report.h"
+#include "check_texts.h"
 #include "commands.h"
 #include "csv_merge.h"
 #include "flag_values.h"
@@ -21,12 +22,19 @@ int run_check_merge(const Args& args) {
                "them) shards graded with another battery, students in two shards, and students in none.",
                "raycam-cli check merge"};
   app.add_option("--csv", out, "the merged CSV (its .battery.json is written beside it)")->required();
-  app.add_option("shards", shards, "the shards' CSV files")->required();
+  app.add_option("shards", shards, "the shards' CSV files");
+  // Not CLI11's "shards is required": say what to give, with an example.
+  app.callback([&shards] {
+    if (shards.empty())
+      throw std::invalid_argument("expected the shards' CSV files (the --csv of each `check --batch DIR --shard i/N`), "
+                                  "e.g. raycam-cli check merge --csv all.csv shard1.csv shard2.csv shard3.csv");
+  });
   if (const std::optional<int> done = flags::parse_command_line(app, args)) return *done;  // --help, bad usage
   const check::MergedCsv merged = check::merge_shard_csvs(shards);
   check::write_text_file(out, merged.text);
   check::write_text_file(check::battery_sidecar_path(out), check::battery_record_json(merged.record));
-  std::printf("wrote %s (%zu students from %zu shards)\n", out.c_str(), merged.record.students.size(), shards.size());
+  std::printf("wrote %s (%zu students from %s)\n", out.c_str(), merged.record.students.size(),
+              check::counted(Language::en, shards.size(), "%zu shard", "%zu shards").c_str());
   return 0;
 }
 

@@ -73,13 +73,25 @@ struct FigureOptions {
 const std::vector<std::string> kFormats = {"svg", "pdf", "png", "tikz"};  // figure::Format's order
 constexpr int kMaxPngSide = 20000;  // px: beyond, the image alone would take gigabytes
 
+// How each dimension names its frames: the handout's letters a … d (2D), the steps 0 … 5 (3D).
+struct FrameNames {
+  char first;
+  int count;
+  const char* expected;  // for --frames' message
+};
+FrameNames frame_names(int dimension) {
+  return dimension == 2 ? FrameNames{'a', figure::kFrames2D, "frames among a, b, c, d (a 2D scene), or a range such as a..d"}
+                        : FrameNames{'0', figure::kSteps3D, "steps among 0 … 5 (a 3D scene), or a range such as 0..5"};
+}
+
 // The frames asked for, as indices: "a,b" or "a..d" (2D), "0,3" or "0..5" (3D).
 std::vector<int> frame_indices(const std::vector<std::string>& asked, int dimension) {
-  const std::string first = dimension == 2 ? "a" : "0";
-  const int count = dimension == 2 ? figure::kFrames2D : figure::kSteps3D;
+  const FrameNames names = frame_names(dimension);
+  const char first = names.first;
+  const int count = names.count;
   auto index_of = [&](const std::string& name) -> int {
-    if (name.size() != 1 || name[0] < first[0] || name[0] >= first[0] + count) return -1;
-    return name[0] - first[0];
+    if (name.size() != 1 || name[0] < first || name[0] >= first + count) return -1;
+    return name[0] - first;
   };
   std::vector<int> indices;
   for (const std::string& item : asked) {
@@ -87,11 +99,7 @@ std::vector<int> frame_indices(const std::vector<std::string>& asked, int dimens
     const int from = index_of(dots == std::string::npos ? item : item.substr(0, dots));
     const int to = dots == std::string::npos ? from : index_of(item.substr(dots + 2));
     if (from < 0 || to < from)
-      throw std::invalid_argument(flags::bad_value_message(
-          "--frames",
-          dimension == 2 ? "frames among a, b, c, d (a 2D scene), or a range such as a..d"
-                         : "steps among 0 … 5 (a 3D scene), or a range such as 0..5",
-          item));
+      throw std::invalid_argument(flags::bad_value_message("--frames", names.expected, item));
     for (int i = from; i <= to; ++i) indices.push_back(i);
   }
   if (indices.empty())
@@ -145,9 +153,8 @@ int run_figure(FigureOptions options) {
   const ViewSetup setup = make_view_setup(options.view);
   const std::vector<int> frames = frame_indices(options.frames, setup.dimension);
   const figure::FigureOptions drawing{options.language, options.rays};
-  const figure::Figure drawn = setup.dimension == 2
-                                   ? figure::construction_figure_2d(setup.file.scene2d, setup.camera2d, drawing)
-                                   : figure::construction_figure_3d(setup.file.scene3d, setup.camera3d, drawing);
+  const figure::Figure drawn = visit_view_setup(
+      setup, [&](const auto& camera, const auto& scene) { return figure::construction_figure(scene, camera, drawing); });
   // A page whose title, caption and matrix leave the drawing less than a fifth of its height: the text would
   // run over the drawing and the labels over the matrix (80x60mm at --font-size 12 left it nothing).
   const double room = figure::room_for_drawing_pt(drawn, output);

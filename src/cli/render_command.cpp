@@ -45,7 +45,7 @@ int run_render(RenderOptions options) {
   const std::string& ids = options.ids_path;
   if (!out.empty()) write_png(map, out, 1, session::image_is_bar(view) ? kBarHeight : 1);
   if (!ids.empty()) write_ids(map, ids);
-  const std::size_t objects = std::visit([](const auto& v) { return session::objects_of(v.scene).size(); }, view);
+  const std::size_t objects = std::visit([](const auto& v) { return objects_of(v.scene).size(); }, view);
   std::printf("%dD %dx%d, %zu objects, %.1f%% background%s%s%s%s\n", session::dimension_of(view), map.width,
               map.height, objects,
               100.0 * double(background) / double(map.ids.size()), out.empty() ? "" : "; wrote ", out.c_str(),

@@ -36,7 +36,7 @@ double process_cpu_ms() {
 bool colour_map_is_consistent(const session::AppState& state) {
   return std::visit(
       [&](const auto& view) {
-        const auto& objects = session::objects_of(view.scene);
+        const auto& objects = objects_of(view.scene);
         for (std::size_t i = 0; i < state.map.ids.size(); ++i) {
           const int id = state.map.ids[i];
           if (id < -1 || id >= int(objects.size())) return false;

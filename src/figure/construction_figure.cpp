@@ -108,7 +108,7 @@ void merge_coincident_labels(Frame& frame) {
 std::string mistakes_said(const ClassicMistakes& mistakes, int dimension, Language language) {
   std::string names;
   for (const MistakeInfo& info : kClassicMistakes)
-    if (mistakes.*info.flag && (dimension == 2 ? info.in_2d : info.in_3d))
+    if (mistakes.*info.flag && exists_in(info, dimension))
       names += (names.empty() ? "" : ", ") + escape_markup(info.label[language]);
   if (names.empty()) return "";
   return Words{" ; erreur classique activée : ", "; classic mistake on: "}.in(language) + names;

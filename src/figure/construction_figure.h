@@ -89,6 +89,13 @@ Figure construction_figure_2d(const Scene2D& scene, const Camera2D& camera, cons
 // The 3D steps 0 (identity) … 5 (M_d), as the app's step-by-step view, in a fixed oblique projection.
 inline constexpr int kSteps3D = kConstructionSteps3D + 1;
 Figure construction_figure_3d(const Scene3D& scene, const Camera3D& camera, const FigureOptions& options);
+// Either, for code written once over both dimensions.
+inline Figure construction_figure(const Scene2D& scene, const Camera2D& camera, const FigureOptions& options) {
+  return construction_figure_2d(scene, camera, options);
+}
+inline Figure construction_figure(const Scene3D& scene, const Camera3D& camera, const FigureOptions& options) {
+  return construction_figure_3d(scene, camera, options);
+}
 
 // The 2D frames' matrices: frame 0 … 3 (a … d), the core's construction_step(0 … 3): (c) reached through
 // the handout's two rotations, R(φ_v)·R(ψ0) = R(α).

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "raycam/limits.h"
 
@@ -103,11 +104,18 @@ class FieldReader {
 };
 
 // ---- objects -----------------------------------------------------------------------------------------
+// An object's "type" in a file, and how many coordinates its centre has.
+const char* object_type(const Circle&) { return "circle"; }
+const char* object_type(const Sphere&) { return "sphere"; }
 template <class Object>
-Object read_object(const FieldReader& reader, const json& item, const std::string& field, int dimension) {
+constexpr int kCoordinates = decltype(Object::centre)::length();
+
+template <class Object>
+Object read_object(const FieldReader& reader, const json& item, const std::string& field) {
+  constexpr int dimension = kCoordinates<Object>;
   if (!item.is_object()) reader.fail(field, "an object {\"type\", \"center\", \"radius\", ...}", &item);
   reader.require_known_keys(item, field, {"type", "center", "radius", "color", "name"});
-  const std::string wanted = dimension == 2 ? "circle" : "sphere";
+  const std::string wanted = object_type(Object{});
   const std::string type = reader.string(reader.member(item, "type", field), field + ".type");
   if (type != wanted)
     reader.fail(field + ".type", "\"" + wanted + "\" in a " + std::to_string(dimension) + "D scene",
@@ -124,12 +132,59 @@ Object read_object(const FieldReader& reader, const json& item, const std::strin
 }
 
 // ---- camera preset -----------------------------------------------------------------------------------
-CameraPreset read_camera(const FieldReader& reader, const json& camera, int dimension) {
+// Where the two dimensions' cameras differ: 2D has no phi, one res and a size N; 3D has phi, res as one
+// number or [columns, rows], and a size [columns, rows]. One function per dimension (the scene picks it).
+void require_camera_keys(const FieldReader& reader, const json& camera, const Scene2D&) {
+  reader.require_known_keys(camera, "camera", {"target", "d", "theta", "df", "res", "size"});
+}
+void require_camera_keys(const FieldReader& reader, const json& camera, const Scene3D&) {
+  reader.require_known_keys(camera, "camera", {"target", "d", "theta", "phi", "df", "res", "size"});
+}
+
+double read_res(const FieldReader& reader, const json& res) {
+  return reader.number_in(res, "camera.res", 0.0, 1.0, true, "]0, 1]");
+}
+
+void read_res_and_size(const FieldReader& reader, const json& camera, CameraPreset& preset, const Scene2D&) {
+  if (camera.contains("res")) {
+    const json& res = camera["res"];
+    if (!res.is_number()) reader.fail("camera.res", "a number in ]0, 1]", &res);  // one res
+    preset.res = read_res(reader, res);
+  }
+  if (camera.contains("size")) {
+    const json& size = camera["size"];
+    const json& n = size.is_array() && size.size() == 1 ? size[0] : size;
+    preset.size = std::vector<int>{int(reader.integer_in(n, "camera.size", 1, kMaxPixels2D))};
+  }
+}
+
+void read_res_and_size(const FieldReader& reader, const json& camera, CameraPreset& preset, const Scene3D&) {
+  if (camera.contains("res")) {
+    const json& res = camera["res"];
+    if (res.is_array()) {  // [columns, rows]
+      if (res.size() != 2) reader.fail("camera.res", "a number in ]0, 1] or [columns, rows], each in ]0, 1]", &res);
+      preset.res = reader.number_in(res[0], "camera.res[0]", 0.0, 1.0, true, "]0, 1]");
+      preset.res_rows = reader.number_in(res[1], "camera.res[1]", 0.0, 1.0, true, "]0, 1]");
+    } else {
+      preset.res = read_res(reader, res);
+    }
+  }
+  if (camera.contains("size")) {
+    const json& size = camera["size"];
+    if (!size.is_array() || size.size() != 2) reader.fail("camera.size", "[columns, rows]", &size);
+    const int columns = int(reader.integer_in(size[0], "camera.size[0]", 1, kMaxSide3D));
+    const int rows = int(reader.integer_in(size[1], "camera.size[1]", 1, kMaxSide3D));
+    if (static_cast<long long>(columns) * rows > kMaxPixels3D)
+      reader.fail("camera.size", "columns x rows <= " + std::to_string(kMaxPixels3D), &size);
+    preset.size = std::vector<int>{columns, rows};
+  }
+}
+
+template <class Scene>
+CameraPreset read_camera(const FieldReader& reader, const json& camera, const Scene& scene) {
+  constexpr int dimension = kCoordinates<typename std::decay_t<decltype(objects_of(scene))>::value_type>;
   if (!camera.is_object()) reader.fail("camera", "an object", &camera);
-  if (dimension == 2)
-    reader.require_known_keys(camera, "camera", {"target", "d", "theta", "df", "res", "size"});
-  else
-    reader.require_known_keys(camera, "camera", {"target", "d", "theta", "phi", "df", "res", "size"});
+  require_camera_keys(reader, camera, scene);
   CameraPreset preset;
   if (camera.contains("target"))
     preset.target = reader.vector_of(camera["target"], "camera.target", dimension);
@@ -143,31 +198,7 @@ CameraPreset read_camera(const FieldReader& reader, const json& camera, int dime
   if (camera.contains("df"))
     preset.df = reader.number_in(camera["df"], "camera.df", kMinFocalDistance, kMaxFocalDistance, false,
                                  "[1e-9, 1e9]");
-  if (camera.contains("res")) {
-    const json& res = camera["res"];
-    if (dimension == 2 && !res.is_number()) reader.fail("camera.res", "a number in ]0, 1]", &res);  // one res
-    if (res.is_array()) {  // 3D: [columns, rows]
-      if (res.size() != 2) reader.fail("camera.res", "a number in ]0, 1] or [columns, rows], each in ]0, 1]", &res);
-      preset.res = reader.number_in(res[0], "camera.res[0]", 0.0, 1.0, true, "]0, 1]");
-      preset.res_rows = reader.number_in(res[1], "camera.res[1]", 0.0, 1.0, true, "]0, 1]");
-    } else {
-      preset.res = reader.number_in(res, "camera.res", 0.0, 1.0, true, "]0, 1]");
-    }
-  }
-  if (camera.contains("size")) {
-    const json& size = camera["size"];
-    if (dimension == 2) {
-      const json& n = size.is_array() && size.size() == 1 ? size[0] : size;
-      preset.size = std::vector<int>{int(reader.integer_in(n, "camera.size", 1, kMaxPixels2D))};
-    } else {
-      if (!size.is_array() || size.size() != 2) reader.fail("camera.size", "[columns, rows]", &size);
-      const int columns = int(reader.integer_in(size[0], "camera.size[0]", 1, kMaxSide3D));
-      const int rows = int(reader.integer_in(size[1], "camera.size[1]", 1, kMaxSide3D));
-      if (static_cast<long long>(columns) * rows > kMaxPixels3D)
-        reader.fail("camera.size", "columns x rows <= " + std::to_string(kMaxPixels3D), &size);
-      preset.size = std::vector<int>{columns, rows};
-    }
-  }
+  read_res_and_size(reader, camera, preset, scene);
   return preset;
 }
 
@@ -220,14 +251,13 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   if (!objects.is_array()) reader.fail("objects", "an array", &objects);
   if (objects.size() > kMaxObjects)
     reader.fail("objects", "at most " + std::to_string(kMaxObjects) + " objects");
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const std::string field = "objects[" + std::to_string(i) + "]";
-    if (file.dimension == 2)
-      file.scene2d.circles.push_back(read_object<Circle>(reader, objects[i], field, 2));
-    else
-      file.scene3d.spheres.push_back(read_object<Sphere>(reader, objects[i], field, 3));
-  }
-  if (root.contains("camera")) file.camera = read_camera(reader, root["camera"], file.dimension);
+  visit_scene(file, [&](auto& scene) {
+    auto& read = objects_of(scene);
+    using Object = typename std::decay_t<decltype(read)>::value_type;
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      read.push_back(read_object<Object>(reader, objects[i], "objects[" + std::to_string(i) + "]"));
+    if (root.contains("camera")) file.camera = read_camera(reader, root["camera"], scene);
+  });
   return file;
 }
 
@@ -253,13 +283,26 @@ namespace {
 json colour_json(Rgb8 c) { return json::array({c.r, c.g, c.b}); }
 
 template <class Object>
-json object_json(const Object& object, const char* type, int dimension) {
+json object_json(const Object& object) {
   json centre = json::array();
-  for (int i = 0; i < dimension; ++i) centre.push_back(object.centre[i]);
-  json out = {
-      {"type", type}, {"center", centre}, {"radius", object.radius}, {"color", colour_json(object.colour)}};
+  for (int i = 0; i < kCoordinates<Object>; ++i) centre.push_back(object.centre[i]);
+  json out = {{"type", object_type(object)},
+              {"center", centre},
+              {"radius", object.radius},
+              {"color", colour_json(object.colour)}};
   if (!object.name.empty()) out["name"] = object.name;
   return out;
+}
+
+// The camera's fields that differ by dimension (phi, and read_res_and_size's).
+void write_phi_res_and_size(json& camera, const CameraPreset& p, const Scene2D&) {
+  if (p.res) camera["res"] = *p.res;
+  if (p.size) camera["size"] = (*p.size)[0];
+}
+void write_phi_res_and_size(json& camera, const CameraPreset& p, const Scene3D&) {
+  if (p.phi_deg) camera["phi"] = *p.phi_deg;
+  if (p.res) camera["res"] = p.res_rows ? json({*p.res, *p.res_rows}) : json(*p.res);
+  if (p.size) camera["size"] = *p.size;
 }
 }  // namespace
 
@@ -316,23 +359,18 @@ std::string scene_to_json(const SceneFile& file) {
   json root;
   root["dimension"] = file.dimension;
   json objects = json::array();
-  if (file.dimension == 2) {
-    root["background"] = colour_json(file.scene2d.background);
-    for (const Circle& c : file.scene2d.circles) objects.push_back(object_json(c, "circle", 2));
-  } else {
-    root["background"] = colour_json(file.scene3d.background);
-    for (const Sphere& s : file.scene3d.spheres) objects.push_back(object_json(s, "sphere", 3));
-  }
-  root["objects"] = objects;
   const CameraPreset& p = file.camera;
   json camera = json::object();
   if (p.target) camera["target"] = *p.target;
   if (p.d) camera["d"] = *p.d;
   if (p.theta_deg) camera["theta"] = *p.theta_deg;
-  if (p.phi_deg && file.dimension == 3) camera["phi"] = *p.phi_deg;
   if (p.df) camera["df"] = *p.df;
-  if (p.res) camera["res"] = p.res_rows && file.dimension == 3 ? json({*p.res, *p.res_rows}) : json(*p.res);
-  if (p.size) camera["size"] = file.dimension == 2 ? json((*p.size)[0]) : json(*p.size);
+  visit_scene(file, [&](const auto& scene) {
+    root["background"] = colour_json(scene.background);
+    for (const auto& object : objects_of(scene)) objects.push_back(object_json(object));
+    write_phi_res_and_size(camera, p, scene);
+  });
+  root["objects"] = objects;
   if (!camera.empty()) root["camera"] = camera;
   return readable_json(root, 0) + "\n";
 }

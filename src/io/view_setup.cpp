@@ -24,6 +24,21 @@ CameraPreset merged(CameraPreset base, const CameraPreset& over) {
   if (over.size) base.size = over.size;
   return base;
 }
+
+// Each dimension's own rules for the flags, then its camera from the preset.
+void place(Camera2D& camera, const CameraPreset& preset, const CameraPreset& flags) {
+  if (flags.phi_deg) throw std::invalid_argument("--phi: only for 3D scenes (this one is 2D)");
+  if (flags.res_rows) throw std::invalid_argument("--res: expected one number R for a 2D scene (RC,RL is for 3D)");
+  if (preset.size && preset.size->size() != 1) throw std::invalid_argument("--size: expected N for a 2D scene");
+  if (preset.size && (*preset.size)[0] > kMaxPixels2D)
+    throw std::invalid_argument("--size: expected N in [1, " + std::to_string(kMaxPixels2D) + "] for a 2D scene");
+  camera = camera2d_from_preset(preset);
+}
+void place(Camera3D& camera, const CameraPreset& preset, const CameraPreset&) {
+  if (preset.size && preset.size->size() == 1 && (*preset.size)[0] > kMaxSide3D)
+    throw std::invalid_argument("--size: expected N or WxH with sides in [1, " + std::to_string(kMaxSide3D) + "]");
+  camera = camera3d_from_preset(preset);
+}
 }  // namespace
 
 ViewSetup make_view_setup(const ViewFlags& flags) {
@@ -42,31 +57,13 @@ ViewSetup make_view_setup(const ViewFlags& flags) {
     if (setup.file.dimension == 2) setup.file.camera.theta_deg = kDemoTheta2DDegrees;  // --theta still wins
   }
   setup.dimension = setup.file.dimension;
-  const bool is_2d = setup.dimension == 2;
   CameraPreset& preset = setup.file.camera;
   preset = merged(preset, flags.camera);
 
   if (preset.target && preset.target->size() != std::size_t(setup.dimension))
-    throw std::invalid_argument("--target: expected " + std::string(is_2d ? "x,y" : "x,y,z") + " for a " +
-                                std::to_string(setup.dimension) + "D scene");
-  if (is_2d && flags.camera.phi_deg)
-    throw std::invalid_argument("--phi: only for 3D scenes (this one is 2D)");
-  if (is_2d && flags.camera.res_rows)
-    throw std::invalid_argument("--res: expected one number R for a 2D scene (RC,RL is for 3D)");
-
-  if (is_2d) {
-    if (preset.size && preset.size->size() != 1)
-      throw std::invalid_argument("--size: expected N for a 2D scene");
-    if (preset.size && (*preset.size)[0] > kMaxPixels2D)
-      throw std::invalid_argument("--size: expected N in [1, " + std::to_string(kMaxPixels2D) +
-                                  "] for a 2D scene");
-    setup.camera2d = camera2d_from_preset(preset);
-  } else {
-    if (preset.size && preset.size->size() == 1 && (*preset.size)[0] > kMaxSide3D)
-      throw std::invalid_argument("--size: expected N or WxH with sides in [1, " + std::to_string(kMaxSide3D) +
-                                  "]");
-    setup.camera3d = camera3d_from_preset(preset);
-  }
+    throw std::invalid_argument("--target: expected " + std::string("x,y,z").substr(0, 2 * setup.dimension - 1) +
+                                " for a " + std::to_string(setup.dimension) + "D scene");
+  visit_view_setup(setup, [&](auto& camera, const auto&) { place(camera, preset, flags.camera); });
   return setup;
 }
 
@@ -155,20 +152,13 @@ AngleRoute route_of(PlacementRoute placement) {
 }  // namespace
 
 ColourMap render_with_accuracy(const ViewSetup& setup, const AccuracyFlags& flags) {
-  if (setup.dimension == 2) {
-    Camera2D camera = setup.camera2d;
+  return visit_view_setup(setup, [&](auto camera, const auto& scene) {
     if (flags.placement != PlacementRoute::orbit) {
-      const Orbit2D orbit = camera.orbit();
+      const auto orbit = camera.orbit();
       camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
     }
-    return render_with_accuracy(camera, setup.file.scene2d, flags);
-  }
-  Camera3D camera = setup.camera3d;
-  if (flags.placement != PlacementRoute::orbit) {
-    const Orbit3D orbit = camera.orbit();
-    camera.set_free(camera.screen_centre(), orbit.target, orbit.df, route_of(flags.placement));
-  }
-  return render_with_accuracy(camera, setup.file.scene3d, flags);
+    return render_with_accuracy(camera, scene, flags);
+  });
 }
 
 }  // namespace raycam

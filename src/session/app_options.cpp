@@ -18,9 +18,8 @@ ViewSetup checked_view_setup(const ViewFlags& flags) {
 AppState make_app_state(const AppOptions& options) {
   AppState state;
   state.language = options.language.value_or(language_from_environment());
-  set_language(state.language);  // the messages made below are in the window's language
   // The colour map's default file name in the window's language too.
-  state.export_path = tr("raycam-colour-map.png");
+  state.export_path = tr(state.language, "raycam-colour-map.png");
   std::optional<ViewSetup> setup;
   try {
     setup = checked_view_setup(options.view);
@@ -30,7 +29,7 @@ AppState make_app_state(const AppOptions& options) {
     ViewFlags without_file = options.view;
     without_file.scene_path.reset();
     setup = checked_view_setup(without_file);
-    set_message(state, MessageSource::files, true, cannot_open_message(*options.view.scene_path, error.what()));
+    set_message(state, MessageSource::files, true, cannot_open_message(state.language, *options.view.scene_path, error.what()));
   }
   adopt_view_setup(state, *setup);
   state.mistakes = options.mistakes;

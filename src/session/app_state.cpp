@@ -21,8 +21,9 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.other_view = std::move(views.other);
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
   state.res = std::visit([](const auto& view) { return res_of(view.camera); }, state.view);
-  // The rows' res of a non-square 3D preset (the handout's second resolution variable).
-  state.res_rows = std::holds_alternative<View3D>(state.view) ? setup.file.camera.res_rows : std::nullopt;
+  // The rows' res of a non-square 3D preset (the handout's second resolution variable; a 2D setup has none:
+  // its file and flags refuse a second res).
+  state.res_rows = setup.file.camera.res_rows;
   state.preset_res = state.res;
   state.preset_res_rows = state.res_rows;
   state.overhead_fit_pending = true;
@@ -85,7 +86,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
   try {
     place_cameras(state);
   } catch (const std::exception& error) {  // a parameter out of range: keep the last image, say why
-    set_message(state, MessageSource::camera, true, tr_reason(error.what()));
+    set_message(state, MessageSource::camera, true, tr_reason(state.language, error.what()));
     state.cameras_dirty = false;
     return false;
   }
@@ -124,7 +125,7 @@ bool recast_if_needed(AppState& state, bool interacting) {
       cast = true;
     } catch (const std::invalid_argument& error) {  // e.g. the exact bar refuses a huge scene: say so, draw fast
       set_message(state, MessageSource::caster, true,
-                  tr_reason(error.what()) + tr(" (drawn with the fast caster)"));
+                  tr_reason(state.language, error.what()) + tr(state.language, " (drawn with the fast caster)"));
     }
   }
   if (!cast) {
@@ -141,15 +142,15 @@ bool recast_if_needed(AppState& state, bool interacting) {
   return true;
 }
 
-std::string cannot_open_message(const std::string& path, const std::string& reason) {
-  const std::string shown = tr_reason(reason);
-  return reason.find(path) == std::string::npos ? trf("cannot open %s: %s", path.c_str(), shown.c_str())
-                                                : trf("cannot open: %s", shown.c_str());
+std::string cannot_open_message(Language language, const std::string& path, const std::string& reason) {
+  const std::string shown = tr_reason(language, reason);
+  return reason.find(path) == std::string::npos ? trf(language, "cannot open %s: %s", path.c_str(), shown.c_str())
+                                                : trf(language, "cannot open: %s", shown.c_str());
 }
 
 bool open_scene(AppState& state, const std::string& path) {
   if (path.empty()) {  // Open with an empty box: what to do, not "cannot open: : ..."
-    set_message(state, MessageSource::files, true, tr("type a scene file's path in the box, then Open"));
+    set_message(state, MessageSource::files, true, tr(state.language, "type a scene file's path in the box, then Open"));
     return false;
   }
   try {
@@ -165,12 +166,12 @@ bool open_scene(AppState& state, const std::string& path) {
     state.path_input = path;
     state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
     state.overwrite_pending.clear();
-    set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
+    set_message(state, MessageSource::files, false, trf(state.language, "opened %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
     // The scene and the camera stay as they were; the Open box keeps what was typed (a typo is fixed in
     // place, not retyped); the message names the file and the reason.
-    set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
+    set_message(state, MessageSource::files, true, cannot_open_message(state.language, path, error.what()));
     return false;
   }
 }
@@ -185,10 +186,10 @@ bool save_preset(AppState& state, const std::string& path) {
     }
     const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
-    set_message(state, MessageSource::files, false, trf("saved the camera preset to %s", path.c_str()));
+    set_message(state, MessageSource::files, false, trf(state.language, "saved the camera preset to %s", path.c_str()));
     return true;
   } catch (const std::exception& error) {
-    set_message(state, MessageSource::files, true, trf("cannot save: %s", tr_reason(error.what()).c_str()));
+    set_message(state, MessageSource::files, true, trf(state.language, "cannot save: %s", tr_reason(state.language, error.what()).c_str()));
     return false;
   }
 }
@@ -197,7 +198,7 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite) {
   // `path` is a copy: the Replace button passes state.overwrite_pending itself, cleared on the next line.
   state.overwrite_pending.clear();
   if (path.empty()) {
-    set_message(state, MessageSource::files, true, tr("Save as: type the path of the file to write"));
+    set_message(state, MessageSource::files, true, tr(state.language, "Save as: type the path of the file to write"));
     return false;
   }
   if (!overwrite && std::filesystem::exists(path)) {
@@ -229,7 +230,7 @@ void request_screenshot(HostLink& host) {
 }
 
 std::string window_title(const AppState& state) {
-  const std::string scene = scene_path(state).empty() ? std::string(tr("demo scene"))
+  const std::string scene = scene_path(state).empty() ? std::string(tr(state.language, "demo scene"))
                                                       : std::filesystem::path(scene_path(state)).filename().string();
   return "raycam — " + std::to_string(dimension(state)) + "D — " + scene;
 }
@@ -239,11 +240,11 @@ void switch_dimension(AppState& state, int dimension) {
   const bool left_a_file = !scene_path(state).empty();
   // The note that the view on screen is the demo goes with it: left there, it would still say "demo" over
   // the file the switch comes back to.
-  const std::string demo_note = trf("switched to the built-in %dD demo scene", dimension_of(state.view));
+  const std::string demo_note = trf(state.language, "switched to the built-in %dD demo scene", dimension_of(state.view));
   if (!state.message_is_error && state.message == demo_note) state.message.clear();
   std::swap(state.view, state.other_view);
   if (scene_path(state).empty() && left_a_file)  // leaving a file for the other kind's demo
-    set_message(state, MessageSource::camera, false, trf("switched to the built-in %dD demo scene", dimension));
+    set_message(state, MessageSource::camera, false, trf(state.language, "switched to the built-in %dD demo scene", dimension));
   std::visit(overloaded{[](View2D& view) { if (view.scene.circles.empty()) view.scene = demo_scene_2d(); },
                         [](View3D& view) { if (view.scene.spheres.empty()) view.scene = demo_scene_3d(); }},
              state.view);

@@ -151,7 +151,7 @@ void set_message(Messages& messages, MessageSource source, bool is_error, std::s
 // Asks the host for a screenshot at the next free raycam-screenshot-NNN.png in the current directory.
 void request_screenshot(HostLink& host);
 // "cannot open PATH: REASON", without the path twice when the reason already names it.
-std::string cannot_open_message(const std::string& path, const std::string& reason);
+std::string cannot_open_message(Language language, const std::string& path, const std::string& reason);
 // The first raycam-screenshot-NNN.png (NNN from 001) that does not exist in `directory`.
 std::string next_screenshot_path(const std::string& directory = ".");
 

@@ -202,15 +202,15 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
-CheckHeader check_header(const CheckProgress& progress) {
+CheckHeader check_header(Language language, const CheckProgress& progress) {
   if (progress.running || !progress.latest || !progress.current) return {};
   const check::CaseResult& r = progress.latest->verdict.result;
-  if (r.status == check::CaseStatus::pass) return {{tr("CHECK: passed"), tr("✓ passed")}, true};
+  if (r.status == check::CaseStatus::pass) return {{tr(language, "CHECK: passed"), tr(language, "✓ passed")}, true};
   if (r.status == check::CaseStatus::fail)
-    return {{trf("CHECK: %lld pixels wrong", r.wrong_pixels), trf("✗ %lld pixels wrong", r.wrong_pixels),
-             trf("✗ %lld wrong", r.wrong_pixels)}};
-  const char* status = check::text(current_language(), check::status_name(r.status));
-  return {{trf("CHECK: %s", status), trf("✗ %s", status)}};
+    return {{trf(language, "CHECK: %lld pixels wrong", r.wrong_pixels), trf(language, "✗ %lld pixels wrong", r.wrong_pixels),
+             trf(language, "✗ %lld wrong", r.wrong_pixels)}};
+  const char* status = check::text(language, check::status_name(r.status));
+  return {{trf(language, "CHECK: %s", status), std::string("✗ ") + status}};
 }
 
 }  // namespace raycam::session

@@ -55,7 +55,7 @@ struct CheckHeader {
   std::vector<std::string> forms;
   bool passed = false;
 };
-CheckHeader check_header(const CheckProgress& progress);
+CheckHeader check_header(Language language, const CheckProgress& progress);
 
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 

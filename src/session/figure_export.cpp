@@ -21,18 +21,18 @@ struct Export {
 Export prepare(const AppState& state, const std::string& path, bool all_steps) {
   const int format = figure_format_of(path);
   if (format < 0)
-    throw std::invalid_argument(trf("%s: expected a name ending in .svg, .pdf, .png or .tex", path.c_str()));
+    throw std::invalid_argument(trf(state.language, "%s: expected a name ending in .svg, .pdf, .png or .tex", path.c_str()));
   Export e;
   e.path = std::filesystem::absolute(path).lexically_normal().string();
   e.output.format = figure::Format(format);  // kFigureExtensions is figure::Format's order
   e.output.pages = all_steps && e.output.format == figure::Format::pdf;
   e.output.matrix = state.figure_matrix;
-  const figure::FigureOptions options{current_language() == Language::fr ? figure::Language::fr
+  const figure::FigureOptions options{state.language == Language::fr ? figure::Language::fr
                                                                          : figure::Language::en,
                                       state.figure_rays};
   e.drawn = std::visit(
-      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(scene_as_shown(view), view.camera, options); },
-                 [&](const View3D& view) { return figure::construction_figure_3d(scene_as_shown(view), view.camera, options); }},
+      overloaded{[&](const View2D& view) { return figure::construction_figure_2d(scene_as_shown(state.language, view), view.camera, options); },
+                 [&](const View3D& view) { return figure::construction_figure_3d(scene_as_shown(state.language, view), view.camera, options); }},
       state.view);
   // The app's steps are the figures' frames: 2D steps 0 … 3 are the handout's frames (a) … (d).
   const int count = int(e.drawn.frames.size());

@@ -23,9 +23,9 @@ std::vector<std::string> existing_figure_files(const AppState& state, const std:
 // What the panel says after an export, short (at 3× a message above the status line of six paths covered
 // half the views): one file by its full path; several by their count and one full path that spans them
 // ("wrote 6 files: /home/x/figs/steps-0…5.svg").
-std::string figure_files_message(const std::vector<std::string>& files);
+std::string figure_files_message(Language language, const std::vector<std::string>& files);
 // The question before replacing `existing` (full paths of one export's files), as short.
-std::string figure_replace_question(const std::vector<std::string>& existing);
+std::string figure_replace_question(Language language, const std::vector<std::string>& existing);
 
 // The extensions of the formats, in the order of AppState::figure_format (raycam-cli figure's --format).
 inline constexpr const char* kFigureExtensions[] = {".svg", ".pdf", ".png", ".tex"};

@@ -21,10 +21,10 @@ int max_side(const AppState& state) { return active_max_side(state); }
 std::string pixel_edges_does(const AppState& state) {
   const int n = std::max(state.map.width, 1);
   std::string text =
-      trf("Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
+      trf(state.language, "Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
           "gives a symmetric image.",
           1.0 / n);
-  if (n > 32) text += " " + trf("At n = %d half a pixel is too small to see: show me.", n);
+  if (n > 32) text += " " + trf(state.language, "At n = %d half a pixel is too small to see: show me.", n);
   return text;
 }
 // A show-me's res is both sides': with "non-square" on, setting only res (the columns') would leave the
@@ -55,16 +55,16 @@ void square_pixels_show(AppState& state) {
 // (tests/session/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
 std::string renormalise_does(const AppState& state) {
   const double df = focal(state), edge = std::sqrt((dimension(state) - 1) + df * df);  // 1 or 2 screen coordinates
-  std::string text = trf("Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
+  std::string text = trf(state.language, "Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
   if (state.accuracy.options.formula == IntersectFormula::stable)
     text +=
-        tr("The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only "
+        tr(state.language, "The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only "
            "if |u| = 1, and otherwise grows with how far the object is: rays miss everything not touching "
            "the screen, so the image is background (the ground too). With the naive formula objects swell "
            "instead.");
   else
     text +=
-        tr("The naive test Δ = b² − c uses b = f·u, too big by |u|: a ray hits when it passes within "
+        tr(state.language, "The naive test Δ = b² − c uses b = f·u, too big by |u|: a ray hits when it passes within "
            "√(r² + (|u|² − 1)·b²) of the centre, so every object swells, the far ones most, and covers its "
            "neighbours; t is wrong too. With the stable formula objects vanish instead.");
   return text;
@@ -106,23 +106,23 @@ void object_behind_screen_show(AppState& state) {
       },
       state.view);
 }
-std::string eye_origin_does(const AppState&) {
-  return tr("Rays start at the eye instead of the pixel on the screen: what lies between the eye and the "
+std::string eye_origin_does(const AppState& state) {
+  return tr(state.language, "Rays start at the eye instead of the pixel on the screen: what lies between the eye and the "
             "screen is now seen, and t is measured from the eye. At most settings nothing is there: show me.");
 }
-std::string no_t_min_does(const AppState&) {
-  return tr("The smaller root is taken whatever its sign: a hit behind the ray's start on the screen counts, "
+std::string no_t_min_does(const AppState& state) {
+  return tr(state.language, "The smaller root is taken whatever its sign: a hit behind the ray's start on the screen counts, "
             "and beats any in front. At most settings nothing is behind the screen: show me.");
 }
 
 // ---- arccos route --------------------------------------------------------------------------------------
 std::string arccos_does(const AppState& state) {
   if (dimension(state) == 2)
-    return tr(
+    return tr(state.language,
         "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
         "error √(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
         "Show me goes to 3D, where the pole makes it visible.");
-  return tr(
+  return tr(state.language,
       "Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes an "
       "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
 }
@@ -184,15 +184,15 @@ bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson) {
   return lesson.info ? state.mistakes.*lesson.info->flag : state.arccos_route;
 }
 bool mistake_applies(const Lesson& state, const MistakeLesson& lesson) {
-  return !lesson.info || (dimension(state) == 2 ? lesson.info->in_2d : lesson.info->in_3d);
+  return !lesson.info || exists_in(*lesson.info, dimension(state));
 }
-const char* mistake_label(const MistakeLesson& lesson) {
-  return lesson.info ? lesson.info->label[current_language()]
-                     : tr("arccos route near a pole");
+const char* mistake_label(const Lesson& state, const MistakeLesson& lesson) {
+  return lesson.info ? lesson.info->label[state.language]
+                     : tr(state.language, "arccos route near a pole");
 }
 
 std::string mistake_text(const AppState& state, const MistakeLesson& lesson) {
-  std::string text = lesson.info ? lesson.info->explanation[current_language()] : "";
+  std::string text = lesson.info ? lesson.info->explanation[state.language] : "";
   if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state);
   return text;
 }
@@ -208,7 +208,7 @@ std::string mistakes_on(const AppState& state) {
   std::string names;
   for (const MistakeLesson& lesson : mistake_lessons())
     if (mistake_is_on(state, lesson) && mistake_applies(state, lesson))
-      names += (names.empty() ? "" : ", ") + std::string(mistake_label(lesson));
+      names += (names.empty() ? "" : ", ") + std::string(mistake_label(state, lesson));
   return names;
 }
 

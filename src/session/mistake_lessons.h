@@ -28,7 +28,7 @@ const MistakeLesson* find_lesson(const std::string& id);
 bool& mistake_flag(Lesson& state, const MistakeLesson& lesson);
 bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson);
 bool mistake_applies(const Lesson& state, const MistakeLesson& lesson);  // exists in the current mode
-const char* mistake_label(const MistakeLesson& lesson);
+const char* mistake_label(const Lesson& state, const MistakeLesson& lesson);
 // The core's line and what it does at the current settings.
 std::string mistake_text(const AppState& state, const MistakeLesson& lesson);
 // Turns the mistake on and moves to settings where it shows (the "show me" button).

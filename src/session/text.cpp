@@ -7,8 +7,6 @@ namespace raycam::ui {
 const std::vector<Translation>& translation_table();  // text_table.cpp
 
 namespace {
-Language g_language = Language::en;  // like ImGui's own context: one window, one language at a time
-
 const TranslationTable& table() {
   static const TranslationTable built(translation_table());
   return built;
@@ -17,12 +15,12 @@ const TranslationTable& table() {
 
 const std::vector<Translation>& translations() { return translation_table(); }
 
-const char* tr(const char* english) { return table().lookup(g_language, english); }
+const char* tr(Language language, const char* english) { return table().lookup(language, english); }
 
-std::string trf(const char* english_format, ...) {
+std::string trf(Language language, const char* english_format, ...) {
   va_list args;
   va_start(args, english_format);
-  std::string text = format_text(tr(english_format), args);
+  std::string text = format_text(tr(language, english_format), args);
   va_end(args);
   return text;
 }
@@ -34,12 +32,9 @@ std::string with_no_break_spaces(std::string text) {
   return text;
 }
 
-std::string tr_reason(const std::string& english) {
-  const std::string shown = translate_reason(g_language, english);
-  return g_language == Language::fr ? with_no_break_spaces(shown) : shown;
+std::string tr_reason(Language language, const std::string& english) {
+  const std::string shown = translate_reason(language, english);
+  return language == Language::fr ? with_no_break_spaces(shown) : shown;
 }
-
-void set_language(Language language) { g_language = language; }
-Language current_language() { return g_language; }
 
 }  // namespace raycam::ui

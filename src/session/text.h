@@ -5,7 +5,8 @@
 // conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and
 // src/app has an entry.
 //
-// Add a string: write tr("English text") where it is shown, and add {"English text", "Texte français"} to
+// Add a string: write tr(state.language, "English text") where it is shown (the language is passed: there is no
+// language global), and add {"English text", "Texte français"} to
 // text_table.cpp (French in the handout's words: distance focale d_f, cible C, œil E, écran, point de visée,
 // résolution res, carte des couleurs, M_d = T·R·H).
 #pragma once
@@ -27,13 +28,13 @@ using raycam::language_from_environment;
 using raycam::parse_language_flag;
 using raycam::Translation;
 
-// The text in the current language. `english` must be a key of the table (the test enforces it); a
-// missing key is shown as it is, in English.
-const char* tr(const char* english);
+// The text in `language` (the window's: AppState::language, passed; there is no language global). `english`
+// must be a key of the table (the test enforces it); a missing key is shown as it is, in English.
+const char* tr(Language language, const char* english);
 // tr() then printf-style formatting (the French entry must keep the English conversions, in order).
-std::string trf(const char* english_format, ...)
+std::string trf(Language language, const char* english_format, ...)
 #if defined(__GNUC__)
-    __attribute__((format(printf, 1, 2)))
+    __attribute__((format(printf, 2, 3)))
 #endif
     ;
 
@@ -44,13 +45,10 @@ constexpr const char* tr_later(const char* english) { return english; }
 // before ; : ? ! so that a wrapped line never starts with one.
 std::string with_no_break_spaces(std::string text);
 
-// An error reason (an exception's what(), a checker's detail: English from core, io or the checker) in the
-// current language, by raycam/language.h's translate_reason(), French spacing included. Every reason the
-// window shows goes through it.
-std::string tr_reason(const std::string& english);
-
-void set_language(Language language);
-Language current_language();
+// An error reason (an exception's what(), a checker's detail: English from core, io or the checker) in
+// `language`, by raycam/language.h's translate_reason(), French spacing included. Every reason the window
+// shows goes through it.
+std::string tr_reason(Language language, const std::string& english);
 
 // The whole table (for the tests and for the font's glyph ranges).
 const std::vector<Translation>& translations();
@@ -59,8 +57,6 @@ const std::vector<Translation>& translations();
 
 namespace raycam::session {
 // The session's own code shows its texts through the same lookup.
-using ui::current_language;
-using ui::set_language;
 using ui::tr;
 using ui::tr_later;
 using ui::tr_reason;

@@ -352,7 +352,6 @@ const std::vector<Translation>& translation_table() {
       {"CHECK: %s", "VÉRIFICATION : %s"},
       {"✗ %lld pixels wrong", "✗ %lld pixels faux"},
       {"✗ %lld wrong", "✗ %lld faux"},
-      {"✗ %s", "✗ %s"},
       {"CHECK: passed", "VÉRIFICATION : réussie"},
       {"✓ passed", "✓ réussie"},
       {"Running your program needs the desktop app (docs/web.md).",

@@ -33,7 +33,9 @@ OpenedViews views_from_setup(const ViewSetup& setup) {
 }
 
 void pack_scene(const View& view, PackedScene3D& packed) {
-  if (const auto* view3d = std::get_if<View3D>(&view)) packed.pack(view3d->scene);  // 2D casts its circles as they are
+  std::visit(overloaded{[](const View2D&) {},  // 2D casts its circles as they are
+                        [&](const View3D& v) { packed.pack(v.scene); }},
+             view);
 }
 
 void cast_view(const View& view, const PackedScene3D& packed, ColourMap& map, const CastOptions& options,
@@ -58,21 +60,21 @@ SceneFile scene_file_of(const View& view, const CameraPreset& camera) {
 
 namespace {
 template <class AnyView>
-std::string name_as_shown(const AnyView& view, const std::string& name) {
-  return view.scene_path.empty() ? tr(name.c_str()) : name;  // the demo's names are keys of the text table
+std::string name_as_shown(Language language, const AnyView& view, const std::string& name) {
+  return view.scene_path.empty() ? tr(language, name.c_str()) : name;  // the demo's names are keys of the text table
 }
 template <class AnyView>
-auto with_names_as_shown(const AnyView& view) {
+auto with_names_as_shown(Language language, const AnyView& view) {
   auto scene = view.scene;
-  for (auto& object : objects_of(scene)) object.name = name_as_shown(view, object.name);
+  for (auto& object : objects_of(scene)) object.name = name_as_shown(language, view, object.name);
   return scene;
 }
 }  // namespace
 
-std::string shown_object_name(const View& view, std::size_t id) {
-  return std::visit([&](const auto& v) { return name_as_shown(v, objects_of(v.scene).at(id).name); }, view);
+std::string shown_object_name(Language language, const View& view, std::size_t id) {
+  return std::visit([&](const auto& v) { return name_as_shown(language, v, objects_of(v.scene).at(id).name); }, view);
 }
-Scene2D scene_as_shown(const View2D& view) { return with_names_as_shown(view); }
-Scene3D scene_as_shown(const View3D& view) { return with_names_as_shown(view); }
+Scene2D scene_as_shown(Language language, const View2D& view) { return with_names_as_shown(language, view); }
+Scene3D scene_as_shown(Language language, const View3D& view) { return with_names_as_shown(language, view); }
 
 }  // namespace raycam::session

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "raycam/camera2d.h"
+#include "raycam/languages.h"
 #include "raycam/camera3d.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene.h"
@@ -60,16 +61,8 @@ inline int dimension_of(const View& view) {
 // The longest side the camera may use: N in 2D, max(W, H) in 3D.
 inline int max_side(const View2D& view) { return view.max_pixels; }
 inline int max_side(const View3D& view) { return std::max(view.max_columns, view.max_rows); }
-// The scene's objects (circles or spheres), in id order.
-inline std::vector<Circle>& objects_of(Scene2D& scene) { return scene.circles; }
-inline std::vector<Sphere>& objects_of(Scene3D& scene) { return scene.spheres; }
-inline const std::vector<Circle>& objects_of(const Scene2D& scene) { return scene.circles; }
-inline const std::vector<Sphere>& objects_of(const Scene3D& scene) { return scene.spheres; }
-// The image a camera casts: N × 1 in 2D (the colour bar), W × H in 3D.
-inline int image_columns(const Camera2D& camera) { return camera.pixel_count(); }
-inline int image_rows(const Camera2D&) { return 1; }
-inline int image_columns(const Camera3D& camera) { return camera.columns(); }
-inline int image_rows(const Camera3D& camera) { return camera.rows(); }
+// The scene's objects: objects_of(scene) (raycam/scene.h).
+// The image a camera casts: image_columns/image_rows(camera) (raycam/view_setup.h).
 // The primary rays one cast sends.
 template <class Camera>
 double ray_count(const Camera& camera) {
@@ -120,9 +113,9 @@ SceneFile scene_file_of(const View& view, const CameraPreset& camera);
 // The names the window shows (the inspector, the figures): the built-in demo is raycam's own scene (scenes/
 // classic2d.json and classic3d.json name its objects in English), so its names follow the window's language;
 // a file's names stay as written.
-std::string shown_object_name(const View& view, std::size_t id);
+std::string shown_object_name(Language language, const View& view, std::size_t id);
 // The view's scene with those names (for a figure drawn in the window's language).
-Scene2D scene_as_shown(const View2D& view);
-Scene3D scene_as_shown(const View3D& view);
+Scene2D scene_as_shown(Language language, const View2D& view);
+Scene3D scene_as_shown(Language language, const View3D& view);
 
 }  // namespace raycam::session

@@ -35,35 +35,35 @@ VerdictInView& verdict_in_view() {
 }
 }  // namespace
 
-void check_section(CameraCheck& check, const HostCapabilities& host, double now) {
+void check_section(CameraCheck& check, const HostCapabilities& host, double now, Language language) {
   const CheckProgress progress = check.progress();
   VerdictInView& in_view = verdict_in_view();
   const bool arrived = in_view.arrived(progress);
   if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
   if (arrived) in_view = {progress.latest, true};
-  if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
+  if (!ui::section(tr(language, "Check my camera###check"), tr(language, "Check###check"))) return;
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
+  wrapped_between_words(tr(language, "Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
                            "it is checked whenever they change (docs/check.md)."));
   ImGui::PopStyleColor();
   CheckRequest& request = check.request();
   if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
-    wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
+    wrapped_between_words(tr(language, "A page cannot run your program: download this camera's case, run your program on "
                              "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
-    if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
-    if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
-    if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
+    if (button(tr(language, "Download this camera's case###check_case"))) request.download_case = true;
+    if (button(tr(language, "Give the answer file…###check_answer"))) request.pick_answer = true;
+    if (!request.command.empty()) wrapped_between_words(trf(language, "answer file: %s", request.command.c_str()));
   } else {
-    const std::string label = tr("program###check_command");  // above its box, which takes the whole width
+    const std::string label = tr(language, "program###check_command");  // above its box, which takes the whole width
     wrapped_between_words(label.substr(0, label.find("##")));
     ImGui::SetNextItemWidth(-FLT_MIN);
     ImGui::InputText("###check_command", &request.command);
-    checkbox(tr("an answer file, not a program###check_is_file"), &request.is_file);
-    checkbox(tr("check when the camera changes###check_auto"), &request.automatic);
-    if (button(tr("Check now###check_now"))) request.check_now = true;
+    checkbox(tr(language, "an answer file, not a program###check_is_file"), &request.is_file);
+    checkbox(tr(language, "check when the camera changes###check_auto"), &request.automatic);
+    if (button(tr(language, "Check now###check_now"))) request.check_now = true;
   }
 
-  if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));
+  if (progress.running) wrapped_between_words(trf(language, "running… (%.1f s)", now - progress.started_at));
   if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
   const check::CaseResult& r = v.result;
@@ -72,27 +72,27 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   ImGui::BeginGroup();  // one item: the verdict
   if (r.status == check::CaseStatus::pass)
-    wrapped_between_words(tr("pass: every pixel agrees"));
+    wrapped_between_words(tr(language, "pass: every pixel agrees"));
   else if (r.status == check::CaseStatus::fail)
-    wrapped_between_words(trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
+    wrapped_between_words(trf(language, "fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
   else
-    wrapped_between_words(trf("%s: %s", check::text(current_language(), check::status_name(r.status)),
-                              tr_reason(r.detail).c_str()));
+    wrapped_between_words(trf(language, "%s: %s", check::text(language, check::status_name(r.status)),
+                              tr_reason(language, r.detail).c_str()));
   ImGui::EndGroup();
   ImGui::PopStyleColor();
   if (arrived) ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   in_view.drawn_at = {low.x, low.y, high.x, high.y};
-  if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
-  if (!v.sandboxed && !request.is_file) wrapped_between_words(tr("no sandbox: bubblewrap is not available here"));
+  if (!progress.current) wrapped_between_words(tr(language, "(for the camera before your last change)"));
+  if (!v.sandboxed && !request.is_file) wrapped_between_words(tr(language, "no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
-    ImGui::TextWrapped("%s", tr("no classic mistake reproduces this image"));
+    ImGui::TextWrapped("%s", tr(language, "no classic mistake reproduces this image"));
   for (const check::Explanation& e : v.diagnosis) {
     ImGui::Bullet();
     // The mistakes' names in the window's language, not their ids ("mirrored + rows from the bottom").
     std::string names;
-    for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(m->label[current_language()]);
-    wrapped_between_words(trf("%s: %s", names.c_str(), e.text(current_language()).c_str()));
+    for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(m->label[language]);
+    wrapped_between_words(trf(language, "%s: %s", names.c_str(), e.text(language).c_str()));
   }
   if (!r.stderr_text.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);

@@ -11,7 +11,7 @@ struct ImDrawList;
 namespace raycam::ui {
 
 // The panel section: the command, the verdict, the diagnosis, the program's stderr.
-void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now);
+void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now, Language language);
 // Where the panel last drew a verdict (x0, y0, x1, y1 in screen pixels), for the tests.
 ImVec4 drawn_verdict_rect();
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict

@@ -136,7 +136,6 @@ void apply_theme(const AppState& state, AppliedTheme& applied) {
     set_current_theme(state.high_contrast);
     applied = {state.high_contrast, state.font_scale, ImGui::GetCurrentContext()};
   }
-  set_language(state.language);
 }
 
 void prepare_frame(const AppState& state, float pixel_density) {
@@ -236,7 +235,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state);
     inspector_section(state);
-    check_section(check_, state.host, ImGui::GetTime());
+    check_section(check_, state.host, ImGui::GetTime(), state.language);
     // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
     // would leave the verdict below the fold until the next event).
     const ImGuiWindow* panel = ImGui::GetCurrentWindow();
@@ -295,18 +294,18 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   const bool is_bar = image_is_bar(state.view);
   auto shown = [](const std::string& label) { return label.substr(0, label.find("###")); };
   const std::string full =
-      shown(is_bar ? trf("Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
-                   : trf("Image: %d × %d###image", state.map.width, state.map.height));
-  const std::string brief = shown(is_bar ? trf("Colour bar: n = %d###image", state.map.width)
-                                         : trf("%d × %d###image", state.map.width, state.map.height));
+      shown(is_bar ? trf(state.language, "Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+                   : trf(state.language, "Image: %d × %d###image", state.map.width, state.map.height));
+  const std::string brief = shown(is_bar ? trf(state.language, "Colour bar: n = %d###image", state.map.width)
+                                         : trf(state.language, "%d × %d###image", state.map.width, state.map.height));
   // A mistake that is on is named in the header, in red, whether the mistakes panel is open or not, and so
   // is the check's verdict: where the eye is. One line whatever it says (image_header.h): the picture under
   // it keeps its height, so that turning a mistake on changes the picture, not its size.
   const std::string mistakes = mistakes_on(state);
-  const CheckHeader check = check_header(check_.progress());
+  const CheckHeader check = check_header(state.language, check_.progress());
   const ImageHeader header =
-      fit_image_header({check.forms, mistakes.empty() ? "" : trf("MISTAKE ON: %s", mistakes.c_str()),
-                        tr("MISTAKE ON"), {full, brief}},
+      fit_image_header({check.forms, mistakes.empty() ? "" : trf(state.language, "MISTAKE ON: %s", mistakes.c_str()),
+                        tr(state.language, "MISTAKE ON"), {full, brief}},
                        area.w);
   const bool alarm = !mistakes.empty() || (!check.forms.empty() && !check.passed);
   const int header_colours = alarm || !check.forms.empty() ? 3 : 0;
@@ -351,17 +350,17 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
 
 // ---- overhead window -----------------------------------------------------------------------------------
 void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayout& layout) {
-  const std::string title = first_fitting({dimension(state) == 2 ? tr("Overhead view: the plane, the camera and its rays###overhead")
-                                                                : tr("Overhead view: looking down the z axis###overhead"),
-                                            tr("Overhead view###overhead"), tr("Overhead###overhead")},
+  const std::string title = first_fitting({dimension(state) == 2 ? tr(state.language, "Overhead view: the plane, the camera and its rays###overhead")
+                                                                : tr(state.language, "Overhead view: looking down the z axis###overhead"),
+                                            tr(state.language, "Overhead view###overhead"), tr(state.language, "Overhead###overhead")},
                                            area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
-    const char* fit = tr("Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
+    const char* fit = tr(state.language, "Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
     if (ImGui::CalcTextSize(fit).x + 2 * ImGui::GetStyle().FramePadding.x > ImGui::GetContentRegionAvail().x)
-      fit = tr("Fit (F)###fit");
+      fit = tr(state.language, "Fit (F)###fit");
     if (ImGui::SmallButton(fit)) state.overhead_fit_pending = true;
     // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
-    const char* hint = tr("holds still while the camera moves; drag: the camera around C");
+    const char* hint = tr(state.language, "holds still while the camera moves; drag: the camera around C");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);
     ImGui::SameLine();
     if (ImGui::CalcTextSize(hint).x <= ImGui::GetContentRegionAvail().x) ImGui::TextDisabled("%s", hint);
@@ -387,10 +386,10 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
 // ---- observer window -----------------------------------------------------------------------------------
 void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayout& layout) {
   const std::string title =
-      fitting_title(tr("Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
+      fitting_title(tr(state.language, "Observer: the camera among the spheres (left drag: orbit the camera, right drag: "
                        "turn the observer, ctrl+wheel: zoom)###observer"),
-                    fitting_title(tr("Observer: the camera among the spheres###observer"),
-                                  tr("Observer###observer"), area.w),
+                    fitting_title(tr(state.language, "Observer: the camera among the spheres###observer"),
+                                  tr(state.language, "Observer###observer"), area.w),
                     area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();

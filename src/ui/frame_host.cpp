@@ -31,9 +31,9 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
     const std::string path = shot->path.empty() ? "raycam-screenshot.png" : shot->path;
     try {
       gl::write_png(host.read_back(), path);
-      set_message(state, MessageSource::files, false, trf("wrote %s", path.c_str()));
+      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", path.c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, tr_reason(error.what()));
+      set_message(state, MessageSource::files, true, tr_reason(state.language, error.what()));
       result.screenshot_failed = true;
     }
   }

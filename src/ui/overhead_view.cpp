@@ -189,7 +189,7 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
 // The 3D construction's intermediate camera seen from above (construction_view.h). Axes that point straight
 // up or down (the view before R_y tilts it) shrink to a point: marked ⊗ (into the ground) or ⊙ (out of it).
 void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera,
-                          const PlacedLabels& placed) {
+                          const PlacedLabels& placed, Language language) {
   constexpr double kAxisLength = 1.5;
   auto colour = [](ConstructionPart part) {
     const glm::vec4 c = construction_colour(part);
@@ -231,7 +231,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   const glm::dvec3 eye = eye_of(world_from_camera);
   const ImVec2 at = m.to_screen(xy(eye));
   draw->AddCircleFilled(at, 5.0f, kConstructionColour);
-  const std::string height = trf("eye E: z = %.2f", eye.z);
+  const std::string height = trf(language, "eye E: z = %.2f", eye.z);
   const ImVec2 height_size = ImGui::CalcTextSize(height.c_str()), height_at{at.x + 8, at.y - 18};
   const bool beside_eye = height_at.x >= clip_min.x && height_at.y >= clip_min.y &&
                           height_at.x + height_size.x <= clip_max.x && height_at.y + height_size.y <= clip_max.y &&
@@ -239,7 +239,7 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
 
   const float side = std::min(170.0f, 0.4f * std::min(clip_max.x - clip_min.x, clip_max.y - clip_min.y));
   const ImVec2 low{clip_min.x + 6, clip_max.y - side - 6}, high{clip_min.x + 6 + side, clip_max.y - 6};
-  const std::string side_title = beside_eye ? tr("side view: x →, z ↑") : std::string(tr("side view: x →, z ↑")) + "\n" + height;
+  const std::string side_title = beside_eye ? tr(language, "side view: x →, z ↑") : std::string(tr(language, "side view: x →, z ↑")) + "\n" + height;
   const bool title_inside = ImGui::CalcTextSize(side_title.c_str()).x <= side - 8;
   const FittedLabel title =
       fit_label(side_title, title_inside ? side - 8 : clip_max.x - clip_min.x - 20, title_inside ? 1.0f : kInsetFontScale);
@@ -326,8 +326,8 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppSt
     placed.push_back({top_left, size});
     if (state.widget_rects) (*state.widget_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
   };
-  label(minus, -along, tr("k = 0 (eye's right)"), tr("k = 0"), "###label_k0");
-  label(plus, along, tr("column 0 (eye's left)"), tr("column 0"), "###label_column0");
+  label(minus, -along, tr(state.language, "k = 0 (eye's right)"), tr(state.language, "k = 0"), "###label_k0");
+  label(plus, along, tr(state.language, "column 0 (eye's left)"), tr(state.language, "column 0"), "###label_column0");
 }
 
 // Primary rays of the 2D bar (or of the middle image row in 3D): the same rays as the caster's, each drawn to
@@ -488,7 +488,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
                         },
                         [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
                           if (!final_camera)
-                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step), placed);
+                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step), placed, state.language);
                         }},
              state.view);
   const glm::dvec2 target = active_target_xy(state);

@@ -1,5 +1,5 @@
 // Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
-// status line · help · shortcuts. Every visible string goes through tr()/trf() (text.h).
+// status line · help · shortcuts. Every visible string goes through tr(state.language, )/trf(state.language, ) (text.h).
 #include "panels.h"
 
 #include <imgui.h>
@@ -134,7 +134,7 @@ bool drag_doubles(const char* label, double* values, int count) {
 // The target C's coordinates: side by side where each shows -10.00 whole, else (1024 px at 3×) the label
 // above and one full-width field a line ("###target0", "###target1", ...).
 bool target_fields(const AppState& state, double* values, int count) {
-  const char* label = tr("target C###target");
+  const char* label = tr(state.language, "target C###target");
   const float needed = drag_doubles_width(count);
   if (ImGui::GetContentRegionAvail().x >= needed)
     return labelled(state, label, [&](const char* l) { return drag_doubles(l, values, count); }, needed);
@@ -280,37 +280,37 @@ bool section(const char* full, const char* brief, int flags) {
 
 // ---- camera --------------------------------------------------------------------------------------------
 void camera_section(AppState& state) {
-  if (!section(tr("Camera###camera"), tr("Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!section(tr(state.language, "Camera###camera"), tr(state.language, "Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int wanted = dimension(state);
-  bool mode_changed = ImGui::RadioButton(tr("2D camera"), &wanted, 2);
-  same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr("3D camera")).x);
-  mode_changed |= ImGui::RadioButton(tr("3D camera"), &wanted, 3);
+  bool mode_changed = ImGui::RadioButton(tr(state.language, "2D camera"), &wanted, 2);
+  same_line_if_fits(ImGui::GetFrameHeight() + ImGui::CalcTextSize(tr(state.language, "3D camera")).x);
+  mode_changed |= ImGui::RadioButton(tr(state.language, "3D camera"), &wanted, 3);
   if (mode_changed) switch_dimension(state, wanted);
 
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
-  bool changed = slider_double(state, tr("d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+  bool changed = slider_double(state, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
                                "%.3f", true);
-  changed |= slider_double(state, tr("d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+  changed |= slider_double(state, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
                            "%.2f", true);
-  changed |= slider_degrees(state, tr("θ azimuth###theta"), theta, -180.0, 180.0);
+  changed |= slider_degrees(state, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
   std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
                         [&](View3D& view) {
-                          changed |= slider_degrees(state, tr("φ polar angle###phi"), view.orbit.phi,
+                          changed |= slider_degrees(state, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
                                                     glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
                         }},
              state.view);
   const int max_size = active_max_side(state);
   // The handout's one or two resolution variables (two in 3D, "non-square" on).
   if (dimension(state) == 2 || !state.res_rows) {
-    changed |= slider_double(state, tr("res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(state, tr(state.language, "res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   } else {  // the handout's two resolution variables: nbc = round(res_c·W), nbl = round(res_l·H)
-    changed |= slider_double(state, tr("res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
-    changed |= slider_double(state, tr("res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
+    changed |= slider_double(state, tr(state.language, "res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(state, tr(state.language, "res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
                              true);
   }
   bool non_square = state.res_rows.has_value();
-  if (dimension(state) == 3 && checkbox(tr("non-square: res per side"), &non_square)) {
+  if (dimension(state) == 3 && checkbox(tr(state.language, "non-square: res per side"), &non_square)) {
     state.res_rows = non_square ? std::optional<double>(state.res) : std::nullopt;
     changed = true;
   }
@@ -320,7 +320,7 @@ void camera_section(AppState& state) {
   }, state.view);
   std::visit(overloaded{[&](View2D& view) {
                           int n = view.max_pixels;
-                          if (labelled(state, tr("N max pixels###N"),
+                          if (labelled(state, tr(state.language, "N max pixels###N"),
                                        [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
                             view.max_pixels = std::clamp(n, 1, kMaxPixels2DInApp);
                             changed = true;
@@ -328,7 +328,7 @@ void camera_section(AppState& state) {
                         },
                         [&](View3D& view) {
                           int size[2] = {view.max_columns, view.max_rows};
-                          if (labelled(state, tr("max size W, H###size"),
+                          if (labelled(state, tr(state.language, "max size W, H###size"),
                                        [&](const char* l) { return ImGui::InputInt2(l, size); })) {
                             view.max_columns = std::clamp(size[0], 1, kMaxSideInApp);
                             view.max_rows = std::clamp(size[1], 1, kMaxSideInApp);
@@ -337,10 +337,10 @@ void camera_section(AppState& state) {
                         }},
              state.view);
   const double fov = std::visit([](const auto& view) { return view.camera.field_of_view(); }, state.view);
-  ImGui::TextWrapped("%s", trf("n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
+  ImGui::TextWrapped("%s", trf(state.language, "n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
                                glm::degrees(fov)).c_str());
-  if (button(tr("Reset camera"))) reset_camera(state);  // the scene file's preset
-  explain(tr("drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
+  if (button(tr(state.language, "Reset camera"))) reset_camera(state);  // the scene file's preset
+  explain(tr(state.language, "drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
 }
@@ -350,28 +350,28 @@ namespace {
 // M_d's factors and their product up to `step`, as the handout writes them in each dimension.
 void placement_tables(AppState& state, const View2D& view, int step, int steps) {
   const Placement2D& p = view.camera.placement();
-  ImGui::TextWrapped("%s", trf("M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
+  ImGui::TextWrapped("%s", trf(state.language, "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
   if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
   if (ImGui::TreeNode("R(α)")) {
     matrix_table<3>("R", p.rotation);
     ImGui::TreePop();
   }
   if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
-  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
   state.shown_matrix = glm::dmat4(construction_step(p, step));
   matrix_table<3>("M", construction_step(p, step));
 }
 void placement_tables(AppState& state, const View3D& view, int step, int steps) {
   if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
-    explain(tr(
+    explain(tr(state.language,
         "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
         "(red), image up (green), view (blue)."));
   if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
-    explain(tr(
+    explain(tr(state.language,
         "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
         "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
         "world up points down and the image is upside down."));
-    if (checkbox(tr("show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+    if (checkbox(tr(state.language, "show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
       state.cameras_dirty = true;
   }
   const Placement3D& p = view.camera.placement();
@@ -390,7 +390,7 @@ void placement_tables(AppState& state, const View3D& view, int step, int steps) 
     ImGui::TreePop();
   }
   if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
-  wrapped_between_words(step == steps ? std::string("M_d") : trf("product of the first %d factors", step));
+  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
   state.shown_matrix = construction_step(p, step);
   matrix_table<4>("M", construction_step(p, step));
 }
@@ -401,30 +401,30 @@ void placement_tables(AppState& state, const View3D& view, int step, int steps) 
 void export_figure_now(AppState& state, bool all) {
   try {
     const std::vector<std::string> files = export_construction_figure(state, state.figure_path, all);
-    set_message(state, MessageSource::construction, false, figure_files_message(files));
+    set_message(state, MessageSource::construction, false, figure_files_message(state.language, files));
   } catch (const std::exception& error) {
-    set_message(state, MessageSource::construction, true, tr_reason(error.what()));
+    set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
   }
 }
 
 void figure_export_row(AppState& state) {
   // A name edited while the question shows: the question was about other files.
-  if (labelled(state, tr("figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
+  if (labelled(state, tr(state.language, "figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
     state.figure_replace_pending = 0;
   static const char* const kFormats[] = {"SVG", "PDF", "PNG", "TikZ"};  // figure_export.h's order
   if (figure_format_of(state.figure_path) >= 0) state.figure_format = figure_format_of(state.figure_path);
-  if (labelled(state, tr("format###figure_format"),
+  if (labelled(state, tr(state.language, "format###figure_format"),
                [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); })) {
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
     state.figure_replace_pending = 0;
   }
   if (dimension(state) == 2)  // the 3D steps draw no rays: a slider there would change nothing
-    labelled(state, tr("rays###figure_rays"),
+    labelled(state, tr(state.language, "rays###figure_rays"),
              [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
-  checkbox(tr("matrix###figure_matrix"), &state.figure_matrix);
-  int asked = button(tr("Export figure…")) ? 1 : 0;
-  same_line_if_fits(ImGui::CalcTextSize(tr("Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (button(tr("Export every step"))) asked = 2;
+  checkbox(tr(state.language, "matrix###figure_matrix"), &state.figure_matrix);
+  int asked = button(tr(state.language, "Export figure…")) ? 1 : 0;
+  same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (button(tr(state.language, "Export every step"))) asked = 2;
   if (asked != 0) {
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
     state.figure_replace_pending = 0;
@@ -437,7 +437,7 @@ void figure_export_row(AppState& state) {
       else
         state.figure_replace_pending = asked;
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::construction, true, tr_reason(error.what()));
+      set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
     }
   }
   const bool just_asked = asked != 0 && state.figure_replace_pending != 0;
@@ -448,24 +448,24 @@ void figure_export_row(AppState& state) {
     const bool all = state.figure_replace_pending == 2;
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
     ImGui::TextWrapped("%s", state.figure_replace_files.empty()
-                                 ? trf("%s already exists. Replace it?", state.figure_path.c_str()).c_str()
-                                 : figure_replace_question(state.figure_replace_files).c_str());
+                                 ? trf(state.language, "%s already exists. Replace it?", state.figure_path.c_str()).c_str()
+                                 : figure_replace_question(state.language, state.figure_replace_files).c_str());
     ImGui::PopStyleColor();
-    if (button(tr("Replace###figure_replace"))) {
+    if (button(tr(state.language, "Replace###figure_replace"))) {
       state.figure_replace_pending = 0;
       export_figure_now(state, all);
     }
-    same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr("Cancel###figure_cancel"))) state.figure_replace_pending = 0;
+    same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
+    if (button(tr(state.language, "Cancel###figure_cancel"))) state.figure_replace_pending = 0;
     // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
     if (just_asked) ImGui::SetScrollHereY(1.0f);
   }
   show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
-  explain(tr("The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
+  explain(tr(state.language, "The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
 }
 
 void construction_section(AppState& state) {
-  if (!section(tr("Construction of M_d###construction"), "M_d###construction", ImGuiTreeNodeFlags_DefaultOpen))
+  if (!section(tr(state.language, "Construction of M_d###construction"), "M_d###construction", ImGuiTreeNodeFlags_DefaultOpen))
     return;
   const int steps = construction_steps(state);
   int step = state.construction_step < 0 ? steps : state.construction_step;
@@ -478,19 +478,19 @@ void construction_section(AppState& state) {
                                     tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
                                     tr_later("4: Rz(θ) turns u0 onto v"),
                                     tr_later("5: T(OP) moves the screen to P")};
-  if (labelled(state, tr("step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
+  if (labelled(state, tr(state.language, "step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
-  explain(tr(dimension(state) == 2 ? k2D[step] : k3D[step]));
+  explain(tr(state.language, dimension(state) == 2 ? k2D[step] : k3D[step]));
   std::visit([&](const auto& view) { placement_tables(state, view, step, steps); }, state.view);
   figure_export_row(state);
 }
 
 // ---- ray inspector -------------------------------------------------------------------------------------
 void inspector_section(const AppState& state) {
-  if (!section(tr("Ray inspector###inspector"), tr("Ray###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!section(tr(state.language, "Ray inspector###inspector"), tr(state.language, "Ray###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const auto pixel = active_pixel(state);
   if (!pixel) {
-    explain(tr("Hover a pixel of the colour bar or image to see its ray; click to pin it."));
+    explain(tr(state.language, "Hover a pixel of the colour bar or image to see its ray; click to pin it."));
     return;
   }
   const InspectedRay ray = inspect_pixel(state, *pixel);
@@ -507,14 +507,14 @@ void inspector_section(const AppState& state) {
   };
   std::visit(overloaded{[&](const View2D&) {  // the bar's pixel k, the handout's P_k and u_k
                           wrapped_between_words(
-                              trf("column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
+                              trf(state.language, "column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
                           line("P_k^0", ray.canonical_pixel);
                           line("u_k^0", ray.canonical_direction);
                           line("P_k  ", ray.origin);
                           line("u_k  ", ray.direction);
                         },
                         [&](const View3D&) {
-                          wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));
+                          wrapped_between_words(trf(state.language, "row %d, column %d", pixel->row, pixel->column));
                           line("P^0", ray.canonical_pixel);
                           line("u^0", ray.canonical_direction);
                           line("P  ", ray.origin);
@@ -522,10 +522,10 @@ void inspector_section(const AppState& state) {
                         }},
              state.view);
   if (ray.hit.id < 0) {
-    wrapped_between_words(tr("hit: nothing (background)"));
+    wrapped_between_words(tr(state.language, "hit: nothing (background)"));
   } else {
-    const std::string name = shown_object_name(state.view, std::size_t(ray.hit.id));
-    wrapped_between_words(trf("hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
+    const std::string name = shown_object_name(state.language, state.view, std::size_t(ray.hit.id));
+    wrapped_between_words(trf(state.language, "hit: object %d %s at t = %.4f", ray.hit.id, name.c_str(), ray.hit.t));
   }
 }
 
@@ -542,7 +542,7 @@ void arccos_error_line(const AppState& state) {
                    const auto error = [&](AngleRoute route) {
                      return std::abs(std::remainder(polar_angle(cp, route) - truth, glm::two_pi<double>()));
                    };
-                   line = trf("θ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                   line = trf(state.language, "θ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
                               error(AngleRoute::stable));
                  },
                  [&](const View3D& view) {  // φ: where the pole makes the arccos route fail
@@ -550,7 +550,7 @@ void arccos_error_line(const AppState& state) {
                    const glm::dvec3 cp = spherical_direction(o.theta, o.phi);
                    const double truth = std::abs(std::remainder(o.phi, glm::two_pi<double>()));  // in [0, pi]
                    const auto error = [&](AngleRoute route) { return std::abs(spherical_angles(cp, route).phi - truth); };
-                   line = trf("φ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
+                   line = trf(state.language, "φ error now: arccos %.1e rad, atan2 %.1e rad", error(AngleRoute::handout_arccos),
                               error(AngleRoute::stable));
                  }},
       state.view);
@@ -560,23 +560,23 @@ void arccos_error_line(const AppState& state) {
 
 void mistakes_section(AppState& state) {
   const bool any = !mistakes_on(state).empty();
-  if (!section(tr("Classic mistakes###mistakes"), tr("Mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
+  if (!section(tr(state.language, "Classic mistakes###mistakes"), tr(state.language, "Mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   bool changed = false;
   for (const MistakeLesson& lesson : mistake_lessons()) {
     if (!mistake_applies(state, lesson)) continue;
     ImGui::PushID(lesson.id);
-    changed |= checkbox(mistake_label(lesson), &mistake_flag(state, lesson));
+    changed |= checkbox(mistake_label(state, lesson), &mistake_flag(state, lesson));
     if (lesson.show_me) {
-      same_line_if_fits(ImGui::CalcTextSize(tr("show me")).x + 2 * ImGui::GetStyle().FramePadding.x);
-      if (ImGui::SmallButton(tr("show me"))) show_mistake(state, lesson);
+      same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "show me")).x + 2 * ImGui::GetStyle().FramePadding.x);
+      if (ImGui::SmallButton(tr(state.language, "show me"))) show_mistake(state, lesson);
     }
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
     explain(mistake_text(state, lesson).c_str());
     if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
     {
       ImGui::PushStyleColor(ImGuiCol_Text, current_theme().look_at);  // wrapped: not cut at the panel's edge
-      ImGui::TextWrapped("%s", trf("Look: %s", tr(lesson.look_at)).c_str());
+      ImGui::TextWrapped("%s", trf(state.language, "Look: %s", tr(state.language, lesson.look_at)).c_str());
       ImGui::PopStyleColor();
     }
     if (!lesson.info) arccos_error_line(state);
@@ -607,9 +607,9 @@ bool choice(const AppState& state, const char* label, T& value, const Options& o
   bool changed = false;
   const std::string id = label_parts(label).id;
   if (labelled(state, label,
-               [&](const char* l) { return ImGui::BeginCombo(l, combo_preview(state, id, tr(current)).c_str()); })) {
+               [&](const char* l) { return ImGui::BeginCombo(l, combo_preview(state, id, tr(state.language, current)).c_str()); })) {
     for (const auto& [v, name] : options)
-      if (ImGui::Selectable(tr(name), v == value) && v != value) {
+      if (ImGui::Selectable(tr(state.language, name), v == value) && v != value) {
         value = v;
         changed = true;
       }
@@ -620,7 +620,7 @@ bool choice(const AppState& state, const char* label, T& value, const Options& o
 }  // namespace
 
 void caster_section(AppState& state) {
-  if (!section(tr("Caster and accuracy###caster"), tr("Caster###caster"),
+  if (!section(tr(state.language, "Caster and accuracy###caster"), tr(state.language, "Caster###caster"),
                                uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
   static constexpr std::pair<Scalar, const char*> kScalars[] = {{Scalar::float32, tr_later("float")},
@@ -636,21 +636,21 @@ void caster_section(AppState& state) {
     for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = {kCastMethods[i], cast_method_name(kCastMethods[i])};
     return methods;
   }();
-  bool changed = choice(state, tr("method###method"), state.cast_options.method, kMethods);
+  bool changed = choice(state, tr(state.language, "method###method"), state.cast_options.method, kMethods);
   explain(
-      tr("Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
+      tr(state.language, "Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
          "of view and test each object only on the pixels its projection can cover. The status line's "
          "tooltip shows the work done and skipped."));
-  changed |= choice(state, tr("precision###precision"), knobs.scalar, kScalars);
-  changed |= choice(state, tr("intersection###intersection"), knobs.formula, kFormulas);
-  changed |= choice(state, tr("samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
-  changed |= checkbox(tr("camera-relative rays"), &knobs.camera_relative);
+  changed |= choice(state, tr(state.language, "precision###precision"), knobs.scalar, kScalars);
+  changed |= choice(state, tr(state.language, "intersection###intersection"), knobs.formula, kFormulas);
+  changed |= choice(state, tr(state.language, "samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
+  changed |= checkbox(tr(state.language, "camera-relative rays"), &knobs.camera_relative);
   if (exact_bar_applies(state.view))
-    changed |= checkbox(tr("exact bar (area-weighted)"), &state.accuracy.exact);
+    changed |= checkbox(tr(state.language, "exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
-              ? tr("These knobs use the reference caster: slower, and the method above is not used. Which "
+              ? tr(state.language, "These knobs use the reference caster: slower, and the method above is not used. Which "
                    "settings to use for what: README, Accuracy.")
-              : tr("double, 1 sample, world coordinates: the fast caster."));
+              : tr(state.language, "double, 1 sample, world coordinates: the fast caster."));
   show_message(state, MessageSource::caster);
   if (changed) state.cameras_dirty = true;
 }
@@ -660,46 +660,46 @@ void files_section(AppState& state) {
   // The question "replace?" opens the section; a message does not (it shows above the status line while
   // the section is closed), so the section can be closed while a message shows.
   if (!state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
-  if (!section(tr("Scene file###files"), tr("Files###files"))) return;
+  if (!section(tr(state.language, "Scene file###files"), tr(state.language, "Files###files"))) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
   const auto path_box = [&](const char* label, std::string& path) {
     return labelled(state, label, [&](const char* l) {
       return ImGui::InputText(l, &path, ImGuiInputTextFlags_EnterReturnsTrue);
     });
   };
-  bool open = path_box(tr("open###open_path"), state.path_input);
-  open |= button(tr("Open"));
+  bool open = path_box(tr(state.language, "open###open_path"), state.path_input);
+  open |= button(tr(state.language, "Open"));
   if (open) open_scene(state, state.path_input);
-  explain(tr("or drop a scene file on the window"));
-  bool save = path_box(tr("save as###save_path"), state.save_path);
-  save |= button(tr("Save camera preset as…"));
+  explain(tr(state.language, "or drop a scene file on the window"));
+  bool save = path_box(tr(state.language, "save as###save_path"), state.save_path);
+  save |= button(tr(state.language, "Save camera preset as…"));
   if (save) save_preset_as(state, state.save_path, false);
   if (!state.overwrite_pending.empty()) {  // asked before replacing a file
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", trf("%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
+    ImGui::TextWrapped("%s", trf(state.language, "%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
     ImGui::PopStyleColor();
-    if (button(tr("Replace"))) save_preset_as(state, state.overwrite_pending, true);
-    same_line_if_fits(ImGui::CalcTextSize(tr("Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr("Cancel"))) state.overwrite_pending.clear();
+    if (button(tr(state.language, "Replace"))) save_preset_as(state, state.overwrite_pending, true);
+    same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
+    if (button(tr(state.language, "Cancel"))) state.overwrite_pending.clear();
   }
-  labelled(state, tr("export###export"),
+  labelled(state, tr(state.language, "export###export"),
            [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
-  if (button(tr("Export colour map PNG"))) {
+  if (button(tr(state.language, "Export colour map PNG"))) {
     try {
       write_png(state.map, state.export_path, 1, image_is_bar(state.view) ? 32 : 1);
-      set_message(state, MessageSource::files, false, trf("wrote %s", state.export_path.c_str()));
+      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", state.export_path.c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, tr_reason(error.what()));
+      set_message(state, MessageSource::files, true, tr_reason(state.language, error.what()));
     }
   }
-  same_line_if_fits(ImGui::CalcTextSize(tr("Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (button(tr("Screenshot (F12)"))) request_screenshot(state);
+  same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (button(tr(state.language, "Screenshot (F12)"))) request_screenshot(state);
   show_message(state, MessageSource::files);
 }
 
 // ---- lecture -------------------------------------------------------------------------------------------
 void lecture_section(AppState& state) {
-  const bool open = section(tr("Lecture mode###lecture"), tr("Lecture###lecture"));
+  const bool open = section(tr(state.language, "Lecture mode###lecture"), tr(state.language, "Lecture###lecture"));
   record_item_rect(state, "###lecture");
   const bool scale_changed = state.font_scale != state.font_scale_seen;
   state.font_scale_seen = state.font_scale;
@@ -710,7 +710,7 @@ void lecture_section(AppState& state) {
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
   float& editing = state.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;
-  labelled(state, tr("font scale###font_scale"), [&](const char* l) {
+  labelled(state, tr(state.language, "font scale###font_scale"), [&](const char* l) {
     return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   });
   if (state.font_scale_scroll_frames > 0) {
@@ -723,14 +723,14 @@ void lecture_section(AppState& state) {
     state.font_scale = scale;
     editing = -1.0f;
   }
-  checkbox(tr("high contrast"), &state.high_contrast);
+  checkbox(tr(state.language, "high contrast"), &state.high_contrast);
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
-  choice(state, tr("Language / Langue###language"), state.language, kLanguages);
-  if (button(tr("Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
+  choice(state, tr(state.language, "Language / Langue###language"), state.language, kLanguages);
+  if (button(tr(state.language, "Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
   record_item_rect(state, "###fullscreen");
-  same_line_if_fits(ImGui::CalcTextSize(tr("Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (button(tr("Help (F1)"))) state.show_help = !state.show_help;
+  same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (button(tr(state.language, "Help (F1)"))) state.show_help = !state.show_help;
 }
 
 // ---- messages ------------------------------------------------------------------------------------------
@@ -744,7 +744,7 @@ bool show_message(AppState& state, MessageSource source) {
   // shows it instead, where the eye is.
   const bool in_view = ImGui::IsItemVisible() && ImGui::GetItemRectMax().y <= ImGui::GetWindowPos().y +
                                                                               ImGui::GetWindowHeight();
-  if (ImGui::SmallButton(tr("Dismiss###dismiss_message"))) state.message.clear();
+  if (ImGui::SmallButton(tr(state.language, "Dismiss###dismiss_message"))) state.message.clear();
   if (in_view) state.message_shown_frame = state.frame_count;
   return true;
 }
@@ -761,7 +761,7 @@ void status_line(AppState& state) {
   // Shortened where the line's shortest text and it would not fit (1024 px at 3×, in French).
   const bool picker = state.host.picks_files;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  const char* open_label = tr("Open a scene file…###open_scene_file");
+  const char* open_label = tr(state.language, "Open a scene file…###open_scene_file");
   float open_width = 0.0f;
   if (picker) {
     // A text's height (no vertical padding): the line keeps the desktop's height, so the page's layout is
@@ -770,19 +770,19 @@ void status_line(AppState& state) {
     const auto width_of = [](const char* label) {
       return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
     };
-    if (ImGui::CalcTextSize(trf("cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
-      open_label = tr("Open…###open_scene_file");
+    if (ImGui::CalcTextSize(trf(state.language, "cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
+      open_label = tr(state.language, "Open…###open_scene_file");
     open_width = width_of(open_label);
     room -= open_width + spacing;
   }
   // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
-  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+  const char* caster = tr(state.language, uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
-  std::string line = trf("frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
-  if (state.refine_pending) line += std::string(" · ") + tr("coarse preview while dragging");
+  std::string line = trf(state.language, "frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
+  if (state.refine_pending) line += std::string(" · ") + tr(state.language, "coarse preview while dragging");
   // Shorter and shorter until it fits (1024 px at 3×: the cast time alone).
-  for (const std::string& shorter : {trf("frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms),
-                                     trf("cast %.2f ms", state.cast_ms)})
+  for (const std::string& shorter : {trf(state.language, "frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms),
+                                     trf(state.language, "cast %.2f ms", state.cast_ms)})
     if (ImGui::CalcTextSize(line.c_str()).x > room) line = shorter;
   ImGui::TextUnformatted(line.c_str());
   record_item_rect(state, "###status_text");
@@ -802,18 +802,18 @@ void status_line(AppState& state) {
 
 void status_counters(const AppState& state) {
   // Work skipped, against what the handout's plain loop would do (every object for every pixel).
-  const char* caster = tr(uses_reference_caster(state) ? tr_later("reference caster")
+  const char* caster = tr(state.language, uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
   const CastStats& w = state.stats;
   const double objects = double(active_object_count(state));
   const double plain_tests = double(w.rays) * objects;
-  ImGui::TextUnformatted(trf("caster: %s", caster).c_str());
-  ImGui::TextUnformatted(trf("%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
-  ImGui::TextUnformatted(trf("rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
-  ImGui::TextUnformatted(trf("intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
+  ImGui::TextUnformatted(trf(state.language, "caster: %s", caster).c_str());
+  ImGui::TextUnformatted(trf(state.language, "%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
+  ImGui::TextUnformatted(trf(state.language, "rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
+  ImGui::TextUnformatted(trf(state.language, "intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
                              plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0)
                              .c_str());
-  ImGui::TextUnformatted(trf("objects culled %lld", w.objects_culled).c_str());
+  ImGui::TextUnformatted(trf(state.language, "objects culled %lld", w.objects_culled).c_str());
 }
 
 // ---- help ----------------------------------------------------------------------------------------------
@@ -824,7 +824,7 @@ void help_overlay(AppState& state) {
   // Never wider or taller than the window at any font scale: the descriptions wrap, the list scrolls.
   ImGui::SetNextWindowSize({std::min(display.x * 0.95f, 42.0f * ImGui::GetFontSize()), 0.0f}, ImGuiCond_Always);
   ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {display.x * 0.95f, display.y * 0.95f});
-  if (ImGui::Begin(tr("Keyboard and mouse (F1 closes)###help"), &state.show_help,
+  if (ImGui::Begin(tr(state.language, "Keyboard and mouse (F1 closes)###help"), &state.show_help,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
     static const std::pair<const char*, const char*> kLines[] = {
@@ -849,9 +849,9 @@ void help_overlay(AppState& state) {
       ImGui::TableSetupColumn("##what", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& [key, what] : kLines) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(tr(key));
+        ImGui::TextUnformatted(tr(state.language, key));
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", tr(what));
+        ImGui::TextWrapped("%s", tr(state.language, what));
       }
       ImGui::EndTable();
     }

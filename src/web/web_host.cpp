@@ -139,7 +139,7 @@ void tick() {
       save_scene_file(downloaded, "raycam-case.json");
       page.downloaded_case = scene_to_json(downloaded);
     } catch (const std::exception& error) {
-      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(error.what()));
+      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(page.state->language, error.what()));
     }
   }
   if (page.state->requests.take(session::HostRequestKind::pick_scene_file)) {  // the status line's button
@@ -238,7 +238,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_resized(double pixel_ratio) {
 
 extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_fullscreen_refused() {
   raycam::session::set_message(*raycam::web::page.state, raycam::session::MessageSource::general, true,
-                               raycam::ui::tr("The browser refused full screen for this page."));
+                               raycam::ui::tr(raycam::web::page.state->language, "The browser refused full screen for this page."));
   raycam::web::wake_page();
 }
 

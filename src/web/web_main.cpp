@@ -186,7 +186,7 @@ EMSCRIPTEN_KEEPALIVE void raycam_check_answer(const char* path) {
   // student downloaded, the verdict would blame the program for the move. Said at once, beside the verdict.
   if (raycam::web::camera_changed_since_case_download())
     raycam::session::set_message(raycam::web::page_state(), raycam::session::MessageSource::general, true,
-                            raycam::ui::tr("The camera or the scene changed since the case was downloaded: this "
+                            raycam::ui::tr(raycam::web::page_state().language, "The camera or the scene changed since the case was downloaded: this "
                                            "answer is graded against the camera on screen. Download this camera's "
                                            "case again and run your program on it."));
   check.set_command(path, true);
@@ -250,7 +250,7 @@ int main() {
   state.widget_rects = &widget_rects;
   if (!error.empty()) {
     std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
-    state.message = raycam::ui::tr_reason(error);
+    state.message = raycam::ui::tr_reason(state.language, error);
     state.message_is_error = true;
   }
   raycam::web::run_page(state);

@@ -499,3 +499,17 @@ TEST_CASE("the French report says why in French, details included", "[check][cli
   const Checked wrong = check("--lang fr --mode 2d --cases 1 --student \"python3 -c 'print(\\\"{\\\\\\\"ids\\\\\\\": [0]}\\\")'\"", "fr_size");
   CHECK_THAT(wrong.output, Catch::Contains("identifiants ; reçu : 1"));
 }
+
+TEST_CASE("batch counts one submission, one case and one thread in the singular", "[check][cli][batch]") {
+  const std::string root = scratch("singular_batch");
+  const std::string folder = root + "/alice";
+  fs::create_directories(folder);
+  const std::string run = folder + "/run.sh";
+  std::ofstream(run) << "#!/bin/sh\nexec " << MISTAKEN_STUDENT << " --mistake mirrored\n";
+  fs::permissions(run, fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec, fs::perm_options::add);
+  const Checked c = check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + root + "/grades.csv" +
+                              " --mode 2d --cases 1 --threads 1 --no-sandbox",
+                          "singular_batch_run");
+  INFO(c.output);
+  CHECK(c.output.find("1 submission x 1 case on 1 thread\n") != std::string::npos);
+}

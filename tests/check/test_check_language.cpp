@@ -62,3 +62,13 @@ TEST_CASE("check's texts: French by English key, English when asked or when the 
   expected.replace(expected.find("%s"), 2, "x");
   CHECK(check::textf(Language::fr, "warning: %s\n", "x") == expected);
 }
+
+TEST_CASE("check's counts: one is singular, in both languages (\"on 1 thread\", not \"1 threads\")",
+          "[check][language]") {
+  CHECK(check::counted(Language::en, 1, "%zu thread", "%zu threads") == "1 thread");
+  CHECK(check::counted(Language::en, 0, "%zu thread", "%zu threads") == "0 threads");
+  CHECK(check::counted(Language::en, 2, "%zu submission", "%zu submissions") == "2 submissions");
+  CHECK(check::counted(Language::fr, 1, "%zu thread", "%zu threads") == "1 exécution à la fois");
+  CHECK(check::counted(Language::fr, 3, "%zu thread", "%zu threads") == "3 exécutions à la fois");
+  CHECK(check::counted(Language::fr, 1, "%zu submission", "%zu submissions") == "1 rendu");
+}

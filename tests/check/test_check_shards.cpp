@@ -3,7 +3,9 @@
 // columns, and every refusal naming what is wrong.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -214,4 +216,16 @@ TEST_CASE("a student added after some shards ran: only that student's slice is g
     CHECK_THAT(refusal({stale, newer}),
                Catch::Contains("missing students: " + late + " (" + std::to_string(slice) + "/2)"));
   }
+}
+
+TEST_CASE("check merge of one shard says \"from 1 shard\"", "[check][shards][merge]") {
+  HandShards hand;
+  const std::string only = hand.write("only.csv", 1, 1, hand.slices(1)[1]);
+  const std::string merged = hand.dir.path("merged.csv"), output = hand.dir.path("merge_output.txt");
+  const std::string command = std::string(RAYCAM_CLI) + " check merge --csv " + merged + " " + only + " > " + output + " 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::stringstream text;
+  text << std::ifstream(output).rdbuf();
+  INFO(text.str());
+  CHECK(text.str().find(std::to_string(hand.students.size()) + " students from 1 shard)") != std::string::npos);
 }

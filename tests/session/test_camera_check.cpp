@@ -102,30 +102,30 @@ TEST_CASE("a host without a thread to spare (the page) has the verdict in the fr
 
 TEST_CASE("the check's verdict names itself in the image's header, a re-run clears it", "[ui][check]") {
   session::CheckProgress progress;
-  CHECK(session::check_header(progress).forms.empty());  // no verdict yet
+  CHECK(session::check_header(Language::en, progress).forms.empty());  // no verdict yet
   auto verdict = std::make_shared<session::KeyedVerdict>();
   verdict->verdict.result.status = check::CaseStatus::fail;
   verdict->verdict.result.wrong_pixels = 27932;
   progress.latest = verdict;
   progress.current = true;
   // Longest first, each shorter than the one before, every one naming the count.
-  const std::vector<std::string> failing = session::check_header(progress).forms;
+  const std::vector<std::string> failing = session::check_header(Language::en, progress).forms;
   REQUIRE(failing.size() == 3);
   CHECK(failing[0] == "CHECK: 27932 pixels wrong");
   for (std::size_t i = 0; i < failing.size(); ++i) {
     CHECK(failing[i].find("27932") != std::string::npos);
     if (i > 0) CHECK(failing[i].size() < failing[i - 1].size());
   }
-  CHECK_FALSE(session::check_header(progress).passed);
+  CHECK_FALSE(session::check_header(Language::en, progress).passed);
   progress.running = true;  // checking again: the old verdict is not this image's any more
-  CHECK(session::check_header(progress).forms.empty());
+  CHECK(session::check_header(Language::en, progress).forms.empty());
   progress.running = false;
   progress.current = false;  // made for the camera before the last change
-  CHECK(session::check_header(progress).forms.empty());
+  CHECK(session::check_header(Language::en, progress).forms.empty());
   progress.current = true;
   verdict->verdict.result.status = check::CaseStatus::crash;
-  CHECK(session::check_header(progress).forms.front() == "CHECK: crash");
+  CHECK(session::check_header(Language::en, progress).forms.front() == "CHECK: crash");
   verdict->verdict.result.status = check::CaseStatus::pass;  // a pass is said too: where the eye is
-  CHECK(session::check_header(progress).passed);
-  CHECK(session::check_header(progress).forms.front() == "CHECK: passed");
+  CHECK(session::check_header(Language::en, progress).passed);
+  CHECK(session::check_header(Language::en, progress).forms.front() == "CHECK: passed");
 }

@@ -521,15 +521,14 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
           "[session][language][reasons]") {
   test::ScratchDir scratch("reasons");
   session::AppState state;
-  ui::set_language(Language::fr);
+  state.language = Language::fr;
   const std::string missing = scratch.path("typo.json");
   CHECK_FALSE(session::open_scene(state, missing));
   // The window's French puts a no-break space before a colon.
   CHECK(state.message ==
         "impossible d'ouvrir\u00a0: " + missing + "\u00a0: impossible d'ouvrir le fichier de scène");
-  CHECK(ui::tr_reason("exit status 2") == "code de sortie 2");
-  ui::set_language(Language::en);
-  CHECK(ui::tr_reason("exit status 2") == "exit status 2");
+  CHECK(ui::tr_reason(Language::fr, "exit status 2") == "code de sortie 2");
+  CHECK(ui::tr_reason(Language::en, "exit status 2") == "exit status 2");
 
   check::StudentReport report;
   check::CaseResult crash;

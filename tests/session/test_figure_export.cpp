@@ -31,12 +31,8 @@ std::string pdf_text(const std::string& file) {
 TEST_CASE("Export figure writes the step shown, or every step, in the window's language", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export");
   session::AppState state = test::state_for({"--view", "2d"});
-  struct Restore {
-    ui::Language language = ui::current_language();
-    ~Restore() { ui::set_language(language); }
-  } restore;
 
-  ui::set_language(ui::Language::fr);
+  state.language = ui::Language::fr;
   state.construction_step = 1;  // the second frame: (b)
   auto files = session::export_construction_figure(state, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
@@ -48,7 +44,7 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
   CHECK(pdf_text(session::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
-  ui::set_language(ui::Language::en);
+  state.language = ui::Language::en;
   files = session::export_construction_figure(state, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
@@ -73,11 +69,7 @@ TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
 TEST_CASE("Export figure draws the matrix on screen, with the panel's format, rays and matrix choice", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-panel");
   session::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
-  struct Restore {
-    ui::Language language = ui::current_language();
-    ~Restore() { ui::set_language(language); }
-  } restore;
-  ui::set_language(ui::Language::en);
+  state.language = ui::Language::en;
   // The format chosen in the panel sets the name's extension.
   CHECK(session::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
   CHECK(session::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
@@ -111,20 +103,19 @@ TEST_CASE("Export figure draws the matrix on screen, with the panel's format, ra
 
 TEST_CASE("Export figure's messages name the full path, and several files briefly", "[ui][figure]") {
   struct Restore {
-    ui::Language language = ui::current_language();
     std::filesystem::path folder = std::filesystem::current_path();
-    ~Restore() { ui::set_language(language), std::filesystem::current_path(folder); }
+    ~Restore() { std::filesystem::current_path(folder); }
   } restore;
   const test::ScratchDir scratch("figure-export-message");
   session::AppState state = test::state_for({"--view", "3d"});
   std::filesystem::current_path(scratch.path("."));
   for (const ui::Language language : {ui::Language::en, ui::Language::fr}) {
-    ui::set_language(language);
+    state.language = language;
     // A relative name is written in the working folder: the message says which, in full.
     const auto one = session::export_construction_figure(state, "raycam-figure.svg", false);
     REQUIRE(one.size() == 1);
     const std::string folder = std::filesystem::canonical(scratch.path(".")).string();
-    const std::string said = session::figure_files_message(one);
+    const std::string said = session::figure_files_message(language, one);
     INFO(said);
     CHECK(said.find(folder + "/raycam-figure.svg") != std::string::npos);
     // Six files: one full path that spans them, not six paths (at 3× a message above the status line that
@@ -132,13 +123,13 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
     const auto six = session::export_construction_figure(state, "steps.svg", true);
     REQUIRE(six == (std::vector<std::string>{folder + "/steps-0.svg", folder + "/steps-1.svg", folder + "/steps-2.svg",
                                              folder + "/steps-3.svg", folder + "/steps-4.svg", folder + "/steps-5.svg"}));
-    const std::string brief = session::figure_files_message(six);
+    const std::string brief = session::figure_files_message(language, six);
     INFO(brief);
     CHECK(brief.find("6 ") != std::string::npos);  // how many
     CHECK(brief.find(folder + "/steps-0…5.svg") != std::string::npos);
     CHECK(brief.size() < folder.size() + 40);  // one path and a few words
     // The question before replacing them says as much, as briefly.
-    const std::string question = session::figure_replace_question(session::existing_figure_files(state, "steps.svg", true));
+    const std::string question = session::figure_replace_question(language, session::existing_figure_files(state, "steps.svg", true));
     INFO(question);
     CHECK(question.find(folder + "/steps-0…5.svg") != std::string::npos);
     CHECK(question.size() < folder.size() + 70);
@@ -146,14 +137,10 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
 }
 
 TEST_CASE("Export figure names the demo's objects in the window's language", "[ui][figure]") {
-  struct Restore {
-    ui::Language language = ui::current_language();
-    ~Restore() { ui::set_language(language); }
-  } restore;
   const test::ScratchDir scratch("figure-export-names");
   session::AppState state = test::state_for({"--view", "2d"});
   const auto tex_of = [&](ui::Language language) {
-    ui::set_language(language);
+    state.language = language;
     const auto files = session::export_construction_figure(state, scratch.path("names.tex"), false);
     std::ifstream in(files.at(0));
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -239,5 +239,4 @@ TEST_CASE("the window title names the mode and the scene file", "[ui][title]") {
   const session::AppState state = state_for({SCENES_DIR "/many3d.json"});
   CHECK(session::window_title(state) == "raycam — 3D — many3d.json");
   CHECK(session::window_title(state_for({"--view", "2d", "--lang", "fr"})) == "raycam — 2D — scène de démonstration");
-  ui::set_language(ui::Language::en);
 }

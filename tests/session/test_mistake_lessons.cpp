@@ -37,7 +37,7 @@ TEST_CASE("every classic mistake changes the image, at once or after its show me
       if (!session::mistake_applies(state, lesson)) continue;
       session::show_mistake(state, lesson);
       CHECK(state.mistake_look_at == lesson.look_at);
-      CHECK(session::mistakes_on(state) == session::mistake_label(lesson));
+      CHECK(session::mistakes_on(state) == session::mistake_label(state, lesson));
       const std::vector<int> with_mistake = ids_now(state);
       session::mistake_flag(state, lesson) = false;
       const std::vector<int> without = ids_now(state);

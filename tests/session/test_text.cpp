@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "app_state_for.h"
 #include "check_texts.h"
 #include "raycam/classic_mistakes.h"
 #include "raycam/language.h"
@@ -139,8 +140,8 @@ TEST_CASE("every text of every table has every language", "[ui][text][language]"
 TEST_CASE("every string the window shows is in the table", "[ui][text]") {
   std::set<std::string> keys;
   for (const ui::Translation& t : ui::translations()) keys.insert(t.english());
-  // tr("..."), trf("...", ...), tr_later("..."), with adjacent literals joined.
-  const std::regex marked(R"re(\b(?:tr|trf|tr_later)\(\s*((?:"(?:[^"\\]|\\.)*"\s*)+))re");
+  // tr(language, "..."), trf(language, "...", ...), tr_later("..."), with adjacent literals joined.
+  const std::regex marked(R"re(\b(?:tr|trf|tr_later)\(\s*(?:[\w.:>()-]+,\s*)?((?:"(?:[^"\\]|\\.)*"\s*)+))re");
   // Widgets whose first argument is shown: a raw English literal there bypasses the table.
   const std::regex widget(
       R"re(ImGui::(?:Text|TextUnformatted|TextWrapped|TextColored\([^,]+,|Button|Checkbox|RadioButton|CollapsingHeader|TreeNode|Selectable|Begin|BeginCombo|MenuItem|SetTooltip|Slider\w*|Drag\w*|Input\w*)\(\s*("(?:[^"\\]|\\.)*"))re");
@@ -173,12 +174,10 @@ TEST_CASE("every string the window shows is in the table", "[ui][text]") {
 }
 
 TEST_CASE("tr shows French when the language is French, and trf formats after translating", "[ui][text]") {
-  ui::set_language(ui::Language::fr);
-  CHECK(std::string(ui::tr("Camera###camera")) == "Caméra###camera");
-  CHECK(ui::trf("opened %s", "a.json") == "ouvert\u00a0: a.json");  // a no-break space before the colon
-  ui::set_language(ui::Language::en);
-  CHECK(std::string(ui::tr("Camera###camera")) == "Camera###camera");
-  CHECK(ui::trf("opened %s", "a.json") == "opened a.json");
+  CHECK(std::string(ui::tr(ui::Language::fr, "Camera###camera")) == "Caméra###camera");
+  CHECK(ui::trf(ui::Language::fr, "opened %s", "a.json") == "ouvert\u00a0: a.json");  // a no-break space before the colon
+  CHECK(std::string(ui::tr(ui::Language::en, "Camera###camera")) == "Camera###camera");
+  CHECK(ui::trf(ui::Language::en, "opened %s", "a.json") == "opened a.json");
 }
 
 TEST_CASE("the language comes from --lang, else LANGUAGE, LC_ALL, LC_MESSAGES, LANG", "[ui][text]") {
@@ -202,4 +201,13 @@ TEST_CASE("the language comes from --lang, else LANGUAGE, LC_ALL, LC_MESSAGES, L
   setenv("LANGUAGE", "", 1);  // empty: not set
   CHECK(ui::language_from_environment() == ui::Language::en);
   for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) unsetenv(name);
+}
+
+TEST_CASE("each state shows its own language, whichever was made last (no language global)", "[ui][text]") {
+  const session::AppState french = test::state_for({"--view", "2d", "--lang", "fr"});
+  const session::AppState english = test::state_for({"--view", "2d", "--lang", "en"});
+  CHECK(session::window_title(french) == "raycam — 2D — scène de démonstration");
+  CHECK(session::window_title(english) == "raycam — 2D — demo scene");
+  CHECK_THAT(session::cannot_open_message(french.language, "a.json", "no such file"),
+             Catch::StartsWith("impossible d'ouvrir a.json"));
 }

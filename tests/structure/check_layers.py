@@ -19,7 +19,8 @@ LAYERS = [
     ["raycam_gl"],
     ["raycam_ui"],
     ["raycam_headless"],
-    ["raycam", "raycam-cli", "raycam_web"],  # raycam_web: the page, in the emscripten build only
+    ["raycam", "raycam-cli", "raycam_web_objects"],  # raycam_web_objects: the page's code, emscripten only
+    ["raycam_web", "raycam_web_single"],  # the page linked twice: index.html and the one-file raycam.html
 ]
 RANK = {target: rank for rank, layer in enumerate(LAYERS) for target in layer}
 

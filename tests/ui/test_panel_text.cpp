@@ -337,7 +337,6 @@ TEST_CASE("the inspector names the demo's objects in the window's language and a
     for (const char* language : {"fr", "en"})
       for (const bool from_file : {false, true}) {
         session::AppState state = state_for({"--view", view, "--lang", language});
-        ui::set_language(state.language);
         if (from_file) {  // the demo saved as a file, opened again: a user's file naming its objects in English
           const std::string file = scratch.path(std::string("demo") + view + ".json");
           REQUIRE(session::save_preset(state, file));
@@ -347,7 +346,7 @@ TEST_CASE("the inspector names the demo's objects in the window's language and a
         const auto& names = std::visit(
             [](const auto& v) {
               std::vector<std::string> out;
-              for (const auto& object : session::objects_of(v.scene)) out.push_back(object.name);
+              for (const auto& object : objects_of(v.scene)) out.push_back(object.name);
               return out;
             },
             state.view);
@@ -366,5 +365,4 @@ TEST_CASE("the inspector names the demo's objects in the window's language and a
           }
         CHECK(seen.size() >= 4);  // every demo object in sight
       }
-  ui::set_language(ui::Language::en);
 }

@@ -26,10 +26,18 @@ struct CameraPreset {
 
 struct SceneFile {
   int dimension = 3;
-  Scene2D scene2d;  // used when dimension == 2
-  Scene3D scene3d;  // used when dimension == 3
+  Scene2D scene2d;  // the scene of a 2D file
+  Scene3D scene3d;  // of a 3D file (the other stays empty)
   CameraPreset camera;
 };
+
+// Calls function(scene) with the scene the file's dimension holds, Scene2D or Scene3D, as std::visit does on a
+// variant: what is the same in both dimensions is written once, over overloads (objects_of, …).
+template <class File, class Function>
+decltype(auto) visit_scene(File& file, Function&& function) {
+  if (file.dimension == 2) return function(file.scene2d);
+  return function(file.scene3d);
+}
 
 // Errors throw std::invalid_argument with "<source>: <field>: <what was expected>" (and line/column for
 // JSON syntax errors). `source` names the file in messages.

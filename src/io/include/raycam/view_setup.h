@@ -40,6 +40,20 @@ struct ViewSetup {
 inline constexpr int kDefaultSize2D = 256;
 inline constexpr int kDefaultSize3D = 256;
 
+// The image a camera casts: N × 1 in 2D (the colour bar), W × H in 3D.
+inline int image_columns(const Camera2D& camera) { return camera.pixel_count(); }
+inline int image_rows(const Camera2D&) { return 1; }
+inline int image_columns(const Camera3D& camera) { return camera.columns(); }
+inline int image_rows(const Camera3D& camera) { return camera.rows(); }
+
+// Calls function(camera, scene) with the setup's placed camera and its scene, 2D or 3D, as std::visit does on
+// a variant (visit_scene's pair for a whole view): the same in both dimensions is written once.
+template <class Setup, class Function>
+decltype(auto) visit_view_setup(Setup& setup, Function&& function) {
+  if (setup.dimension == 2) return function(setup.camera2d, setup.file.scene2d);
+  return function(setup.camera3d, setup.file.scene3d);
+}
+
 // Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
 ViewSetup make_view_setup(const ViewFlags& flags);
 
