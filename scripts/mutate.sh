@@ -83,7 +83,7 @@ mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = r
 mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(words.end(), {"--remount-ro", "\/tmp"/  words.insert(words.end(), {"--bind", "\/var", "\/var", "--remount-ro", "\/tmp"/' "$CHECK" "^check:"
 mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline) timed_out = true;/      if (false) timed_out = true;/' "$CHECK" "^check:"
 mutant score-line-counts-failures src/check/check_report.cpp 's/^               report.passed(), n,$/               n - report.passed(), n,/' "$CHECK" "^check:"
-mutant answer-ids-not-capped src/check/answer.cpp 's/    if (dimension_ == 2 ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
+mutant answer-ids-not-capped src/check/answer.cpp 's/    if (flat_ ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
 mutant diff-image-written-through-links src/check/check_report.cpp 's/    write_replacing(path, \[\&\](const std::string\& temporary) { write_png(canvas, temporary, scale_x, scale_y); });/    write_png(canvas, path, scale_x, scale_y);/' "$CHECK" "^check:"
 mutant french-details-left-english src/check/check_report.cpp 's/own != detail ? own : translate_reason(lang, detail)/own != detail ? own : detail/' "$CHECK" "^check:"
@@ -96,7 +96,7 @@ mutant pin-stays-in-image-cells src/session/app_state.cpp 's/^  place_pin(state)
 mutant saved-degrees-round-tripped src/io/view_setup.cpp 's/  return std::abs(rounded - degrees) <= 1e-9 ? rounded : degrees;/  return degrees;/' "$SESSION" "^session:"
 mutant key-changes-not-spread src/ui/key_queue.h 's/    if (held_.empty() \&\& !must_wait(e)) {/    if (true) {/' "raycam_ui_tests" "^ui:"
 mutant characters-overtake-keys src/ui/key_queue.h 's/  bool arrive_character(unsigned int character) { return arrive(Event{-1, false, character}); }/  bool arrive_character(unsigned int) { return true; }/' "raycam_ui_tests" "^ui:"
-mutant inspector-row-plus-one src/ui/panels.cpp 's/    wrapped_between_words(trf("row %d, column %d", pixel->row, pixel->column));/    wrapped_between_words(trf("row %d, column %d", pixel->row + 1, pixel->column));/' "raycam_ui_tests" "^ui: ?the ray inspector"
+mutant inspector-row-plus-one src/ui/panels.cpp 's/wrapped_between_words(trf(state.language, "row %d, column %d", pixel->row, pixel->column));/wrapped_between_words(trf(state.language, "row %d, column %d", pixel->row + 1, pixel->column));/' "raycam_ui_tests" "^ui: ?the ray inspector"
 mutant checkbox-label-not-wrapped src/ui/panels.cpp 's/  if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)/  if (true)/' "raycam_render_tests" "^render: ?at 1x to 3x"
 mutant words-broken-anywhere src/ui/panels.cpp 's/  for (const std::string\& line : lines_between_words(text, width)) {/  for (const std::string\& line : {text}) {/' "raycam_ui_tests" "^ui: ?panel text wraps"
 mutant labels-printed-over-each-other src/ui/overhead_view.cpp 's/    if (!overlaps(p)) return p;/    return p;/' "raycam_render_tests" "^render: ?a label placed beside"
@@ -126,7 +126,7 @@ mutant near-to-far-never-skips src/core/band_kernels.h 's/  for (int i = 0; i < 
 # --- one language for error reasons ---
 mutant reason-template-in-english src/io/reason_table.cpp 's/"{path} : impossible d'\''ouvrir le fichier de scène"/"{path}: cannot open scene file"/' "$SESSION" "^session: ?error reasons"
 mutant nested-reason-left-english src/io/reason_translation.cpp 's/p.nested\[k\] ? translated(/false ? translated(/' "$SESSION" "^session: ?error reasons"
-mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(g_language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
+mutant window-shows-reasons-in-english src/session/text.cpp 's/const std::string shown = translate_reason(language, english);/const std::string shown = english;/' "$SESSION" "^session: ?error reasons"
 # --- tests that catch what they claim ---
 # Nine bugs the suite once let through (issue 38), each caught by the test written for its class of hole.
 mutant sandbox-shown-folders-writable src/check/student_process.cpp 's/{"--ro-bind", dir, dir}/{"--bind", dir, dir}/' "raycam-cli" "^check: ?the sandbox shows a student's folders"
@@ -239,7 +239,7 @@ WEB_HOST_TEST="^web: the page's host"
 mutant page-canvas-not-resized src/web/web_host.cpp 's/new ResizeObserver(fit)/new ResizeObserver(function() {})/g' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-pixel-ratio-ignored src/web/web_host.cpp 's/const ratio = window.devicePixelRatio || 1;/const ratio = 1;/' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-idle-loop-spins src/web/web_host.cpp 's/^  emscripten_pause_main_loop();/  (void)0;/' "web:raycam_web" "$WEB_HOST_TEST"
-mutant page-key-taps-unqueued src/app/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS)/true/' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-key-taps-unqueued src/app/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS, modifier)/true/' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' || event.key === 'F12') event.preventDefault();/event.key === 'F11') event.preventDefault();/" "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
 # --- #35 lecture words ---
@@ -253,14 +253,14 @@ mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool 
 mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
-mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
-mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(name.c_str()) : name;/  return tr(name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(language, name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(language, name.c_str()) : name;/  return tr(language, name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
 mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
 # --- #35 lecture layout ---
 # The picture keeps its size under a mistake's or a check's header, the verdict whole and in sight, M_d whole,
 # the views' drawn labels whole at 3× (tests/render/test_layout_fit.cpp).
 mutant header-line-steals-picture src/ui/frame.cpp 's/^  layout.image_title = header.title;$/&\n  if (!header.tooltip.empty()) ImGui::TextUnformatted("MISTAKE ON");/' "raycam_render_tests" "^render: ?the picture keeps its size"
-mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^             trf("✗ %lld wrong", r.wrong_pixels)}};$/             }};/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^             trf(language, "✗ %lld wrong", r.wrong_pixels)}};$/             }};/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^  if (arrived) ImGui::ScrollToItem();.*$/  (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant md-table-scrolls-sideways src/ui/panels.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
 mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5),/const ImVec2 at{clip_max.x - 14,/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
