@@ -11,6 +11,7 @@
 #include <string>
 
 #include "raycam/view_setup.h"
+#include "shown_files.h"
 #include "text.h"
 
 namespace raycam::session {
@@ -164,12 +165,13 @@ bool open_scene(AppState& state, const std::string& path) {
     state.path_input = path;
     state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
     state.overwrite_pending.clear();
-    set_message(state, MessageSource::files, false, trf("opened %s", path.c_str()));
+    set_message(state, MessageSource::files, false, trf("opened %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
     // The scene, the camera and the Open box stay as they were; the message names the file and the reason.
     state.path_input = scene_path(state);
-    set_message(state, MessageSource::files, true, cannot_open_message(path, error.what()));
+    set_message(state, MessageSource::files, true,
+                with_file_shown(state.host, cannot_open_message(path, error.what()), path));
     return false;
   }
 }
@@ -184,10 +186,12 @@ bool save_preset(AppState& state, const std::string& path) {
     }
     const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
-    set_message(state, MessageSource::files, false, trf("saved the camera preset to %s", path.c_str()));
+    set_message(state, MessageSource::files, false,
+                trf("saved the camera preset to %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
-    set_message(state, MessageSource::files, true, trf("cannot save: %s", tr_reason(error.what()).c_str()));
+    set_message(state, MessageSource::files, true,
+                with_file_shown(state.host, trf("cannot save: %s", tr_reason(error.what()).c_str()), path));
     return false;
   }
 }
@@ -199,7 +203,8 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite) {
     set_message(state, MessageSource::files, true, tr("Save as: type the path of the file to write"));
     return false;
   }
-  if (!overwrite && std::filesystem::exists(path)) {
+  // A download never replaces anything: the browser keeps both files.
+  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path)) {
     state.overwrite_pending = path;  // the panel asks; nothing is written yet
     return false;
   }

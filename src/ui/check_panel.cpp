@@ -7,6 +7,7 @@
 
 #include "check_texts.h"
 #include "panels.h"
+#include "shown_files.h"
 #include "text.h"
 #include "theme.h"
 
@@ -17,17 +18,26 @@ using namespace session;  // the state the window shows and edits
 // ---- the panel section -----------------------------------------------------------------------------------
 void check_section(CameraCheck& check, const HostCapabilities& host, double now) {
   if (!ui::section(tr("Check my camera###check"), tr("Check###check"))) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
-                           "it is checked whenever they change (docs/check.md)."));
-  ImGui::PopStyleColor();
   CheckRequest& request = check.request();
+  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
+  if (host.runs_programs)
+    wrapped_between_words(tr("Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
+                             "it is checked whenever they change (docs/check.md)."));
+  else  // a page runs no program: the student's route, step by step
+    for (const char* step : {tr_later("Your program reads a case (a camera and its scene) as JSON on stdin and "
+                                      "prints {\"ids\": …}; a page cannot run it, so:"),
+                             tr_later("1. download this camera's case;"),
+                             tr_later("2. run your program on it: python3 my_camera.py < raycam-case.json > "
+                                      "answer.json;"),
+                             tr_later("3. give the answer file: it is graded for the camera of that case "
+                                      "(docs/check.md).")})
+      wrapped_between_words(tr(step));
+  ImGui::PopStyleColor();
   if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
-    wrapped_between_words(tr("A page cannot run your program: download this camera's case, run your program on "
-                             "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
     if (button(tr("Download this camera's case###check_case"))) request.download_case = true;
     if (button(tr("Give the answer file…###check_answer"))) request.pick_answer = true;
-    if (!request.command.empty()) wrapped_between_words(trf("answer file: %s", request.command.c_str()));
+    if (!request.command.empty())
+      wrapped_between_words(trf("answer file: %s", shown_file_name(host, request.command).c_str()));
   } else {
     const std::string label = tr("program###check_command");  // above its box, which takes the whole width
     wrapped_between_words(label.substr(0, label.find("##")));
@@ -40,11 +50,14 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
 
   const CheckProgress progress = check.progress();
   if (progress.running) wrapped_between_words(trf("running… (%.1f s)", now - progress.started_at));
+  if (!progress.running && !progress.latest && !host.runs_programs) wrapped_between_words(tr("no answer yet"));
   if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
   const check::CaseResult& r = v.result;
-  const ImVec4 colour =
-      r.status == check::CaseStatus::pass ? current_theme().confirmation : current_theme().error;
+  // A verdict for an earlier camera is greyed, whatever it says: never a red fail for a camera it was not for.
+  const ImVec4 colour = !progress.current                       ? current_theme().hint
+                        : r.status == check::CaseStatus::pass ? current_theme().confirmation
+                                                              : current_theme().error;
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   if (r.status == check::CaseStatus::pass)
     wrapped_between_words(tr("pass: every pixel agrees"));
@@ -52,9 +65,18 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now)
     wrapped_between_words(trf("fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
   else
     wrapped_between_words(trf("%s: %s", check::text(current_language(), check::status_name(r.status)),
-                              tr_reason(r.detail).c_str()));
+                              with_file_shown(host, tr_reason(r.detail), request.command).c_str()));
+  if (host.runs_programs) {
+    if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
+  } else {
+    wrapped_between_words(progress.current ? tr("graded for the camera shown")
+                                           : tr("answer for an earlier camera: download the new case"));
+  }
   ImGui::PopStyleColor();
-  if (!progress.current) wrapped_between_words(tr("(for the camera before your last change)"));
+  if (button(tr("Clear the verdict###check_clear"))) {
+    check.clear();
+    return;
+  }
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr("no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
     ImGui::TextWrapped("%s", tr("no classic mistake reproduces this image"));
