@@ -2,14 +2,11 @@
 
 #include <emscripten.h>
 
-#include <chrono>
 #include <filesystem>
 
 namespace raycam::web {
 
 namespace {
-const std::filesystem::file_time_type kOffered{std::chrono::seconds(1)};
-
 void offer(const std::string& path, const std::string& name) {
   // A Blob of the file's bytes behind a temporary link: the browser's own download, with its usual prompt.
   EM_ASM(
@@ -44,12 +41,8 @@ void Downloads::offer_new_files() {
   each_file([this](const std::string& name, auto stamp) {
     auto found = seen_.find(name);
     if (found != seen_.end() && found->second == stamp) return;
+    seen_[name] = stamp;
     offer("./" + name, name);
-    // Dated back once offered: the next write of the same name (a second Save as within the second, of the
-    // same size) dates it anew and is offered again.
-    std::error_code error;
-    std::filesystem::last_write_time(name, kOffered, error);
-    seen_[name] = {kOffered.time_since_epoch().count(), stamp.second};
   });
 }
 
