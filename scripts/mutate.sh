@@ -231,6 +231,13 @@ mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed)
 # A student's and an instructor's walk through the merged window (Tab, non-square, files, figures) found these.
 mutant demo-note-stays-over-the-file src/session/app_state.cpp 's/^  if (!state.message_is_error \&\& state.message == demo_note) state.message.clear();/  (void)demo_note;/' "$SESSION" "^session: ?the note that the other dimension"
 mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.res_rows) state.res_rows = res;$/  (void)0;/' "$SESSION" "^session: ?with non-square on, a show-me"
+# --- #34 page verdicts and files ---
+mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& state.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
+mutant page-answer-graded-on-screen src/session/camera_check.cpp 's/  const bool for_download = request_.is_file \&\& downloaded_;/  const bool for_download = false;/' "$SESSION" "^session: ?the page grades an answer for the case downloaded"
+mutant page-verdict-always-current src/session/camera_check.cpp 's/  return verdict->key == last_key_ ? VerdictState::for_camera_shown/  return true ? VerdictState::for_camera_shown/' "$SESSION" "^session: ?the page (grades|never)"
+mutant page-messages-show-folders src/session/shown_files.cpp 's/  if (!host.files_are_downloads) return path;/  return path;/' "$SESSION" "^session: ?(the page names|a file the page|downloads are named)"
+mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(path)) {/  if (!overwrite \&\& std::filesystem::exists(path)) {/' "$SESSION" "^session: ?downloads are named"
+mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_advance += std::round(advance \* scale);/    m.x_advance += advance * scale;/' "$FIGURE" "^figure: ?the page's text metrics"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
