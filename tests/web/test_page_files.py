@@ -81,10 +81,12 @@ def wait_for_file(path, seconds=10):
     return os.path.exists(path)
 
 
-def frames_after(page, count):
-    """Waits until `count` more frames are drawn (what the page does at the next event)."""
-    drawn = page.call("return Module.ccall('raycam_frames_drawn', 'number', [], [])")
-    wait_for(page, "return Module.ccall('raycam_frames_drawn', 'number', [], [])", lambda n: n >= drawn + count)
+FRAMES = "return Module.ccall('raycam_frames_drawn', 'number', [], [])"
+
+
+def frames_after(page, drawn, count=2):
+    """Waits until `count` frames are drawn after the `drawn`-th (read before the event that wakes the page)."""
+    wait_for(page, FRAMES, lambda n: n >= drawn + count)
 
 
 def click_widget(page, widget_id):
@@ -96,9 +98,10 @@ def click_widget(page, widget_id):
     x, y, w, h = widgets[widget_id]
     canvas = page.driver.find_element("id", "canvas")
     size = page.call("return [Module.canvas.width, Module.canvas.height]")
+    drawn = page.call(FRAMES)
     ActionChains(page.driver).move_to_element_with_offset(canvas, x + w / 2 - size[0] / 2, y + h / 2 - size[1] / 2) \
         .pause(0.2).click_and_hold().pause(0.2).release().perform()
-    frames_after(page, 2)
+    frames_after(page, drawn, 4)  # the move, the press, the release
     return True
 
 
@@ -116,11 +119,12 @@ def native_case_ids(case_path, folder):
 
 
 def give_answer(page, name, rows):
+    drawn = page.call(FRAMES)
     page.call("""const [name, content] = arguments; FS.mkdirTree('/answers');
                  FS.writeFile('/answers/' + name, content);
                  Module.ccall('raycam_check_answer', null, ['string'], ['/answers/' + name]);""",
               name, json.dumps({"ids": rows}))
-    frames_after(page, 2)
+    frames_after(page, drawn)
     return shown_frame(page)
 
 
@@ -179,8 +183,9 @@ def verdict_states(page, downloads, scratch):
           % (frame["check_state"], frame["check_status"]))
     press(page, Keys.TAB)
     wait_for(page, "return document.title", lambda t: "3D" in t)
+    drawn = page.call(FRAMES)
     page.call("Module.ccall('raycam_clear_check', null, [], [])")
-    frames_after(page, 2)
+    frames_after(page, drawn)
     frame = shown_frame(page)
     check(frame["check_state"] == "no-answer" and frame["check_status"] == "",
           "  ... the clear button: no answer again (%s)" % frame["check_state"])
