@@ -274,6 +274,13 @@ mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  preset = merge
 mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(language, n == 1 ? english_one : english_many, n);/  return textf(language, english_many, n);/' "raycam_check_tests raycam-cli" "^check: ?(batch counts one|check's counts|check merge of one shard)"
 mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
 mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
+# --- #34 page verdicts and files ---
+mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& state.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
+mutant page-answer-graded-on-screen src/session/camera_check.cpp 's/  const bool for_download = request_.is_file \&\& downloaded_;/  const bool for_download = false;/' "$SESSION" "^session: ?the page grades an answer for the case downloaded"
+mutant page-verdict-always-current src/session/camera_check.cpp 's/  return verdict->key == last_key_ ? VerdictState::for_camera_shown/  return true ? VerdictState::for_camera_shown/' "$SESSION" "^session: ?the page (grades|never)"
+mutant page-messages-show-folders src/session/shown_files.cpp 's/  if (!host.files_are_downloads) return path;/  return path;/' "$SESSION" "^session: ?(the page names|a file the page|downloads are named)"
+mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(path)) {/  if (!overwrite \&\& std::filesystem::exists(path)) {/' "$SESSION" "^session: ?downloads are named"
+mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_advance += std::round(advance \* scale);/    m.x_advance += advance * scale;/' "$FIGURE" "^figure: ?the page's text metrics"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -1,11 +1,12 @@
 #include "figure_layout.h"
 
 #include <algorithm>
-#include <cairo.h>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <memory>
+
+#include "text_metrics.h"
 
 namespace raycam::figure {
 
@@ -21,18 +22,6 @@ constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar
 constexpr double kTickHalfLength = 2.5;     // pt
 constexpr double kOverObjectWeight = 20.0;  // a label over an object costs more than one over a ray
 constexpr std::size_t kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (all objects drawn)
-
-// One cairo context for measuring text (a 1×1 image: only the font metrics are used).
-cairo_t* measuring_context() {
-  struct Deleter {
-    void operator()(cairo_t* cr) const {
-      cairo_surface_destroy(cairo_get_target(cr));
-      cairo_destroy(cr);
-    }
-  };
-  thread_local std::unique_ptr<cairo_t, Deleter> cr(cairo_create(cairo_image_surface_create(CAIRO_FORMAT_A8, 1, 1)));
-  return cr.get();
-}
 
 // ---- geometry --------------------------------------------------------------------------------------------
 
@@ -86,11 +75,6 @@ glm::dvec2 nearest_point(const Box& b, glm::dvec2 p) {
 }
 
 // ---- text -----------------------------------------------------------------------------------------------
-
-void set_font(cairo_t* cr, double size, bool bold) {
-  cairo_select_font_face(cr, kFont, CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, size);
-}
 
 PlacedText text_at(const std::string& markup, glm::dvec2 at, double size, bool bold) {
   const TextExtent e = measure_text(markup, size, bold);
@@ -444,21 +428,17 @@ PageSize page_in_mm(double width, double height, double dpi) {
 PageSize page_in_px(int width, int height) { return {0.75 * width, 0.75 * height, 1.0 / 0.75}; }
 
 TextExtent measure_text(const std::string& markup, double size, bool bold) {
-  cairo_t* cr = measuring_context();
   TextExtent e;
   for (const TextRun& run : parse_math_text(markup)) {
     const double run_size = run.level == 0 ? size : kScriptScale * size;
     const double shift = run.level < 0 ? kSubscriptDrop * size : run.level > 0 ? -kSuperscriptRise * size : 0.0;
-    set_font(cr, run_size, bold);
-    cairo_text_extents_t x;
-    cairo_text_extents(cr, run.text.c_str(), &x);
-    cairo_font_extents_t f;  // the font's ascent and descent, as a PDF reader boxes a word
-    cairo_font_extents(cr, &f);
+    // The ink, and the font's ascent and descent: a PDF reader boxes a word by them.
+    const RunMetrics x = measure_run(run.text, run_size, bold);
     e.width += x.x_advance;
-    double above = std::max(-x.y_bearing, f.ascent) - shift;
+    double above = std::max(-x.y_bearing, x.ascent) - shift;
     if (run.vector) above = std::max(above, 0.72 * size + 0.3 * size - shift);  // the arrow over it
     e.above = std::max(e.above, above);
-    e.below = std::max(e.below, std::max(x.height + x.y_bearing, f.descent) + shift);
+    e.below = std::max(e.below, std::max(x.height + x.y_bearing, x.descent) + shift);
   }
   return e;
 }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "raycam/view_setup.h"
+#include "shown_files.h"
 #include "text.h"
 
 namespace raycam::session {
@@ -166,12 +167,13 @@ bool open_scene(AppState& state, const std::string& path) {
     state.path_input = path;
     state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
     state.overwrite_pending.clear();
-    set_message(state, MessageSource::files, false, trf(state.language, "opened %s", path.c_str()));
+    set_message(state, MessageSource::files, false, trf(state.language, "opened %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
     // The scene and the camera stay as they were; the Open box keeps what was typed (a typo is fixed in
     // place, not retyped); the message names the file and the reason.
-    set_message(state, MessageSource::files, true, cannot_open_message(state.language, path, error.what()));
+    set_message(state, MessageSource::files, true,
+                with_file_shown(state.host, cannot_open_message(state.language, path, error.what()), path));
     return false;
   }
 }
@@ -186,10 +188,12 @@ bool save_preset(AppState& state, const std::string& path) {
     }
     const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
-    set_message(state, MessageSource::files, false, trf(state.language, "saved the camera preset to %s", path.c_str()));
+    set_message(state, MessageSource::files, false,
+                trf(state.language, "saved the camera preset to %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
-    set_message(state, MessageSource::files, true, trf(state.language, "cannot save: %s", tr_reason(state.language, error.what()).c_str()));
+    set_message(state, MessageSource::files, true,
+                with_file_shown(state.host, trf(state.language, "cannot save: %s", tr_reason(state.language, error.what()).c_str()), path));
     return false;
   }
 }
@@ -201,7 +205,8 @@ bool save_preset_as(AppState& state, std::string path, bool overwrite) {
     set_message(state, MessageSource::files, true, tr(state.language, "Save as: type the path of the file to write"));
     return false;
   }
-  if (!overwrite && std::filesystem::exists(path)) {
+  // A download never replaces anything: the browser keeps both files.
+  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path)) {
     state.overwrite_pending = path;  // the panel asks; nothing is written yet
     return false;
   }

@@ -92,7 +92,24 @@ void CameraCheck::set_command(const std::string& command, bool is_file) {
   request_.is_file = is_file;
 }
 
-std::string CameraCheck::case_key(const AppState& state) const {
+SceneFile CameraCheck::case_for_download(const AppState& state) {
+  downloaded_ = DownloadedCase{camera_key(state), camera_case(state)};
+  return downloaded_->file;
+}
+
+void CameraCheck::give_answer(const std::string& path) {
+  set_command(path, true);
+  request_.check_now = true;
+}
+
+void CameraCheck::clear() {
+  if (request_.is_file) request_.command.clear();
+  request_.check_now = false;
+  std::lock_guard<std::mutex> lock(shared_->mutex);
+  shared_->latest.reset();
+}
+
+std::string CameraCheck::camera_key(const AppState& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
@@ -101,6 +118,11 @@ std::string CameraCheck::case_key(const AppState& state) const {
       << p.df.value_or(0) << '|' << p.res.value_or(0) << '|' << p.res_rows.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';
   for (int s : p.size.value_or(std::vector<int>{})) key << s << ',';
+  return key.str();
+}
+
+std::string CameraCheck::command_key() const {
+  std::ostringstream key;
   key << '|' << request_.is_file << '|' << request_.command;
   if (request_.is_file) {  // an answer file edited by hand counts as a change
     struct stat info;
@@ -112,18 +134,23 @@ std::string CameraCheck::case_key(const AppState& state) const {
 
 void CameraCheck::update(const AppState& state, double now) {
   if (request_.command.empty()) return;
-  const std::string key = case_key(state);
+  const std::string command = command_key();
+  const std::string key = camera_key(state) + command;
   if (key != last_key_) {
     last_key_ = key;
     changed_at_ = now;
   }
-  const bool due = request_.check_now ||
-                   (request_.automatic && key != submitted_key_ && now - changed_at_ >= kQuietSeconds);
+  // A host that runs no program re-grades nothing by itself: an answer file is for the case it was made for.
+  const bool automatic = request_.automatic && state.host.runs_programs;
+  const bool due =
+      request_.check_now || (automatic && key != submitted_key_ && now - changed_at_ >= kQuietSeconds);
   if (!due) return;
   request_.check_now = false;
   CheckJob job;
-  job.key = key;
-  job.checked = {"the current camera", camera_case(state)};
+  // An answer file after a case download answers that case, whatever the camera did since.
+  const bool for_download = request_.is_file && downloaded_;
+  job.key = for_download ? downloaded_->camera_key + command : key;
+  job.checked = {"the current camera", for_download ? downloaded_->file : camera_case(state)};
   job.source.timeout_seconds = kCheckTimeout;
   job.source.diagnosis_budget = kDiagnosisBudget;
   try {
@@ -170,6 +197,21 @@ CheckProgress CameraCheck::progress() const {
   progress.latest = shared_->latest;
   progress.current = progress.latest && progress.latest->key == last_key_;
   return progress;
+}
+
+VerdictState CameraCheck::verdict_state() const {
+  const auto verdict = latest();
+  if (!verdict) return VerdictState::no_answer;
+  return verdict->key == last_key_ ? VerdictState::for_camera_shown : VerdictState::for_earlier_camera;
+}
+
+const char* verdict_state_name(VerdictState state) {
+  switch (state) {
+    case VerdictState::no_answer: return "no-answer";
+    case VerdictState::for_camera_shown: return "camera-shown";
+    case VerdictState::for_earlier_camera: return "earlier-camera";
+  }
+  return "";
 }
 
 std::string CameraCheck::status() const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,12 @@ struct KeyedVerdict {
   std::string key;
   check::CaseVerdict verdict;
 };
+
+// What the latest verdict grades, as the panel says it: none yet; the camera and scene shown; or an earlier
+// camera or scene (the student moved since, or gave an answer made for a case downloaded before a move):
+// then the verdict is greyed, never a red fail for a camera the answer was not made for.
+enum class VerdictState { no_answer, for_camera_shown, for_earlier_camera };
+const char* verdict_state_name(VerdictState state);  // "no-answer", "camera-shown", "earlier-camera"
 
 // What the panel shows, taken at once.
 struct CheckProgress {
@@ -73,6 +80,14 @@ class CameraCheck {
 
   // For tests and the host: the command (a program, or an answer file's path when `is_file`).
   void set_command(const std::string& command, bool is_file);
+  // The page's route: the case of the camera on screen, remembered as the one the student's program will
+  // answer; an answer file given later is graded against it (not the camera on screen, which may have moved).
+  SceneFile case_for_download(const AppState& state);
+  // An answer file to grade at the next update().
+  void give_answer(const std::string& path);
+  // The clear button: no verdict, no answer file (a program's command stays).
+  void clear();
+  VerdictState verdict_state() const;
   // The latest verdict's status ("pass", "fail", "crash", "timeout", "bad-output"), empty while none; its
   // first diagnosis ("" if none); whether a run is queued or running.
   std::string status() const;
@@ -85,7 +100,8 @@ class CameraCheck {
   bool waiting() const;
 
  private:
-  std::string case_key(const AppState& state) const;
+  std::string camera_key(const AppState& state) const;  // the camera and scene
+  std::string command_key() const;                       // the program or the answer file
   std::shared_ptr<const KeyedVerdict> latest() const;
 
   std::shared_ptr<CheckShared> shared_;
@@ -93,6 +109,11 @@ class CameraCheck {
   std::string last_key_;       // the case (and command) last seen
   std::string submitted_key_;  // the case last handed to the worker
   double changed_at_ = 0;
+  struct DownloadedCase {
+    std::string camera_key;
+    SceneFile file;
+  };
+  std::optional<DownloadedCase> downloaded_;  // the page: the case offered last
 };
 
 }  // namespace raycam::session

@@ -29,6 +29,7 @@ std::string figure_replace_question(Language language, const std::vector<std::st
 
 // The extensions of the formats, in the order of AppState::figure_format (raycam-cli figure's --format).
 inline constexpr const char* kFigureExtensions[] = {".svg", ".pdf", ".png", ".tex"};
+inline constexpr int kTikzFigureFormat = 3;  // the one format that needs no native library (the page's)
 
 // The index of `path`'s figure extension, or -1.
 inline int figure_format_of(const std::string& path) {

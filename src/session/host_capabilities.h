@@ -15,9 +15,16 @@ struct HostCapabilities {
   bool picks_files = false;
   // F11 and the panel's button toggle full screen (a page: the browser's Fullscreen API).
   bool fullscreen = true;
+  // What the app writes becomes a download the browser keeps (no "replace?" question: the browser keeps
+  // both), named after the scene, and messages name a file by its name alone: the page's folders
+  // (/home/web_user, /picked, /scenes) are not the student's (shown_files.h).
+  bool files_are_downloads = false;
+  // SVG, PDF and PNG figures are drawn by cairo, a native library the page does not have; TikZ is text and
+  // is offered everywhere.
+  bool cairo_figures = true;
 };
 
 inline constexpr HostCapabilities kDesktopHost{};
-inline constexpr HostCapabilities kPageHost{false, false, true, true};
+inline constexpr HostCapabilities kPageHost{false, false, true, true, true, false};
 
 }  // namespace raycam::session

@@ -266,6 +266,11 @@ const std::vector<Translation>& translation_table() {
       {"cannot save: %s", "impossible d'enregistrer : %s"},
       {"demo scene", "scène de démonstration"},
       {"or drop a scene file on the window", "ou déposez un fichier de scène sur la fenêtre"},
+      {"Open a scene file…###files_open", "Ouvrir un fichier de scène…###files_open"},
+      {"or drop a scene file on the page", "ou déposez un fichier de scène sur la page"},
+      {"Download the camera preset (%s)###save_download", "Télécharger la caméra (%s)###save_download"},
+      {"TikZ (.tex, for LaTeX) only: SVG, PDF and PNG need the desktop app (drawn by cairo).",
+       "TikZ (.tex, pour LaTeX) seulement : SVG, PDF et PNG demandent l'application de bureau (dessinés par cairo)."},
       {"export###export", "exporter###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
       // ---- panels.cpp: the construction's figures ----
@@ -363,20 +368,26 @@ const std::vector<Translation>& translation_table() {
        "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
        "vérifié à chaque changement (docs/check.md)."},
       {"program###check_command", "programme###check_command"},
-      {"A page cannot run your program: download this camera's case, run your program on it (python3 "
-       "my_camera.py < raycam-case.json > answer.json), then give the answer file.",
-       "Une page ne peut pas lancer votre programme : téléchargez le cas de cette caméra, lancez votre "
-       "programme dessus (python3 ma_camera.py < raycam-case.json > answer.json), puis donnez le fichier de réponse."},
+      {"Your program reads a case (a camera and its scene) as JSON on stdin and prints {\"ids\": …}; a page "
+       "cannot run it, so:",
+       "Votre programme lit un cas (une caméra et sa scène) en JSON sur stdin et écrit {\"ids\": …} ; une page "
+       "ne peut pas le lancer, donc :"},
+      {"1. download this camera's case;", "1. téléchargez le cas de cette caméra ;"},
+      {"2. run your program on it: python3 my_camera.py < raycam-case.json > answer.json;",
+       "2. lancez votre programme dessus : python3 ma_camera.py < raycam-case.json > answer.json ;"},
+      {"3. give the answer file: it is graded for the camera of that case (docs/check.md).",
+       "3. donnez le fichier de réponse : il est noté pour la caméra de ce cas (docs/check.md)."},
+      {"no answer yet", "pas encore de réponse"},
+      {"graded for the camera shown", "noté pour la caméra affichée"},
+      {"answer for an earlier camera: download the new case",
+       "réponse pour une caméra précédente : téléchargez le nouveau cas"},
+      {"Clear the verdict###check_clear", "Effacer le verdict###check_clear"},
       {"Download this camera's case###check_case", "Télécharger le cas de cette caméra###check_case"},
       {"Give the answer file…###check_answer", "Donner le fichier de réponse…###check_answer"},
       {"Open a scene file…###open_scene_file", "Ouvrir un fichier de scène…###open_scene_file"},
       {"Open…###open_scene_file", "Ouvrir…###open_scene_file"},
       {"type a scene file's path in the box, then Open",
        "tapez le chemin d'un fichier de scène dans la case, puis Ouvrir"},
-      {"The camera or the scene changed since the case was downloaded: this answer is graded against the camera "
-       "on screen. Download this camera's case again and run your program on it.",
-       "La caméra ou la scène a changé depuis le téléchargement du cas : cette réponse est notée avec la caméra "
-       "à l'écran. Téléchargez à nouveau le cas de cette caméra et lancez votre programme dessus."},
       {"answer file: %s", "fichier de réponse : %s"},
       {"an answer file, not a program###check_is_file",
        "un fichier de réponse, pas un programme###check_is_file"},

@@ -8,6 +8,7 @@
 
 #include "check_texts.h"
 #include "panels.h"
+#include "shown_files.h"
 #include "text.h"
 #include "theme.h"
 
@@ -42,17 +43,26 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
   if (arrived) in_view = {progress.latest, true};
   if (!ui::section(tr(language, "Check my camera###check"), tr(language, "Check###check"))) return;
-  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
-  wrapped_between_words(tr(language, "Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
-                           "it is checked whenever they change (docs/check.md)."));
-  ImGui::PopStyleColor();
   CheckRequest& request = check.request();
+  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
+  if (host.runs_programs)
+    wrapped_between_words(tr(language, "Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
+                             "it is checked whenever they change (docs/check.md)."));
+  else  // a page runs no program: the student's route, step by step
+    for (const char* step : {tr_later("Your program reads a case (a camera and its scene) as JSON on stdin and "
+                                      "prints {\"ids\": …}; a page cannot run it, so:"),
+                             tr_later("1. download this camera's case;"),
+                             tr_later("2. run your program on it: python3 my_camera.py < raycam-case.json > "
+                                      "answer.json;"),
+                             tr_later("3. give the answer file: it is graded for the camera of that case "
+                                      "(docs/check.md).")})
+      wrapped_between_words(tr(language, step));
+  ImGui::PopStyleColor();
   if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
-    wrapped_between_words(tr(language, "A page cannot run your program: download this camera's case, run your program on "
-                             "it (python3 my_camera.py < raycam-case.json > answer.json), then give the answer file."));
     if (button(tr(language, "Download this camera's case###check_case"))) request.download_case = true;
     if (button(tr(language, "Give the answer file…###check_answer"))) request.pick_answer = true;
-    if (!request.command.empty()) wrapped_between_words(trf(language, "answer file: %s", request.command.c_str()));
+    if (!request.command.empty())
+      wrapped_between_words(trf(language, "answer file: %s", shown_file_name(host, request.command).c_str()));
   } else {
     const std::string label = tr(language, "program###check_command");  // above its box, which takes the whole width
     wrapped_between_words(label.substr(0, label.find("##")));
@@ -64,11 +74,14 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   }
 
   if (progress.running) wrapped_between_words(trf(language, "running… (%.1f s)", now - progress.started_at));
+  if (!progress.running && !progress.latest && !host.runs_programs) wrapped_between_words(tr(language, "no answer yet"));
   if (progress.running || !progress.latest) return;  // a re-run: the old verdict is no longer this camera's
   const check::CaseVerdict& v = progress.latest->verdict;
   const check::CaseResult& r = v.result;
-  const ImVec4 colour =
-      r.status == check::CaseStatus::pass ? current_theme().confirmation : current_theme().error;
+  // A verdict for an earlier camera is greyed, whatever it says: never a red fail for a camera it was not for.
+  const ImVec4 colour = !progress.current                       ? current_theme().hint
+                        : r.status == check::CaseStatus::pass ? current_theme().confirmation
+                                                              : current_theme().error;
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
   ImGui::BeginGroup();  // one item: the verdict
   if (r.status == check::CaseStatus::pass)
@@ -77,13 +90,22 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
     wrapped_between_words(trf(language, "fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
   else
     wrapped_between_words(trf(language, "%s: %s", check::text(language, check::status_name(r.status)),
-                              tr_reason(language, r.detail).c_str()));
+                              with_file_shown(host, tr_reason(language, r.detail), request.command).c_str()));
   ImGui::EndGroup();
+  if (host.runs_programs) {
+    if (!progress.current) wrapped_between_words(tr(language, "(for the camera before your last change)"));
+  } else {
+    wrapped_between_words(progress.current ? tr(language, "graded for the camera shown")
+                                           : tr(language, "answer for an earlier camera: download the new case"));
+  }
   ImGui::PopStyleColor();
   if (arrived) ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   in_view.drawn_at = {low.x, low.y, high.x, high.y};
-  if (!progress.current) wrapped_between_words(tr(language, "(for the camera before your last change)"));
+  if (button(tr(language, "Clear the verdict###check_clear"))) {
+    check.clear();
+    return;
+  }
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr(language, "no sandbox: bubblewrap is not available here"));
   if (v.diagnosed && v.diagnosis.empty())
     ImGui::TextWrapped("%s", tr(language, "no classic mistake reproduces this image"));

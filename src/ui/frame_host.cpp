@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "gl.h"
+#include "shown_files.h"
 #include "text.h"
 #include "theme.h"
 
@@ -31,9 +32,9 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
     const std::string path = shot->path.empty() ? "raycam-screenshot.png" : shot->path;
     try {
       gl::write_png(host.read_back(), path);
-      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", path.c_str()));
+      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, path).c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, tr_reason(state.language, error.what()));
+      set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), path));
       result.screenshot_failed = true;
     }
   }

@@ -23,6 +23,7 @@
 #include "camera_ranges.h"
 #include "figure_export.h"
 #include "image_header.h"  // ellipsized
+#include "shown_files.h"
 #include "inspection.h"
 #include "mistake_lessons.h"
 #include "raycam/image_files.h"
@@ -401,20 +402,28 @@ void placement_tables(AppState& state, const View3D& view, int step, int steps) 
 void export_figure_now(AppState& state, bool all) {
   try {
     const std::vector<std::string> files = export_construction_figure(state, state.figure_path, all);
-    set_message(state, MessageSource::construction, false, figure_files_message(state.language, files));
+    std::vector<std::string> shown;  // the page: names alone
+    for (const std::string& file : files) shown.push_back(shown_file_name(state.host, file));
+    set_message(state, MessageSource::construction, false, figure_files_message(state.language, shown));
   } catch (const std::exception& error) {
     set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
   }
 }
 
 void figure_export_row(AppState& state) {
+  const bool downloads = state.host.files_are_downloads;
+  if (!state.host.cairo_figures) state.figure_format = kTikzFigureFormat;  // the one format without cairo
+  if (downloads)  // named after the scene, as the other downloads
+    state.figure_path = named_after_scene(state, std::string("-figure") + kFigureExtensions[state.figure_format]);
   // A name edited while the question shows: the question was about other files.
-  if (labelled(state, tr(state.language, "figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
+  else if (labelled(state, tr(state.language, "figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
     state.figure_replace_pending = 0;
   static const char* const kFormats[] = {"SVG", "PDF", "PNG", "TikZ"};  // figure_export.h's order
   if (figure_format_of(state.figure_path) >= 0) state.figure_format = figure_format_of(state.figure_path);
-  if (labelled(state, tr(state.language, "format###figure_format"),
-               [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); })) {
+  if (!state.host.cairo_figures)
+    explain(tr(state.language, "TikZ (.tex, for LaTeX) only: SVG, PDF and PNG need the desktop app (drawn by cairo)."));
+  else if (labelled(state, tr(state.language, "format###figure_format"),
+                    [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); })) {
     state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
     state.figure_replace_pending = 0;
   }
@@ -423,6 +432,7 @@ void figure_export_row(AppState& state) {
              [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
   checkbox(tr(state.language, "matrix###figure_matrix"), &state.figure_matrix);
   int asked = button(tr(state.language, "Export figure…")) ? 1 : 0;
+  record_item_rect(state, "###figure_export");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Export every step"))) asked = 2;
   if (asked != 0) {
@@ -431,7 +441,9 @@ void figure_export_row(AppState& state) {
     try {
       // Found once, here: the question below is drawn every frame from this list (drawing the figure again
       // each frame to find them cost a whole figure build per frame, and threw on a name edited meanwhile).
-      state.figure_replace_files = existing_figure_files(state, state.figure_path, asked == 2);
+      // A download replaces nothing: the browser keeps both.
+      state.figure_replace_files =
+          downloads ? std::vector<std::string>{} : existing_figure_files(state, state.figure_path, asked == 2);
       if (state.figure_replace_files.empty())
         export_figure_now(state, asked == 2);
       else
@@ -660,20 +672,36 @@ void files_section(AppState& state) {
   // The question "replace?" opens the section; a message does not (it shows above the status line while
   // the section is closed), so the section can be closed while a message shows.
   if (!state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
-  if (!section(tr(state.language, "Scene file###files"), tr(state.language, "Files###files"))) return;
+  const bool open_section = section(tr(state.language, "Scene file###files"), tr(state.language, "Files###files"));
+  record_item_rect(state, "###files");
+  if (!open_section) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
   const auto path_box = [&](const char* label, std::string& path) {
     return labelled(state, label, [&](const char* l) {
       return ImGui::InputText(l, &path, ImGuiInputTextFlags_EnterReturnsTrue);
     });
   };
-  bool open = path_box(tr(state.language, "open###open_path"), state.path_input);
-  open |= button(tr(state.language, "Open"));
-  if (open) open_scene(state, state.path_input);
-  explain(tr(state.language, "or drop a scene file on the window"));
-  bool save = path_box(tr(state.language, "save as###save_path"), state.save_path);
-  save |= button(tr(state.language, "Save camera preset as…"));
-  if (save) save_preset_as(state, state.save_path, false);
+  const bool downloads = state.host.files_are_downloads;
+  if (state.host.picks_files) {  // the page: the browser's file picker, or a file dropped on the page
+    if (button(tr(state.language, "Open a scene file…###files_open"))) state.requests.ask(HostRequestKind::pick_scene_file);
+    record_item_rect(state, "###files_open");
+    explain(tr(state.language, "or drop a scene file on the page"));
+  } else {
+    bool open = path_box(tr(state.language, "open###open_path"), state.path_input);
+    open |= button(tr(state.language, "Open"));
+    if (open) open_scene(state, state.path_input);
+    explain(tr(state.language, "or drop a scene file on the window"));
+  }
+  if (downloads) {  // a download named after the scene; the browser asks where, if it is set to
+    const std::string name = named_after_scene(state, ".json");
+    if (button(trf(state.language, "Download the camera preset (%s)###save_download", name.c_str()).c_str()))
+      save_preset_as(state, name, true);
+    record_item_rect(state, "###save_download");
+  } else {
+    bool save = path_box(tr(state.language, "save as###save_path"), state.save_path);
+    save |= button(tr(state.language, "Save camera preset as…"));
+    if (save) save_preset_as(state, state.save_path, false);
+  }
   if (!state.overwrite_pending.empty()) {  // asked before replacing a file
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
     ImGui::TextWrapped("%s", trf(state.language, "%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
@@ -682,14 +710,18 @@ void files_section(AppState& state) {
     same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
     if (button(tr(state.language, "Cancel"))) state.overwrite_pending.clear();
   }
-  labelled(state, tr(state.language, "export###export"),
-           [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
-  if (button(tr(state.language, "Export colour map PNG"))) {
+  if (!downloads)
+    labelled(state, tr(state.language, "export###export"),
+             [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
+  const std::string export_path = downloads ? named_after_scene(state, "-colour-map.png") : state.export_path;
+  const bool export_png = button(tr(state.language, "Export colour map PNG"));
+  record_item_rect(state, "###export_png");
+  if (export_png) {
     try {
-      write_png(state.map, state.export_path, 1, image_is_bar(state.view) ? 32 : 1);
-      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", state.export_path.c_str()));
+      write_png(state.map, export_path, 1, image_is_bar(state.view) ? 32 : 1);
+      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, export_path).c_str()));
     } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, tr_reason(state.language, error.what()));
+      set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), export_path));
     }
   }
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);

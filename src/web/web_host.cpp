@@ -27,7 +27,6 @@ struct Page {
   WebHost* host = nullptr;
   ui::FrameRenderer* frame = nullptr;
   Downloads* downloads = nullptr;
-  std::string downloaded_case;  // the JSON of Check my camera's last case download
 };
 Page page;
 
@@ -135,9 +134,7 @@ void tick() {
   if (request.download_case) {
     request.download_case = false;
     try {
-      const SceneFile downloaded = session::camera_case(*page.state);
-      save_scene_file(downloaded, "raycam-case.json");
-      page.downloaded_case = scene_to_json(downloaded);
+      save_scene_file(page.frame->check().case_for_download(*page.state), "raycam-case.json");
     } catch (const std::exception& error) {
       session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(page.state->language, error.what()));
     }
@@ -158,9 +155,6 @@ void tick() {
 session::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
 session::CameraCheck& page_check() { return page.frame->check(); }
-bool camera_changed_since_case_download() {
-  return !page.downloaded_case.empty() && scene_to_json(session::camera_case(*page.state)) != page.downloaded_case;
-}
 void wake_page() { page.host->note_event(); }
 
 void WebHost::woken() {

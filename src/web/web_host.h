@@ -46,8 +46,6 @@ void run_page(session::AppState& state);
 session::AppState& page_state();
 const ui::FrameLayout& page_layout();  // the last frame drawn: where things were, what the tables showed
 session::CameraCheck& page_check();
-// Check my camera: a case was downloaded, and the camera or scene on screen is no longer that case's.
-bool camera_changed_since_case_download();         // Check my camera's, for the answer file the page is given
 void wake_page();
 
 }  // namespace raycam::web

@@ -21,6 +21,7 @@
 #include "raycam/language.h"
 #include "raycam/scene.h"
 #include "raycam/view_setup.h"
+#include "shown_files.h"
 #include "text.h"
 #include "web_host.h"
 
@@ -173,24 +174,24 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   }
   const raycam::session::CameraCheck& check = raycam::web::page_check();
   json += "\"check_status\": \"" + check.status() + "\", ";
+  json += std::string("\"check_state\": \"") + raycam::session::verdict_state_name(check.verdict_state()) + "\", ";
+  json += "\"check_header\": \"" + raycam::session::check_header(check.progress()) + "\", ";
   add("check_wrong_pixels", double(check.wrong_pixels()));
   json += "\"end\": 0}";
   return json.c_str();
 }
 
-// Check my camera's answer file (the page's answer picker wrote it here): graded at once against the camera
-// on screen, as the desktop grades an answer file.
+// Check my camera's answer file (the page's answer picker wrote it here): graded at once, against the case
+// downloaded last (what the student's program answered), not the camera on screen if it moved since: the
+// panel then shows the verdict greyed, for an earlier camera (camera_check.h).
 EMSCRIPTEN_KEEPALIVE void raycam_check_answer(const char* path) {
-  raycam::session::CameraCheck& check = raycam::web::page_check();
-  // An answer is graded against the camera on screen (as on the desktop): if that is no longer the case the
-  // student downloaded, the verdict would blame the program for the move. Said at once, beside the verdict.
-  if (raycam::web::camera_changed_since_case_download())
-    raycam::session::set_message(raycam::web::page_state(), raycam::session::MessageSource::general, true,
-                            raycam::ui::tr(raycam::web::page_state().language, "The camera or the scene changed since the case was downloaded: this "
-                                           "answer is graded against the camera on screen. Download this camera's "
-                                           "case again and run your program on it."));
-  check.set_command(path, true);
-  check.request().check_now = true;
+  raycam::web::page_check().give_answer(path);
+  raycam::web::wake_page();
+}
+
+// The check's clear button, for the browser tests.
+EMSCRIPTEN_KEEPALIVE void raycam_clear_check() {
+  raycam::web::page_check().clear();
   raycam::web::wake_page();
 }
 
@@ -200,9 +201,10 @@ EMSCRIPTEN_KEEPALIVE void raycam_download_case() {
   raycam::web::wake_page();
 }
 
-// Save as, as the panel's button does (the file then becomes a download): for the browser tests.
+// Save as under `path`, as a desktop Save as asks (never replacing without asking): in the page the file
+// becomes a download, and a name saved twice downloads twice (the browser keeps both). For the browser tests.
 EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
-  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, true);
+  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, false);
   raycam::web::wake_page();
   return saved ? 1 : 0;
 }
@@ -248,6 +250,9 @@ int main() {
   }
   static std::map<std::string, raycam::session::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
   state.widget_rects = &widget_rects;
+  // A ?scene= that did not open is named as the student named it (NAME, not the page's /scenes/NAME).
+  state.message = raycam::session::with_file_shown(raycam::session::kPageHost, state.message,
+                                                   options.view.scene_path.value_or(""));
   if (!error.empty()) {
     std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
     state.message = raycam::ui::tr_reason(state.language, error);

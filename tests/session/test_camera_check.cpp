@@ -8,7 +8,9 @@
 
 #include "../scratch_dir.h"
 #include "app_options.h"
+#include "answer.h"
 #include "camera_check.h"
+#include "case_image.h"
 
 using namespace raycam;
 using namespace raycam::session;
@@ -87,8 +89,9 @@ TEST_CASE("a host without a thread to spare (the page) has the verdict in the fr
     state.host = in_background ? kDesktopHost : kPageHost;
     CameraCheck check;
     check.set_command(answer, true);
+    check.request().check_now = true;  // the page grades an answer when given, never by itself
     check.update(state, 0.0);
-    check.update(state, 10.0);  // past the quiet time: due
+    check.update(state, 10.0);
     if (in_background) {
       double now = 10.0;
       settle(check, state, now);  // a worker's verdict arrives later
@@ -128,4 +131,71 @@ TEST_CASE("the check's verdict names itself in the image's header, a re-run clea
   verdict->verdict.result.status = check::CaseStatus::pass;  // a pass is said too: where the eye is
   CHECK(session::check_header(Language::en, progress).passed);
   CHECK(session::check_header(Language::en, progress).forms.front() == "CHECK: passed");
+}
+
+namespace {
+// The right answer file for a case, from the checker's own reference rendering (what a correct program prints).
+void write_right_answer(const SceneFile& made_for, const std::string& path) {
+  const check::CaseImage reference = check::render_case(made_for);
+  check::Answer answer;
+  answer.rows = reference.rows;
+  answer.columns = reference.columns;
+  answer.ids = reference.ids;
+  std::ofstream(path) << check::answer_to_json(answer, reference.dimension);
+}
+}  // namespace
+
+TEST_CASE("the page grades an answer for the case downloaded, greyed as an earlier camera's once it moved",
+          "[ui][check][host]") {
+  const test::ScratchDir scratch("page-verdict-states");
+  const std::string answer = scratch.path("answer.json");
+  AppState state = classic_2d();
+  state.host = kPageHost;
+  CameraCheck check;
+  CHECK(check.verdict_state() == VerdictState::no_answer);
+  write_right_answer(check.case_for_download(state), answer);
+  const double theta = view2d(state).orbit.theta;
+  view2d(state).orbit.theta += 0.3;  // the student moved before giving the answer
+  place_cameras(state);
+  check.give_answer(answer);
+  check.update(state, 1.0);
+  // Graded for the case it answers (a pass), shown as an earlier camera's: no header over this image.
+  CHECK(check.status() == "pass");
+  CHECK(check.verdict_state() == VerdictState::for_earlier_camera);
+  CHECK(check_header(Language::en, check.progress()).forms.empty());
+  view2d(state).orbit.theta = theta;  // back to the case's camera: the verdict is this image's again
+  place_cameras(state);
+  check.update(state, 2.0);
+  CHECK(check.verdict_state() == VerdictState::for_camera_shown);
+  check.clear();  // the clear button
+  CHECK(check.verdict_state() == VerdictState::no_answer);
+  CHECK(check.status().empty());
+  CHECK(check.request().command.empty());
+}
+
+TEST_CASE("the page never re-grades an answer against a camera it was not made for", "[ui][check][host]") {
+  const test::ScratchDir scratch("page-no-regrade");
+  const std::string answer = scratch.path("answer.json");
+  for (const bool page : {true, false}) {
+    AppState state = classic_2d();
+    state.host = page ? kPageHost : kDesktopHost;
+    CameraCheck check;
+    write_right_answer(camera_case(state), answer);
+    check.give_answer(answer);
+    double now = 0.0;
+    settle(check, state, now);
+    CHECK(check.status() == "pass");
+    CHECK(check.verdict_state() == VerdictState::for_camera_shown);
+    view2d(state).orbit.theta += 0.3;  // one arrow key
+    place_cameras(state);
+    for (int frame = 0; frame < 20; ++frame) check.update(state, now += 0.1);  // well past the quiet time
+    if (page) {  // the page keeps the verdict, greyed: a red fail would blame the program for the move
+      CHECK(check.status() == "pass");
+      CHECK(check.verdict_state() == VerdictState::for_earlier_camera);
+    } else {  // the desktop checks the file again for the new camera, as it always did
+      settle(check, state, now);
+      CHECK(check.status() == "fail");
+      CHECK(check.verdict_state() == VerdictState::for_camera_shown);
+    }
+  }
 }

@@ -11,8 +11,8 @@ import sys
 # Lowest first. A target may link only targets of a lower rank.
 LAYERS = [
     ["raycam_core"],
-    ["raycam_io", "raycam_testkit", "raycam_embree", "raycam_figure"],
-    ["raycam_check"],
+    ["raycam_io", "raycam_testkit", "raycam_embree", "raycam_figure_tikz"],
+    ["raycam_check", "raycam_figure"],
     ["raycam_session"],
     ["raycam_flags"],
     ["raycam_app_flags"],

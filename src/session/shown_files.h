@@ -1,0 +1,22 @@
+// Files as the student knows them. On the desktop a path is the student's own and is shown whole; in the
+// page (HostCapabilities::files_are_downloads) files live in the page's own folders, so a message names a
+// file by its name alone, and what the app writes is a download named after the scene.
+#pragma once
+
+#include <string>
+
+#include "app_state.h"
+
+namespace raycam::session {
+
+// `path` as a message shows it: the whole path, or in the page its file name.
+std::string shown_file_name(const HostCapabilities& host, const std::string& path);
+
+// `text` (a message, an error's reason) with every `path` in it shown as shown_file_name() shows it.
+std::string with_file_shown(const HostCapabilities& host, std::string text, const std::string& path);
+
+// A download's name after the scene on screen: "many3d" + suffix ("many3d.json", "many3d.png"); the demo
+// scene is "raycam-demo-3d".
+std::string named_after_scene(const Lesson& state, const std::string& suffix);
+
+}  // namespace raycam::session
