@@ -6,7 +6,10 @@ K = 50 to 500), in headless Chromium (the page's one thread) and in `raycam-cli 
 The two sides alternate, scene by scene, for --rounds rounds (the machine's load then weighs on both
 alike); the table gives each side's median over the rounds and their ratio, with the lowest and highest
 ratio of a round. Then the idle page's CPU time over 10 s.
-Usage: scripts/bench_web.py [--rounds N] [--quick] [WEB_FOLDER] [RAYCAM_CLI]
+With --big: instead, opening scene files of 10⁵ and 10⁶ spheres in the page by the picker's route (made in
+the page): the time to the first image, how long the reading took and the longest wait between two frames
+while reading, and the longest wait overall (the parse).
+Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [WEB_FOLDER] [RAYCAM_CLI]
        (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only)"""
 import argparse
 import os
@@ -19,11 +22,12 @@ import time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(root, "tests", "web"))
-from page_driver import Page  # noqa: E402
+from page_driver import Page, open_big_scene  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 parser.add_argument("--rounds", type=int, default=3, help="rounds of the alternation (1 to 20, default 3)")
 parser.add_argument("--quick", action="store_true", help="K = 10³ and the sparse scenes only")
+parser.add_argument("--big", action="store_true", help="time opening 10⁵ and 10⁶ spheres in the page instead")
 parser.add_argument("web_folder", nargs="?", default=os.path.join(root, "build-web"))
 parser.add_argument("cli", nargs="?", default=os.path.join(root, "build", "raycam-cli"))
 arguments = parser.parse_args()
@@ -94,6 +98,28 @@ def cpu_seconds(pid):
 def k_label(count):
     return {1000: "10³", 10000: "10⁴", 100000: "10⁵"}.get(count, str(count))
 
+
+def big_files():
+    """Opening big scene files in the page: the table of docs/web.md's "Big files"."""
+    page = Page(arguments.web_folder)
+    try:
+        page.open()
+        print("| spheres | file | first image | reading (longest frame gap) | longest frame gap (the parse) |")
+        print("|---|---|---|---|---|")
+        for count in (100000, 1000000):
+            record = open_big_scene(page, count, seconds=300)
+            announced = next(at for at, text in record["shown"] if "reading the objects" in text)
+            reading = [gap for at, gap in record["gaps"] if at <= announced]
+            print("| %d | %.1f MB | %.1f s | %.2f s (%.0f ms) | %.1f s |"
+                  % (count, record["size"] / 1048576.0, record["total_ms"] / 1000.0, announced / 1000.0,
+                     max(reading), max(gap for _, gap in record["gaps"]) / 1000.0))
+    finally:
+        page.close()
+
+
+if arguments.big:
+    big_files()
+    sys.exit(0)
 
 with tempfile.TemporaryDirectory() as scratch:
     scenes = [("scenes/many3d.json", os.path.join(root, "scenes", "many3d.json"))]

@@ -231,6 +231,9 @@ mutant fallback-cpu-unsaid src/cli/check_command.cpp 's/^  if (header.sandboxed)
 # A student's and an instructor's walk through the merged window (Tab, non-square, files, figures) found these.
 mutant demo-note-stays-over-the-file src/session/app_state.cpp 's/^  if (!state.message_is_error \&\& state.message == demo_note) state.message.clear();/  (void)demo_note;/' "$SESSION" "^session: ?the note that the other dimension"
 mutant show-me-res-columns-only src/session/mistake_lessons.cpp 's/^  if (state.res_rows) state.res_rows = res;$/  (void)0;/' "$SESSION" "^session: ?with non-square on, a show-me"
+# --- #34 page speed and big files ---
+# The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
+mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
