@@ -1,12 +1,20 @@
 #!/usr/bin/python3
 """Speed of the web page against the native program, same machine, same run (docs/web.md; a benchmark,
-not a test): the median cast of scenes/many3d.json at 256² and of 10⁵ random spheres, in headless Chromium
-(the page's one thread) and in `raycam-cli bench speed --threads 1`; then the idle page's CPU time over 10 s.
-Usage: scripts/bench_web.py [WEB_FOLDER] [RAYCAM_CLI]   (defaults: build-web, build/raycam-cli)"""
-import json
+not a test): a cast at 256² (the automatic caster) of scenes/many3d.json, of every scene of the bench
+families (`raycam-cli bench speed --write-family`, K = 10³, 10⁴, 10⁵) and of sparse scenes (the cube family,
+K = 50 to 500), in headless Chromium (the page's one thread) and in `raycam-cli bench speed --threads 1`.
+The two sides alternate, scene by scene, for --rounds rounds (the machine's load then weighs on both
+alike); the table gives each side's median over the rounds and their ratio, with the lowest and highest
+ratio of a round. Then the idle page's CPU time over 10 s.
+With --big: instead, opening scene files of 10⁵ and 10⁶ spheres in the page by the picker's route (made in
+the page): the time to the first image, how long the reading took and the longest wait between two frames
+while reading, and the longest wait overall (the parse).
+Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [WEB_FOLDER] [RAYCAM_CLI]
+       (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only)"""
+import argparse
 import os
-import random
 import re
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -14,27 +22,54 @@ import time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(root, "tests", "web"))
-from page_driver import Page  # noqa: E402
+from page_driver import Page, open_big_scene  # noqa: E402
 
-web_folder = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build-web")
-cli = sys.argv[2] if len(sys.argv) > 2 else os.path.join(root, "build", "raycam-cli")
+parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+parser.add_argument("--rounds", type=int, default=3, help="rounds of the alternation (1 to 20, default 3)")
+parser.add_argument("--quick", action="store_true", help="K = 10³ and the sparse scenes only")
+parser.add_argument("--big", action="store_true", help="time opening 10⁵ and 10⁶ spheres in the page instead")
+parser.add_argument("web_folder", nargs="?", default=os.path.join(root, "build-web"))
+parser.add_argument("cli", nargs="?", default=os.path.join(root, "build", "raycam-cli"))
+arguments = parser.parse_args()
+if not 1 <= arguments.rounds <= 20:
+    parser.error("--rounds: expected 1 to 20, got %d" % arguments.rounds)
+cli = arguments.cli
+
+FAMILY_COUNTS = [1000] if arguments.quick else [1000, 10000, 100000]
+SPARSE_COUNTS = [50, 100, 200, 500]
+SIDE = 256
 
 
-def many_spheres(path, count):
-    """count spheres uniform in [-10,10]^3 with radius 2*count^(-1/3), as `bench speed` draws them."""
-    rng = random.Random(1)
-    radius = 2.0 * count ** (-1.0 / 3.0)
-    objects = [{"type": "sphere", "center": [rng.uniform(-10, 10) for _ in range(3)], "radius": radius,
-                "color": [200, 100, 50]} for _ in range(count)]
-    with open(path, "w") as out:
-        json.dump({"dimension": 3, "objects": objects,
-                   "camera": {"d": 30, "theta": 30, "phi": 60, "df": 2, "size": [256, 256]}}, out)
+def family_names():
+    """The families' names, as `bench speed` lists them in its error for an unknown one ("expected A, B or C")."""
+    run = subprocess.run([cli, "bench", "speed", "--write-family", "?", "--to", os.devnull],
+                         capture_output=True, text=True)
+    listed = re.search(r"expected (.*), got", run.stderr)
+    if not listed:
+        raise RuntimeError("raycam-cli did not list its scene families: %s" % run.stderr)
+    return re.split(r", | or ", listed.group(1))
+
+
+def write_family(name, count, path):
+    subprocess.run([cli, "bench", "speed", "--write-family", name, "--family-counts", str(count), "--to", path],
+                   capture_output=True, text=True, check=True)
 
 
 def native_ms(scene):
-    run = subprocess.run([cli, "bench", "speed", "--scene", scene, "--size", "256", "--threads", "1",
-                          "--repeats", "5"], capture_output=True, text=True, check=True)
+    run = subprocess.run([cli, "bench", "speed", "--scene", scene, "--size", str(SIDE), "--threads", "1",
+                          "--repeats", "5", "--benchmark_filter=automatic"], capture_output=True, text=True,
+                         check=True)
     return float(re.search(r"automatic ([0-9.]+) ms median", run.stdout).group(1))
+
+
+def page_ms(page, page_path):
+    # The page's own timer: a half-second warm-up, then the median of 21 samples of at least 20 ms each.
+    time_taken = page.call("""return Module.ccall('raycam_time_cast', 'number', ['string', 'number', 'number'],
+                                                  [arguments[0], arguments[1], 21]);""", page_path, SIDE)
+    if time_taken < 0:
+        raise RuntimeError("the page could not time %s: %s" % (page_path, page.call(
+            "return Module.ccall('raycam_last_error', 'string', [], []);")))
+    return time_taken
 
 
 def cpu_seconds(pid):
@@ -60,25 +95,75 @@ def cpu_seconds(pid):
     return total
 
 
-with tempfile.TemporaryDirectory() as scratch:
-    scenes = [("scenes/many3d.json at 256²", os.path.join(root, "scenes", "many3d.json"))]
-    big = os.path.join(scratch, "spheres100000.json")
-    many_spheres(big, 100000)
-    scenes.append(("10⁵ spheres at 256²", big))
-    page = Page(web_folder)
+def k_label(count):
+    return {1000: "10³", 10000: "10⁴", 100000: "10⁵"}.get(count, str(count))
+
+
+def big_files():
+    """Opening big scene files in the page: the table of docs/web.md's "Big files"."""
+    page = Page(arguments.web_folder)
     try:
         page.open()
-        print("| scene | native, 1 thread | page (Chromium, WebAssembly) | page / native |")
-        print("|---|---|---|---|")
-        for label, path in scenes:
+        print("| spheres | file | first image | reading (longest frame gap) | longest frame gap (the parse) |")
+        print("|---|---|---|---|---|")
+        for count in (100000, 1000000):
+            record = open_big_scene(page, count, seconds=300)
+            announced = next(at for at, text in record["shown"] if "reading the objects" in text)
+            reading = [gap for at, gap in record["gaps"] if at <= announced]
+            print("| %d | %.1f MB | %.1f s | %.2f s (%.0f ms) | %.1f s |"
+                  % (count, record["size"] / 1048576.0, record["total_ms"] / 1000.0, announced / 1000.0,
+                     max(reading), max(gap for _, gap in record["gaps"]) / 1000.0))
+    finally:
+        page.close()
+
+
+if arguments.big:
+    big_files()
+    sys.exit(0)
+
+with tempfile.TemporaryDirectory() as scratch:
+    scenes = [("scenes/many3d.json", os.path.join(root, "scenes", "many3d.json"))]
+    for count in SPARSE_COUNTS:
+        path = os.path.join(scratch, "sparse%d.json" % count)
+        write_family("cube", count, path)
+        scenes.append(("sparse: cube, K = %d" % count, path))
+    for name in family_names():
+        for count in FAMILY_COUNTS:
+            path = os.path.join(scratch, "family%d-%d.json" % (len(scenes), count))
+            write_family(name, count, path)
+            scenes.append(("%s, K = %s" % (name, k_label(count)), path))
+    page = Page(arguments.web_folder)
+    try:
+        page.open()
+        page_paths = []
+        for index, (_, path) in enumerate(scenes):  # into the page's file system once
             with open(path) as text:
-                content = text.read()
-            page_time = page.call("""const [content] = arguments; FS.writeFile('/bench.json', content);
-                return Module.ccall('raycam_time_cast', 'number', ['string', 'number', 'number'],
-                                                    ['/bench.json', 256, 21]);""",
-                                  content)
-            native = native_ms(path)
-            print("| %s | %.2f ms | %.2f ms | %.2f× |" % (label, native, page_time, page_time / native))
+                page_paths.append("/bench%d.json" % index)
+                page.call("FS.writeFile(arguments[0], arguments[1]);", page_paths[-1], text.read())
+        native = [[] for _ in scenes]
+        web = [[] for _ in scenes]
+        for round_index in range(arguments.rounds):
+            for index, (label, path) in enumerate(scenes):
+                # Alternately: native first in even rounds, the page first in odd ones.
+                for side in ((0, 1) if round_index % 2 == 0 else (1, 0)):
+                    if side == 0:
+                        native[index].append(native_ms(path))
+                    else:
+                        web[index].append(page_ms(page, page_paths[index]))
+            print("round %d of %d done" % (round_index + 1, arguments.rounds), file=sys.stderr)
+        print("%d rounds, native and page alternating, %d² pixels; medians over the rounds\n"
+              % (arguments.rounds, SIDE))
+        print("| scene | native, 1 thread | page (Chromium, WebAssembly) | page / native | rounds' ratios |")
+        print("|---|---|---|---|---|")
+        ratios = []
+        for index, (label, _) in enumerate(scenes):
+            n, w = statistics.median(native[index]), statistics.median(web[index])
+            per_round = [b / a for a, b in zip(native[index], web[index])]
+            ratios.append(w / n)
+            print("| %s | %.3f ms | %.3f ms | %.2f× | %.2f–%.2f× |"
+                  % (label, n, w, w / n, min(per_round), max(per_round)))
+        print("\npage / native: %.2f× to %.2f× (median %.2f×) over %d scenes"
+              % (min(ratios), max(ratios), statistics.median(ratios), len(ratios)))
         time.sleep(3)  # the page settles, then sleeps
         browser = page.driver.service.process.pid
         before = cpu_seconds(browser)

@@ -281,6 +281,9 @@ mutant page-verdict-always-current src/session/camera_check.cpp 's/  return verd
 mutant page-messages-show-folders src/session/shown_files.cpp 's/  if (!host.files_are_downloads) return path;/  return path;/' "$SESSION" "^session: ?(the page names|a file the page|downloads are named)"
 mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(path)) {/  if (!overwrite \&\& std::filesystem::exists(path)) {/' "$SESSION" "^session: ?downloads are named"
 mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_advance += std::round(advance \* scale);/    m.x_advance += advance * scale;/' "$FIGURE" "^figure: ?the page's text metrics"
+# --- #34 page speed and big files ---
+# The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
+mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

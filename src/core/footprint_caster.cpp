@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <limits>
 
 #include "band_kernels.h"
@@ -408,17 +409,31 @@ void splat(const Candidate& candidate, int columns, int row_begin, int row_end, 
 }
 
 // Background and colours by value and pointer: read through the scene, they could alias the colours'
-// byte stores, and were read again at every pixel.
+// byte stores, and were read again at every pixel. The ids in one copy; the colours eight pixels at a time:
+// where none of them is hit (most of a sparse scene's image) the background in one copy of 24 bytes, a
+// pixel's three byte stores and its select costing more (half of a cast of 50 spheres in the page).
 void write_band(Rgb8 background, const Rgb8* colour, int row_begin, int row_end, BandScratch& scratch, ColourMap& out) {
   const std::size_t offset = out.index(row_begin, 0);
   const std::size_t pixels = std::size_t(row_end - row_begin) * out.width;
-  for (std::size_t p = 0; p < pixels; ++p) {
-    const int object = scratch.pixels.id[p];
-    out.ids[offset + p] = object;
-    out.colours[offset + p] = object < 0 ? background : colour[object];
+  const int* id = scratch.pixels.id.data();
+  std::memcpy(&out.ids[offset], id, pixels * sizeof(int));
+  Rgb8* colours = &out.colours[offset];
+  constexpr std::size_t kGroup = 8;
+  Rgb8 backgrounds[kGroup];
+  std::fill(std::begin(backgrounds), std::end(backgrounds), background);
+  const auto write_each = [&](std::size_t first, std::size_t end) {
+    for (std::size_t p = first; p < end; ++p) colours[p] = id[p] < 0 ? background : colour[id[p]];
+  };
+  std::size_t p = 0;
+  for (; p + kGroup <= pixels; p += kGroup) {
+    int all = -1;  // its sign bit stays set only if every id of the group is negative (no hit)
+    for (std::size_t k = 0; k < kGroup; ++k) all &= id[p + k];
+    if (all < 0) std::memcpy(colours + p, backgrounds, sizeof backgrounds);
+    else write_each(p, p + kGroup);
   }
+  write_each(p, pixels);
   std::uint32_t covered = 0;  // a byte a pixel, summed in 32 bits: a loop that vectorises well
-  for (std::size_t p = 0; p < pixels; ++p) covered += scratch.pixels.covered[p];
+  for (std::size_t q = 0; q < pixels; ++q) covered += scratch.pixels.covered[q];
   scratch.covered_pixels += covered;
 }
 }  // namespace

@@ -17,14 +17,16 @@ namespace {
 }
 }  // namespace
 
+bool is_coordinate(double value) { return std::isfinite(value) && std::abs(value) <= kMaxCoordinate; }
+
+bool is_positive(double value) { return std::isfinite(value) && value > 0.0 && value <= kMaxCoordinate; }
+
 void require_coordinate(double value, const std::string& field) {
-  if (!std::isfinite(value) || std::abs(value) > kMaxCoordinate)
-    fail(field, value, "a finite number in [-1e12, 1e12]");
+  if (!is_coordinate(value)) fail(field, value, "a finite number in [-1e12, 1e12]");
 }
 
 void require_positive(double value, const std::string& field) {
-  if (!std::isfinite(value) || value <= 0.0 || value > kMaxCoordinate)
-    fail(field, value, "a finite number in ]0, 1e12]");
+  if (!is_positive(value)) fail(field, value, "a finite number in ]0, 1e12]");
 }
 
 void require_focal_distance(double value, const std::string& field) {

@@ -6,8 +6,10 @@
 namespace raycam::detail {
 
 // finite and within ±kMaxCoordinate
+bool is_coordinate(double value);
 void require_coordinate(double value, const std::string& field);
 // finite, > 0 and ≤ kMaxCoordinate
+bool is_positive(double value);
 void require_positive(double value, const std::string& field);
 // kMinFocalDistance ≤ value ≤ kMaxFocalDistance
 void require_focal_distance(double value, const std::string& field);

@@ -17,6 +17,7 @@
 #include "text.h"
 #include "gl.h"
 #include "renderer_backend.h"
+#include "scene_loading.h"
 
 namespace raycam::web {
 
@@ -124,6 +125,8 @@ void toggle_fullscreen() {
 ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
 
 void tick() {
+  // A scene opening in steps (scene_loading.h) keeps the frames coming: each step is announced by a frame.
+  if (scene_loading_step(*page.state)) page.host->note_event();
   if (!page.host->wants_frame(*page.state)) return;  // asleep until an event
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
@@ -218,6 +221,7 @@ void run_page(session::AppState& state) {
   static Downloads downloads;
   page = Page{window, &state, &host, nullptr, &downloads, {}};
   host.start_imgui();
+  install_scene_reader();  // the picker's and the drop's files read in slices, with progress
   static ui::FrameRenderer frame;
   page.frame = &frame;
   emscripten_set_main_loop(tick, 0, false);

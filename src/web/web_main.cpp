@@ -21,6 +21,7 @@
 #include "raycam/language.h"
 #include "raycam/scene.h"
 #include "raycam/view_setup.h"
+#include "scene_loading.h"
 #include "shown_files.h"
 #include "text.h"
 #include "web_host.h"
@@ -53,8 +54,7 @@ std::string last_error;
 extern "C" {
 // The file picker's file (written into the page's file system by the page's script): opened as if dropped.
 EMSCRIPTEN_KEEPALIVE void raycam_open_file(const char* path) {
-  raycam::session::open_scene(raycam::web::page_state(), path);
-  raycam::web::wake_page();
+  raycam::web::open_scene_in_steps(raycam::web::page_state(), path);  // with progress (scene_loading.h)
 }
 
 // The ids `raycam-cli render --ids` writes for a scene file (its camera as the file says), written to

@@ -60,3 +60,61 @@ class Page:
         self.driver.quit()
         if self.server:
             self.server.shutdown()
+
+
+# A scene of `count` spheres made in the page (a file too big to hand over through the driver), opened by the
+# picker's route (Module.raycamReadFile) while the page records what each frame drawn showed in the status
+# line (after each turn of the app's loop that drew one) and how long the page went between animation frames.
+# Returns that record once a frame shows the scene opened, "(N objects)" (or after `seconds`):
+# {size, total_ms, shown: [[ms, text]], gaps: [[ms, gap_ms]]}.
+BIG_SCENE_SCRIPT = """
+const [count, seconds, done] = arguments;
+let seed = 1;
+const random = () => (seed = (seed * 16807) % 2147483647) / 2147483647;
+const radius = 2 * Math.pow(count, -1 / 3);
+const parts = ['{"dimension": 3, "background": [20, 20, 30], "camera": {"d": 35, "theta": 30, "phi": 60, ',
+               '"df": 2, "size": [256, 256]}, "objects": ['];
+for (let i = 0; i < count; ++i) {
+  const c = [0, 1, 2].map(() => (20 * random() - 10).toFixed(4));
+  parts.push((i ? ',' : '') + '\\n{"type": "sphere", "center": [' + c.join(', ') + '], "radius": ' +
+             radius.toFixed(5) + ', "color": [' + (i % 256) + ', 120, 200]}');
+}
+parts.push(']}');
+const file = new File(parts, 'big' + count + '.json');
+const record = {size: file.size, shown: [], gaps: []};
+const status = () => Module.ccall('raycam_status_message', 'string', [], []);
+const frames = () => Module.ccall('raycam_frames_drawn', 'number', [], []);
+const start = performance.now();
+let last = start, drawn = frames(), finished = false;
+const initial = status();
+const finish = () => {
+  finished = true;
+  Module.postMainLoop = undefined;
+  record.total_ms = performance.now() - start;
+  done(record);
+};
+Module.postMainLoop = () => {
+  if (finished || frames() === drawn) return;
+  drawn = frames();
+  const text = status();
+  if (!record.shown.length || record.shown[record.shown.length - 1][1] !== text)
+    record.shown.push([performance.now() - start, text]);
+  if (text !== initial && /\\(\\d+ obje(c)?ts\\) /.test(text)) finish();  // opened "(N objects)"
+};
+const watch = () => {
+  if (finished) return;
+  const now = performance.now();
+  record.gaps.push([now - start, now - last]);
+  last = now;
+  if (now - start > seconds * 1000) finish();
+  else requestAnimationFrame(watch);
+};
+FS.mkdirTree('/picked');
+Module.raycamReadFile(file, '/picked/' + file.name);
+requestAnimationFrame(watch);
+"""
+
+
+def open_big_scene(page, count, seconds=120):
+    page.driver.set_script_timeout(seconds + 30)
+    return page.driver.execute_async_script(BIG_SCENE_SCRIPT, count, seconds)

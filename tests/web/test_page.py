@@ -209,6 +209,12 @@ def wait_for_file(path, seconds=10):
     return os.path.exists(path)
 
 
+def settled(name):
+    """The status line once the page has opened `name` or refused it, past its progress lines
+    ("opening NAME: ...", src/web/scene_loading.cpp)."""
+    return lambda message: name in message and not message.startswith("opening " + name)
+
+
 def open_in_page(page, name, content):
     """The file picker's route: the file written into the page, then opened by the app."""
     page.call("""const [name, content] = arguments; FS.mkdirTree('/picked');
@@ -422,12 +428,12 @@ with tempfile.TemporaryDirectory() as scratch:
         check("picked3d.json" in title, "a picked scene file opens (title %r)" % title)
 
         open_in_page(page, "notes.json", "this is not a scene")
-        message = wait_for(page, status, lambda m: "notes.json" in m)
+        message = wait_for(page, status, settled("notes.json"))
         check("notes.json" in message and "picked3d.json" in page.call("return document.title"),
               "a file that is not a scene: an error naming it, the scene kept (%r)" % message)
         page.call("""FS.writeFile('/picked/big.json', new Uint8Array(50 * 1024 * 1024).fill(32));
                      Module.ccall('raycam_open_file', null, ['string'], ['/picked/big.json']);""")
-        message = wait_for(page, status, lambda m: "big.json" in m)
+        message = wait_for(page, status, settled("big.json"))
         check("big.json" in message and "picked3d.json" in page.call("return document.title"),
               "a 50 MB file: an error naming it, the scene kept (%r)" % message)
         # A file over the desktop's size limit: the page refuses it on its size, before reading, with the words
@@ -442,14 +448,14 @@ with tempfile.TemporaryDirectory() as scratch:
         page.call("""const size = arguments[0]; FS.writeFile('/picked/huge.json', '');
                      FS.truncate('/picked/huge.json', size);
                      Module.ccall('raycam_open_file', null, ['string'], ['/picked/huge.json']);""", huge_size)
-        message = wait_for(page, status, lambda m: "huge.json" in m)
+        message = wait_for(page, status, settled("huge.json"))
         check(run.returncode != 0 and "limit" in native_reason and "huge.json" + native_reason in message and
               "picked3d.json" in page.call("return document.title"),
               "a file over the size limit: raycam-cli's words (%r), the scene kept (%r)" % (native_reason, message))
         over = {"dimension": 3, "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "color": [1, 2, 3]}],
                 "camera": {"size": [100000, 100000]}}
         open_in_page(page, "over.json", json.dumps(over))
-        message = wait_for(page, status, lambda m: "over.json" in m)
+        message = wait_for(page, status, settled("over.json"))
         check("over.json" in message and "picked3d.json" in page.call("return document.title"),
               "a scene over the limits: an error naming it, the scene kept (%r)" % message)
         check("camera.size" in message, "  ... and naming the field over its limit")

@@ -32,7 +32,7 @@ from selenium.webdriver.common.keys import Keys  # noqa: E402
 web_folder, cli, scenes_folder = sys.argv[1:4]
 failures = []
 # The page's own folders: its working folder, the picker's, the bundled scenes', the answers', GLFW's drops.
-INTERNAL = ("/home/web_user", "/picked", "/scenes/", "/answers", ".glfw_dropped_files")
+INTERNAL = ("/home/web_user", "/picked", "/dropped", "/scenes/", "/answers", ".glfw_dropped_files")
 messages_seen = []
 
 
