@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "raycam/scene_file.h"
+#include "shown_files.h"
 #include "text.h"
 #include "web_host.h"
 
@@ -23,9 +24,6 @@ struct Loading {
   double started_ms = 0.0;
 };
 Loading loading;
-
-// The name the student knows: the page's file system path is the page's business.
-std::string shown_name(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
 double megabytes(double bytes) { return bytes / (1024.0 * 1024.0); }
 }  // namespace
@@ -67,7 +65,8 @@ void open_scene_in_steps(session::AppState& state, const std::string& path) {
   loading = Loading{Step::announce, path, emscripten_get_now()};
   if (!error)
     session::set_message(state, session::MessageSource::files, false,
-                         ui::trf("opening %s: reading the objects of %.1f MB, then packing them…", shown_name(path).c_str(),
+                         ui::trf(state.language, "opening %s: reading the objects of %.1f MB, then packing them…",
+                                 session::shown_file_name(state.host, path).c_str(),
                                  megabytes(double(bytes))));
   wake_page();
 }
@@ -86,7 +85,8 @@ bool scene_loading_step(session::AppState& state) {
     case Step::report:
       loading.step = Step::idle;
       session::set_message(state, session::MessageSource::files, false,
-                           ui::trf("opened %s (%zu objects) in %.1f s", shown_name(loading.path).c_str(),
+                           ui::trf(state.language, "opened %s (%zu objects) in %.1f s",
+                                   session::shown_file_name(state.host, loading.path).c_str(),
                                    session::active_object_count(state),
                                    (emscripten_get_now() - loading.started_ms) / 1000.0));
       return true;
@@ -100,7 +100,7 @@ bool scene_loading_step(session::AppState& state) {
 extern "C" EMSCRIPTEN_KEEPALIVE void raycam_scene_read_progress(const char* name, double done, double total) {
   using namespace raycam;
   session::set_message(web::page_state(), session::MessageSource::files, false,
-                       ui::trf("opening %s: read %.1f of %.1f MB", name, web::megabytes(done),
+                       ui::trf(web::page_state().language, "opening %s: read %.1f of %.1f MB", name, web::megabytes(done),
                                web::megabytes(total)));
   web::wake_page();
 }

@@ -219,7 +219,7 @@ void run_page(session::AppState& state) {
   // Objects of the page live as long as the page: the loop below never returns.
   static WebHost host(window, state);
   static Downloads downloads;
-  page = Page{window, &state, &host, nullptr, &downloads, {}};
+  page = Page{window, &state, &host, nullptr, &downloads};
   host.start_imgui();
   install_scene_reader();  // the picker's and the drop's files read in slices, with progress
   static ui::FrameRenderer frame;

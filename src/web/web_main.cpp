@@ -175,7 +175,8 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   const raycam::session::CameraCheck& check = raycam::web::page_check();
   json += "\"check_status\": \"" + check.status() + "\", ";
   json += std::string("\"check_state\": \"") + raycam::session::verdict_state_name(check.verdict_state()) + "\", ";
-  json += "\"check_header\": \"" + raycam::session::check_header(check.progress()) + "\", ";
+  const raycam::session::CheckHeader header = raycam::session::check_header(raycam::web::page_state().language, check.progress());
+  json += "\"check_header\": \"" + (header.forms.empty() ? std::string() : header.forms.front()) + "\", ";
   add("check_wrong_pixels", double(check.wrong_pixels()));
   json += "\"end\": 0}";
   return json.c_str();
