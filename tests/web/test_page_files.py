@@ -194,7 +194,9 @@ def verdict_states(page, downloads, scratch):
 def files_and_figures(page, downloads, scratch, language):
     """Items 4 and 5 through the panel's own buttons, on the bundled many3d.json."""
     check(click_widget(page, "###files"), "%s: the Scene file section opens" % language)
-    widgets = shown_frame(page)["widgets"]
+    # A click's release reaches ImGui a frame after its press (the host's event queue): wait for the open section.
+    widgets = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).widgets",
+                       lambda w: w and "###files_open" in w)
     check("###files_open" in widgets and "###open_path" not in widgets and "###save_path" not in widgets,
           "  ... Open is a button for the browser's file picker, with no path box (%s)"
           % sorted(k for k in widgets if "open" in k or "save" in k))
@@ -274,9 +276,10 @@ with tempfile.TemporaryDirectory() as scratch:
             out.write(source.read())
         page.call("document.getElementById('picker').hidden = false;")
         page.driver.find_element("id", "picker").send_keys(picked)
-        message = wait_for_status(page, lambda m: "symmetric3d.json" in m)
+        # Opened in steps (reading, then packing): the last message says it opened, naming the file alone.
+        message = wait_for_status(page, lambda m: "symmetric3d.json" in m and m.startswith("opened"))
         title = wait_for(page, "return document.title", lambda t: "symmetric3d.json" in t)
-        check(message.endswith("symmetric3d.json") and "symmetric3d.json" in title,
+        check(message.startswith("opened symmetric3d.json") and "/" not in message and "symmetric3d.json" in title,
               "a file from the browser's picker opens, named alone (%r)" % message)
         not_a_scene = os.path.join(scratch, "notes.json")
         with open(not_a_scene, "w") as out:
