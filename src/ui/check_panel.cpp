@@ -20,11 +20,14 @@ using namespace session;  // the state the window shows and edits
 namespace {
 // A verdict that has just arrived is brought into sight: the first one opens the section (a program given on
 // the command line), and each is scrolled into the panel's view once (the last section: below the fold at
-// lecture sizes); the panel is the instructor's to scroll after that.
+// lecture sizes); the panel is the instructor's to scroll after that. Never while the mouse is over the
+// panel: a panel that moves under the mouse turns the next click into a click on another control (with
+// automatic checks on, every Open brings a verdict); the scroll waits until the mouse leaves it.
 struct VerdictInView {
   std::weak_ptr<const KeyedVerdict> shown;  // keeps its control block: a new verdict never matches it
   bool any = false;
   ImVec4 drawn_at{0, 0, 0, 0};  // where the verdict was last drawn
+  bool scroll_pending = false;   // arrived, not yet scrolled into view
   bool arrived(const CheckProgress& progress) const {
     return progress.latest && !progress.running &&
            (shown.owner_before(progress.latest) || progress.latest.owner_before(shown));
@@ -41,7 +44,10 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   VerdictInView& in_view = verdict_in_view();
   const bool arrived = in_view.arrived(progress);
   if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
-  if (arrived) in_view = {progress.latest, true};
+  if (arrived) {
+    in_view = {progress.latest, true};
+    in_view.scroll_pending = true;
+  }
   if (!ui::section(tr(language, "Check my camera###check"), tr(language, "Check###check"))) return;
   CheckRequest& request = check.request();
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
@@ -99,7 +105,10 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
                                            : tr(language, "answer for an earlier camera: download the new case"));
   }
   ImGui::PopStyleColor();
-  if (arrived) ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
+  if (in_view.scroll_pending && !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {
+    ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
+    in_view.scroll_pending = false;
+  }
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   in_view.drawn_at = {low.x, low.y, high.x, high.y};
   if (button(tr(language, "Clear the verdict###check_clear"))) {

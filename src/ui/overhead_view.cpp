@@ -246,11 +246,16 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   const ImVec2 title_at = title_inside ? ImVec2{low.x + 4, low.y + 2} : ImVec2{low.x + 4, low.y - title.size.y - 4};
   draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
   draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
-  // Above the frame, the lines leave the construction under them visible: a dark shadow keeps them readable.
-  if (!title_inside)
-    draw->AddText(ImGui::GetFont(), title.font_size, {title_at.x + 1, title_at.y + 1}, IM_COL32(0, 0, 0, 255), title.text.c_str());
+  // Above the frame the lines lie over the construction (discs, the camera): a dark backing keeps them readable.
+  const auto backing = [&](ImVec2 at, ImVec2 size) {
+    draw->AddRectFilled({at.x - 2, at.y - 1}, {at.x + size.x + 2, at.y + size.y + 1}, IM_COL32(15, 15, 22, 215));
+  };
+  if (!title_inside) backing(title_at, title.size);
   draw->AddText(ImGui::GetFont(), title.font_size, title_at, IM_COL32(200, 200, 210, 255), title.text.c_str());
-  if (beside_eye) draw->AddText(height_at, kConstructionColour, height.c_str());
+  if (beside_eye) {
+    backing(height_at, height_size);
+    draw->AddText(height_at, kConstructionColour, height.c_str());
+  }
 
   double reach = 1.0;
   for (const ConstructionSegment& segment : segments)

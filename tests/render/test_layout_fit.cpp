@@ -10,6 +10,7 @@
 #include <imgui_internal.h>
 
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <chrono>
 #include <map>
 #include <sstream>
@@ -297,4 +298,36 @@ TEST_CASE("the picture keeps its size whatever its header says and the check's v
           CHECK(shown.h == plain.h);
         }
       }
+}
+
+// The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought
+// a verdict that scrolled the panel, and the next click landed on another control): while the mouse is over
+// the panel the verdict waits below the fold; once the mouse leaves, it is scrolled into sight.
+TEST_CASE("a verdict arriving while the mouse is over the panel waits for it to leave before scrolling",
+          "[render][lecture][layout]") {
+  const std::string mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+  session::AppState state = lecture_state("3d", "fr");
+  state.font_scale = 3.0f;
+  state.check_command = mistaken;
+  headless::HeadlessRenderer renderer(1280, 800);
+  renderer.run_frame(state);
+  open_every_section();
+  const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  const ImVec2 over_panel{panel->InnerClipRect.Min.x + 20, panel->InnerClipRect.Min.y + 100};
+  renderer.move_mouse(over_panel.x, over_panel.y);
+  renderer.run_frame(state);
+  const float scroll_before = panel->Scroll.y;
+  until_verdict(renderer, state);
+  REQUIRE(renderer.layout().image_title.find("faux") != std::string::npos);  // the verdict is in
+  CHECK(panel->Scroll.y == scroll_before);                // the panel did not move under the mouse
+  const ImVec4 waiting = ui::drawn_verdict_rect();
+  CHECK(waiting.w > panel->InnerClipRect.Max.y);          // so the verdict is still below the fold
+  renderer.move_mouse(-FLT_MAX, -FLT_MAX);                // the mouse leaves the window
+  until_verdict(renderer, state);
+  const ImVec4 shown = ui::drawn_verdict_rect();
+  INFO("verdict at y " << shown.y << " - " << shown.w << ", the panel shows y " << panel->InnerClipRect.Min.y << " - "
+                       << panel->InnerClipRect.Max.y);
+  CHECK(shown.y >= panel->InnerClipRect.Min.y);
+  CHECK(shown.w <= panel->InnerClipRect.Max.y + 0.5f);
 }
