@@ -13,17 +13,16 @@ CaseVerdict grade_case(const CheckCase& checked, const CaseSource& source) {
   std::string why;
   const bool reads_file = source.argv.empty();
   const std::optional<Sandbox> sandbox = reads_file ? std::nullopt : probe_sandbox(why);
-  RunResult run;
+  CaseVerdict verdict;
+  verdict.sandboxed = bool(sandbox);
   if (reads_file) {
-    run = read_answer_file(source.answer_path);
+    verdict.result = grade_answer_file(1, checked, reference, source.answer_path);
   } else {
     RunLimits limits;
     limits.timeout_seconds = source.timeout_seconds;
-    run = run_student(source.argv, scene_to_json(checked.file), limits, sandbox);
+    verdict.result =
+        result_of_run(1, checked, reference, run_student(source.argv, scene_to_json(checked.file), limits, sandbox));
   }
-  CaseVerdict verdict;
-  verdict.sandboxed = bool(sandbox);
-  verdict.result = result_of_run(1, checked, reference, run);
   verdict.dimension = reference.dimension;
   verdict.rows = reference.rows;
   verdict.columns = reference.columns;

@@ -118,15 +118,20 @@ RunResult read_answer_file(const std::string& path) {
   return run;
 }
 
+CaseResult grade_answer_file(int number, const CheckCase& c, const CaseImage& reference, const std::string& path) {
+  const RunResult run = read_answer_file(path);
+  CaseResult result = result_of_run(number, c, reference, run);
+  if (run.end == RunResult::End::could_not_start) result.status = CaseStatus::bad_output;
+  return result;
+}
+
 StudentReport check_answer_files(const std::string& dir, const std::vector<CheckCase>& cases,
                                  const std::vector<CaseImage>& references) {
   StudentReport report;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const int number = int(i) + 1;
     const std::string path = dir + "/" + answer_file_name(number, int(cases.size()));
-    const RunResult run = read_answer_file(path);
-    report.results.push_back(result_of_run(number, cases[i], references[i], run));
-    if (run.end == RunResult::End::could_not_start) report.results.back().status = CaseStatus::bad_output;
+    report.results.push_back(grade_answer_file(number, cases[i], references[i], path));
   }
   report.diagnosis = diagnose(cases, report.results);
   return report;

@@ -36,6 +36,9 @@ std::string answer_file_name(int number, int count);
 // An answer file read as if a program had printed it (could_not_start, with a message naming the file,
 // when it cannot be read).
 RunResult read_answer_file(const std::string& path);
+// Case `number` graded from the answer file at `path`: one that is missing or unreadable is a bad output (no
+// answer given), not a crash of a program that never ran.
+CaseResult grade_answer_file(int number, const CheckCase& c, const CaseImage& reference, const std::string& path);
 
 // Grades DIR/answer_NN.json for every case (a missing or unreadable file is a bad output).
 StudentReport check_answer_files(const std::string& dir, const std::vector<CheckCase>& cases,
