@@ -216,6 +216,10 @@ def files_and_figures(page, downloads, scratch, language):
     for attempt in (1, 2):
         check(click_widget(page, "###save_download"), "  ... Save as (%d)" % attempt)
         message = wait_for_status(page, lambda m: "many3d" in m)
+        # The download offered before the next click, and the clicks further apart than a double-click (0.3 s,
+        # which ImGui would read as one double-click), as a student's two Save as are.
+        wait_for(page, "return window.raycam_downloads", lambda d, n=attempt: len(d) >= n, 5)
+        time.sleep(0.5)
     first = os.path.join(downloads, "many3d.json")
     offered = wait_for(page, "return window.raycam_downloads", lambda d: len(d) >= 2, 5)
     check(wait_for_file(first) and offered == ["many3d.json", "many3d.json"],
