@@ -38,3 +38,12 @@ def wait_for(page, probe, expected, seconds=10):
             return value
         time.sleep(0.1)
     return value
+
+
+def wait_for_file(path, seconds=10):
+    """A download: True once `path` exists (and has had time to be written whole)."""
+    deadline = time.time() + seconds
+    while time.time() < deadline and not os.path.exists(path):
+        time.sleep(0.1)
+    time.sleep(0.3)  # written whole
+    return os.path.exists(path)

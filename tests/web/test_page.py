@@ -26,6 +26,7 @@ if len(sys.argv) == 4:
         sys.exit(SKIPPED)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_checks import check, errors_in, failures, wait_for, wait_for_file  # noqa: E402
 from page_driver import Page  # noqa: E402
 
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
@@ -33,28 +34,6 @@ from selenium.webdriver.common.actions.wheel_input import ScrollOrigin  # noqa: 
 from selenium.webdriver.common.keys import Keys  # noqa: E402
 
 web_folder, cli, scenes_folder = sys.argv[1:4]
-failures = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
-
-
-def errors_in(console):
-    return [entry["message"] for entry in console if entry["level"] == "SEVERE"]
-
-
-def wait_for(page, script, expected, seconds=10):
-    value = None
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = page.call(script)
-        if value == expected or (callable(expected) and expected(value)):
-            return value
-        time.sleep(0.1)
-    return value
 
 
 def stress_scenes(folder):
@@ -199,14 +178,6 @@ def placement_from_formula(theta, phi, d, df, target):
     t = [[1, 0, 0, p[0]], [0, 1, 0, p[1]], [0, 0, 1, p[2]], [0, 0, 0, 1]]
     m = mul(mul(mul(mul(t, rz_t), ry_p), roll), h)
     return [m[r][c] for c in range(4) for r in range(4)]
-
-
-def wait_for_file(path, seconds=10):
-    deadline = time.time() + seconds
-    while time.time() < deadline and not os.path.exists(path):
-        time.sleep(0.1)
-    time.sleep(0.2)  # written whole
-    return os.path.exists(path)
 
 
 def settled(name):

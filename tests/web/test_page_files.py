@@ -24,33 +24,16 @@ if len(sys.argv) == 4:
         sys.exit(77)
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_checks import check, failures, wait_for, wait_for_file  # noqa: E402
 from page_driver import Page  # noqa: E402
 
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
 
 web_folder, cli, scenes_folder = sys.argv[1:4]
-failures = []
 # The page's own folders: its working folder, the picker's, the bundled scenes', the answers', GLFW's drops.
 INTERNAL = ("/home/web_user", "/picked", "/dropped", "/scenes/", "/answers", ".glfw_dropped_files")
 messages_seen = []
-
-
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what, flush=True)
-    if not condition:
-        failures.append(what)
-
-
-def wait_for(page, script, expected, seconds=10):
-    value = None
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = page.call(script)
-        if expected(value):
-            return value
-        time.sleep(0.1)
-    return value
 
 
 def shown_frame(page):
@@ -71,14 +54,6 @@ def wait_for_status(page, wanted):
             return message
         time.sleep(0.1)
     return message
-
-
-def wait_for_file(path, seconds=10):
-    deadline = time.time() + seconds
-    while time.time() < deadline and not os.path.exists(path):
-        time.sleep(0.1)
-    time.sleep(0.3)  # written whole
-    return os.path.exists(path)
 
 
 FRAMES = "return Module.ccall('raycam_frames_drawn', 'number', [], [])"
