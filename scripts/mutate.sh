@@ -253,8 +253,8 @@ mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool 
 mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
-mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(language, name.c_str()) : name;/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
-mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? tr(language, name.c_str()) : name;/  return tr(language, name.c_str());/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? demo_object_name(language, name) : name;.*/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? demo_object_name(language, name) : name;.*/  return demo_object_name(language, name);/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
 mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
 # --- #35 lecture layout ---
 # The picture keeps its size under a mistake's or a check's header, the verdict whole and in sight, M_d whole,
@@ -286,6 +286,9 @@ mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_
 # --- #34 page speed and big files ---
 # The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
+# --- raycam-cli figure's demo names ---
+mutant cli-figure-demo-names-english src/cli/figure_command.cpp '/^  name_demo_objects(setup, options.language);/d' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
+mutant cli-figure-file-names-translated src/io/demo_names.cpp 's/^  if (!setup.scene_path.empty()) return;.*/  (void)0;/' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

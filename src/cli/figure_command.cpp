@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "figure_files.h"
 #include "flag_values.h"
+#include "raycam/demo_names.h"
 #include "view_options.h"
 
 namespace raycam::cli {
@@ -150,7 +151,8 @@ int run_figure(FigureOptions options) {
   output.standalone = options.standalone;
   output.font_size_pt = options.font_size;
 
-  const ViewSetup setup = make_view_setup(options.view);
+  ViewSetup setup = make_view_setup(options.view);
+  name_demo_objects(setup, options.language);  // the demo's "yellow" is "jaune" in a French figure
   const std::vector<int> frames = frame_indices(options.frames, setup.dimension);
   const figure::FigureOptions drawing{options.language, options.rays};
   const figure::Figure drawn = visit_view_setup(

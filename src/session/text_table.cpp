@@ -104,13 +104,7 @@ const std::vector<Translation>& translation_table() {
       // ---- overhead_view.cpp: the construction's intermediate camera ----
       {"eye E: z = %.2f", "œil E : z = %.2f"},
       {"side view: x →, z ↑", "vue de côté : x →, z ↑"},
-      // ---- view.cpp: the built-in demo's objects (scenes/classic2d.json, classic3d.json), named in the
-      // window's language; a file's names are shown as written ----
-      {"red", "rouge"},
-      {"green", "vert"},
-      {"blue", "bleu"},
-      {"yellow", "jaune"},
-      {"ground", "sol"},
+      // ---- overhead_view.cpp: the screen's ends (the demo's object names: raycam/demo_names.h) ----
       {"k = 0", "k = 0"},
       {"k = 0 (eye's right)", "k = 0 (droite de l'œil)"},
       {"column 0", "colonne 0"},

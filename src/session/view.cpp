@@ -1,5 +1,6 @@
 #include "view.h"
 
+#include "raycam/demo_names.h"
 #include "text.h"
 
 namespace raycam::session {
@@ -61,7 +62,7 @@ SceneFile scene_file_of(const View& view, const CameraPreset& camera) {
 namespace {
 template <class AnyView>
 std::string name_as_shown(Language language, const AnyView& view, const std::string& name) {
-  return view.scene_path.empty() ? tr(language, name.c_str()) : name;  // the demo's names are keys of the text table
+  return view.scene_path.empty() ? demo_object_name(language, name) : name;  // raycam/demo_names.h
 }
 template <class AnyView>
 auto with_names_as_shown(Language language, const AnyView& view) {

@@ -13,6 +13,7 @@
 #include "app_state_for.h"
 #include "check_texts.h"
 #include "raycam/classic_mistakes.h"
+#include "raycam/demo_names.h"
 #include "raycam/language.h"
 #include "raycam/ray_caster.h"
 #include "text.h"
@@ -123,6 +124,7 @@ TEST_CASE("every text of every table has every language", "[ui][text][language]"
   for (const Translation& t : ui::translations()) texts.push_back({"window", &t});
   for (const Translation& t : check::check_translations()) texts.push_back({"check", &t});
   for (const ReasonPattern& p : reason_patterns()) texts.push_back({"reason", &p});
+  for (const Translation& t : demo_object_name_texts()) texts.push_back({"demo names", &t});
   for (const MistakeInfo& info : kClassicMistakes) {
     texts.push_back({std::string("mistake ") + info.id, &info.label});
     texts.push_back({std::string("mistake ") + info.id, &info.explanation});

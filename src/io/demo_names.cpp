@@ -1,0 +1,27 @@
+#include "raycam/demo_names.h"
+
+#include "raycam/language.h"
+
+namespace raycam {
+
+const std::vector<Translation>& demo_object_name_texts() {
+  // The built-in demo scenes' objects (scenes/classic2d.json, classic3d.json), by their English names.
+  static const std::vector<Translation> texts = {
+      {"red", "rouge"}, {"green", "vert"}, {"blue", "bleu"}, {"yellow", "jaune"}, {"ground", "sol"},
+  };
+  return texts;
+}
+
+std::string demo_object_name(Language language, const std::string& english) {
+  static const TranslationTable table(demo_object_name_texts());
+  return table.lookup(language, english.c_str());
+}
+
+void name_demo_objects(ViewSetup& setup, Language language) {
+  if (!setup.scene_path.empty()) return;  // a file's names are shown as written
+  visit_view_setup(setup, [&](const auto&, auto& scene) {
+    for (auto& object : objects_of(scene)) object.name = demo_object_name(language, object.name);
+  });
+}
+
+}  // namespace raycam
