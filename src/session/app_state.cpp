@@ -164,9 +164,7 @@ bool open_scene(AppState& state, const std::string& path) {
     state.construction_step = -1;
     state.mistake_look_at.clear();  // a "show me" pointed at the old scene's objects
     state.cameras_dirty = true;
-    state.path_input = path;
-    state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
-    state.overwrite_pending.clear();
+    ++state.scene_opens;
     set_message(state, MessageSource::files, false, trf(state.language, "opened %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
@@ -198,19 +196,15 @@ bool save_preset(AppState& state, const std::string& path) {
   }
 }
 
-bool save_preset_as(AppState& state, std::string path, bool overwrite) {
-  // `path` is a copy: the Replace button passes state.overwrite_pending itself, cleared on the next line.
-  state.overwrite_pending.clear();
+SaveAsOutcome save_preset_as(AppState& state, const std::string& path, bool overwrite) {
   if (path.empty()) {
     set_message(state, MessageSource::files, true, tr(state.language, "Save as: type the path of the file to write"));
-    return false;
+    return SaveAsOutcome::failed;
   }
   // A download never replaces anything: the browser keeps both files.
-  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path)) {
-    state.overwrite_pending = path;  // the panel asks; nothing is written yet
-    return false;
-  }
-  return save_preset(state, path);
+  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path))
+    return SaveAsOutcome::needs_yes;  // nothing is written yet
+  return save_preset(state, path) ? SaveAsOutcome::saved : SaveAsOutcome::failed;
 }
 
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text) {

@@ -207,7 +207,8 @@ void FrameRenderer::hover_image(AppState& state) {
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state, applied_theme_);
-  // 1. input
+  // 1. input (a scene file may have opened since the last frame: dropped, or the page's picker)
+  follow_opened_scene(state, panels_);
   handle_shortcuts(state);
   view_input(state);
   // 2. the panel's controls
@@ -215,31 +216,31 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   layout_areas(state, width, height, layout);
   const bool panel_open = begin_fixed_window("raycam###panel", layout.panel);
   if (panel_open) {
-    camera_section(state);
+    camera_section(state, panels_);
     mistakes_section(state);
-    caster_section(state);
-    files_section(state);
-    lecture_section(state);
+    caster_section(state, panels_);
+    files_section(state, panels_);
+    lecture_section(state, panels_);
   }
   // 3. the cast, once every control had its say (a control may also have switched 2D/3D or opened a file)
   recast_if_needed(state, ImGui::IsAnyMouseDown());
   const Rect status_area = layout_areas(state, width, height, layout);
   hover_image(state);
   // 4. what is derived from the state, all after the cast
-  if (!state.check_command.empty()) {  // --check CMD: the panel's program from the command line
-    check_.set_command(state.check_command, false);
-    state.check_command.clear();
+  if (!panels_.check_command.empty()) {  // --check CMD: the panel's program from the command line
+    check_.set_command(panels_.check_command, false);
+    panels_.check_command.clear();
   }
   check_.update(state, ImGui::GetTime());
-  state.check_waiting = check_.waiting();
+  panels_.check_waiting = check_.waiting();
   if (panel_open) {
-    construction_section(state);
+    construction_section(state, panels_);
     inspector_section(state);
     check_section(check_, state.host, ImGui::GetTime(), state.language);
     // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
     // would leave the verdict below the fold until the next event).
     const ImGuiWindow* panel = ImGui::GetCurrentWindow();
-    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
+    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
   }
   ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {
@@ -258,7 +259,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (has_observer(state.view)) observer_window(state, observer_area_, layout);
-  shown_.placement = state.shown_matrix;
+  shown_.placement = panels_.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
 
@@ -280,7 +281,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     }
     ImGui::End();
   }
-  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state);
+  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state, panels_);
   ImGui::End();
   help_overlay(state);
   state.window_title = window_title(state);
@@ -376,7 +377,7 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
       if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected, discs_.get());
+      draw_overhead(draw, layout.overhead_mapping, state, inspected, discs_.get(), panels_.widget_rects);
       draw->PopClipRect();
     }
   }

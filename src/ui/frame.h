@@ -14,6 +14,7 @@
 #include "colour_map_texture.h"
 #include "observer_view.h"
 #include "overhead_view.h"
+#include "panel_state.h"
 
 namespace raycam::gl {
 class ObserverRenderer;
@@ -61,6 +62,10 @@ class FrameRenderer {
   ~FrameRenderer();
   FrameLayout build(session::AppState& state, int width, int height);
   session::CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
+  // The panels' own widget state (the session never reads it): a host sets it from its options
+  // (panel_state_for), a test sets its widget_rects hook.
+  PanelState& panels() { return panels_; }
+  const PanelState& panels() const { return panels_; }
 
  private:
   enum class Drag { none, overhead, observer };
@@ -86,6 +91,7 @@ class FrameRenderer {
   session::ObserverCamera observer_view_;  // last frame's, for the mouse
   session::CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
   AppliedTheme applied_theme_;
+  PanelState panels_;
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at

@@ -281,7 +281,8 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
 // are few enough to tell apart, their edges as ticks (the rays leave from the centres between them, or from
 // the ticks under the "pixel edges" mistake). Each label sits beside its own end, whatever the font's size:
 // its long text where it fits, else its short one, off the discs, the markers and the other label.
-void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppState& state, const Camera2D& camera) {
+void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppState& state, const Camera2D& camera,
+                         WidgetRects* label_rects) {
   const glm::dmat3& world_from_camera = camera.world_from_camera();
   auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
   const int n = camera.pixel_count();
@@ -329,7 +330,7 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppSt
       draw->AddLine(end, nearest, (kFirstPixelColour & 0x00FFFFFF) | 0xA0000000, 1.0f);
     draw->AddText(top_left, kFirstPixelColour, text);
     placed.push_back({top_left, size});
-    if (state.widget_rects) (*state.widget_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
+    if (label_rects) (*label_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
   };
   label(minus, -along, tr(state.language, "k = 0 (eye's right)"), tr(state.language, "k = 0"), "###label_k0");
   label(plus, along, tr(state.language, "column 0 (eye's left)"), tr(state.language, "column 0"), "###label_column0");
@@ -460,7 +461,7 @@ std::vector<gl::Disc> overhead_discs(const AppState& state) {
 }
 
 void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs) {
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs, WidgetRects* label_rects) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
   PlacedLabels placed;  // the labels drawn so far: the next ones go beside them
@@ -486,7 +487,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
   // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
   const int step = state.construction_step;
   std::visit(overloaded{[&](const View2D& view) {
-                          mark_screen_segment(draw, m, state, view.camera);
+                          mark_screen_segment(draw, m, state, view.camera, label_rects);
                           if (!final_camera)
                             draw_camera(draw, m, construction_step(view.camera.placement(), step),
                                         kConstructionColour, far_length * 0.3, true);

@@ -13,6 +13,7 @@
 #include "app_state.h"
 #include "disc_layer.h"
 #include "inspection.h"
+#include "panel_state.h"
 
 namespace raycam::ui {
 
@@ -39,9 +40,11 @@ bool camera_and_target_in_view(const session::AppState& state, ImVec2 top_left, 
 std::vector<gl::Disc> overhead_discs(const session::AppState& state);
 
 // Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray. `discs` must hold
-// overhead_discs(state); null (the null host): no disc texture.
+// overhead_discs(state); null (the null host): no disc texture. `label_rects` (the tests' hook, else null)
+// gets where the 2D screen's end labels went.
 void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const session::AppState& state,
-                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer* discs);
+                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer* discs,
+                   WidgetRects* label_rects = nullptr);
 
 // The object whose disc is under a screen point (topmost), or -1.
 int object_under(const OverheadMapping& mapping, const session::AppState& state, ImVec2 screen_point);
