@@ -221,7 +221,7 @@ mutant figure-inset-tikz-scope-open src/figure/tikz_file.cpp 's/^  return t + "\
 mutant figure-inset-not-painted src/figure/figure_files.cpp 's/^  draw_inset(cr, page);/  (void)0;/' "$FIGURE" "^figure:"
 mutant figure-missing-folder-unnamed src/figure/figure_writing.cpp 's/    if (!folder.empty() \&\& !std::filesystem::is_directory(folder))/    if (false)/' "$FIGURE" "^figure:"
 # --- one view model, host capabilities ---
-mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
+mutant page-grades-in-background src/session/camera_check.cpp 's/if (!link.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
 mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
 mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(state, ImGui::IsAnyMouseDown());/  (void)0;/' "raycam_ui_tests" "^ui: ?the null host runs"
 # --- grader QA ---
@@ -277,7 +277,7 @@ mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(langua
 mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
 mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
 # --- #34 page verdicts and files ---
-mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& state.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
+mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& link.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
 mutant page-answer-graded-on-screen src/session/camera_check.cpp 's/  const bool for_download = request_.is_file \&\& downloaded_;/  const bool for_download = false;/' "$SESSION" "^session: ?the page grades an answer for the case downloaded"
 mutant page-verdict-always-current src/session/camera_check.cpp 's/  return verdict->key == last_key_ ? VerdictState::for_camera_shown/  return true ? VerdictState::for_camera_shown/' "$SESSION" "^session: ?the page (grades|never)"
 mutant page-messages-show-folders src/session/shown_files.cpp 's/  if (!host.files_are_downloads) return path;/  return path;/' "$SESSION" "^session: ?(the page names|a file the page|downloads are named)"

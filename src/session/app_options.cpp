@@ -29,7 +29,7 @@ AppState make_app_state(const AppOptions& options) {
     setup = checked_view_setup(without_file);
     set_message(state, MessageSource::files, true, cannot_open_message(state.language, *options.view.scene_path, error.what()));
   }
-  adopt_view_setup(state, *setup);
+  adopt_view_setup(state, state, *setup);
   state.mistakes = options.mistakes;
   state.arccos_route = options.arccos_route;
   if (options.step) {

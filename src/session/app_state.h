@@ -128,10 +128,10 @@ std::string cannot_open_message(Language language, const std::string& path, cons
 std::string next_screenshot_path(const std::string& directory = ".");
 
 // "raycam — 3D — many3d.json" (the demo scene: its translated name).
-std::string window_title(const AppState& state);
+std::string window_title(const Lesson& state);
 
 // Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
-void adopt_view_setup(AppState& state, const ViewSetup& setup);
+void adopt_view_setup(Lesson& state, Display& display, const ViewSetup& setup);
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
 void place_cameras(Lesson& state);
 // Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the
@@ -156,7 +156,7 @@ bool uses_reference_caster(const Lesson& state);
 
 // Back to the camera the scene opened with (the file's preset and the command line), and a fresh fit of
 // the overhead view.
-void reset_camera(AppState& state);
+void reset_camera(Lesson& state, Display& display);
 
 // Switches between the 2D and 3D cameras; a scene file holds one kind of scene, so the other kind is the
 // built-in demo scene.

@@ -71,9 +71,10 @@ class FrameRenderer {
   enum class Drag { none, overhead, observer };
   bool draws_textures() const { return observer_ != nullptr; }  // false with Graphics::none
   // Sets the panel's rectangle and the views' areas; returns the status line's.
-  Rect layout_areas(const session::AppState& state, int width, int height, FrameLayout& layout) const;
+  Rect layout_areas(const session::Lesson& state, const session::Display& display, int width, int height,
+                    FrameLayout& layout) const;
   void view_input(session::AppState& state);
-  void hover_image(session::AppState& state);
+  void hover_image(session::Lesson& state, const session::CastCache& cast);
   void image_window(session::AppState& state, const Rect& area, FrameLayout& layout);
   void overhead_window(session::AppState& state, const Rect& area, FrameLayout& layout);
   void observer_window(session::AppState& state, const Rect& area, FrameLayout& layout);
@@ -97,9 +98,9 @@ class FrameRenderer {
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
 // the state's font scale when it changed (fonts.h), at the host's pixel density (FrameHost::pixel_density).
 // Both hosts (GLFW window, OSMesa) call it every frame.
-void prepare_frame(const session::AppState& state, float pixel_density = 1.0f);
+void prepare_frame(const session::Display& display, float pixel_density = 1.0f);
 
 // Dark or high-contrast theme and the font scale (lecture mode), when they differ from `applied`.
-void apply_theme(const session::AppState& state, AppliedTheme& applied);
+void apply_theme(const session::Display& display, AppliedTheme& applied);
 
 }  // namespace raycam::ui

@@ -340,7 +340,7 @@ void camera_section(AppState& state, const PanelState& panels) {
   const double fov = std::visit([](const auto& view) { return view.camera.field_of_view(); }, state.view);
   ImGui::TextWrapped("%s", trf(state.language, "n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
                                glm::degrees(fov)).c_str());
-  if (button(tr(state.language, "Reset camera"))) reset_camera(state);  // the scene file's preset
+  if (button(tr(state.language, "Reset camera"))) reset_camera(state, state);  // the scene file's preset
   explain(tr(state.language, "drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
@@ -500,12 +500,12 @@ void construction_section(AppState& state, PanelState& panels) {
 // ---- ray inspector -------------------------------------------------------------------------------------
 void inspector_section(const AppState& state) {
   if (!section(tr(state.language, "Ray inspector###inspector"), tr(state.language, "Ray###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const auto pixel = active_pixel(state);
+  const auto pixel = active_pixel(state, state);
   if (!pixel) {
     explain(tr(state.language, "Hover a pixel of the colour bar or image to see its ray; click to pin it."));
     return;
   }
-  const InspectedRay ray = inspect_pixel(state, *pixel);
+  const InspectedRay ray = inspect_pixel(state, state, *pixel);
   // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
   const int dimensions = dimension(state);
   const auto line = [dimensions](const char* name, const glm::dvec3& v) {
@@ -584,7 +584,7 @@ void mistakes_section(AppState& state) {
       if (ImGui::SmallButton(tr(state.language, "show me"))) show_mistake(state, lesson);
     }
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
-    explain(mistake_text(state, lesson).c_str());
+    explain(mistake_text(state, state, lesson).c_str());
     if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
     {
       ImGui::PushStyleColor(ImGuiCol_Text, current_theme().look_at);  // wrapped: not cut at the panel's edge
@@ -781,8 +781,8 @@ bool show_message(AppState& state, MessageSource source) {
   return true;
 }
 
-bool message_shown_this_frame(const AppState& state) {
-  return state.message_shown_frame == state.frame_count;
+bool message_shown_this_frame(const Messages& messages, const HostLink& link) {
+  return messages.message_shown_frame == link.frame_count;
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
@@ -849,14 +849,14 @@ void status_counters(const AppState& state) {
 }
 
 // ---- help ----------------------------------------------------------------------------------------------
-void help_overlay(AppState& state) {
-  if (!state.show_help) return;
+void help_overlay(Display& shown, Language language) {
+  if (!shown.show_help) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
   // Never wider or taller than the window at any font scale: the descriptions wrap, the list scrolls.
   ImGui::SetNextWindowSize({std::min(display.x * 0.95f, 42.0f * ImGui::GetFontSize()), 0.0f}, ImGuiCond_Always);
   ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {display.x * 0.95f, display.y * 0.95f});
-  if (ImGui::Begin(tr(state.language, "Keyboard and mouse (F1 closes)###help"), &state.show_help,
+  if (ImGui::Begin(tr(language, "Keyboard and mouse (F1 closes)###help"), &shown.show_help,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
     static const std::pair<const char*, const char*> kLines[] = {
@@ -881,9 +881,9 @@ void help_overlay(AppState& state) {
       ImGui::TableSetupColumn("##what", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& [key, what] : kLines) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(tr(state.language, key));
+        ImGui::TextUnformatted(tr(language, key));
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", tr(state.language, what));
+        ImGui::TextWrapped("%s", tr(language, what));
       }
       ImGui::EndTable();
     }

@@ -36,12 +36,12 @@ void status_counters(const session::AppState& state);
 // Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).
 bool show_message(session::AppState& state, session::MessageSource source);
 // Did a section show the message this frame? If not, the frame shows it above the status line.
-bool message_shown_this_frame(const session::AppState& state);
+bool message_shown_this_frame(const session::Messages& messages, const session::HostLink& link);
 // Is a text field (or a slider typed into with ctrl+click) being edited now?
 bool editing_text();
 // Takes Tab away from ImGui's focus cycling (call before ImGui::NewFrame, after the backend set its keys).
 void take_tab_key();
-void help_overlay(session::AppState& state);
+void help_overlay(session::Display& shown, Language language);
 // Tab (always: 2D/3D), then, unless a text field is being edited: arrow keys, +/-, [ ], PgUp/PgDn, Esc
 // (F1/F11/F12 come from the executable).
 void handle_shortcuts(session::AppState& state);

@@ -23,7 +23,7 @@ TEST_CASE("the window's two resolutions reach the camera, Reset, Save and the co
   session::place_cameras(state);
   CHECK(session::view3d(state).camera.rows() == 20);
   // Reset brings the command line's pair back.
-  session::reset_camera(state);
+  session::reset_camera(state, state);
   REQUIRE(state.res_rows);
   CHECK(*state.res_rows == 0.25);
 
