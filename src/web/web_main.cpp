@@ -205,7 +205,8 @@ EMSCRIPTEN_KEEPALIVE void raycam_download_case() {
 // Save as under `path`, as a desktop Save as asks (never replacing without asking): in the page the file
 // becomes a download, and a name saved twice downloads twice (the browser keeps both). For the browser tests.
 EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
-  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, false);
+  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, false) ==
+                     raycam::session::SaveAsOutcome::saved;
   raycam::web::wake_page();
   return saved ? 1 : 0;
 }
