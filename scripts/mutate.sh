@@ -76,7 +76,7 @@ mutant figure-eye-before-scaling src/figure/construction_figure.cpp 's/const glm
 mutant figure-png-pixel-size src/figure/figure_layout.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
 mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const PageDisc\& disc : page.discs) {$/  for (const PageDisc\& disc : page.discs) { if (\&disc - page.discs.data() >= 1000) break;/' "$FIGURE" "^figure:"
 mutant figure-export-ignores-the-step src/session/figure_export.cpp 's/state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1)/count - 1/' "raycam_session_tests" "^session:.*Export figure"
-mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/(lang == Language::fr ? "cadre (" : "frame (")/("frame (")/' "$FIGURE" "^figure:"
+mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/std::string(LocalText{{"frame (", "cadre ("}}\[lang\])/std::string("frame (")/' "$FIGURE" "^figure:"
 # --- checker safety ---
 CHECK="raycam_check_tests raycam-cli"
 mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = result.wrong_pixels == 0 ? CaseStatus::pass/result.status = result.wrong_pixels <= 1 ? CaseStatus::pass/' "$CHECK" "^check:"
@@ -105,7 +105,7 @@ mutant overhead-never-refits src/ui/frame.cpp 's/      if (state.overhead_fit_pe
 mutant message-below-the-fold-counts-as-shown src/ui/panels.cpp 's/  if (in_view) state.message_shown_frame = state.frame_count;/  state.message_shown_frame = state.frame_count;/' "raycam_render_tests" "^render: ?a message stays on screen"
 mutant font-rebuild-keeps-buffer-sizes src/ui/fonts.cpp 's/^  restart_renderer_backend();/  ImGui_ImplOpenGL3_DestroyDeviceObjects();/; s/^#include "renderer_backend.h"/#include "renderer_backend.h"\n#include <imgui_impl_opengl3.h>/' "raycam_render_tests" "^render:lecture mode: a font scale changed"
 mutant window-bigger-than-the-screen src/app/glfw_host.cpp 's/  if (area_width > 0 && area_height > 0) {/  if (false) {/' "raycam raycam_app_tests" "^app: ?the window fits"
-mutant font-scale-slider-left-out-of-view src/ui/panels.cpp 's/^  if (scale_changed) state.font_scale_scroll_frames = 2;/  if (scale_changed) state.font_scale_scroll_frames = 0;/' "raycam_render_tests" "^render: ?lecture mode: after a change"
+mutant font-scale-slider-left-out-of-view src/ui/panels.cpp 's/^  if (scale_changed) panels.font_scale_scroll_frames = 2;/  if (scale_changed) panels.font_scale_scroll_frames = 0;/' "raycam_render_tests" "^render: ?lecture mode: after a change"
 mutant target-fields-cut src/ui/panels.cpp 's/  if (label_width <= avail \* 0.45f \&\& avail - label_width >= widget_min_width) {/  if (label_width <= avail * 0.45f) {/; s/  if (ImGui::GetContentRegionAvail().x >= needed)/  if (true)/' "raycam_render_tests" "^render: ?lecture mode: at 1"
 mutant idle-loop-polls src/app/glfw_host.cpp 's/^    glfwWaitEventsTimeout(kIdleWaitSeconds);/    glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
@@ -138,7 +138,7 @@ mutant cluster-split-at-wrong-centre src/core/sphere_clusters.cpp 's/splits.push
 mutant figure-ray-hit-from-the-eye src/figure/construction_figure.cpp 's/nearest_hit_t<2, double>(pixel, u,/nearest_hit_t<2, double>(eye, u,/' "$FIGURE" "^figure: ?every 2D frame's rays"
 mutant figure-png-red-blue-swapped src/figure/figure_files.cpp 's/row\[std::size_t(x) \* 3 + 0\] = (pixel\[x\] >> 16) \& 0xff;/row[std::size_t(x) * 3 + 0] = pixel[x] \& 0xff;/; s/row\[std::size_t(x) \* 3 + 2\] = pixel\[x\] \& 0xff;/row[std::size_t(x) * 3 + 2] = (pixel[x] >> 16) \& 0xff;/' "$FIGURE" "^figure: ?a PNG figure fills"
 mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"reçu : {got} ; attendu : {wanted}"/"reçu : {wanted} ; attendu : {got}"/' "$SESSION" "^session: ?error reasons: a sample"
-mutant open-keeps-save-as-path src/session/app_state.cpp 's/^    state.save_path.clear();  \/\/ Save as starts empty.*$/    \/\/ (Save as kept)/' "$SESSION" "^session: ?Open resets every field"
+mutant open-keeps-save-as-path src/ui/panel_state.cpp 's/^  panels.save_path.clear();  \/\/ Save as starts empty.*$/  \/\/ (Save as kept)/' "raycam_ui_tests" "^ui: ?(the panels follow an opened scene|a scene opened outside the panel)"
 # --- a large course: shards, merge, grade books ---
 SHARDS="^check:.*(slice|shard|--shard|csv records|merge|Gradescope|gradescope|CSV's last column)|^check: (GNU parallel|Gradescope)"
 mutant shard-hash-not-fnv src/check/shards.cpp 's/    hash \*= 1099511628211ull;/    hash *= 1099511628213ull;/' "$CHECK" "$SHARDS"
@@ -201,8 +201,8 @@ mutant figure-caption-hides-mistakes src/figure/construction_figure.cpp 's/capti
 mutant figure-tikz-y-down src/figure/tikz_file.cpp 's/p.x \* kCmPerPoint, (page_height - p.y) \* kCmPerPoint);/p.x * kCmPerPoint, p.y * kCmPerPoint);/' "$FIGURE" "^figure:"
 mutant figure-tikz-short-arrow-over-pc src/figure/math_text.cpp 's/(char_count(run.text) > 1 ? "\\\\overrightarrow{" : "\\\\vec{")/("\\\\vec{")/' "$FIGURE" "^figure:"
 mutant figure-huge-disc-as-circle src/figure/figure_layout.cpp 's/^  constexpr double kHugeRadius = 1e4; /  constexpr double kHugeRadius = 1e300; /' "$FIGURE" "^figure:"
-mutant figure-export-five-rays src/session/figure_export.cpp 's/^                                      state.figure_rays};/                                      5};/' "$SESSION" "^session:.*Export figure"
-mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = state.figure_matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
+mutant figure-export-five-rays src/session/figure_export.cpp 's/^  const figure::FigureOptions options{state.language, content.rays};/  const figure::FigureOptions options{state.language, 5};/' "$SESSION" "^session:.*Export figure"
+mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = content.matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
 mutant figure-labels-over-objects src/figure/figure_layout.cpp 's/^constexpr double kOverObjectWeight = 20.0; /constexpr double kOverObjectWeight = 1.0; /' "$FIGURE" "^figure:"
 mutant figure-docs-slide-too-wide docs/figures.md 's/--pages --size 105x72mm --out cadres.tex/--pages --size 110x72mm --out cadres.tex/' "$FIGURE" "^figure: the docs"
 mutant figure-export-stale-wrote src/ui/panels.cpp 's/^    if (state.message_source == MessageSource::construction) state.message.clear();/    (void)0;/' "$UI" "^ui: ?Export figure"
@@ -221,7 +221,7 @@ mutant figure-inset-tikz-scope-open src/figure/tikz_file.cpp 's/^  return t + "\
 mutant figure-inset-not-painted src/figure/figure_files.cpp 's/^  draw_inset(cr, page);/  (void)0;/' "$FIGURE" "^figure:"
 mutant figure-missing-folder-unnamed src/figure/figure_writing.cpp 's/    if (!folder.empty() \&\& !std::filesystem::is_directory(folder))/    if (false)/' "$FIGURE" "^figure:"
 # --- one view model, host capabilities ---
-mutant page-grades-in-background src/session/camera_check.cpp 's/if (!state.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
+mutant page-grades-in-background src/session/camera_check.cpp 's/if (!link.host.grades_in_background) {/if (false) {/' "$SESSION" "^session: ?a host without a thread"
 mutant page-without-picker src/ui/panels.cpp 's/const bool picker = state.host.picks_files;/const bool picker = false;/' "raycam_render_tests" "^render: ?the page's host offers"
 mutant null-host-frame-skips-the-cast src/ui/frame.cpp 's/  recast_if_needed(state, ImGui::IsAnyMouseDown());/  (void)0;/' "raycam_ui_tests" "^ui: ?the null host runs"
 # --- grader QA ---
@@ -244,12 +244,12 @@ mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' ||
 mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
 # --- #35 lecture words ---
 # The lecture-hall walk at 3x in French (issue 35 items 2, 5, 6, 8): what a typed path, an export and a label say.
-mutant open-failure-empties-box src/session/app_state.cpp 's/^    \/\/ place, not retyped); the message names the file and the reason.$/&\n    state.path_input = scene_path(state);/' "$SESSION" "^session: ?a failed open"
+mutant open-failure-empties-box src/ui/panel_state.cpp 's/^  if (panels.scene_opens_seen == lesson.scene_opens) return;$/  (void)0;/' "raycam_ui_tests" "^ui: ?the panels follow an opened scene"
 mutant open-keeps-look-at src/session/app_state.cpp '/^    state.mistake_look_at.clear();  \/\/ a "show me" pointed at the old scene/d' "$SESSION" "^session: ?Open resets every field"
 mutant clicks-not-spread src/ui/key_queue.h 's/  static bool changes_a_key(const Event\& e) { return e.key >= 0 || e.button >= 0; }/  static bool changes_a_key(const Event\& e) { return e.key >= 0; }/' "raycam_ui_tests" "^ui: ?Ctrl\+A, Home and a double-click"
 mutant chord-split-by-its-modifier src/ui/key_queue.h 's/    return (changes_a_key(e) \&\& changed(id_of(e))) || (e.modifier \&\& pressed_key_);/    return changes_a_key(e) \&\& changed(id_of(e));/' "raycam_ui_tests" "^ui: ?a chord whose modifier"
 mutant figure-message-first-file-only src/session/figure_export_text.cpp 's/^  return (first.parent_path() \/ range).string();$/  return files.front();/' "$SESSION" "^session: ?Export figure's messages"
-mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool all = state.figure_replace_pending == 2;$/&\n    state.figure_replace_files = existing_figure_files(state, state.figure_path, all);/' "raycam_ui_tests" "^ui: ?Export figure's replace question shows"
+mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool all = panels.figure_replace_pending == 2;$/&\n    panels.figure_replace_files = existing_figure_files(state, panels.figure, panels.figure_path, all);/' "raycam_ui_tests" "^ui: ?Export figure's replace question shows"
 mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
@@ -267,7 +267,7 @@ mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{cl
 mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant combo-choice-cut src/ui/panels.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
-mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant verdict-scrolls-under-the-mouse src/ui/check_panel.cpp 's/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/  if (in_view.scroll_pending) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
 mutant missing-answer-file-a-crash src/check/check_run.cpp 's/^  if (run.end == RunResult::End::could_not_start) result.status = CaseStatus::bad_output;$/  (void)0;/' "raycam_check_tests" "^check: ?grade_case reads an answer file"
 # --- #33 view model leftovers ---
@@ -277,11 +277,11 @@ mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(langua
 mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
 mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
 # --- #34 page verdicts and files ---
-mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& state.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
+mutant page-regrades-a-moved-answer src/session/camera_check.cpp 's/  const bool automatic = request_.automatic \&\& link.host.runs_programs;/  const bool automatic = request_.automatic;/' "$SESSION" "^session: ?the page never re-grades"
 mutant page-answer-graded-on-screen src/session/camera_check.cpp 's/  const bool for_download = request_.is_file \&\& downloaded_;/  const bool for_download = false;/' "$SESSION" "^session: ?the page grades an answer for the case downloaded"
 mutant page-verdict-always-current src/session/camera_check.cpp 's/  return verdict->key == last_key_ ? VerdictState::for_camera_shown/  return true ? VerdictState::for_camera_shown/' "$SESSION" "^session: ?the page (grades|never)"
 mutant page-messages-show-folders src/session/shown_files.cpp 's/  if (!host.files_are_downloads) return path;/  return path;/' "$SESSION" "^session: ?(the page names|a file the page|downloads are named)"
-mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(path)) {/  if (!overwrite \&\& std::filesystem::exists(path)) {/' "$SESSION" "^session: ?downloads are named"
+mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(path))$/  if (!overwrite \&\& std::filesystem::exists(path))/' "$SESSION" "^session: ?downloads are named"
 mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_advance += std::round(advance \* scale);/    m.x_advance += advance * scale;/' "$FIGURE" "^figure: ?the page's text metrics"
 # --- #34 page speed and big files ---
 # The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
@@ -289,6 +289,11 @@ mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{
 # --- raycam-cli figure's demo names ---
 mutant cli-figure-demo-names-english src/cli/figure_command.cpp '/^  name_demo_objects(setup, options.language);/d' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
 mutant cli-figure-file-names-translated src/io/demo_names.cpp 's/^  if (!setup.scene_path.empty()) return;.*/  (void)0;/' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
+# --- #33 panel state in ui ---
+mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t scene_opens = 0; .*$/&\n  std::string path_input;  \/\/ the Open box/' "$STRUCTURE" "^structure: src/session reads no panel state"
+mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^  if (outcome == SaveAsOutcome::needs_yes) panels.overwrite_pending = asked;.*$/  (void)outcome;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
+mutant check-command-not-handed-over src/ui/panel_state.cpp '/^  panels.check_command = options.check_command;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
+mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_opened_scene(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

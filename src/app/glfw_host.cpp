@@ -48,7 +48,7 @@ void GlfwHost::install_own_callbacks() {
   glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { host_of(w).note_event(); });
 }
 
-void GlfwHost::wait_for_frame(const session::AppState& state) {
+void GlfwHost::wait_for_frame(const session::AppState& state, const ui::PanelState& panels) {
   forward_held_keys();  // a key's changes held since the last frame, before this frame's events
   if (scripted_) {
     glfwPollEvents();
@@ -58,7 +58,7 @@ void GlfwHost::wait_for_frame(const session::AppState& state) {
   // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
   for (;;) {
     const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
-    const bool busy = !minimised && has_work(state);
+    const bool busy = !minimised && has_work(state, panels);
     if (busy || should_close()) break;
     glfwWaitEventsTimeout(kIdleWaitSeconds);
   }
@@ -108,6 +108,7 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
   int exit_code = 0;
   {
     ui::FrameRenderer frame;
+    frame.panels() = ui::panel_state_for(options, state);  // --check CMD, the Open box's file
     int saved[4] = {0, 0, options.width, options.height};
     for (int drawn = 0; !host.should_close() && !state.requests.pending(session::HostRequestKind::quit);) {
       const bool last = run.frames > 0 && drawn + 1 >= run.frames;

@@ -38,7 +38,7 @@ class GlfwHost : public GlfwHostBase {
   bool should_close() const;
 
  private:
-  void wait_for_frame(const session::AppState& state) override;
+  void wait_for_frame(const session::AppState& state, const ui::PanelState& panels) override;
   bool keeps_running() const override { return !should_close(); }
   void frame_started() override;
   void key_pressed(int key) override;

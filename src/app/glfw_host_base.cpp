@@ -105,14 +105,14 @@ void GlfwHostBase::note_event() {
   woken();
 }
 
-bool GlfwHostBase::has_work(const session::AppState& state) const {
-  return settle_frames_ > 0 || keys_.holding() || ui::frame_needs_redraw(state);
+bool GlfwHostBase::has_work(const session::AppState& state, const ui::PanelState& panels) const {
+  return settle_frames_ > 0 || keys_.holding() || ui::frame_needs_redraw(state, panels);
 }
 
 void GlfwHostBase::spend_settle_frame() { settle_frames_ = std::max(0, settle_frames_ - 1); }
 
-ui::FramebufferSize GlfwHostBase::begin(const session::AppState& state) {
-  wait_for_frame(state);
+ui::FramebufferSize GlfwHostBase::begin(const session::AppState& state, const ui::PanelState& panels) {
+  wait_for_frame(state, panels);
   glfwGetFramebufferSize(window_, &size_.width, &size_.height);
   if (size_.empty() || !keeps_running()) return {};  // minimised (or leaving): no frame
   ImGui_ImplOpenGL3_NewFrame();

@@ -27,7 +27,7 @@ class GlfwHostBase : public ui::FrameHost {
   void start_imgui();
   void stop_imgui();
 
-  ui::FramebufferSize begin(const session::AppState& state) override;
+  ui::FramebufferSize begin(const session::AppState& state, const ui::PanelState& panels) override;
   gl::RgbaImage read_back() const override;
 
   // Called by every callback: draw the next frames.
@@ -36,8 +36,9 @@ class GlfwHostBase : public ui::FrameHost {
   void apply_title();
 
  protected:
-  // True while the loop must draw without waiting: settle frames left, or the state's pending work.
-  bool has_work(const session::AppState& state) const;
+  // True while the loop must draw without waiting: settle frames left, or the state's or the panels'
+  // pending work.
+  bool has_work(const session::AppState& state, const ui::PanelState& panels) const;
   void spend_settle_frame();
   // The key changes held since ImGui last read the keys, to ImGui now: call right after a frame read them and
   // before new events arrive (the window: before it polls; the page: after each frame it draws).
@@ -45,7 +46,7 @@ class GlfwHostBase : public ui::FrameHost {
 
   // ---- what a host overrides ----
   // Before the frame: a desktop window sleeps here until there is something to draw.
-  virtual void wait_for_frame(const session::AppState&) {}
+  virtual void wait_for_frame(const session::AppState&, const ui::PanelState&) {}
   // False: no frame (the window is closing).
   virtual bool keeps_running() const { return true; }
   // After ImGui's frame started (a scripted run hides the mouse).

@@ -97,6 +97,7 @@ struct ShotOptions {
 int run_shot(const ShotOptions& options) {
   session::AppState state = session::make_app_state(options.app);
   headless::HeadlessRenderer renderer(options.app.width, options.app.height);
+  renderer.panels() = ui::panel_state_for(options.app, state);  // --check CMD, the Open box's file
   if (options.soak_frames > 0) return soak(state, renderer, options.soak_frames);
   const auto start = std::chrono::steady_clock::now();
   const gl::RgbaImage image = renderer.render_settled(state, options.frames);

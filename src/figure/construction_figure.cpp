@@ -19,13 +19,6 @@ namespace raycam::figure {
 
 namespace {
 
-// The figures' words, French and English side by side (one place for each).
-struct Words {
-  const char* fr;
-  const char* en;
-  const char* in(Language language) const { return language == Language::fr ? fr : en; }
-};
-
 const std::string kMinus = "−";  // U+2212
 
 std::string with_decimal_separator(std::string s, Language language) {
@@ -111,7 +104,7 @@ std::string mistakes_said(const ClassicMistakes& mistakes, int dimension, Langua
     if (mistakes.*info.flag && exists_in(info, dimension))
       names += (names.empty() ? "" : ", ") + escape_markup(info.label[language]);
   if (names.empty()) return "";
-  return Words{" ; erreur classique activée : ", "; classic mistake on: "}.in(language) + names;
+  return LocalText{{"; classic mistake on: ", " ; erreur classique activée : "}}[language] + names;
 }
 
 struct Extent {
@@ -214,26 +207,23 @@ std::string caption_2d(const Camera2D& camera, int index, Language lang) {
   const Orbit2D& orbit = camera.orbit();
   switch (index) {
     case 0:
-      return Words{"$M_d = I$ : la caméra canonique, écran $[−1, 1]$ sur l'axe $x$, œil $E_0 = (0, 1)$, "
-                   "$\\vec{u}_0 = (0, −1)$",
-                   "$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis, eye $E_0 = (0, 1)$, "
-                   "$\\vec{u}_0 = (0, −1)$"}
-          .in(lang);
+      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis, eye $E_0 = (0, 1)$, "
+                        "$\\vec{u}_0 = (0, −1)$",
+                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]$ sur l'axe $x$, œil $E_0 = (0, 1)$, "
+                        "$\\vec{u}_0 = (0, −1)$"}}[lang];
     case 1:
-      return Words{"homothétie $H(1, d_f)$, $d_f = ", "scaling $H(1, d_f)$, $d_f = "}.in(lang) +
+      return LocalText{{"scaling $H(1, d_f)$, $d_f = ", "homothétie $H(1, d_f)$, $d_f = "}}[lang] +
              decimal(orbit.df, 3, lang) +
-             Words{"$ : l'œil recule en $E = (0, d_f)$", "$: the eye moves back to $E = (0, d_f)$"}.in(lang);
+             LocalText{{"$: the eye moves back to $E = (0, d_f)$", "$ : l'œil recule en $E = (0, d_f)$"}}[lang];
     case 2:
-      return Words{"rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ", "rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = "}
-                 .in(lang) +
+      return LocalText{{"rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ",
+                        "rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = "}}[lang] +
              degrees_text(std::remainder(view_angle_phi_v(camera), glm::two_pi<double>()), lang) +
-             Words{"$ : $\\vec{u}$ est aligné sur $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$",
-                   "$: $\\vec{u}$ is aligned with $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$"}
-                 .in(lang);
+             LocalText{{"$: $\\vec{u}$ is aligned with $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$",
+                        "$ : $\\vec{u}$ est aligné sur $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$"}}[lang];
     default:
-      return Words{"translation $T(\\vec{ΩP})$ : $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = ",
-                   "translation $T(\\vec{ΩP})$: $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = "}
-                 .in(lang) +
+      return LocalText{{"translation $T(\\vec{ΩP})$: $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = ",
+                        "translation $T(\\vec{ΩP})$ : $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = "}}[lang] +
              decimal(orbit.d, 3, lang) + "$, $θ = " + degrees_text(orbit.theta, lang) + "$";
   }
 }
@@ -246,7 +236,7 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
   Frame frame;
   static const char kLetters[] = "abcd";
   frame.id = std::string(1, kLetters[index]);
-  frame.title = (lang == Language::fr ? "cadre (" : "frame (") + frame.id + ")";
+  frame.title = std::string(LocalText{{"frame (", "cadre ("}}[lang]) + frame.id + ")";
   frame.matrix = rows_of<3>(m);
   frame.matrix_size = 3;
   frame.caption = caption_2d(camera, index, lang) + mistakes_said(camera.mistakes(), 2, lang);
@@ -308,27 +298,24 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
 std::string caption_3d(const Orbit3D& orbit, int step, Language lang) {
   switch (step) {
     case 0:
-      return Words{"$M_d = I$ : la caméra canonique, écran $[−1, 1]^2$, œil $E_0 = (0, 0, 1)$, "
-                   "$\\vec{u}_0 = (0, 0, −1)$",
-                   "$M_d = I$: the canonical camera, screen $[−1, 1]^2$, eye $E_0 = (0, 0, 1)$, "
-                   "$\\vec{u}_0 = (0, 0, −1)$"}
-          .in(lang);
+      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]^2$, eye $E_0 = (0, 0, 1)$, "
+                        "$\\vec{u}_0 = (0, 0, −1)$",
+                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]^2$, œil $E_0 = (0, 0, 1)$, "
+                        "$\\vec{u}_0 = (0, 0, −1)$"}}[lang];
     case 1:
-      return Words{"homothétie $H(1, 1, d_f)$, $d_f = ", "scaling $H(1, 1, d_f)$, $d_f = "}.in(lang) +
+      return LocalText{{"scaling $H(1, 1, d_f)$, $d_f = ", "homothétie $H(1, 1, d_f)$, $d_f = "}}[lang] +
              decimal(orbit.df, 3, lang) +
-             Words{"$ : l'œil recule en $E = (0, 0, d_f)$", "$: the eye moves back to $E = (0, 0, d_f)$"}.in(lang);
+             LocalText{{"$: the eye moves back to $E = (0, 0, d_f)$", "$ : l'œil recule en $E = (0, 0, d_f)$"}}[lang];
     case 2:
-      return Words{"rotation $R_z(ψ_0)$, $ψ_0 = +π/2$ : le haut de l'image tourne dans l'écran",
-                   "rotation $R_z(ψ_0)$, $ψ_0 = +π/2$: the image's up turns within the screen"}
-          .in(lang);
+      return LocalText{{"rotation $R_z(ψ_0)$, $ψ_0 = +π/2$: the image's up turns within the screen",
+                        "rotation $R_z(ψ_0)$, $ψ_0 = +π/2$ : le haut de l'image tourne dans l'écran"}}[lang];
     case 3:
       return "rotation $R_y(φ)$, $φ = " + degrees_text(orbit.phi, lang) + "$";
     case 4:
       return "rotation $R_z(θ)$, $θ = " + degrees_text(orbit.theta, lang) + "$";
     default:
-      return Words{"translation $T(\\vec{ΩP})$ : $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = ",
-                   "translation $T(\\vec{ΩP})$: $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = "}
-                 .in(lang) +
+      return LocalText{{"translation $T(\\vec{ΩP})$: $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = ",
+                        "translation $T(\\vec{ΩP})$ : $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = "}}[lang] +
              decimal(orbit.d, 3, lang) + "$";
   }
 }
@@ -339,7 +326,7 @@ Frame frame_3d(const Scene3D& scene, const Camera3D& camera, int step, const Fig
   const Orbit3D& orbit = camera.orbit();
   Frame frame;
   frame.id = std::to_string(step);
-  frame.title = (lang == Language::fr ? "étape " : "step ") + frame.id;
+  frame.title = std::string(LocalText{{"step ", "étape "}}[lang]) + frame.id;
   frame.matrix = rows_of<4>(m);
   frame.matrix_size = 4;
   frame.caption = caption_3d(orbit, step, lang) + mistakes_said(camera.mistakes(), 3, lang);
@@ -366,7 +353,7 @@ Frame frame_3d(const Scene3D& scene, const Camera3D& camera, int step, const Fig
   frame.segments.push_back({oblique_projection(centre), oblique_projection(centre + view), Stroke::arrow});
   frame.labels.push_back({oblique_projection(centre + view), step == 0 ? "$\\vec{u}_0$" : "$\\vec{u}$"});
   frame.segments.push_back({oblique_projection(centre), oblique_projection(centre + 0.8 * up), Stroke::arrow});
-  frame.labels.push_back({oblique_projection(centre + 0.8 * up), Words{"haut", "up"}.in(lang)});
+  frame.labels.push_back({oblique_projection(centre + 0.8 * up), LocalText{{"up", "haut"}}[lang]});
   const glm::dvec3 eye = eye_of(m);
   for (const glm::dvec3& corner : corners)  // the field of view: eye to each corner
     frame.segments.push_back({oblique_projection(eye), oblique_projection(corner), Stroke::construction});

@@ -12,12 +12,10 @@
 
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
-#include "raycam/languages.h"
+#include "raycam/languages.h"  // Language and LocalText: the core's one language type, as everywhere
 #include "raycam/scene.h"
 
 namespace raycam::figure {
-
-using raycam::Language;  // raycam/languages.h: the one language type
 
 enum class Stroke {
   camera,        // the screen, thick black

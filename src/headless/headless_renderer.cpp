@@ -44,7 +44,7 @@ HeadlessRenderer::~HeadlessRenderer() {
   OSMesaDestroyContext(context_->mesa);
 }
 
-ui::FramebufferSize HeadlessRenderer::begin(const session::AppState&) {
+ui::FramebufferSize HeadlessRenderer::begin(const session::AppState&, const ui::PanelState&) {
   ImGuiIO& io = ImGui::GetIO();
   io.DeltaTime = 1.0f / 60.0f;
   io.DisplaySize = ImVec2(float(width_), float(height_));

@@ -26,7 +26,7 @@ class HeadlessRenderer : public ui::FrameHost {
   gl::RgbaImage render_settled(session::AppState& state, int frames = 3);
 
   // FrameHost: no events to wait for, no mouse (nothing hovered), a fixed 60 Hz clock for ImGui.
-  ui::FramebufferSize begin(const session::AppState& state) override;
+  ui::FramebufferSize begin(const session::AppState& state, const ui::PanelState& panels) override;
   void present() override;
   gl::RgbaImage read_back() const override;
 
@@ -39,6 +39,9 @@ class HeadlessRenderer : public ui::FrameHost {
   void type_text(const char* utf8);
 
   const ui::FrameLayout& layout() const { return layout_; }
+  // The frame's panel state (its widgets' own, beside the session's AppState): the start-up options' values
+  // (ui::panel_state_for), the tests' widget_rects hook.
+  ui::PanelState& panels() { return frame_->panels(); }
   int width() const { return width_; }
   int height() const { return height_; }
 

@@ -18,8 +18,6 @@ ViewSetup checked_view_setup(const ViewFlags& flags) {
 AppState make_app_state(const AppOptions& options) {
   AppState state;
   state.language = options.language.value_or(language_from_environment());
-  // The colour map's default file name in the window's language too.
-  state.export_path = tr(state.language, "raycam-colour-map.png");
   std::optional<ViewSetup> setup;
   try {
     setup = checked_view_setup(options.view);
@@ -31,7 +29,7 @@ AppState make_app_state(const AppOptions& options) {
     setup = checked_view_setup(without_file);
     set_message(state, MessageSource::files, true, cannot_open_message(state.language, *options.view.scene_path, error.what()));
   }
-  adopt_view_setup(state, *setup);
+  adopt_view_setup(state, state, *setup);
   state.mistakes = options.mistakes;
   state.arccos_route = options.arccos_route;
   if (options.step) {
@@ -50,7 +48,6 @@ AppState make_app_state(const AppOptions& options) {
   state.cast_options = options.cast_options;
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
-  state.check_command = options.check_command;
   place_cameras(state);  // throws on bad parameters before any window opens
   if (options.inspect) {
     const auto [columns, rows] = std::visit(
@@ -61,7 +58,6 @@ AppState make_app_state(const AppOptions& options) {
                                   "x" + std::to_string(rows) + " image");
     state.pinned_pixel = options.inspect;
   }
-  if (!scene_path(state).empty()) state.path_input = scene_path(state);
   return state;
 }
 

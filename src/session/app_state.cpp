@@ -16,7 +16,7 @@
 
 namespace raycam::session {
 
-void adopt_view_setup(AppState& state, const ViewSetup& setup) {
+void adopt_view_setup(Lesson& state, Display& display, const ViewSetup& setup) {
   OpenedViews views = views_from_setup(setup);  // the file's scene is of one kind: the other's is the demo
   state.view = std::move(views.on_screen);
   state.other_view = std::move(views.other);
@@ -27,14 +27,14 @@ void adopt_view_setup(AppState& state, const ViewSetup& setup) {
   state.res_rows = setup.file.camera.res_rows;
   state.preset_res = state.res;
   state.preset_res_rows = state.res_rows;
-  state.overhead_fit_pending = true;
+  display.overhead_fit_pending = true;
 }
 
-void reset_camera(AppState& state) {
+void reset_camera(Lesson& state, Display& display) {
   std::visit([](auto& view) { view.orbit = view.preset; }, state.view);
   state.res = state.preset_res;
   state.res_rows = state.preset_res_rows;
-  state.overhead_fit_pending = true;
+  display.overhead_fit_pending = true;
   state.cameras_dirty = true;
 }
 
@@ -159,14 +159,12 @@ bool open_scene(AppState& state, const std::string& path) {
     flags.scene_path = path;
     const ViewSetup setup = make_view_setup(flags);
     validate(views_from_setup(setup).on_screen);  // before anything changes: a bad file leaves the state as it was
-    adopt_view_setup(state, setup);
+    adopt_view_setup(state, state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
     state.mistake_look_at.clear();  // a "show me" pointed at the old scene's objects
     state.cameras_dirty = true;
-    state.path_input = path;
-    state.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
-    state.overwrite_pending.clear();
+    ++state.scene_opens;
     set_message(state, MessageSource::files, false, trf(state.language, "opened %s", shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
@@ -198,19 +196,15 @@ bool save_preset(AppState& state, const std::string& path) {
   }
 }
 
-bool save_preset_as(AppState& state, std::string path, bool overwrite) {
-  // `path` is a copy: the Replace button passes state.overwrite_pending itself, cleared on the next line.
-  state.overwrite_pending.clear();
+SaveAsOutcome save_preset_as(AppState& state, const std::string& path, bool overwrite) {
   if (path.empty()) {
     set_message(state, MessageSource::files, true, tr(state.language, "Save as: type the path of the file to write"));
-    return false;
+    return SaveAsOutcome::failed;
   }
   // A download never replaces anything: the browser keeps both files.
-  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path)) {
-    state.overwrite_pending = path;  // the panel asks; nothing is written yet
-    return false;
-  }
-  return save_preset(state, path);
+  if (!overwrite && !state.host.files_are_downloads && std::filesystem::exists(path))
+    return SaveAsOutcome::needs_yes;  // nothing is written yet
+  return save_preset(state, path) ? SaveAsOutcome::saved : SaveAsOutcome::failed;
 }
 
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text) {
@@ -234,7 +228,7 @@ void request_screenshot(HostLink& host) {
                     std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string());
 }
 
-std::string window_title(const AppState& state) {
+std::string window_title(const Lesson& state) {
   const std::string scene = scene_path(state).empty() ? std::string(tr(state.language, "demo scene"))
                                                       : std::filesystem::path(scene_path(state)).filename().string();
   return "raycam — " + std::to_string(dimension(state)) + "D — " + scene;

@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
-#include <map>
 #include <optional>
 #include <string>
 
@@ -22,11 +21,6 @@
 #include "view.h"
 
 namespace raycam::session {
-
-// A widget's rectangle on screen, in pixels: (x0, y0) its top-left corner, (x1, y1) its bottom-right.
-struct WidgetRect {
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-};
 
 struct PixelIndex {
   int row = 0;
@@ -73,6 +67,7 @@ struct Lesson {
   // What changed since the last cast: the cast cache is rebuilt from the model when these say so.
   bool cameras_dirty = true;
   std::uint64_t scene_version = 1;  // bumped when the objects change
+  std::uint64_t scene_opens = 0;    // scene files opened by open_scene: the panels follow each (the Open box)
 };
 
 // The cast cache: rebuilt from the lesson by recast_if_needed, never edited by the panels.
@@ -110,30 +105,6 @@ struct Messages {
   long long message_shown_frame = -1;  // the frame in which a panel section showed it (else the frame does)
 };
 
-// What the panels keep between frames (their widgets' own state; read by the frame after them).
-struct PanelState {
-  glm::dmat4 shown_matrix{1.0};      // the last product the construction table showed (2D: its 3×3 top-left)
-  float font_scale_editing = -1.0f;  // the font scale slider's value while dragged (applied on release)
-  float font_scale_seen = -1.0f;     // by the Lecture mode section: a change scrolls its slider into view
-  int font_scale_scroll_frames = 0;
-  // A test hook, null in the app: where each labelled widget "###id" was last drawn (screen corners).
-  std::map<std::string, WidgetRect>* widget_rects = nullptr;
-  // Check my camera (check_panel.h).
-  std::string check_command;  // --check CMD: handed to the panel at the next frame, then cleared
-  bool check_waiting = false;  // a verdict is on its way: the window keeps drawing (frame_needs_redraw)
-  // Text inputs (Open and Save as have their own paths).
-  std::string path_input;         // Open
-  std::string save_path;          // Save as: never filled with the opened file's path
-  std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
-  std::string export_path = "raycam-colour-map.png";
-  std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
-  int figure_format = 0;       // its format: 0 SVG, 1 PDF, 2 PNG, 3 TikZ (sets figure_path's extension)
-  int figure_rays = 5;         // primary rays per 2D frame, as raycam-cli figure --rays
-  bool figure_matrix = true;   // each frame's matrix printed
-  int figure_replace_pending = 0;  // Export figure asked to replace existing files: 1 the step, 2 every step
-  std::vector<std::string> figure_replace_files;  // the files it asked about (full paths), found once when asked
-};
-
 // The host: what it can do (set once by the executable), what the session asks of it, and the frame clock.
 struct HostLink {
   HostCapabilities host = kDesktopHost;
@@ -143,7 +114,8 @@ struct HostLink {
   double frame_ms = 0.0;
 };
 
-struct AppState : Lesson, CastCache, Display, Messages, PanelState, HostLink {};
+// The session's whole state. The panels' own widget state is not in it: the frame keeps it (ui/panel_state.h).
+struct AppState : Lesson, CastCache, Display, Messages, HostLink {};
 
 // Sets the one message on screen (replacing any other).
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text);
@@ -156,10 +128,10 @@ std::string cannot_open_message(Language language, const std::string& path, cons
 std::string next_screenshot_path(const std::string& directory = ".");
 
 // "raycam — 3D — many3d.json" (the demo scene: its translated name).
-std::string window_title(const AppState& state);
+std::string window_title(const Lesson& state);
 
 // Takes the scene, the file's path and the camera parameters of a view setup (keeps the display settings).
-void adopt_view_setup(AppState& state, const ViewSetup& setup);
+void adopt_view_setup(Lesson& state, Display& display, const ViewSetup& setup);
 // Builds cameras from the parameters (and the mistakes); throws std::invalid_argument on bad parameters.
 void place_cameras(Lesson& state);
 // Re-casts the primary rays if anything changed since the last cast. Returns true if it cast. While the
@@ -167,13 +139,16 @@ void place_cameras(Lesson& state);
 // (a preview), and refined to full resolution once the interaction stops: the UI never freezes.
 inline constexpr double kInteractiveBudgetMs = 25.0;
 bool recast_if_needed(AppState& state, bool interacting = false);
-// Loads a scene file; on error keeps the current scene and sets an error message. Returns success.
+// Loads a scene file; on error keeps the current scene and sets an error message. Returns success (and
+// counts it in scene_opens).
 bool open_scene(AppState& state, const std::string& path);
 // Saves the current camera as the scene file's preset (written atomically). Returns success.
 bool save_preset(AppState& state, const std::string& path);
-// Save as: an existing file is replaced only when `overwrite` is true; otherwise state.overwrite_pending
-// names it and the panel asks. Returns true if it saved.
-bool save_preset_as(AppState& state, std::string path, bool overwrite);
+// What Save as did: saved, wrote nothing because `path` exists and the user has not said yes to replacing
+// it (the caller asks, then calls again with `overwrite`), or failed (the message says why).
+enum class SaveAsOutcome { saved, needs_yes, failed };
+// Save as: an existing file is replaced only when `overwrite` is true (a download never replaces anything).
+SaveAsOutcome save_preset_as(AppState& state, const std::string& path, bool overwrite);
 
 // True when the accuracy knobs ask for more than the fast caster gives (another precision, samples per
 // pixel, camera-relative rays, or the exact 2D bar): the reference caster then draws the image.
@@ -181,7 +156,7 @@ bool uses_reference_caster(const Lesson& state);
 
 // Back to the camera the scene opened with (the file's preset and the command line), and a fresh fit of
 // the overhead view.
-void reset_camera(AppState& state);
+void reset_camera(Lesson& state, Display& display);
 
 // Switches between the 2D and 3D cameras; a scene file holds one kind of scene, so the other kind is the
 // built-in demo scene.

@@ -92,7 +92,7 @@ void CameraCheck::set_command(const std::string& command, bool is_file) {
   request_.is_file = is_file;
 }
 
-SceneFile CameraCheck::case_for_download(const AppState& state) {
+SceneFile CameraCheck::case_for_download(const Lesson& state) {
   downloaded_ = DownloadedCase{camera_key(state), camera_case(state)};
   return downloaded_->file;
 }
@@ -109,7 +109,7 @@ void CameraCheck::clear() {
   shared_->latest.reset();
 }
 
-std::string CameraCheck::camera_key(const AppState& state) const {
+std::string CameraCheck::camera_key(const Lesson& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
@@ -132,7 +132,7 @@ std::string CameraCheck::command_key() const {
   return key.str();
 }
 
-void CameraCheck::update(const AppState& state, double now) {
+void CameraCheck::update(const Lesson& state, const HostLink& link, double now) {
   if (request_.command.empty()) return;
   const std::string command = command_key();
   const std::string key = camera_key(state) + command;
@@ -141,7 +141,7 @@ void CameraCheck::update(const AppState& state, double now) {
     changed_at_ = now;
   }
   // A host that runs no program re-grades nothing by itself: an answer file is for the case it was made for.
-  const bool automatic = request_.automatic && state.host.runs_programs;
+  const bool automatic = request_.automatic && link.host.runs_programs;
   const bool due =
       request_.check_now || (automatic && key != submitted_key_ && now - changed_at_ >= kQuietSeconds);
   if (!due) return;
@@ -165,7 +165,7 @@ void CameraCheck::update(const AppState& state, double now) {
     return;
   }
   submitted_key_ = key;
-  if (!state.host.grades_in_background) {
+  if (!link.host.grades_in_background) {
     // A page has no thread to spare and runs no program: its answer file is graded at once (milliseconds).
     std::shared_ptr<const KeyedVerdict> verdict = graded(job);
     std::lock_guard<std::mutex> lock(shared_->mutex);

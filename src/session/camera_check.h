@@ -73,7 +73,7 @@ class CameraCheck {
 
   // Every frame, after the cast: notices a changed case or command and, after kQuietSeconds of quiet, hands
   // it to the worker. `now` is seconds on any steady clock.
-  void update(const AppState& state, double now);
+  void update(const Lesson& state, const HostLink& link, double now);
 
   CheckRequest& request() { return request_; }
   CheckProgress progress() const;
@@ -82,7 +82,7 @@ class CameraCheck {
   void set_command(const std::string& command, bool is_file);
   // The page's route: the case of the camera on screen, remembered as the one the student's program will
   // answer; an answer file given later is graded against it (not the camera on screen, which may have moved).
-  SceneFile case_for_download(const AppState& state);
+  SceneFile case_for_download(const Lesson& state);
   // An answer file to grade at the next update().
   void give_answer(const std::string& path);
   // The clear button: no verdict, no answer file (a program's command stays).
@@ -100,7 +100,7 @@ class CameraCheck {
   bool waiting() const;
 
  private:
-  std::string camera_key(const AppState& state) const;  // the camera and scene
+  std::string camera_key(const Lesson& state) const;  // the camera and scene
   std::string command_key() const;                       // the program or the answer file
   std::shared_ptr<const KeyedVerdict> latest() const;
 

@@ -18,7 +18,7 @@ struct Export {
 };
 
 // The figure of the camera on screen, the frames asked for and the output the path's extension says.
-Export prepare(const AppState& state, const std::string& path, bool all_steps) {
+Export prepare(const Lesson& state, const FigureContent& content, const std::string& path, bool all_steps) {
   const int format = figure_format_of(path);
   if (format < 0)
     throw std::invalid_argument(trf(state.language, "%s: expected a name ending in .svg, .pdf, .png or .tex", path.c_str()));
@@ -26,10 +26,8 @@ Export prepare(const AppState& state, const std::string& path, bool all_steps) {
   e.path = std::filesystem::absolute(path).lexically_normal().string();
   e.output.format = figure::Format(format);  // kFigureExtensions is figure::Format's order
   e.output.pages = all_steps && e.output.format == figure::Format::pdf;
-  e.output.matrix = state.figure_matrix;
-  const figure::FigureOptions options{state.language == Language::fr ? figure::Language::fr
-                                                                         : figure::Language::en,
-                                      state.figure_rays};
+  e.output.matrix = content.matrix;
+  const figure::FigureOptions options{state.language, content.rays};
   e.drawn = std::visit(
       overloaded{[&](const View2D& view) { return figure::construction_figure_2d(scene_as_shown(state.language, view), view.camera, options); },
                  [&](const View3D& view) { return figure::construction_figure_3d(scene_as_shown(state.language, view), view.camera, options); }},
@@ -45,14 +43,15 @@ Export prepare(const AppState& state, const std::string& path, bool all_steps) {
 
 }  // namespace
 
-std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
-                                                    bool all_steps) {
-  const Export e = prepare(state, path, all_steps);
+std::vector<std::string> export_construction_figure(const Lesson& lesson, const FigureContent& content,
+                                                    const std::string& path, bool all_steps) {
+  const Export e = prepare(lesson, content, path, all_steps);
   return figure::write_figure(e.drawn, e.frames, e.output, e.path).files;
 }
 
-std::vector<std::string> existing_figure_files(const AppState& state, const std::string& path, bool all_steps) {
-  const Export e = prepare(state, path, all_steps);
+std::vector<std::string> existing_figure_files(const Lesson& lesson, const FigureContent& content,
+                                               const std::string& path, bool all_steps) {
+  const Export e = prepare(lesson, content, path, all_steps);
   std::vector<std::string> existing;
   for (const std::string& file : figure::figure_files(e.drawn, e.frames, e.output, e.path))
     if (std::filesystem::exists(file)) existing.push_back(file);

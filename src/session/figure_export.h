@@ -10,15 +10,22 @@
 
 namespace raycam::session {
 
-// The construction step shown (or, with `all_steps`, every step) written to `path` (.svg, .pdf, .png or .tex
-// for TikZ; all steps go to PATH-a.svg … or to one PDF of pages) with state.figure_rays rays and the matrix
-// when state.figure_matrix. Returns the files written, as absolute paths; throws std::invalid_argument for a
-// name without one of those extensions, std::runtime_error when a file cannot be written.
-std::vector<std::string> export_construction_figure(const AppState& state, const std::string& path,
-                                                    bool all_steps);
+// What a figure shows besides the camera and the scene: raycam-cli figure's --rays and --matrix.
+struct FigureContent {
+  int rays = 5;         // primary rays per 2D frame
+  bool matrix = true;   // each frame's matrix printed
+};
+
+// The construction step shown (or, with `all_steps`, every step) of the lesson's view on screen, written to
+// `path` (.svg, .pdf, .png or .tex for TikZ; all steps go to PATH-a.svg … or to one PDF of pages) with
+// `content`'s rays and matrix. Returns the files written, as absolute paths; throws std::invalid_argument
+// for a name without one of those extensions, std::runtime_error when a file cannot be written.
+std::vector<std::string> export_construction_figure(const Lesson& lesson, const FigureContent& content,
+                                                    const std::string& path, bool all_steps);
 
 // The files among those the export would write that exist already (the panel asks before replacing them).
-std::vector<std::string> existing_figure_files(const AppState& state, const std::string& path, bool all_steps);
+std::vector<std::string> existing_figure_files(const Lesson& lesson, const FigureContent& content,
+                                               const std::string& path, bool all_steps);
 
 // What the panel says after an export, short (at 3× a message above the status line of six paths covered
 // half the views): one file by its full path; several by their count and one full path that spans them
@@ -27,7 +34,7 @@ std::string figure_files_message(Language language, const std::vector<std::strin
 // The question before replacing `existing` (full paths of one export's files), as short.
 std::string figure_replace_question(Language language, const std::vector<std::string>& existing);
 
-// The extensions of the formats, in the order of AppState::figure_format (raycam-cli figure's --format).
+// The extensions of the formats, in the order of the panel's format choice (raycam-cli figure's --format).
 inline constexpr const char* kFigureExtensions[] = {".svg", ".pdf", ".png", ".tex"};
 inline constexpr int kTikzFigureFormat = 3;  // the one format that needs no native library (the page's)
 

@@ -9,10 +9,10 @@ namespace {
 // caster (accuracy knobs) may round differently: then t can be "no hit" while the id says hit, and the
 // views draw the ray to a far point in the object's colour.
 template <class Ray, class Objects>
-Hit hit_as_cast(const AppState& state, PixelIndex pixel, const Ray& ray, const Objects& objects) {
+Hit hit_as_cast(const Lesson& state, const CastCache& cast, PixelIndex pixel, const Ray& ray, const Objects& objects) {
   Hit hit;
-  if (pixel.row >= state.map.height || pixel.column >= state.map.width) return hit;
-  hit.id = state.map.id_at(pixel.row, pixel.column);
+  if (pixel.row >= cast.map.height || pixel.column >= cast.map.width) return hit;
+  hit.id = cast.map.id_at(pixel.row, pixel.column);
   if (hit.id < 0 || std::size_t(hit.id) >= objects.size()) return Hit{};
   const auto& object = objects[std::size_t(hit.id)];
   const IntersectFormula formula = state.accuracy.options.formula;
@@ -24,7 +24,7 @@ Hit hit_as_cast(const AppState& state, PixelIndex pixel, const Ray& ray, const O
 }
 }  // namespace
 
-InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
+InspectedRay inspect_pixel(const Lesson& state, const CastCache& cast, PixelIndex pixel) {
   InspectedRay out;
   out.pixel = pixel;
   std::visit(overloaded{[&](const View2D& view) {  // a pixel k of the bar, the plane z = 0 of the views
@@ -36,7 +36,7 @@ InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
                           out.canonical_direction = {p0 - kCanonicalEye2D, 0.0};  // u_k^0 = P_k^0 - E0
                           out.origin = {ray.origin, 0.0};
                           out.direction = {ray.direction, 0.0};
-                          out.hit = hit_as_cast(state, pixel, ray, view.scene.circles);
+                          out.hit = hit_as_cast(state, cast, pixel, ray, view.scene.circles);
                         },
                         [&](const View3D& view) {
                           const Camera3D& camera = view.camera;
@@ -46,26 +46,26 @@ InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel) {
                           out.canonical_direction = p0 - kCanonicalEye3D;
                           out.origin = ray.origin;
                           out.direction = ray.direction;
-                          out.hit = hit_as_cast(state, pixel, ray, view.scene.spheres);
+                          out.hit = hit_as_cast(state, cast, pixel, ray, view.scene.spheres);
                         }},
              state.view);
   return out;
 }
 
-std::optional<PixelIndex> active_pixel(const AppState& state) {
+std::optional<PixelIndex> active_pixel(const Lesson& state, const CastCache& cast) {
   std::optional<PixelIndex> pixel = state.hovered_pixel ? state.hovered_pixel : state.pinned_pixel;
-  if (pixel && (pixel->column >= state.map.width || pixel->row >= state.map.height)) return std::nullopt;
+  if (pixel && (pixel->column >= cast.map.width || pixel->row >= cast.map.height)) return std::nullopt;
   return pixel;
 }
 
-std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays) {
+std::vector<InspectedRay> primary_ray_fan(const Lesson& state, const CastCache& cast, int max_rays) {
   std::vector<InspectedRay> fan;
-  const int n = state.map.width;
+  const int n = cast.map.width;
   if (n <= 0 || max_rays <= 0) return fan;
   const int stride = std::max(1, (n + max_rays - 1) / max_rays);
-  const int row = state.map.height / 2;
+  const int row = cast.map.height / 2;
   for (int column = stride / 2; column < n; column += stride)
-    fan.push_back(inspect_pixel(state, {row, column}));
+    fan.push_back(inspect_pixel(state, cast, {row, column}));
   return fan;
 }
 

@@ -28,12 +28,12 @@ struct InspectedRay {
 };
 
 // The pixel must be inside the current image.
-InspectedRay inspect_pixel(const AppState& state, PixelIndex pixel);
+InspectedRay inspect_pixel(const Lesson& state, const CastCache& cast, PixelIndex pixel);
 // The pixel to inspect this frame: hovered, else pinned (if still inside the image).
-std::optional<PixelIndex> active_pixel(const AppState& state);
+std::optional<PixelIndex> active_pixel(const Lesson& state, const CastCache& cast);
 
 // The rays of the 2D bar, or of the middle image row in 3D, at most `max_rays` of them evenly sampled, in
 // column order (column 0 = the eye's left). The overhead and the observer views draw these same rays.
-std::vector<InspectedRay> primary_ray_fan(const AppState& state, int max_rays);
+std::vector<InspectedRay> primary_ray_fan(const Lesson& state, const CastCache& cast, int max_rays);
 
 }  // namespace raycam::session

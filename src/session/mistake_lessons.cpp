@@ -14,12 +14,12 @@ namespace raycam::session {
 
 namespace {
 double& focal(AppState& state) { return active_orbit(state).df; }
-double focal(const AppState& state) { return active_orbit(state).df; }
+double focal(const Lesson& state) { return active_orbit(state).df; }
 int max_side(const AppState& state) { return active_max_side(state); }
 
 // ---- pixel edges ---------------------------------------------------------------------------------------
-std::string pixel_edges_does(const AppState& state) {
-  const int n = std::max(state.map.width, 1);
+std::string pixel_edges_does(const Lesson& state, const CastCache& cast) {
+  const int n = std::max(cast.map.width, 1);
   std::string text =
       trf(state.language, "Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
           "gives a symmetric image.",
@@ -53,7 +53,7 @@ void square_pixels_show(AppState& state) {
 // - stable: |f - b·u|² = p² + (|u|² - 1)²·b̂², so a ray hits only if p² + (|u|² - 1)²·b̂² ≤ r²: unless
 //   |u| ≈ 1, only objects whose nearest point is close to the screen (b̂ small) are hit.
 // (tests/session/test_mistake_lessons.cpp checks both conditions pixel by pixel.)
-std::string renormalise_does(const AppState& state) {
+std::string renormalise_does(const Lesson& state, const CastCache&) {
   const double df = focal(state), edge = std::sqrt((dimension(state) - 1) + df * df);  // 1 or 2 screen coordinates
   std::string text = trf(state.language, "Here |u| = %.2f on the axis to %.2f at the edges.", df, edge) + " ";
   if (state.accuracy.options.formula == IntersectFormula::stable)
@@ -106,17 +106,17 @@ void object_behind_screen_show(AppState& state) {
       },
       state.view);
 }
-std::string eye_origin_does(const AppState& state) {
+std::string eye_origin_does(const Lesson& state, const CastCache&) {
   return tr(state.language, "Rays start at the eye instead of the pixel on the screen: what lies between the eye and the "
             "screen is now seen, and t is measured from the eye. At most settings nothing is there: show me.");
 }
-std::string no_t_min_does(const AppState& state) {
+std::string no_t_min_does(const Lesson& state, const CastCache&) {
   return tr(state.language, "The smaller root is taken whatever its sign: a hit behind the ray's start on the screen counts, "
             "and beats any in front. At most settings nothing is behind the screen: show me.");
 }
 
 // ---- arccos route --------------------------------------------------------------------------------------
-std::string arccos_does(const AppState& state) {
+std::string arccos_does(const Lesson& state, const CastCache&) {
   if (dimension(state) == 2)
     return tr(state.language,
         "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
@@ -140,7 +140,7 @@ const std::vector<MistakeLesson>& mistake_lessons() {
   static const std::vector<MistakeLesson> lessons = [] {
     std::vector<MistakeLesson> all;
     for (const MistakeInfo& info : kClassicMistakes) all.push_back({info.id, &info, nullptr, nullptr, kNothingToAdd});
-    auto extend = [&](const char* id, std::string (*does)(const AppState&), void (*show)(AppState&), const char* look) {
+    auto extend = [&](const char* id, decltype(MistakeLesson::what_it_does) does, void (*show)(AppState&), const char* look) {
       for (MistakeLesson& lesson : all)
         if (std::string(lesson.id) == id) lesson.what_it_does = does, lesson.show_me = show, lesson.look_at = look;
     };
@@ -191,9 +191,9 @@ const char* mistake_label(const Lesson& state, const MistakeLesson& lesson) {
                      : tr(state.language, "arccos route near a pole");
 }
 
-std::string mistake_text(const AppState& state, const MistakeLesson& lesson) {
+std::string mistake_text(const Lesson& state, const CastCache& cast, const MistakeLesson& lesson) {
   std::string text = lesson.info ? lesson.info->explanation[state.language] : "";
-  if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state);
+  if (lesson.what_it_does) text += (text.empty() ? "" : " ") + lesson.what_it_does(state, cast);
   return text;
 }
 
@@ -204,7 +204,7 @@ void show_mistake(AppState& state, const MistakeLesson& lesson) {
   state.cameras_dirty = true;
 }
 
-std::string mistakes_on(const AppState& state) {
+std::string mistakes_on(const Lesson& state) {
   std::string names;
   for (const MistakeLesson& lesson : mistake_lessons())
     if (mistake_is_on(state, lesson) && mistake_applies(state, lesson))

@@ -16,7 +16,7 @@ struct MistakeLesson {
   const char* id;            // the core's id, or "arccos"
   const MistakeInfo* info;   // the core's entry; nullptr for the arccos route (an app setting, not a flag)
   // What the mistake does at the current settings, after the core's one line (nullptr: nothing to add).
-  std::string (*what_it_does)(const AppState&);
+  std::string (*what_it_does)(const Lesson&, const CastCache&);
   // Moves to settings where the effect shows; nullptr: it shows at any setting.
   void (*show_me)(AppState&);
   const char* look_at;  // what to look at after "show me" (one line)
@@ -30,10 +30,10 @@ bool mistake_is_on(const Lesson& state, const MistakeLesson& lesson);
 bool mistake_applies(const Lesson& state, const MistakeLesson& lesson);  // exists in the current mode
 const char* mistake_label(const Lesson& state, const MistakeLesson& lesson);
 // The core's line and what it does at the current settings.
-std::string mistake_text(const AppState& state, const MistakeLesson& lesson);
+std::string mistake_text(const Lesson& state, const CastCache& cast, const MistakeLesson& lesson);
 // Turns the mistake on and moves to settings where it shows (the "show me" button).
 void show_mistake(AppState& state, const MistakeLesson& lesson);
 // The labels of the mistakes that are on, joined with ", " (empty: none), for the image's header.
-std::string mistakes_on(const AppState& state);
+std::string mistakes_on(const Lesson& state);
 
 }  // namespace raycam::session

@@ -15,7 +15,7 @@ namespace {
 constexpr double kRadiansPerPixel = 0.01;  // drag speed
 }
 
-ObserverCamera observer_camera(const AppState& state, double aspect) {
+ObserverCamera observer_camera(const Lesson& state, const Display& display, double aspect) {
   const Camera3D& camera = view3d(state).camera;
   const glm::dvec3 target = view3d(state).orbit.target;
   // What must be in view: the camera (eye and screen corners), its target, and the objects within d of the
@@ -42,9 +42,9 @@ ObserverCamera observer_camera(const AppState& state, double aspect) {
   // The bounding sphere fits the narrower of the two fields of view.
   const double half_fov =
       0.5 * std::min(kObserverFovY, 2.0 * std::atan(std::tan(0.5 * kObserverFovY) * aspect));
-  observer.distance = radius / std::sin(half_fov) * double(state.observer.zoom);
-  const double yaw = glm::radians(double(state.observer.yaw_deg)),
-               pitch = glm::radians(double(state.observer.pitch_deg));
+  observer.distance = radius / std::sin(half_fov) * double(display.observer.zoom);
+  const double yaw = glm::radians(double(display.observer.yaw_deg)),
+               pitch = glm::radians(double(display.observer.pitch_deg));
   const glm::dvec3 towards_eye{std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw),
                                std::sin(pitch)};
   observer.eye = observer.look_at + observer.distance * towards_eye;

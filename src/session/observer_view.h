@@ -20,7 +20,7 @@ struct ObserverCamera {
 };
 
 // aspect = width / height of the view.
-ObserverCamera observer_camera(const AppState& state, double aspect);
+ObserverCamera observer_camera(const Lesson& state, const Display& display, double aspect);
 
 // A left drag by (dx, dy) pixels in the observer view moves the camera the way the mouse went: up is up
 // (φ decreases, so the camera rises), and right is right on the screen whichever side the observer looks

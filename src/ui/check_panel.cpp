@@ -135,12 +135,12 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
 ImVec4 drawn_verdict_rect() { return verdict_in_view().drawn_at; }
 
 // ---- the overlay -----------------------------------------------------------------------------------------
-void check_overlay(const CameraCheck& check, const AppState& state, ImDrawList* list, float x0, float y0,
+void check_overlay(const CameraCheck& check, const Lesson& state, const CastCache& cast, ImDrawList* list, float x0, float y0,
                    float x1, float y1) {
   const CheckProgress progress = check.progress();
   if (!progress.latest || !progress.current) return;  // only over the image it was made for
   const check::CaseVerdict& v = progress.latest->verdict;
-  if (v.dimension != dimension(state) || v.columns != state.map.width || v.rows != state.map.height) return;
+  if (v.dimension != dimension(state) || v.columns != cast.map.width || v.rows != cast.map.height) return;
   const float cw = (x1 - x0) / float(v.columns), ch = (y1 - y0) / float(v.rows);
   const ImU32 red = IM_COL32(255, 0, 0, 120);  // translucent: the student's mistake stays visible underneath
   // One rectangle per run of wrong pixels along a row: few rectangles even when most of the image is wrong.

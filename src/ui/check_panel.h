@@ -16,7 +16,8 @@ void check_section(session::CameraCheck& check, const session::HostCapabilities&
 ImVec4 drawn_verdict_rect();
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict
 // is for the image on screen).
-void check_overlay(const session::CameraCheck& check, const session::AppState& state, ImDrawList* list, float x0, float y0,
+void check_overlay(const session::CameraCheck& check, const session::Lesson& state, const session::CastCache& cast,
+                   ImDrawList* list, float x0, float y0,
                    float x1, float y1);
 
 }  // namespace raycam::ui

@@ -75,7 +75,7 @@ bool view_hovered(const char* window_id, const Rect& area) {
 // The image widget shows the canonical screen: in 3D the square [-1, 1]² with +y up; in 2D the segment
 // with canonical +x at the left (column 0 is the eye's left). fx, fy: the mouse in the widget, 0…1. The
 // pixel comes from the core's pixel <-> screen pair, as the caster's pixel centres do.
-PixelIndex pixel_under(const AppState& state, double fx, double fy) {
+PixelIndex pixel_under(const Lesson& state, double fx, double fy) {
   auto pixel_of = [](double raster, int count) { return std::clamp(int(std::floor(raster)), 0, count - 1); };
   PixelIndex pixel;
   std::visit(overloaded{[&](const View2D& view) {  // the bar: canonical +x at the left
@@ -129,17 +129,17 @@ void orbit_with_mouse(AppState& state, bool hovered, bool dragging, bool drag_tu
 }  // namespace
 
 // ---- theme ---------------------------------------------------------------------------------------------
-void apply_theme(const AppState& state, AppliedTheme& applied) {
-  if (applied.context != ImGui::GetCurrentContext() || applied.font_scale != state.font_scale ||
-      applied.high_contrast != state.high_contrast) {
-    ImGui::GetStyle() = make_style(state.high_contrast, state.font_scale);
-    set_current_theme(state.high_contrast);
-    applied = {state.high_contrast, state.font_scale, ImGui::GetCurrentContext()};
+void apply_theme(const Display& display, AppliedTheme& applied) {
+  if (applied.context != ImGui::GetCurrentContext() || applied.font_scale != display.font_scale ||
+      applied.high_contrast != display.high_contrast) {
+    ImGui::GetStyle() = make_style(display.high_contrast, display.font_scale);
+    set_current_theme(display.high_contrast);
+    applied = {display.high_contrast, display.font_scale, ImGui::GetCurrentContext()};
   }
 }
 
-void prepare_frame(const AppState& state, float pixel_density) {
-  update_fonts(state.font_scale, pixel_density);
+void prepare_frame(const Display& display, float pixel_density) {
+  update_fonts(display.font_scale, pixel_density);
   take_tab_key();
 }
 
@@ -151,8 +151,9 @@ FrameRenderer::FrameRenderer(Graphics graphics) {
 }
 FrameRenderer::~FrameRenderer() = default;
 
-Rect FrameRenderer::layout_areas(const AppState& state, int width, int height, FrameLayout& layout) const {
-  const float scale = state.font_scale;
+Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, int width, int height,
+                                 FrameLayout& layout) const {
+  const float scale = display.font_scale;
   const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
   // The panel never takes more than 40% of the width: the image and the views keep the rest at any scale
   // (labels that do not fit beside their widget go above it: panels.cpp, labelled()).
@@ -195,10 +196,10 @@ void FrameRenderer::view_input(AppState& state) {
     state.observer.zoom = std::clamp(state.observer.zoom * std::pow(0.9f, io.MouseWheel), 0.05f, 20.0f);
 }
 
-void FrameRenderer::hover_image(AppState& state) {
+void FrameRenderer::hover_image(Lesson& state, const CastCache& cast) {
   state.hovered_pixel.reset();
   const Rect& r = last_.image;
-  if (state.map.width <= 0 || !view_hovered("###image", r)) return;
+  if (cast.map.width <= 0 || !view_hovered("###image", r)) return;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
   const PixelIndex pixel = pixel_under(state, (mouse.x - r.x) / r.w, (mouse.y - r.y) / r.h);
   state.hovered_pixel = pixel;
@@ -207,39 +208,40 @@ void FrameRenderer::hover_image(AppState& state) {
 
 FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state, applied_theme_);
-  // 1. input
+  // 1. input (a scene file may have opened since the last frame: dropped, or the page's picker)
+  follow_opened_scene(state, panels_);
   handle_shortcuts(state);
   view_input(state);
   // 2. the panel's controls
   FrameLayout layout;
-  layout_areas(state, width, height, layout);
+  layout_areas(state, state, width, height, layout);
   const bool panel_open = begin_fixed_window("raycam###panel", layout.panel);
   if (panel_open) {
-    camera_section(state);
+    camera_section(state, panels_);
     mistakes_section(state);
-    caster_section(state);
-    files_section(state);
-    lecture_section(state);
+    caster_section(state, panels_);
+    files_section(state, panels_);
+    lecture_section(state, panels_);
   }
   // 3. the cast, once every control had its say (a control may also have switched 2D/3D or opened a file)
   recast_if_needed(state, ImGui::IsAnyMouseDown());
-  const Rect status_area = layout_areas(state, width, height, layout);
-  hover_image(state);
+  const Rect status_area = layout_areas(state, state, width, height, layout);
+  hover_image(state, state);
   // 4. what is derived from the state, all after the cast
-  if (!state.check_command.empty()) {  // --check CMD: the panel's program from the command line
-    check_.set_command(state.check_command, false);
-    state.check_command.clear();
+  if (!panels_.check_command.empty()) {  // --check CMD: the panel's program from the command line
+    check_.set_command(panels_.check_command, false);
+    panels_.check_command.clear();
   }
-  check_.update(state, ImGui::GetTime());
-  state.check_waiting = check_.waiting();
+  check_.update(state, state, ImGui::GetTime());
+  panels_.check_waiting = check_.waiting();
   if (panel_open) {
-    construction_section(state);
+    construction_section(state, panels_);
     inspector_section(state);
     check_section(check_, state.host, ImGui::GetTime(), state.language);
     // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
     // would leave the verdict below the fold until the next event).
     const ImGuiWindow* panel = ImGui::GetCurrentWindow();
-    state.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
+    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
   }
   ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {
@@ -258,13 +260,13 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   image_window(state, image_area_, layout);
   overhead_window(state, overhead_area_, layout);
   if (has_observer(state.view)) observer_window(state, observer_area_, layout);
-  shown_.placement = state.shown_matrix;
+  shown_.placement = panels_.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
 
   // The message, if no open section showed it: its own line above the status line, wrapped, never clipped.
   layout.status = status_area;
-  if (!state.message.empty() && !message_shown_this_frame(state)) {
+  if (!state.message.empty() && !message_shown_this_frame(state, state)) {
     const float wrap = status_area.w - 2 * ImGui::GetStyle().WindowPadding.x;
     const float lines = std::ceil(ImGui::CalcTextSize(state.message.c_str(), nullptr, false, wrap).y /
                                   ImGui::GetTextLineHeightWithSpacing());
@@ -280,9 +282,9 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     }
     ImGui::End();
   }
-  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state);
+  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state, panels_);
   ImGui::End();
-  help_overlay(state);
+  help_overlay(state, state.language);
   state.window_title = window_title(state);
   ++state.frame_count;
   last_ = layout;
@@ -337,9 +339,9 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     // A frame just outside the image, so that where the background ends shows against the window.
     ImGui::GetWindowDrawList()->AddRect({low.x - 2, low.y - 2}, {high.x + 2, high.y + 2}, kImageFrameColour,
                                         0, 0, 1.0f);
-    check_overlay(check_, state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
+    check_overlay(check_, state, state, ImGui::GetWindowDrawList(), low.x, low.y, high.x,
                   high.y);                         // the student's wrong pixels
-    if (const auto pixel = active_pixel(state)) {  // outline the inspected pixel
+    if (const auto pixel = active_pixel(state, state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
       ImGui::GetWindowDrawList()->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
@@ -370,13 +372,13 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
       ImGui::InvisibleButton("##overhead_input", size);
       layout.overhead = {top_left.x, top_left.y, size.x, size.y};
       // On load, reset, "fit", or when the camera or the target would leave the view: else it holds still.
-      if (state.overhead_fit_pending || !camera_and_target_in_view(state, top_left, size)) fit_overhead(state);
+      if (state.overhead_fit_pending || !camera_and_target_in_view(state, state, top_left, size)) fit_overhead(state, state);
       layout.overhead_mapping = overhead_mapping(state, top_left, size);
       ImDrawList* draw = ImGui::GetWindowDrawList();
       draw->PushClipRect(top_left, {top_left.x + size.x, top_left.y + size.y}, true);
       std::optional<InspectedRay> inspected;
-      if (const auto pixel = active_pixel(state)) inspected = inspect_pixel(state, *pixel);
-      draw_overhead(draw, layout.overhead_mapping, state, inspected, discs_.get());
+      if (const auto pixel = active_pixel(state, state)) inspected = inspect_pixel(state, state, *pixel);
+      draw_overhead(draw, layout.overhead_mapping, state, state, inspected, discs_.get(), panels_.widget_rects);
       draw->PopClipRect();
     }
   }
@@ -401,7 +403,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       const Camera3D& camera = view3d(state).camera;
       const glm::dvec3 target = view3d(state).orbit.target;
       const double reach = view3d(state).orbit.d + view3d(state).orbit.df;
-      const ObserverCamera observer = observer_camera(state, aspect);
+      const ObserverCamera observer = observer_camera(state, state, aspect);
       layout.observer_camera = observer_view_ = observer;
       const glm::mat4 view = observer.view, projection = observer.projection;
 
@@ -434,15 +436,15 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       // The same rays as the image and the overhead view (the middle row), to where the caster hit.
       const bool constructing =
           state.construction_step >= 0 && state.construction_step < kConstructionSteps3D;
-      for (const InspectedRay& ray : primary_ray_fan(state, constructing ? 0 : kObserverFanRays)) {
+      for (const InspectedRay& ray : primary_ray_fan(state, state, constructing ? 0 : kObserverFanRays)) {
         const Rgb8 c =
             ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : Rgb8{200, 200, 200};
         frame.lines.push_back({glm::vec3(ray.origin),
                                glm::vec3(ray.end(2.0 * reach)),
                                {c.r / 255.0f, c.g / 255.0f, c.b / 255.0f, ray.hit.id >= 0 ? 0.9f : 0.25f}});
       }
-      if (const auto pixel = active_pixel(state)) {
-        const InspectedRay ray = inspect_pixel(state, *pixel);
+      if (const auto pixel = active_pixel(state, state)) {
+        const InspectedRay ray = inspect_pixel(state, state, *pixel);
         frame.lines.push_back({glm::vec3(eye), glm::vec3(ray.origin), {1, 0, 1, 0.6f}});
         frame.lines.push_back({glm::vec3(ray.origin), glm::vec3(ray.end(2.0 * reach)), {1, 0, 1, 1}});
       }

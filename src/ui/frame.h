@@ -14,6 +14,7 @@
 #include "colour_map_texture.h"
 #include "observer_view.h"
 #include "overhead_view.h"
+#include "panel_state.h"
 
 namespace raycam::gl {
 class ObserverRenderer;
@@ -61,14 +62,19 @@ class FrameRenderer {
   ~FrameRenderer();
   FrameLayout build(session::AppState& state, int width, int height);
   session::CameraCheck& check() { return check_; }  // for a host: the page hands the check its answer files
+  // The panels' own widget state (the session never reads it): a host sets it from its options
+  // (panel_state_for), a test sets its widget_rects hook.
+  PanelState& panels() { return panels_; }
+  const PanelState& panels() const { return panels_; }
 
  private:
   enum class Drag { none, overhead, observer };
   bool draws_textures() const { return observer_ != nullptr; }  // false with Graphics::none
   // Sets the panel's rectangle and the views' areas; returns the status line's.
-  Rect layout_areas(const session::AppState& state, int width, int height, FrameLayout& layout) const;
+  Rect layout_areas(const session::Lesson& state, const session::Display& display, int width, int height,
+                    FrameLayout& layout) const;
   void view_input(session::AppState& state);
-  void hover_image(session::AppState& state);
+  void hover_image(session::Lesson& state, const session::CastCache& cast);
   void image_window(session::AppState& state, const Rect& area, FrameLayout& layout);
   void overhead_window(session::AppState& state, const Rect& area, FrameLayout& layout);
   void observer_window(session::AppState& state, const Rect& area, FrameLayout& layout);
@@ -86,14 +92,15 @@ class FrameRenderer {
   session::ObserverCamera observer_view_;  // last frame's, for the mouse
   session::CameraCheck check_;             // "Check my camera": runs on its own thread, never blocks a frame
   AppliedTheme applied_theme_;
+  PanelState panels_;
 };
 
 // Call before the renderer backend's NewFrame, outside ImGui::NewFrame/Render: rebuilds the font atlas at
 // the state's font scale when it changed (fonts.h), at the host's pixel density (FrameHost::pixel_density).
 // Both hosts (GLFW window, OSMesa) call it every frame.
-void prepare_frame(const session::AppState& state, float pixel_density = 1.0f);
+void prepare_frame(const session::Display& display, float pixel_density = 1.0f);
 
 // Dark or high-contrast theme and the font scale (lecture mode), when they differ from `applied`.
-void apply_theme(const session::AppState& state, AppliedTheme& applied);
+void apply_theme(const session::Display& display, AppliedTheme& applied);
 
 }  // namespace raycam::ui

@@ -19,7 +19,7 @@ using namespace session;  // the state the window shows and edits
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
   FrameResult result;
   prepare_frame(state, host.pixel_density());  // fonts at the current scale, before the backend's frame
-  const FramebufferSize size = host.begin(state);
+  const FramebufferSize size = host.begin(state, frame.panels());
   if (size.empty()) return result;
   const auto start = std::chrono::steady_clock::now();
   ImGui::NewFrame();
@@ -53,7 +53,7 @@ void FrameHost::draw(const FramebufferSize& size) {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
-FramebufferSize NullHost::begin(const session::AppState&) {
+FramebufferSize NullHost::begin(const session::AppState&, const PanelState&) {
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(float(size_.width), float(size_.height));
   io.DeltaTime = 1.0f / 60.0f;
@@ -65,11 +65,11 @@ FramebufferSize NullHost::begin(const session::AppState&) {
   return size_;
 }
 
-bool frame_needs_redraw(const AppState& state) {
+bool frame_needs_redraw(const AppState& state, const PanelState& panels) {
   const HostRequests& asked = state.requests;
   return state.cameras_dirty || state.refine_pending || asked.pending(HostRequestKind::screenshot) ||
          asked.pending(HostRequestKind::toggle_fullscreen) || asked.pending(HostRequestKind::quit) ||
-         state.check_waiting;
+         panels.check_waiting;
 }
 
 }  // namespace raycam::ui

@@ -22,10 +22,10 @@ struct FramebufferSize {
 class FrameHost {
  public:
   virtual ~FrameHost() = default;
-  // Waits for what the next frame needs (a window: events, or nothing when `state` has work pending; a
-  // buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty when
-  // there is nothing to draw (minimised): the frame is skipped.
-  virtual FramebufferSize begin(const session::AppState& state) = 0;
+  // Waits for what the next frame needs (a window: events, or nothing when `state` or the `panels` have work
+  // pending; a buffer: nothing) and starts the platform's ImGui frame. Returns the framebuffer's size; empty
+  // when there is nothing to draw (minimised): the frame is skipped.
+  virtual FramebufferSize begin(const session::AppState& state, const PanelState& panels) = 0;
   // Draws ImGui's frame into the framebuffer: GL hosts with the shared GL code (frame_host.cpp); the null
   // host draws nothing.
   virtual void draw(const FramebufferSize& size);
@@ -44,7 +44,7 @@ class FrameHost {
 class NullHost : public FrameHost {
  public:
   NullHost(int width, int height) : size_{width, height} {}
-  FramebufferSize begin(const session::AppState& state) override;
+  FramebufferSize begin(const session::AppState& state, const PanelState& panels) override;
   void draw(const FramebufferSize&) override {}
   void present() override {}
   gl::RgbaImage read_back() const override { return {}; }
@@ -59,13 +59,15 @@ struct FrameResult {
   FrameLayout layout;
 };
 
-// The loop body, one frame: fonts, host.begin, the window built from `state`, ImGui rendered into the
-// framebuffer, a requested screenshot saved (taken from state.requests), present.
+// The loop body, one frame: fonts, host.begin, the window built from `state` (and the frame's own panel
+// state), ImGui rendered into the framebuffer, a requested screenshot saved (taken from state.requests),
+// present.
 FrameResult run_frame(FrameHost& host, FrameRenderer& frame, session::AppState& state);
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse
-// preview waits for its refinement, a request is waiting for the executable. Anything that makes the image
-// change with no input (a background cast) adds its condition here.
-bool frame_needs_redraw(const session::AppState& state);
+// preview waits for its refinement, a request is waiting for the executable, a check's verdict is on its
+// way (the panels say). Anything that makes the image change with no input (a background cast) adds its
+// condition here.
+bool frame_needs_redraw(const session::AppState& state, const PanelState& panels);
 
 }  // namespace raycam::ui

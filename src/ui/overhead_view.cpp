@@ -27,7 +27,7 @@ ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha)
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
 glm::dvec2 xy(glm::dvec2 p) { return p; }
 
-double camera_reach(const AppState& state) {
+double camera_reach(const Lesson& state) {
   const auto orbit = active_orbit(state);
   return orbit.d + orbit.df;
 }
@@ -40,7 +40,7 @@ std::vector<glm::dvec2> camera_outline(const Matrix& world_from_camera, glm::dve
   for (const auto& corner : screen_corners_of(world_from_camera)) outline.push_back(xy(corner));
   return outline;
 }
-std::vector<glm::dvec2> camera_outline(const AppState& state, glm::dvec2* eye) {
+std::vector<glm::dvec2> camera_outline(const Lesson& state, glm::dvec2* eye) {
   return std::visit([&](const auto& view) { return camera_outline(view.camera.world_from_camera(), eye); },
                     state.view);
 }
@@ -51,7 +51,7 @@ double top_of(const Sphere& sphere) { return sphere.centre.z + sphere.radius; }
 }  // namespace
 
 // ---- fitting -------------------------------------------------------------------------------------------
-void fit_overhead(AppState& state) {
+void fit_overhead(const Lesson& state, Display& display) {
   glm::dvec2 eye;
   std::vector<glm::dvec2> points = camera_outline(state, &eye);
   points.push_back(eye);
@@ -69,13 +69,13 @@ void fit_overhead(AppState& state) {
   }, state.view);
   glm::dvec2 low = points[0], high = points[0];
   for (const glm::dvec2& p : points) low = glm::min(low, p), high = glm::max(high, p);
-  state.overhead_low = low;
-  state.overhead_high = high;
-  state.overhead_fit_pending = false;
+  display.overhead_low = low;
+  display.overhead_high = high;
+  display.overhead_fit_pending = false;
 }
 
-bool camera_and_target_in_view(const AppState& state, ImVec2 top_left, ImVec2 size) {
-  const OverheadMapping m = overhead_mapping(state, top_left, size);
+bool camera_and_target_in_view(const Lesson& state, const Display& display, ImVec2 top_left, ImVec2 size) {
+  const OverheadMapping m = overhead_mapping(display, top_left, size);
   glm::dvec2 eye;
   std::vector<glm::dvec2> points = camera_outline(state, &eye);
   points.push_back(eye);
@@ -88,8 +88,8 @@ bool camera_and_target_in_view(const AppState& state, ImVec2 top_left, ImVec2 si
   return true;
 }
 
-OverheadMapping overhead_mapping(const AppState& state, ImVec2 top_left, ImVec2 size) {
-  const glm::dvec2 low = state.overhead_low, high = state.overhead_high;
+OverheadMapping overhead_mapping(const Display& display, ImVec2 top_left, ImVec2 size) {
+  const glm::dvec2 low = display.overhead_low, high = display.overhead_high;
   const glm::dvec2 extent = glm::max(high - low, glm::dvec2(1e-9));
   const double margin = 0.08;
   OverheadMapping mapping;
@@ -281,7 +281,8 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
 // are few enough to tell apart, their edges as ticks (the rays leave from the centres between them, or from
 // the ticks under the "pixel edges" mistake). Each label sits beside its own end, whatever the font's size:
 // its long text where it fits, else its short one, off the discs, the markers and the other label.
-void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppState& state, const Camera2D& camera) {
+void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Lesson& state, const Camera2D& camera,
+                         WidgetRects* label_rects) {
   const glm::dmat3& world_from_camera = camera.world_from_camera();
   auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
   const int n = camera.pixel_count();
@@ -329,7 +330,7 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppSt
       draw->AddLine(end, nearest, (kFirstPixelColour & 0x00FFFFFF) | 0xA0000000, 1.0f);
     draw->AddText(top_left, kFirstPixelColour, text);
     placed.push_back({top_left, size});
-    if (state.widget_rects) (*state.widget_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
+    if (label_rects) (*label_rects)[id] = {top_left.x, top_left.y, top_left.x + size.x, top_left.y + size.y};
   };
   label(minus, -along, tr(state.language, "k = 0 (eye's right)"), tr(state.language, "k = 0"), "###label_k0");
   label(plus, along, tr(state.language, "column 0 (eye's left)"), tr(state.language, "column 0"), "###label_column0");
@@ -339,11 +340,12 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const AppSt
 // the hit the caster found, in the colour it returned; misses faint, to the edge of the view. A few rays are
 // lines; many are drawn as translucent wedges between neighbours that hit the same object, so that a dense
 // fan reads as a beam instead of hatching over the discs.
-void draw_fan(ImDrawList* draw, const OverheadMapping& m, const AppState& state, double far_length) {
-  const std::vector<InspectedRay> fan = primary_ray_fan(state, kMaxFanRays);
+void draw_fan(ImDrawList* draw, const OverheadMapping& m, const Lesson& state, const CastCache& cast,
+              double far_length) {
+  const std::vector<InspectedRay> fan = primary_ray_fan(state, cast, kMaxFanRays);
   const Rgb8 miss_colour{200, 200, 200};
   auto colour = [&](const InspectedRay& ray) {
-    return ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : miss_colour;
+    return ray.hit.id >= 0 ? cast.map.colour_at(ray.pixel.row, ray.pixel.column) : miss_colour;
   };
   auto from = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.origin)); };
   auto to = [&](const InspectedRay& ray) { return m.to_screen(xy(ray.end(far_length))); };
@@ -443,7 +445,7 @@ ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
   return start;  // nowhere free: where it was wanted
 }
 
-std::vector<gl::Disc> overhead_discs(const AppState& state) {
+std::vector<gl::Disc> overhead_discs(const Lesson& state) {
   std::vector<gl::Disc> discs;
   std::visit(
       [&](const auto& view) {
@@ -459,8 +461,8 @@ std::vector<gl::Disc> overhead_discs(const AppState& state) {
   return discs;
 }
 
-void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& state,
-                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs) {
+void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const Lesson& state, const CastCache& cast,
+                   const std::optional<InspectedRay>& inspected, gl::DiscLayer* discs, WidgetRects* label_rects) {
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
   PlacedLabels placed;  // the labels drawn so far: the next ones go beside them
@@ -479,14 +481,14 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
                    clip_max);
 
   const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
-  if (final_camera) draw_fan(draw, m, state, far_length);
+  if (final_camera) draw_fan(draw, m, state, cast, far_length);
   std::visit([&](const auto& view) {
     draw_camera(draw, m, view.camera.world_from_camera(), kScreenColour, far_length, true);
   }, state.view);
   // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
   const int step = state.construction_step;
   std::visit(overloaded{[&](const View2D& view) {
-                          mark_screen_segment(draw, m, state, view.camera);
+                          mark_screen_segment(draw, m, state, view.camera, label_rects);
                           if (!final_camera)
                             draw_camera(draw, m, construction_step(view.camera.placement(), step),
                                         kConstructionColour, far_length * 0.3, true);
@@ -507,7 +509,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const AppState& s
 }
 
 // ---- picking -------------------------------------------------------------------------------------------
-int object_under(const OverheadMapping& m, const AppState& state, ImVec2 screen_point) {
+int object_under(const OverheadMapping& m, const Lesson& state, ImVec2 screen_point) {
   const glm::dvec2 p = m.to_world(screen_point);
   int best = -1;
   double best_top = -1e300;

@@ -13,6 +13,7 @@
 #include "app_state.h"
 #include "disc_layer.h"
 #include "inspection.h"
+#include "panel_state.h"
 
 namespace raycam::ui {
 
@@ -28,23 +29,27 @@ struct OverheadMapping {
 // the target and the camera (eye and screen). Called when a scene is loaded, the camera reset, on "fit",
 // and when the camera or the target would leave the view; never every frame, so that the view holds still
 // while the camera moves inside it.
-void fit_overhead(session::AppState& state);
+void fit_overhead(const session::Lesson& state, session::Display& display);
 // The mapping that shows the state's world rectangle centred in the screen rectangle, with a margin.
-OverheadMapping overhead_mapping(const session::AppState& state, ImVec2 top_left, ImVec2 size);
+OverheadMapping overhead_mapping(const session::Display& display, ImVec2 top_left, ImVec2 size);
 // Whether the camera (eye and screen) and the target are inside the view as it is now mapped.
-bool camera_and_target_in_view(const session::AppState& state, ImVec2 top_left, ImVec2 size);
+bool camera_and_target_in_view(const session::Lesson& state, const session::Display& display, ImVec2 top_left,
+                               ImVec2 size);
 
 // Every object's disc seen from above, in drawing order (3D: from the lowest sphere top up, so the highest
 // hides the others). Give it to a DiscLayer when the scene changes.
-std::vector<gl::Disc> overhead_discs(const session::AppState& state);
+std::vector<gl::Disc> overhead_discs(const session::Lesson& state);
 
 // Draws the view into `draw` (clipped by the caller). `inspected` highlights one ray. `discs` must hold
-// overhead_discs(state); null (the null host): no disc texture.
-void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const session::AppState& state,
-                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer* discs);
+// overhead_discs(state); null (the null host): no disc texture. `label_rects` (the tests' hook, else null)
+// gets where the 2D screen's end labels went.
+void draw_overhead(ImDrawList* draw, const OverheadMapping& mapping, const session::Lesson& state,
+                   const session::CastCache& cast,
+                   const std::optional<session::InspectedRay>& inspected, gl::DiscLayer* discs,
+                   WidgetRects* label_rects = nullptr);
 
 // The object whose disc is under a screen point (topmost), or -1.
-int object_under(const OverheadMapping& mapping, const session::AppState& state, ImVec2 screen_point);
+int object_under(const OverheadMapping& mapping, const session::Lesson& state, ImVec2 screen_point);
 
 // A label's box on screen (top-left, size), and a disc on screen a label must not cover.
 struct LabelBox {

@@ -80,18 +80,18 @@ std::vector<std::string> lines_between_words(const std::string& text, float widt
 
 int g_tab_key = -1;  // the host's key index of Tab, taken away from ImGui (take_tab_key)
 
-// Where the last item is, for the tests (state.widget_rects is null in the app).
-void record_item_rect(const AppState& state, const std::string& id) {
-  if (!state.widget_rects) return;
+// Where the last item is, for the tests (panels.widget_rects is null in the app).
+void record_item_rect(const PanelState& panels, const std::string& id) {
+  if (!panels.widget_rects) return;
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
-  (*state.widget_rects)[id] = {low.x, low.y, high.x, high.y};
+  (*panels.widget_rects)[id] = {low.x, low.y, high.x, high.y};
 }
 
 // The label beside the widget when both fit (the widget keeps at least `widget_min_width`), else on its own
 // line above a full-width widget: a label is never cut, in any language at any font scale. `label` may carry
 // an ImGui "###id" (kept either way).
 template <class Widget>
-bool labelled(const AppState& state, const char* label, Widget widget, float widget_min_width = 0.0f) {
+bool labelled(const PanelState& panels, const char* label, Widget widget, float widget_min_width = 0.0f) {
   const LabelParts parts = label_parts(label);
   const std::string& shown = parts.shown;
   const std::string& id = parts.id;
@@ -106,15 +106,15 @@ bool labelled(const AppState& state, const char* label, Widget widget, float wid
     ImGui::SetNextItemWidth(avail);
     changed = widget(id.c_str());
   }
-  record_item_rect(state, id);
+  record_item_rect(panels, id);
   return changed;
 }
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
-bool slider_double(const AppState& state, const char* label, double& value, double lo, double hi,
+bool slider_double(const PanelState& panels, const char* label, double& value, double lo, double hi,
                    const char* format, bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
-  return labelled(state, label, [&](const char* l) {
+  return labelled(panels, label, [&](const char* l) {
     return ImGui::SliderScalar(l, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
   });
 }
@@ -134,28 +134,28 @@ bool drag_doubles(const char* label, double* values, int count) {
 
 // The target C's coordinates: side by side where each shows -10.00 whole, else (1024 px at 3×) the label
 // above and one full-width field a line ("###target0", "###target1", ...).
-bool target_fields(const AppState& state, double* values, int count) {
-  const char* label = tr(state.language, "target C###target");
+bool target_fields(Language language, const PanelState& panels, double* values, int count) {
+  const char* label = tr(language, "target C###target");
   const float needed = drag_doubles_width(count);
   if (ImGui::GetContentRegionAvail().x >= needed)
-    return labelled(state, label, [&](const char* l) { return drag_doubles(l, values, count); }, needed);
+    return labelled(panels, label, [&](const char* l) { return drag_doubles(l, values, count); }, needed);
   wrapped_between_words(label_parts(label).shown);
   bool changed = false;
   for (int i = 0; i < count; ++i) {
     const std::string id = "###target" + std::to_string(i);
     ImGui::SetNextItemWidth(-FLT_MIN);
     changed |= drag_doubles(id.c_str(), values + i, 1);
-    record_item_rect(state, id);
-    if (i == 0) record_item_rect(state, "###target");
+    record_item_rect(panels, id);
+    if (i == 0) record_item_rect(panels, "###target");
   }
   return changed;
 }
 
 // radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
-bool slider_degrees(const AppState& state, const char* label, double& radians, double lo_deg, double hi_deg) {
+bool slider_degrees(const PanelState& panels, const char* label, double& radians, double lo_deg, double hi_deg) {
   double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
-  if (!slider_double(state, label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
+  if (!slider_double(panels, label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
   radians = glm::radians(degrees);
   return true;
 }
@@ -280,7 +280,7 @@ bool section(const char* full, const char* brief, int flags) {
 }
 
 // ---- camera --------------------------------------------------------------------------------------------
-void camera_section(AppState& state) {
+void camera_section(AppState& state, const PanelState& panels) {
   if (!section(tr(state.language, "Camera###camera"), tr(state.language, "Camera###camera"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   int wanted = dimension(state);
   bool mode_changed = ImGui::RadioButton(tr(state.language, "2D camera"), &wanted, 2);
@@ -290,24 +290,24 @@ void camera_section(AppState& state) {
 
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
-  bool changed = slider_double(state, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+  bool changed = slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
                                "%.3f", true);
-  changed |= slider_double(state, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+  changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
                            "%.2f", true);
-  changed |= slider_degrees(state, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
+  changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
   std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
                         [&](View3D& view) {
-                          changed |= slider_degrees(state, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
+                          changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
                                                     glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
                         }},
              state.view);
   const int max_size = active_max_side(state);
   // The handout's one or two resolution variables (two in 3D, "non-square" on).
   if (dimension(state) == 2 || !state.res_rows) {
-    changed |= slider_double(state, tr(state.language, "res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(panels, tr(state.language, "res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   } else {  // the handout's two resolution variables: nbc = round(res_c·W), nbl = round(res_l·H)
-    changed |= slider_double(state, tr(state.language, "res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
-    changed |= slider_double(state, tr(state.language, "res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
+    changed |= slider_double(panels, tr(state.language, "res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(panels, tr(state.language, "res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
                              true);
   }
   bool non_square = state.res_rows.has_value();
@@ -317,11 +317,11 @@ void camera_section(AppState& state) {
   }
   // The target's coordinates are doubles in the widget too, as the sliders'.
   std::visit([&](auto& view) {
-    changed |= target_fields(state, glm::value_ptr(view.orbit.target), view.kDimension);
+    changed |= target_fields(state.language, panels, glm::value_ptr(view.orbit.target), view.kDimension);
   }, state.view);
   std::visit(overloaded{[&](View2D& view) {
                           int n = view.max_pixels;
-                          if (labelled(state, tr(state.language, "N max pixels###N"),
+                          if (labelled(panels, tr(state.language, "N max pixels###N"),
                                        [&](const char* l) { return ImGui::InputInt(l, &n, 16, 256); })) {
                             view.max_pixels = std::clamp(n, 1, kMaxPixels2DInApp);
                             changed = true;
@@ -329,7 +329,7 @@ void camera_section(AppState& state) {
                         },
                         [&](View3D& view) {
                           int size[2] = {view.max_columns, view.max_rows};
-                          if (labelled(state, tr(state.language, "max size W, H###size"),
+                          if (labelled(panels, tr(state.language, "max size W, H###size"),
                                        [&](const char* l) { return ImGui::InputInt2(l, size); })) {
                             view.max_columns = std::clamp(size[0], 1, kMaxSideInApp);
                             view.max_rows = std::clamp(size[1], 1, kMaxSideInApp);
@@ -340,7 +340,7 @@ void camera_section(AppState& state) {
   const double fov = std::visit([](const auto& view) { return view.camera.field_of_view(); }, state.view);
   ImGui::TextWrapped("%s", trf(state.language, "n = %d × %d, field of view %.1f°", state.map.width, state.map.height,
                                glm::degrees(fov)).c_str());
-  if (button(tr(state.language, "Reset camera"))) reset_camera(state);  // the scene file's preset
+  if (button(tr(state.language, "Reset camera"))) reset_camera(state, state);  // the scene file's preset
   explain(tr(state.language, "drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
   show_message(state, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
@@ -349,7 +349,7 @@ void camera_section(AppState& state) {
 // ---- construction of M_d -------------------------------------------------------------------------------
 namespace {
 // M_d's factors and their product up to `step`, as the handout writes them in each dimension.
-void placement_tables(AppState& state, const View2D& view, int step, int steps) {
+void placement_tables(AppState& state, PanelState& panels, const View2D& view, int step, int steps) {
   const Placement2D& p = view.camera.placement();
   ImGui::TextWrapped("%s", trf(state.language, "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
   if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
@@ -359,10 +359,10 @@ void placement_tables(AppState& state, const View2D& view, int step, int steps) 
   }
   if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
   wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
-  state.shown_matrix = glm::dmat4(construction_step(p, step));
+  panels.shown_matrix = glm::dmat4(construction_step(p, step));
   matrix_table<3>("M", construction_step(p, step));
 }
-void placement_tables(AppState& state, const View3D& view, int step, int steps) {
+void placement_tables(AppState& state, PanelState& panels, const View3D& view, int step, int steps) {
   if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
     explain(tr(state.language,
         "Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
@@ -392,16 +392,16 @@ void placement_tables(AppState& state, const View3D& view, int step, int steps) 
   }
   if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
   wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
-  state.shown_matrix = construction_step(p, step);
+  panels.shown_matrix = construction_step(p, step);
   matrix_table<4>("M", construction_step(p, step));
 }
 }  // namespace
 
 // The course figures of this camera (raycam-cli figure): the step shown, or every step, in the format, with
 // the rays and the matrix chosen here; existing files are replaced only after asking, as Save as does.
-void export_figure_now(AppState& state, bool all) {
+void export_figure_now(AppState& state, const PanelState& panels, bool all) {
   try {
-    const std::vector<std::string> files = export_construction_figure(state, state.figure_path, all);
+    const std::vector<std::string> files = export_construction_figure(state, panels.figure, panels.figure_path, all);
     std::vector<std::string> shown;  // the page: names alone
     for (const std::string& file : files) shown.push_back(shown_file_name(state.host, file));
     set_message(state, MessageSource::construction, false, figure_files_message(state.language, shown));
@@ -410,65 +410,65 @@ void export_figure_now(AppState& state, bool all) {
   }
 }
 
-void figure_export_row(AppState& state) {
+void figure_export_row(AppState& state, PanelState& panels) {
   const bool downloads = state.host.files_are_downloads;
-  if (!state.host.cairo_figures) state.figure_format = kTikzFigureFormat;  // the one format without cairo
+  if (!state.host.cairo_figures) panels.figure_format = kTikzFigureFormat;  // the one format without cairo
   if (downloads)  // named after the scene, as the other downloads
-    state.figure_path = named_after_scene(state, std::string("-figure") + kFigureExtensions[state.figure_format]);
+    panels.figure_path = named_after_scene(state, std::string("-figure") + kFigureExtensions[panels.figure_format]);
   // A name edited while the question shows: the question was about other files.
-  else if (labelled(state, tr(state.language, "figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &state.figure_path); }))
-    state.figure_replace_pending = 0;
+  else if (labelled(panels, tr(state.language, "figure###figure_path"), [&](const char* l) { return ImGui::InputText(l, &panels.figure_path); }))
+    panels.figure_replace_pending = 0;
   static const char* const kFormats[] = {"SVG", "PDF", "PNG", "TikZ"};  // figure_export.h's order
-  if (figure_format_of(state.figure_path) >= 0) state.figure_format = figure_format_of(state.figure_path);
+  if (figure_format_of(panels.figure_path) >= 0) panels.figure_format = figure_format_of(panels.figure_path);
   if (!state.host.cairo_figures)
     explain(tr(state.language, "TikZ (.tex, for LaTeX) only: SVG, PDF and PNG need the desktop app (drawn by cairo)."));
-  else if (labelled(state, tr(state.language, "format###figure_format"),
-                    [&](const char* l) { return ImGui::Combo(l, &state.figure_format, kFormats, 4); })) {
-    state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
-    state.figure_replace_pending = 0;
+  else if (labelled(panels, tr(state.language, "format###figure_format"),
+                    [&](const char* l) { return ImGui::Combo(l, &panels.figure_format, kFormats, 4); })) {
+    panels.figure_path = with_figure_extension(panels.figure_path, panels.figure_format);
+    panels.figure_replace_pending = 0;
   }
   if (dimension(state) == 2)  // the 3D steps draw no rays: a slider there would change nothing
-    labelled(state, tr(state.language, "rays###figure_rays"),
-             [&](const char* l) { return ImGui::SliderInt(l, &state.figure_rays, 0, 64); });
-  checkbox(tr(state.language, "matrix###figure_matrix"), &state.figure_matrix);
+    labelled(panels, tr(state.language, "rays###figure_rays"),
+             [&](const char* l) { return ImGui::SliderInt(l, &panels.figure.rays, 0, 64); });
+  checkbox(tr(state.language, "matrix###figure_matrix"), &panels.figure.matrix);
   int asked = button(tr(state.language, "Export figure…")) ? 1 : 0;
-  record_item_rect(state, "###figure_export");
+  record_item_rect(panels, "###figure_export");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Export every step"))) asked = 2;
   if (asked != 0) {
-    state.figure_path = with_figure_extension(state.figure_path, state.figure_format);
-    state.figure_replace_pending = 0;
+    panels.figure_path = with_figure_extension(panels.figure_path, panels.figure_format);
+    panels.figure_replace_pending = 0;
     try {
       // Found once, here: the question below is drawn every frame from this list (drawing the figure again
       // each frame to find them cost a whole figure build per frame, and threw on a name edited meanwhile).
       // A download replaces nothing: the browser keeps both.
-      state.figure_replace_files =
-          downloads ? std::vector<std::string>{} : existing_figure_files(state, state.figure_path, asked == 2);
-      if (state.figure_replace_files.empty())
-        export_figure_now(state, asked == 2);
+      panels.figure_replace_files =
+          downloads ? std::vector<std::string>{} : existing_figure_files(state, panels.figure, panels.figure_path, asked == 2);
+      if (panels.figure_replace_files.empty())
+        export_figure_now(state, panels, asked == 2);
       else
-        state.figure_replace_pending = asked;
+        panels.figure_replace_pending = asked;
     } catch (const std::exception& error) {
       set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
     }
   }
-  const bool just_asked = asked != 0 && state.figure_replace_pending != 0;
-  if (state.figure_replace_pending != 0) {  // asked before replacing, as Save as
+  const bool just_asked = asked != 0 && panels.figure_replace_pending != 0;
+  if (panels.figure_replace_pending != 0) {  // asked before replacing, as Save as
     // The question replaces the last export's "wrote …": beside "… already exists. Replace it?" (here or on
     // the line above the status at lecture sizes) it read as done.
     if (state.message_source == MessageSource::construction) state.message.clear();
-    const bool all = state.figure_replace_pending == 2;
+    const bool all = panels.figure_replace_pending == 2;
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", state.figure_replace_files.empty()
-                                 ? trf(state.language, "%s already exists. Replace it?", state.figure_path.c_str()).c_str()
-                                 : figure_replace_question(state.language, state.figure_replace_files).c_str());
+    ImGui::TextWrapped("%s", panels.figure_replace_files.empty()
+                                 ? trf(state.language, "%s already exists. Replace it?", panels.figure_path.c_str()).c_str()
+                                 : figure_replace_question(state.language, panels.figure_replace_files).c_str());
     ImGui::PopStyleColor();
     if (button(tr(state.language, "Replace###figure_replace"))) {
-      state.figure_replace_pending = 0;
-      export_figure_now(state, all);
+      panels.figure_replace_pending = 0;
+      export_figure_now(state, panels, all);
     }
     same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr(state.language, "Cancel###figure_cancel"))) state.figure_replace_pending = 0;
+    if (button(tr(state.language, "Cancel###figure_cancel"))) panels.figure_replace_pending = 0;
     // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
     if (just_asked) ImGui::SetScrollHereY(1.0f);
   }
@@ -476,7 +476,7 @@ void figure_export_row(AppState& state) {
   explain(tr(state.language, "The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
 }
 
-void construction_section(AppState& state) {
+void construction_section(AppState& state, PanelState& panels) {
   if (!section(tr(state.language, "Construction of M_d###construction"), "M_d###construction", ImGuiTreeNodeFlags_DefaultOpen))
     return;
   const int steps = construction_steps(state);
@@ -490,22 +490,22 @@ void construction_section(AppState& state) {
                                     tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
                                     tr_later("4: Rz(θ) turns u0 onto v"),
                                     tr_later("5: T(OP) moves the screen to P")};
-  if (labelled(state, tr(state.language, "step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
+  if (labelled(panels, tr(state.language, "step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
   explain(tr(state.language, dimension(state) == 2 ? k2D[step] : k3D[step]));
-  std::visit([&](const auto& view) { placement_tables(state, view, step, steps); }, state.view);
-  figure_export_row(state);
+  std::visit([&](const auto& view) { placement_tables(state, panels, view, step, steps); }, state.view);
+  figure_export_row(state, panels);
 }
 
 // ---- ray inspector -------------------------------------------------------------------------------------
 void inspector_section(const AppState& state) {
   if (!section(tr(state.language, "Ray inspector###inspector"), tr(state.language, "Ray###inspector"), ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const auto pixel = active_pixel(state);
+  const auto pixel = active_pixel(state, state);
   if (!pixel) {
     explain(tr(state.language, "Hover a pixel of the colour bar or image to see its ray; click to pin it."));
     return;
   }
-  const InspectedRay ray = inspect_pixel(state, *pixel);
+  const InspectedRay ray = inspect_pixel(state, state, *pixel);
   // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
   const int dimensions = dimension(state);
   const auto line = [dimensions](const char* name, const glm::dvec3& v) {
@@ -584,7 +584,7 @@ void mistakes_section(AppState& state) {
       if (ImGui::SmallButton(tr(state.language, "show me"))) show_mistake(state, lesson);
     }
     if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
-    explain(mistake_text(state, lesson).c_str());
+    explain(mistake_text(state, state, lesson).c_str());
     if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
     {
       ImGui::PushStyleColor(ImGuiCol_Text, current_theme().look_at);  // wrapped: not cut at the panel's edge
@@ -602,26 +602,26 @@ namespace {
 // What a combo shows of its choice: the whole name where it fits the combo, else the name without its
 // parenthesis ("stable (Ray Tracing Gems)" → "stable"), else that cut with "…" (its list shows every name
 // whole). Recorded for the tests as "<id>/preview", its width in x1.
-std::string combo_preview(const AppState& state, const std::string& id, const char* name) {
+std::string combo_preview(const PanelState& panels, const std::string& id, const char* name) {
   const float room = ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - 2 * ImGui::GetStyle().FramePadding.x;
   const std::string whole = name;
   const std::string shown = ImGui::CalcTextSize(name).x <= room ? whole : ellipsized(whole.substr(0, whole.find(" (")), room);
-  if (state.widget_rects) (*state.widget_rects)[id + "/preview"] = {0, 0, ImGui::CalcTextSize(shown.c_str()).x, 0};
+  if (panels.widget_rects) (*panels.widget_rects)[id + "/preview"] = {0, 0, ImGui::CalcTextSize(shown.c_str()).x, 0};
   return shown;
 }
 
 // A combo over a fixed list of (value, name); returns true when the user picked another value.
 template <class T, class Options>  // Options: a range of std::pair<T, const char*>
-bool choice(const AppState& state, const char* label, T& value, const Options& options) {
+bool choice(Language language, const PanelState& panels, const char* label, T& value, const Options& options) {
   const char* current = "?";
   for (const auto& [v, name] : options)
     if (v == value) current = name;
   bool changed = false;
   const std::string id = label_parts(label).id;
-  if (labelled(state, label,
-               [&](const char* l) { return ImGui::BeginCombo(l, combo_preview(state, id, tr(state.language, current)).c_str()); })) {
+  if (labelled(panels, label,
+               [&](const char* l) { return ImGui::BeginCombo(l, combo_preview(panels, id, tr(language, current)).c_str()); })) {
     for (const auto& [v, name] : options)
-      if (ImGui::Selectable(tr(state.language, name), v == value) && v != value) {
+      if (ImGui::Selectable(tr(language, name), v == value) && v != value) {
         value = v;
         changed = true;
       }
@@ -631,7 +631,7 @@ bool choice(const AppState& state, const char* label, T& value, const Options& o
 }
 }  // namespace
 
-void caster_section(AppState& state) {
+void caster_section(AppState& state, const PanelState& panels) {
   if (!section(tr(state.language, "Caster and accuracy###caster"), tr(state.language, "Caster###caster"),
                                uses_reference_caster(state) ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
@@ -648,14 +648,14 @@ void caster_section(AppState& state) {
     for (std::size_t i = 0; i < methods.size(); ++i) methods[i] = {kCastMethods[i], cast_method_name(kCastMethods[i])};
     return methods;
   }();
-  bool changed = choice(state, tr(state.language, "method###method"), state.cast_options.method, kMethods);
+  bool changed = choice(state.language, panels, tr(state.language, "method###method"), state.cast_options.method, kMethods);
   explain(
       tr(state.language, "Every method gives the plain loop's image; the faster ones skip objects behind the screen or out "
          "of view and test each object only on the pixels its projection can cover. The status line's "
          "tooltip shows the work done and skipped."));
-  changed |= choice(state, tr(state.language, "precision###precision"), knobs.scalar, kScalars);
-  changed |= choice(state, tr(state.language, "intersection###intersection"), knobs.formula, kFormulas);
-  changed |= choice(state, tr(state.language, "samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
+  changed |= choice(state.language, panels, tr(state.language, "precision###precision"), knobs.scalar, kScalars);
+  changed |= choice(state.language, panels, tr(state.language, "intersection###intersection"), knobs.formula, kFormulas);
+  changed |= choice(state.language, panels, tr(state.language, "samples per pixel###spp"), knobs.samples_per_pixel, kSamples);
   changed |= checkbox(tr(state.language, "camera-relative rays"), &knobs.camera_relative);
   if (exact_bar_applies(state.view))
     changed |= checkbox(tr(state.language, "exact bar (area-weighted)"), &state.accuracy.exact);
@@ -668,54 +668,54 @@ void caster_section(AppState& state) {
 }
 
 // ---- files ---------------------------------------------------------------------------------------------
-void files_section(AppState& state) {
+void files_section(AppState& state, PanelState& panels) {
   // The question "replace?" opens the section; a message does not (it shows above the status line while
   // the section is closed), so the section can be closed while a message shows.
-  if (!state.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
+  if (!panels.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
   const bool open_section = section(tr(state.language, "Scene file###files"), tr(state.language, "Files###files"));
-  record_item_rect(state, "###files");
+  record_item_rect(panels, "###files");
   if (!open_section) return;
   // Open and Save as have their own boxes: saving never goes to the opened file unless the user types it.
   const auto path_box = [&](const char* label, std::string& path) {
-    return labelled(state, label, [&](const char* l) {
+    return labelled(panels, label, [&](const char* l) {
       return ImGui::InputText(l, &path, ImGuiInputTextFlags_EnterReturnsTrue);
     });
   };
   const bool downloads = state.host.files_are_downloads;
   if (state.host.picks_files) {  // the page: the browser's file picker, or a file dropped on the page
     if (button(tr(state.language, "Open a scene file…###files_open"))) state.requests.ask(HostRequestKind::pick_scene_file);
-    record_item_rect(state, "###files_open");
+    record_item_rect(panels, "###files_open");
     explain(tr(state.language, "or drop a scene file on the page"));
   } else {
-    bool open = path_box(tr(state.language, "open###open_path"), state.path_input);
+    bool open = path_box(tr(state.language, "open###open_path"), panels.path_input);
     open |= button(tr(state.language, "Open"));
-    if (open) open_scene(state, state.path_input);
+    if (open && open_scene(state, panels.path_input)) follow_opened_scene(state, panels);
     explain(tr(state.language, "or drop a scene file on the window"));
   }
   if (downloads) {  // a download named after the scene; the browser asks where, if it is set to
     const std::string name = named_after_scene(state, ".json");
     if (button(trf(state.language, "Download the camera preset (%s)###save_download", name.c_str()).c_str()))
-      save_preset_as(state, name, true);
-    record_item_rect(state, "###save_download");
+      save_as(state, panels, name, true);
+    record_item_rect(panels, "###save_download");
   } else {
-    bool save = path_box(tr(state.language, "save as###save_path"), state.save_path);
+    bool save = path_box(tr(state.language, "save as###save_path"), panels.save_path);
     save |= button(tr(state.language, "Save camera preset as…"));
-    if (save) save_preset_as(state, state.save_path, false);
+    if (save) save_as(state, panels, panels.save_path, false);
   }
-  if (!state.overwrite_pending.empty()) {  // asked before replacing a file
+  if (!panels.overwrite_pending.empty()) {  // asked before replacing a file
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", trf(state.language, "%s already exists. Replace it?", state.overwrite_pending.c_str()).c_str());
+    ImGui::TextWrapped("%s", trf(state.language, "%s already exists. Replace it?", panels.overwrite_pending.c_str()).c_str());
     ImGui::PopStyleColor();
-    if (button(tr(state.language, "Replace"))) save_preset_as(state, state.overwrite_pending, true);
+    if (button(tr(state.language, "Replace"))) save_as(state, panels, panels.overwrite_pending, true);
     same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr(state.language, "Cancel"))) state.overwrite_pending.clear();
+    if (button(tr(state.language, "Cancel"))) panels.overwrite_pending.clear();
   }
   if (!downloads)
-    labelled(state, tr(state.language, "export###export"),
-             [&](const char* l) { return ImGui::InputText(l, &state.export_path); });
-  const std::string export_path = downloads ? named_after_scene(state, "-colour-map.png") : state.export_path;
+    labelled(panels, tr(state.language, "export###export"),
+             [&](const char* l) { return ImGui::InputText(l, &panels.export_path); });
+  const std::string export_path = downloads ? named_after_scene(state, "-colour-map.png") : panels.export_path;
   const bool export_png = button(tr(state.language, "Export colour map PNG"));
-  record_item_rect(state, "###export_png");
+  record_item_rect(panels, "###export_png");
   if (export_png) {
     try {
       write_png(state.map, export_path, 1, image_is_bar(state.view) ? 32 : 1);
@@ -730,24 +730,24 @@ void files_section(AppState& state) {
 }
 
 // ---- lecture -------------------------------------------------------------------------------------------
-void lecture_section(AppState& state) {
+void lecture_section(AppState& state, PanelState& panels) {
   const bool open = section(tr(state.language, "Lecture mode###lecture"), tr(state.language, "Lecture###lecture"));
-  record_item_rect(state, "###lecture");
-  const bool scale_changed = state.font_scale != state.font_scale_seen;
-  state.font_scale_seen = state.font_scale;
+  record_item_rect(panels, "###lecture");
+  const bool scale_changed = state.font_scale != panels.font_scale_seen;
+  panels.font_scale_seen = state.font_scale;
   if (!open) return;
   // Everything above the slider grows or shrinks with the text: kept at the panel's middle for the two frames
   // the new size takes to lay out, the slider stays where the instructor's pointer is (it left the view).
-  if (scale_changed) state.font_scale_scroll_frames = 2;
+  if (scale_changed) panels.font_scale_scroll_frames = 2;
   // Applied when the slider is released: the font atlas is rebuilt for each new size, not at every drag step.
-  float& editing = state.font_scale_editing;
+  float& editing = panels.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;
-  labelled(state, tr(state.language, "font scale###font_scale"), [&](const char* l) {
+  labelled(panels, tr(state.language, "font scale###font_scale"), [&](const char* l) {
     return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   });
-  if (state.font_scale_scroll_frames > 0) {
+  if (panels.font_scale_scroll_frames > 0) {
     ImGui::SetScrollHereY(0.5f);
-    --state.font_scale_scroll_frames;
+    --panels.font_scale_scroll_frames;
   }
   if (ImGui::IsItemActive()) {
     editing = scale;
@@ -758,9 +758,9 @@ void lecture_section(AppState& state) {
   checkbox(tr(state.language, "high contrast"), &state.high_contrast);
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
-  choice(state, tr(state.language, "Language / Langue###language"), state.language, kLanguages);
+  choice(state.language, panels, tr(state.language, "Language / Langue###language"), state.language, kLanguages);
   if (button(tr(state.language, "Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
-  record_item_rect(state, "###fullscreen");
+  record_item_rect(panels, "###fullscreen");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Help (F1)"))) state.show_help = !state.show_help;
 }
@@ -781,12 +781,12 @@ bool show_message(AppState& state, MessageSource source) {
   return true;
 }
 
-bool message_shown_this_frame(const AppState& state) {
-  return state.message_shown_frame == state.frame_count;
+bool message_shown_this_frame(const Messages& messages, const HostLink& link) {
+  return messages.message_shown_frame == link.frame_count;
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
-void status_line(AppState& state) {
+void status_line(AppState& state, const PanelState& panels) {
   float room = ImGui::GetContentRegionAvail().x;
   // The page's file picker, at the line's right end in the app's font and language: the browser's own
   // button stays small, and covered the line's text at 1.5× and 2×.
@@ -817,7 +817,7 @@ void status_line(AppState& state) {
                                      trf(state.language, "cast %.2f ms", state.cast_ms)})
     if (ImGui::CalcTextSize(line.c_str()).x > room) line = shorter;
   ImGui::TextUnformatted(line.c_str());
-  record_item_rect(state, "###status_text");
+  record_item_rect(panels, "###status_text");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
     status_counters(state);
@@ -827,7 +827,7 @@ void status_line(AppState& state) {
     const float text_end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x;
     ImGui::SameLine(std::max(text_end + spacing, ImGui::GetWindowContentRegionMax().x - open_width));
     if (ImGui::Button(open_label)) state.requests.ask(HostRequestKind::pick_scene_file);
-    record_item_rect(state, "###open_scene_file");
+    record_item_rect(panels, "###open_scene_file");
     ImGui::PopStyleVar();
   }
 }
@@ -849,14 +849,14 @@ void status_counters(const AppState& state) {
 }
 
 // ---- help ----------------------------------------------------------------------------------------------
-void help_overlay(AppState& state) {
-  if (!state.show_help) return;
+void help_overlay(Display& shown, Language language) {
+  if (!shown.show_help) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos({display.x * 0.5f, display.y * 0.5f}, ImGuiCond_Always, {0.5f, 0.5f});
   // Never wider or taller than the window at any font scale: the descriptions wrap, the list scrolls.
   ImGui::SetNextWindowSize({std::min(display.x * 0.95f, 42.0f * ImGui::GetFontSize()), 0.0f}, ImGuiCond_Always);
   ImGui::SetNextWindowSizeConstraints({0.0f, 0.0f}, {display.x * 0.95f, display.y * 0.95f});
-  if (ImGui::Begin(tr(state.language, "Keyboard and mouse (F1 closes)###help"), &state.show_help,
+  if (ImGui::Begin(tr(language, "Keyboard and mouse (F1 closes)###help"), &shown.show_help,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     // {key, what it does}: two columns, so that the translation never breaks an alignment made of spaces.
     static const std::pair<const char*, const char*> kLines[] = {
@@ -881,9 +881,9 @@ void help_overlay(AppState& state) {
       ImGui::TableSetupColumn("##what", ImGuiTableColumnFlags_WidthStretch);
       for (const auto& [key, what] : kLines) {
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(tr(state.language, key));
+        ImGui::TextUnformatted(tr(language, key));
         ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", tr(state.language, what));
+        ImGui::TextWrapped("%s", tr(language, what));
       }
       ImGui::EndTable();
     }

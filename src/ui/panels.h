@@ -1,5 +1,5 @@
-// The control panel's sections, one function each, as functions of the app state (Dear ImGui style:
-// widgets report "changed", and only then is anything recomputed).
+// The control panel's sections, one function each, as functions of the app state and the panels' own
+// widget state (Dear ImGui style: widgets report "changed", and only then is anything recomputed).
 #pragma once
 
 #include <imgui.h>
@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "app_state.h"
+#include "panel_state.h"
 
 namespace raycam::ui {
 
@@ -22,25 +23,25 @@ bool button(const char* label);
 void wrapped_between_words(const std::string& text);
 bool section(const char* full, const char* brief, int flags = 0);
 
-void camera_section(session::AppState& state);
-void construction_section(session::AppState& state);
+void camera_section(session::AppState& state, const PanelState& panels);
+void construction_section(session::AppState& state, PanelState& panels);
 void inspector_section(const session::AppState& state);
 void mistakes_section(session::AppState& state);
-void caster_section(session::AppState& state);
-void files_section(session::AppState& state);
-void lecture_section(session::AppState& state);
-void status_line(session::AppState& state);
+void caster_section(session::AppState& state, const PanelState& panels);
+void files_section(session::AppState& state, PanelState& panels);
+void lecture_section(session::AppState& state, PanelState& panels);
+void status_line(session::AppState& state, const PanelState& panels);
 // The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
 void status_counters(const session::AppState& state);
 // Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).
 bool show_message(session::AppState& state, session::MessageSource source);
 // Did a section show the message this frame? If not, the frame shows it above the status line.
-bool message_shown_this_frame(const session::AppState& state);
+bool message_shown_this_frame(const session::Messages& messages, const session::HostLink& link);
 // Is a text field (or a slider typed into with ctrl+click) being edited now?
 bool editing_text();
 // Takes Tab away from ImGui's focus cycling (call before ImGui::NewFrame, after the backend set its keys).
 void take_tab_key();
-void help_overlay(session::AppState& state);
+void help_overlay(session::Display& shown, Language language);
 // Tab (always: 2D/3D), then, unless a text field is being edited: arrow keys, +/-, [ ], PgUp/PgDn, Esc
 // (F1/F11/F12 come from the executable).
 void handle_shortcuts(session::AppState& state);

@@ -127,7 +127,7 @@ ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_ma
 void tick() {
   // A scene opening in steps (scene_loading.h) keeps the frames coming: each step is announced by a frame.
   if (scene_loading_step(*page.state)) page.host->note_event();
-  if (!page.host->wants_frame(*page.state)) return;  // asleep until an event
+  if (!page.host->wants_frame(*page.state, page.frame->panels())) return;  // asleep until an event
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
   page.host->frame_drawn();
@@ -158,6 +158,7 @@ void tick() {
 session::AppState& page_state() { return *page.state; }
 const ui::FrameLayout& page_layout() { return last_layout; }
 session::CameraCheck& page_check() { return page.frame->check(); }
+const ui::PanelState& page_panels() { return page.frame->panels(); }
 void wake_page() { page.host->note_event(); }
 
 void WebHost::woken() {
@@ -166,8 +167,8 @@ void WebHost::woken() {
   emscripten_resume_main_loop();
 }
 
-bool WebHost::wants_frame(const session::AppState& state) {
-  if (has_work(state)) {
+bool WebHost::wants_frame(const session::AppState& state, const ui::PanelState& panels) {
+  if (has_work(state, panels)) {
     spend_settle_frame();
     return true;
   }
@@ -196,7 +197,7 @@ void WebHost::frame_started() {
   if (io.MousePos.x > -FLT_MAX / 2) io.MousePos = ImVec2(io.MousePos.x / pixel_ratio_, io.MousePos.y / pixel_ratio_);
 }
 
-void run_page(session::AppState& state) {
+void run_page(session::AppState& state, const ui::PanelState& panels) {
   state.host = session::kPageHost;  // what the panels offer: the picker, answer files, no program to run
   if (!glfwInit()) {
     std::fprintf(stderr, "raycam: cannot start GLFW in this page\n");
@@ -223,6 +224,7 @@ void run_page(session::AppState& state) {
   host.start_imgui();
   install_scene_reader();  // the picker's and the drop's files read in slices, with progress
   static ui::FrameRenderer frame;
+  frame.panels() = panels;
   page.frame = &frame;
   emscripten_set_main_loop(tick, 0, false);
 }

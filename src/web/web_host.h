@@ -21,7 +21,7 @@ class WebHost : public app::GlfwHostBase {
   void present() override {}  // the browser shows the canvas when the animation frame returns
 
   // True when this animation frame has something to draw; false puts the loop to sleep until an event.
-  bool wants_frame(const session::AppState& state);
+  bool wants_frame(const session::AppState& state, const ui::PanelState& panels);
   // After a frame drawn: ImGui read the keys; the changes held since go to it for the next frame.
   void frame_drawn() { forward_held_keys(); }
 
@@ -39,13 +39,14 @@ class WebHost : public app::GlfwHostBase {
 };
 
 // Creates the canvas's context and ImGui, then hands the loop to the browser (never returns to main's
-// caller in the usual sense: emscripten keeps the runtime alive).
-void run_page(session::AppState& state);
+// caller in the usual sense: emscripten keeps the runtime alive). The frame starts with `panels`.
+void run_page(session::AppState& state, const ui::PanelState& panels);
 
 // The page's state, for the functions JavaScript calls (web_main.cpp).
 session::AppState& page_state();
 const ui::FrameLayout& page_layout();  // the last frame drawn: where things were, what the tables showed
 session::CameraCheck& page_check();
+const ui::PanelState& page_panels();  // the frame's panel state (the tests' widget_rects hook)
 void wake_page();
 
 }  // namespace raycam::web

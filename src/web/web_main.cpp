@@ -167,9 +167,9 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   };
   rect("image", layout.image.x, layout.image.y, layout.image.w, layout.image.h);
   rect("overhead", layout.overhead.x, layout.overhead.y, layout.overhead.w, layout.overhead.h);
-  if (state.widget_rects) {
+  if (const raycam::ui::WidgetRects* widgets = raycam::web::page_panels().widget_rects) {
     json += "\"widgets\": {";
-    for (const auto& [id, r] : *state.widget_rects) rect(id.c_str(), r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+    for (const auto& [id, r] : *widgets) rect(id.c_str(), r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
     json += "\"end\": 0}, ";
   }
   const raycam::session::CameraCheck& check = raycam::web::page_check();
@@ -205,7 +205,8 @@ EMSCRIPTEN_KEEPALIVE void raycam_download_case() {
 // Save as under `path`, as a desktop Save as asks (never replacing without asking): in the page the file
 // becomes a download, and a name saved twice downloads twice (the browser keeps both). For the browser tests.
 EMSCRIPTEN_KEEPALIVE int raycam_save_as(const char* path) {
-  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, false);
+  const bool saved = raycam::session::save_preset_as(raycam::web::page_state(), path, false) ==
+                     raycam::session::SaveAsOutcome::saved;
   raycam::web::wake_page();
   return saved ? 1 : 0;
 }
@@ -249,8 +250,9 @@ int main() {
     options.view.scene_path.reset();
     state = raycam::session::make_app_state(options);
   }
-  static std::map<std::string, raycam::session::WidgetRect> widget_rects;  // where the sliders are: the tests' hook
-  state.widget_rects = &widget_rects;
+  raycam::ui::PanelState panels = raycam::ui::panel_state_for(options, state);
+  static raycam::ui::WidgetRects widget_rects;  // where the sliders are: the tests' hook
+  panels.widget_rects = &widget_rects;
   // A ?scene= that did not open is named as the student named it (NAME, not the page's /scenes/NAME).
   state.message = raycam::session::with_file_shown(raycam::session::kPageHost, state.message,
                                                    options.view.scene_path.value_or(""));
@@ -259,5 +261,5 @@ int main() {
     state.message = raycam::ui::tr_reason(state.language, error);
     state.message_is_error = true;
   }
-  raycam::web::run_page(state);
+  raycam::web::run_page(state, panels);
 }

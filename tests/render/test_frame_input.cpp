@@ -83,12 +83,11 @@ ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
   return {(r.first.x + r.second.x) / 2, (r.first.y + r.second.y) / 2};
 }
 
-// Where the panels drew the labelled widget "###id" (state.widget_rects, the panels' test hook).
-std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const session::AppState& state, const std::string& id) {
-  if (!state.widget_rects) return std::nullopt;
-  const auto found = state.widget_rects->find(id);
-  if (found == state.widget_rects->end()) return std::nullopt;
-  const session::WidgetRect& r = found->second;
+// Where the panels drew the labelled widget "###id" (the panels' test hook, PanelState::widget_rects).
+std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const ui::WidgetRects& rects, const std::string& id) {
+  const auto found = rects.find(id);
+  if (found == rects.end()) return std::nullopt;
+  const ui::WidgetRect& r = found->second;
   return std::pair<ImVec2, ImVec2>{{r.x0, r.y0}, {r.x1, r.y1}};
 }
 }  // namespace
@@ -98,13 +97,13 @@ TEST_CASE("the page's host offers its file picker at the status line's end, the 
   for (const bool page : {false, true}) {
     session::AppState state = state_for({"--size", "64x64"});
     state.host = page ? session::kPageHost : session::kDesktopHost;
-    std::map<std::string, session::WidgetRect> rects;
-    state.widget_rects = &rects;
+    ui::WidgetRects rects;
     headless::HeadlessRenderer renderer(1280, 720);
+    renderer.panels().widget_rects = &rects;
     renderer.render_settled(state);
-    const auto open = widget_rect(state, "###open_scene_file");
+    const auto open = widget_rect(rects, "###open_scene_file");
     CHECK(open.has_value() == page);
-    const auto status = widget_rect(state, "###status_text");
+    const auto status = widget_rect(rects, "###status_text");
     REQUIRE(status);
     if (open) CHECK(open->first.x >= status->second.x);  // after the text, never over it
   }
@@ -113,11 +112,11 @@ TEST_CASE("the page's host offers its file picker at the status line's end, the 
 TEST_CASE("a slider dragged with the mouse: image and M_d table match the core in that very frame",
           "[render][input][same-frame]") {
   session::AppState state = state_for({"--size", "64x64"});
-  std::map<std::string, session::WidgetRect> rects;
-  state.widget_rects = &rects;
+  ui::WidgetRects rects;
   headless::HeadlessRenderer renderer(1280, 720);
+  renderer.panels().widget_rects = &rects;
   renderer.render_settled(state);
-  const auto theta = widget_rect(state, "###theta");
+  const auto theta = widget_rect(rects, "###theta");
   REQUIRE(theta);
   const float y = centre(*theta).y;
   const double before = view3d(state).orbit.theta;
@@ -178,9 +177,9 @@ TEST_CASE(
     "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
     "[render][input][keyboard]") {
   session::AppState state = state_for({});
-  std::map<std::string, session::WidgetRect> rects;
-  state.widget_rects = &rects;
+  ui::WidgetRects rects;
   headless::HeadlessRenderer renderer(1280, 720);
+  renderer.panels().widget_rects = &rects;
   renderer.render_settled(state);
   CHECK(state.window_title == "raycam — 3D — demo scene");
   for (int dimension : {2, 3, 2, 3}) {
@@ -194,7 +193,7 @@ TEST_CASE(
   tap(renderer, state, ImGuiKey_RightArrow);
   CHECK(view3d(state).orbit.theta == Approx(theta + glm::radians(5.0)));
   // Ctrl+click the d slider: it becomes a text field; arrows and + then edit the text, not the camera.
-  const auto d_slider = widget_rect(state, "###d");
+  const auto d_slider = widget_rect(rects, "###d");
   REQUIRE(d_slider);
   ctrl_click(renderer, state, centre(*d_slider));
   REQUIRE(ui::editing_text());
@@ -273,10 +272,10 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
       for (const char* view : {"3d", "2d"})
         for (const float scale : {1.0f, 1.5f, 2.0f, 3.0f}) {
           session::AppState state = state_for({"--view", view, "--lang", language});
-          std::map<std::string, session::WidgetRect> rects;
-          state.widget_rects = &rects;
+          ui::WidgetRects rects;
           state.font_scale = scale;
           headless::HeadlessRenderer renderer(width, height);
+          renderer.panels().widget_rects = &rects;
           renderer.render_settled(state);
           const ui::FrameLayout& layout = renderer.layout();
           INFO(width << "×" << height << " " << language << " " << view << " at " << scale << "×");
@@ -291,7 +290,7 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
           CHECK(layout.status.x + layout.status.w <= width + 0.5f);
           // Every labelled widget of the panel lies inside the panel (its label beside it or above it).
           for (const char* id : {"###df", "###d", "###theta", "###res", "###target"}) {
-            const auto rect = widget_rect(state, id);
+            const auto rect = widget_rect(rects, id);
             REQUIRE(rect);
             CHECK(rect->second.x <= layout.panel.x + layout.panel.w);
           }
@@ -299,15 +298,15 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
           // by side, or one a line.
           const int fields = std::string(view) == "3d" ? 3 : 2;
           const float coordinate = ImGui::CalcTextSize("-10.00").x;
-          if (const auto first = widget_rect(state, "###target0")) {
+          if (const auto first = widget_rect(rects, "###target0")) {
             for (int i = 0; i < fields; ++i) {
-              const auto field = widget_rect(state, "###target" + std::to_string(i));
+              const auto field = widget_rect(rects, "###target" + std::to_string(i));
               REQUIRE(field);
               CHECK(field->second.x - field->first.x >= coordinate);
               CHECK(field->second.x <= layout.panel.x + layout.panel.w);
             }
           } else {
-            const auto target = widget_rect(state, "###target");
+            const auto target = widget_rect(rects, "###target");
             CHECK(target->second.x - target->first.x >= fields * coordinate);
           }
         }
@@ -315,16 +314,16 @@ TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the win
 
 TEST_CASE("lecture mode: after a change of font scale its slider is still in view", "[render][lecture]") {
   session::AppState state = state_for({"--view", "3d", "--lang", "fr"});
-  std::map<std::string, session::WidgetRect> rects;
-  state.widget_rects = &rects;
+  ui::WidgetRects rects;
   headless::HeadlessRenderer renderer(1024, 768);
+  renderer.panels().widget_rects = &rects;
   renderer.render_settled(state);
   ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
   REQUIRE(panel);
   panel->StateStorage.SetInt(panel->GetID("###lecture"), 1);  // Lecture mode opened
   renderer.render_settled(state);
   const auto in_view = [&] {
-    const auto slider = widget_rect(state, "###font_scale");
+    const auto slider = widget_rect(rects, "###font_scale");
     REQUIRE(slider);
     INFO("slider from y = " << slider->first.y << " to " << slider->second.y << ", panel " << panel->InnerRect.Min.y
                             << " to " << panel->InnerRect.Max.y);

@@ -193,7 +193,7 @@ TEST_CASE("the overhead view draws each ray to the hit the caster found, mistake
   const ui::OverheadMapping& m = shot.layout.overhead_mapping;
   int hits = 0;
   for (int column = 0; column < shot.state.map.width; ++column) {
-    const session::InspectedRay ray = session::inspect_pixel(shot.state, {0, column});
+    const session::InspectedRay ray = session::inspect_pixel(shot.state, shot.state, {0, column});
     if (ray.hit.id < 0) continue;
     ++hits;
     const Rgb8 c = view2d(shot.state).scene.circles[std::size_t(ray.hit.id)].colour;

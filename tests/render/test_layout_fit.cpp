@@ -135,12 +135,12 @@ std::vector<std::string> cut_image_title(const ui::FrameLayout& layout) {
 
 // Combos whose shown choice is wider than the combo leaves it beside its arrow ("stable (Ray Tra" at 3×):
 // the panel records each combo's rectangle and its preview's width (the panels' test hook).
-std::vector<std::string> cut_combos(const std::map<std::string, session::WidgetRect>& rects) {
+std::vector<std::string> cut_combos(const ui::WidgetRects& rects) {
   std::vector<std::string> cut;
   for (const auto& [id, preview] : rects) {
     const std::size_t slash = id.find("/preview");
     if (slash == std::string::npos) continue;
-    const session::WidgetRect& combo = rects.at(id.substr(0, slash));
+    const ui::WidgetRect& combo = rects.at(id.substr(0, slash));
     const float room = combo.x1 - combo.x0 - ImGui::GetFrameHeight() - 2 * GImGui->Style.FramePadding.x;
     if (preview.x1 > room + 1.0f) cut.push_back("combo '" + id.substr(0, slash) + "' shows its choice cut");
   }
@@ -175,9 +175,9 @@ TEST_CASE("at 1x to 3x on 1024x768 to 1920x1080, in both languages, no window's 
           state.font_scale = scale;
           session::show_mistake(state, *session::find_lesson("pixel_edges"));
           if (std::string(view) == "3d") state.res_rows = 0.5;  // non-square: the res_c and res_l sliders
-          std::map<std::string, session::WidgetRect> rects;
-          state.widget_rects = &rects;
+          ui::WidgetRects rects;
           headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.panels().widget_rects = &rects;
           renderer.run_frame(state);
           open_every_section();
           renderer.render_settled(state, 4);
@@ -241,7 +241,7 @@ void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& stat
   do {
     renderer.run_frame(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  } while ((++frames < 30 || ui::frame_needs_redraw(state)) && std::chrono::steady_clock::now() < deadline);
+  } while ((++frames < 30 || ui::frame_needs_redraw(state, renderer.panels())) && std::chrono::steady_clock::now() < deadline);
 }
 }  // namespace
 
@@ -261,8 +261,8 @@ TEST_CASE("the picture keeps its size whatever its header says and the check's v
             session::show_mistake(state, *session::find_lesson(mistake));
             state.mistakes.mirrored = true;  // two names: the longest header
           }
-          state.check_command = program;
           headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.panels().check_command = program;
           renderer.run_frame(state);
           open_every_section();
           if (program.empty()) renderer.render_settled(state, 4);
@@ -308,8 +308,8 @@ TEST_CASE("a verdict arriving while the mouse is over the panel waits for it to 
   const std::string mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
   session::AppState state = lecture_state("3d", "fr");
   state.font_scale = 3.0f;
-  state.check_command = mistaken;
   headless::HeadlessRenderer renderer(1280, 800);
+  renderer.panels().check_command = mistaken;
   renderer.run_frame(state);
   open_every_section();
   const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");

@@ -22,7 +22,7 @@ namespace {
 struct Box {
   float x0, y0, x1, y1;
 };
-Box box_of(const session::WidgetRect& r) { return {r.x0, r.y0, r.x1, r.y1}; }
+Box box_of(const ui::WidgetRect& r) { return {r.x0, r.y0, r.x1, r.y1}; }
 
 // The distance from a point to a box (0 inside).
 double distance(ImVec2 p, const Box& b) {
@@ -34,7 +34,7 @@ bool overlap(const Box& a, const Box& b) { return a.x0 < b.x1 && b.x0 < a.x1 && 
 
 // Everything wrong with the two labels of one drawn frame, as lines of text (empty: all true).
 std::string label_faults(const session::AppState& state, const ui::FrameLayout& layout,
-                         const std::map<std::string, session::WidgetRect>& rects) {
+                         const ui::WidgetRects& rects) {
   std::string faults;
   const auto fault = [&](const std::string& what) { faults += "\n    " + what; };
   const auto k0 = rects.find("###label_k0"), column0 = rects.find("###label_column0");
@@ -96,9 +96,9 @@ TEST_CASE("the 2D overhead labels sit beside the ends they name, off the discs a
           state.font_scale = scale;
           if (name.rfind("show me ", 0) == 0) session::show_mistake(state, *session::find_lesson(name.substr(8).c_str()));
           if (session::dimension(state) != 2) continue;  // a show-me that goes to 3D
-          std::map<std::string, session::WidgetRect> rects;
-          state.widget_rects = &rects;
+          ui::WidgetRects rects;
           headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.panels().widget_rects = &rects;
           renderer.render_settled(state, 2);
           const gl::RgbaImage image = renderer.render_settled(state, 2);
           const std::string found = label_faults(state, renderer.layout(), rects);

@@ -27,7 +27,7 @@ void settle(CameraCheck& check, const AppState& state, double& now) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   do {
     now += 0.1;
-    check.update(state, now);
+    check.update(state, state, now);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   } while (!check.up_to_date() && std::chrono::steady_clock::now() < deadline);
 }
@@ -38,11 +38,11 @@ TEST_CASE("Check my camera grades the current camera in the background and names
   AppState state = classic_2d();
   double now = 0;
   CameraCheck check;
-  check.update(state, now);  // no command: nothing runs
+  check.update(state, state, now);  // no command: nothing runs
   CHECK_FALSE(check.busy());
 
   check.set_command(EXAMPLE_STUDENT_CPP, false);
-  check.update(state, now);
+  check.update(state, state, now);
   CHECK_FALSE(check.busy());  // waits for the quiet time first
   settle(check, state, now);
   CHECK(check.status() == "pass");
@@ -66,9 +66,9 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CameraCheck check;
   check.set_command(std::string("python3 ") + MISBEHAVING_PY + " hang", false);
   const auto start = std::chrono::steady_clock::now();
-  for (double now = 0; now < 1.0; now += 0.05) check.update(state, now);  // 20 frames past the quiet time
+  for (double now = 0; now < 1.0; now += 0.05) check.update(state, state, now);  // 20 frames past the quiet time
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  for (double now = 1.0; now < 2.0; now += 0.05) check.update(state, now);
+  for (double now = 1.0; now < 2.0; now += 0.05) check.update(state, state, now);
   const double frames_took = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   CHECK(check.busy());       // still running (its timeout is 10 s)
   CHECK(frames_took < 2.0);  // 40 frames, none waited for it
@@ -90,8 +90,8 @@ TEST_CASE("a host without a thread to spare (the page) has the verdict in the fr
     CameraCheck check;
     check.set_command(answer, true);
     check.request().check_now = true;  // the page grades an answer when given, never by itself
-    check.update(state, 0.0);
-    check.update(state, 10.0);
+    check.update(state, state, 0.0);
+    check.update(state, state, 10.0);
     if (in_background) {
       double now = 10.0;
       settle(check, state, now);  // a worker's verdict arrives later
@@ -158,14 +158,14 @@ TEST_CASE("the page grades an answer for the case downloaded, greyed as an earli
   view2d(state).orbit.theta += 0.3;  // the student moved before giving the answer
   place_cameras(state);
   check.give_answer(answer);
-  check.update(state, 1.0);
+  check.update(state, state, 1.0);
   // Graded for the case it answers (a pass), shown as an earlier camera's: no header over this image.
   CHECK(check.status() == "pass");
   CHECK(check.verdict_state() == VerdictState::for_earlier_camera);
   CHECK(check_header(Language::en, check.progress()).forms.empty());
   view2d(state).orbit.theta = theta;  // back to the case's camera: the verdict is this image's again
   place_cameras(state);
-  check.update(state, 2.0);
+  check.update(state, state, 2.0);
   CHECK(check.verdict_state() == VerdictState::for_camera_shown);
   check.clear();  // the clear button
   CHECK(check.verdict_state() == VerdictState::no_answer);
@@ -188,7 +188,7 @@ TEST_CASE("the page never re-grades an answer against a camera it was not made f
     CHECK(check.verdict_state() == VerdictState::for_camera_shown);
     view2d(state).orbit.theta += 0.3;  // one arrow key
     place_cameras(state);
-    for (int frame = 0; frame < 20; ++frame) check.update(state, now += 0.1);  // well past the quiet time
+    for (int frame = 0; frame < 20; ++frame) check.update(state, state, now += 0.1);  // well past the quiet time
     if (page) {  // the page keeps the verdict, greyed: a red fail would blame the program for the move
       CHECK(check.status() == "pass");
       CHECK(check.verdict_state() == VerdictState::for_earlier_camera);

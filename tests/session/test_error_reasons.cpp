@@ -207,19 +207,19 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   options.language = Language::en;
   const session::AppState app = session::make_app_state(options);
   const std::string svg = scratch.path("no-such-folder/figure.svg");
-  add(thrown_by([&] { session::export_construction_figure(app, svg, false); }), {svg, scratch.path("no-such-folder")});
+  add(thrown_by([&] { session::export_construction_figure(app, {}, svg, false); }), {svg, scratch.path("no-such-folder")});
   // A figure is written under a temporary name (figure_files.h) made to open /dev/full: every write fails.
   for (const char* name : {"full.png", "full.svg"}) {
     const std::string full = scratch.path(name);
     fs::create_symlink("/dev/full", full + ".part" + std::to_string(::getpid()));
-    const std::string reason = thrown_by([&] { session::export_construction_figure(app, full, false); });
+    const std::string reason = thrown_by([&] { session::export_construction_figure(app, {}, full, false); });
     if (reason.find('(') == std::string::npos) add(reason, {full});
     else add(reason, {full, reason.substr(reason.rfind('(') + 1)});  // the drawing library's reason, as it is
   }
   // A PNG whose temporary name is taken by a folder cannot even be opened.
   const std::string blocked = scratch.path("blocked.png");
   fs::create_directories(blocked + ".part" + std::to_string(::getpid()));
-  add(thrown_by([&] { session::export_construction_figure(app, blocked, false); }), {blocked});
+  add(thrown_by([&] { session::export_construction_figure(app, {}, blocked, false); }), {blocked});
 
   // ---- io: the scene file against the command line's flags ----
   const std::string scene3d = scratch.path("three.json");

@@ -34,34 +34,34 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
 
   state.language = ui::Language::fr;
   state.construction_step = 1;  // the second frame: (b)
-  auto files = session::export_construction_figure(state, scratch.path("b.pdf"), false);
+  auto files = session::export_construction_figure(state, {}, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
   std::string text = pdf_text(files[0]);
   CHECK(text.find("cadre (b)") != std::string::npos);
   CHECK(text.find("cadre (a)") == std::string::npos);
 
   state.construction_step = -1;  // M_d itself: frame (d)
-  CHECK(pdf_text(session::export_construction_figure(state, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
+  CHECK(pdf_text(session::export_construction_figure(state, {}, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
   state.language = ui::Language::en;
-  files = session::export_construction_figure(state, scratch.path("all.pdf"), true);
+  files = session::export_construction_figure(state, {}, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
   for (const char* title : {"frame (a)", "frame (b)", "frame (c)", "frame (d)"})
     CHECK(text.find(title) != std::string::npos);
 
-  files = session::export_construction_figure(state, scratch.path("all.svg"), true);
+  files = session::export_construction_figure(state, {}, scratch.path("all.svg"), true);
   CHECK(files.size() == 4);
   for (const std::string& file : files) CHECK(std::filesystem::file_size(file) > 1000);
 
-  CHECK_THROWS_AS(session::export_construction_figure(state, scratch.path("figure.gif"), false), std::invalid_argument);
+  CHECK_THROWS_AS(session::export_construction_figure(state, {}, scratch.path("figure.gif"), false), std::invalid_argument);
 }
 
 TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-3d");
   session::AppState state = test::state_for({"--view", "3d"});
-  const auto files = session::export_construction_figure(state, scratch.path("steps.png"), true);
+  const auto files = session::export_construction_figure(state, {}, scratch.path("steps.png"), true);
   REQUIRE(files.size() == 6);
   CHECK(files.back() == scratch.path("steps-5.png"));
 }
@@ -76,13 +76,14 @@ TEST_CASE("Export figure draws the matrix on screen, with the panel's format, ra
   CHECK(session::figure_format_of("a.png") == 2);
 
   state.construction_step = 1;  // on screen: construction_step(1) = H(1, d_f)
-  state.figure_rays = 3;
+  session::FigureContent content;  // the panel's rays and matrix choice
+  content.rays = 3;
   const std::string path = scratch.path("sub/../step.tex");
   std::filesystem::create_directories(scratch.path("sub"));
-  CHECK(session::existing_figure_files(state, path, false).empty());
-  const auto files = session::export_construction_figure(state, path, false);
+  CHECK(session::existing_figure_files(state, content, path, false).empty());
+  const auto files = session::export_construction_figure(state, content, path, false);
   REQUIRE(files == std::vector<std::string>{scratch.path("step.tex")});  // the full path, normalised
-  CHECK(session::existing_figure_files(state, path, false) == files);
+  CHECK(session::existing_figure_files(state, content, path, false) == files);
   std::ifstream in(files[0]);
   const std::string tex((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK(tex.find("frame (b)") != std::string::npos);
@@ -94,8 +95,8 @@ TEST_CASE("Export figure draws the matrix on screen, with the panel's format, ra
   std::size_t rays = 0;
   for (std::size_t at = 0; (at = tex.find("\\draw[ray]", at)) != std::string::npos; ++at) ++rays;
   CHECK(rays == 3);
-  state.figure_matrix = false;
-  CHECK(session::export_construction_figure(state, path, false) == files);
+  content.matrix = false;
+  CHECK(session::export_construction_figure(state, content, path, false) == files);
   std::ifstream again(files[0]);
   const std::string without((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
   CHECK(without.find("pmatrix") == std::string::npos);
@@ -112,7 +113,7 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
   for (const ui::Language language : {ui::Language::en, ui::Language::fr}) {
     state.language = language;
     // A relative name is written in the working folder: the message says which, in full.
-    const auto one = session::export_construction_figure(state, "raycam-figure.svg", false);
+    const auto one = session::export_construction_figure(state, {}, "raycam-figure.svg", false);
     REQUIRE(one.size() == 1);
     const std::string folder = std::filesystem::canonical(scratch.path(".")).string();
     const std::string said = session::figure_files_message(language, one);
@@ -120,7 +121,7 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
     CHECK(said.find(folder + "/raycam-figure.svg") != std::string::npos);
     // Six files: one full path that spans them, not six paths (at 3× a message above the status line that
     // long covered half the views).
-    const auto six = session::export_construction_figure(state, "steps.svg", true);
+    const auto six = session::export_construction_figure(state, {}, "steps.svg", true);
     REQUIRE(six == (std::vector<std::string>{folder + "/steps-0.svg", folder + "/steps-1.svg", folder + "/steps-2.svg",
                                              folder + "/steps-3.svg", folder + "/steps-4.svg", folder + "/steps-5.svg"}));
     const std::string brief = session::figure_files_message(language, six);
@@ -129,7 +130,7 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
     CHECK(brief.find(folder + "/steps-0…5.svg") != std::string::npos);
     CHECK(brief.size() < folder.size() + 40);  // one path and a few words
     // The question before replacing them says as much, as briefly.
-    const std::string question = session::figure_replace_question(language, session::existing_figure_files(state, "steps.svg", true));
+    const std::string question = session::figure_replace_question(language, session::existing_figure_files(state, {}, "steps.svg", true));
     INFO(question);
     CHECK(question.find(folder + "/steps-0…5.svg") != std::string::npos);
     CHECK(question.size() < folder.size() + 70);
@@ -141,7 +142,7 @@ TEST_CASE("Export figure names the demo's objects in the window's language", "[u
   session::AppState state = test::state_for({"--view", "2d"});
   const auto tex_of = [&](ui::Language language) {
     state.language = language;
-    const auto files = session::export_construction_figure(state, scratch.path("names.tex"), false);
+    const auto files = session::export_construction_figure(state, {}, scratch.path("names.tex"), false);
     std::ifstream in(files.at(0));
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   };

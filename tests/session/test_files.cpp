@@ -1,5 +1,5 @@
-// Files are safe: Open and Save as have their own paths, replacing a file needs a yes, a failed open
-// changes nothing but the message, saved scenes stay readable, screenshots never overwrite each other, and
+// Files are safe: replacing a file needs a yes, a failed open changes nothing but the message (the panels'
+// own boxes and questions: tests/ui/test_panel_state.cpp), saved scenes stay readable, screenshots never overwrite each other, and
 // a scene that cannot be opened at startup gives the demo scene and an error naming it.
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -44,50 +44,46 @@ TEST_CASE("Open with an empty box says what to type, and changes nothing else", 
   CHECK(state.window_title == title);
 }
 
-TEST_CASE("a failed open leaves the scene and the camera as they were, keeps the typed path, and says why",
-          "[ui][files]") {
+TEST_CASE("a failed open leaves the scene and the camera as they were, and says why", "[ui][files]") {
   Scratch scratch;
   const std::string good = (scratch.dir / "good.json").string();
   session::AppState state = state_for({"--theta", "40"});
   REQUIRE(session::save_preset(state, good));
+  const std::uint64_t opens = state.scene_opens;
   REQUIRE(session::open_scene(state, good));
-  CHECK(state.path_input == good);
+  CHECK(state.scene_opens == opens + 1);  // the panels follow it (the Open box shows the file)
   view3d(state).orbit.theta = 1.25;  // the student moved the camera since
   const auto spheres = view3d(state).scene.spheres.size();
   const std::string missing = (scratch.dir / "typo.json").string();
-  state.path_input = missing;  // typed in the box
   CHECK_FALSE(session::open_scene(state, missing));
+  CHECK(state.scene_opens == opens + 1);  // not counted: the Open box keeps what was typed
   CHECK(state.message_is_error);
   CHECK(state.message_source == session::MessageSource::files);
   CHECK_THAT(state.message, Catch::Contains("typo.json"));
   CHECK(view3d(state).scene.spheres.size() == spheres);
   CHECK(view3d(state).orbit.theta == 1.25);
   CHECK(scene_path(state) == good);
-  CHECK(state.path_input == missing);  // the box keeps the typo, to be fixed in place
 }
 
-TEST_CASE("Save as never writes over a file without a yes, and never defaults to the opened file",
-          "[ui][files]") {
+TEST_CASE("Save as never writes over a file without a yes", "[ui][files]") {
   Scratch scratch;
   const std::string opened = (scratch.dir / "lesson.json").string();
   session::AppState state = state_for({});
   REQUIRE(session::save_preset(state, opened));
   REQUIRE(session::open_scene(state, opened));
-  CHECK(state.save_path.empty());  // Save as starts empty after an open
   const std::string before = read(opened);
   view3d(state).orbit.d = 3.5;
-  CHECK_FALSE(session::save_preset_as(state, opened, false));  // exists: asks
-  CHECK(state.overwrite_pending == opened);
+  using session::SaveAsOutcome;
+  CHECK(session::save_preset_as(state, opened, false) == SaveAsOutcome::needs_yes);  // exists: the panel asks
   CHECK(read(opened) == before);                   // nothing written yet
-  CHECK(session::save_preset_as(state, opened, true));  // the user said yes
-  CHECK(state.overwrite_pending.empty());
+  CHECK(session::save_preset_as(state, opened, true) == SaveAsOutcome::saved);  // the user said yes
   CHECK(read(opened) != before);
   CHECK_THAT(state.message, Catch::Contains(opened));
   CHECK_FALSE(state.message_is_error);
   const std::string fresh = (scratch.dir / "new.json").string();
-  CHECK(session::save_preset_as(state, fresh, false));  // a new file needs no question
+  CHECK(session::save_preset_as(state, fresh, false) == SaveAsOutcome::saved);  // a new file needs no question
   CHECK(fs::exists(fresh));
-  CHECK_FALSE(session::save_preset_as(state, "", false));
+  CHECK(session::save_preset_as(state, "", false) == SaveAsOutcome::failed);
   CHECK(state.message_is_error);
 }
 
@@ -99,10 +95,7 @@ TEST_CASE("Open resets every field that belonged to the scene on screen before",
   const Orbit3D saved = session::view3d(state).orbit;
   REQUIRE(session::save_preset(state, first));
   REQUIRE(session::open_scene(state, first));
-  // Everything a user can have left behind on the first scene.
-  state.save_path = (scratch.dir / "typed-for-first.json").string();  // typed in Save as, not saved yet
-  state.overwrite_pending = first;                                     // a Replace question not answered
-  state.path_input = (scratch.dir / "half-typed").string();
+  // Everything a user can have left behind on the first scene (the panels' boxes: tests/ui).
   state.pinned_pixel = session::PixelIndex{3, 4};
   state.construction_step = 2;
   state.mistake_look_at = "the colour bar";  // a "show me" on the first scene
@@ -117,9 +110,6 @@ TEST_CASE("Open resets every field that belonged to the scene on screen before",
   const std::uint64_t version = state.scene_version;
 
   REQUIRE(session::open_scene(state, second));
-  CHECK(state.save_path.empty());          // Save as never offers the old scene's path
-  CHECK(state.overwrite_pending.empty());  // nor its pending Replace
-  CHECK(state.path_input == second);
   CHECK(session::scene_path(state) == second);
   CHECK(std::visit([](const auto& other) { return other.scene_path.empty(); }, state.other_view));  // the other kind's scene is the demo again
   CHECK_FALSE(state.pinned_pixel);
@@ -137,24 +127,6 @@ TEST_CASE("Open resets every field that belonged to the scene on screen before",
   CHECK(state.message_source == session::MessageSource::files);
   session::recast_if_needed(state);
   CHECK_FALSE(state.pinned_pixel);  // no pin comes back on the new image
-}
-
-TEST_CASE("Replace writes the file the prompt names, as the panel's button calls it", "[ui][files]") {
-  Scratch scratch;
-  const std::string path = (scratch.dir / "lesson.json").string();
-  session::AppState state = state_for({});
-  REQUIRE(session::save_preset(state, path));
-  const std::string before = read(path);
-  view3d(state).orbit.d = 3.5;
-  state.save_path = path;
-  CHECK_FALSE(session::save_preset_as(state, state.save_path, false));  // "… already exists. Replace it?"
-  REQUIRE(state.overwrite_pending == path);
-  // The Replace button hands the pending path itself (a reference to the state's own string).
-  CHECK(session::save_preset_as(state, state.overwrite_pending, true));
-  CHECK_FALSE(state.message_is_error);
-  CHECK(read(path) != before);
-  CHECK(session::open_scene(state, path));
-  CHECK(view3d(state).orbit.d == 3.5);
 }
 
 TEST_CASE("a save that fails leaves the old file as it was and names the path typed", "[ui][files]") {

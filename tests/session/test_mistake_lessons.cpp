@@ -109,11 +109,11 @@ TEST_CASE("forgetting to renormalise does what the panel says, with both formula
       for (int id : right) right_hits += id == 0;
       if (formula == IntersectFormula::naive) {
         CHECK(hits > right_hits);
-        CHECK_THAT(session::mistake_text(state, *session::find_lesson("skip_renormalise")), Catch::Contains("swells"));
+        CHECK_THAT(session::mistake_text(state, state, *session::find_lesson("skip_renormalise")), Catch::Contains("swells"));
       } else {
         CHECK(hits <= right_hits);
         if (df > 1.0) CHECK(hits == 0);
-        CHECK_THAT(session::mistake_text(state, *session::find_lesson("skip_renormalise")), Catch::Contains("background"));
+        CHECK_THAT(session::mistake_text(state, state, *session::find_lesson("skip_renormalise")), Catch::Contains("background"));
       }
     }
 }
@@ -124,7 +124,7 @@ TEST_CASE("the views draw the caster's hits, mistakes included", "[ui][mistakes]
       session::AppState state = state_for({"--view", view, "--mistake", "no-renormalise", "--intersect", intersect,
                                       "--size", view == std::string("2d") ? "64" : "64x64"});
       ids_now(state);
-      const std::vector<session::InspectedRay> fan = session::primary_ray_fan(state, 1000);
+      const std::vector<session::InspectedRay> fan = session::primary_ray_fan(state, state, 1000);
       REQUIRE(fan.size() == std::size_t(state.map.width));
       int hits = 0;
       for (const session::InspectedRay& ray : fan) {
@@ -150,7 +150,7 @@ TEST_CASE("with unit rays, each drawn ray ends on the surface of the object the 
       if (*id) session::show_mistake(state, *session::find_lesson(id));
       ids_now(state);
       int hits = 0;
-      for (const session::InspectedRay& ray : session::primary_ray_fan(state, 1000)) {
+      for (const session::InspectedRay& ray : session::primary_ray_fan(state, state, 1000)) {
         if (ray.hit.id < 0) continue;
         ++hits;
         const glm::dvec3 centre =

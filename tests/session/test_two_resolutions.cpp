@@ -23,7 +23,7 @@ TEST_CASE("the window's two resolutions reach the camera, Reset, Save and the co
   session::place_cameras(state);
   CHECK(session::view3d(state).camera.rows() == 20);
   // Reset brings the command line's pair back.
-  session::reset_camera(state);
+  session::reset_camera(state, state);
   REQUIRE(state.res_rows);
   CHECK(*state.res_rows == 0.25);
 
@@ -31,7 +31,7 @@ TEST_CASE("the window's two resolutions reach the camera, Reset, Save and the co
   const test::ScratchDir scratch("two-res-window");
   const std::string path = scratch.path("two.json");
   session::place_cameras(state);
-  REQUIRE(session::save_preset_as(state, path, false));
+  REQUIRE(session::save_preset_as(state, path, false) == session::SaveAsOutcome::saved);
   const SceneFile saved = load_scene_file(path);
   CHECK(saved.camera.res == 0.5);
   CHECK(saved.camera.res_rows == 0.25);

@@ -60,7 +60,7 @@ TEST_CASE("Reset camera returns to the scene file's preset, with the command lin
   view3d(state).orbit.theta = 2.0, view3d(state).orbit.phi = 0.3, view3d(state).orbit.d = 30, view3d(state).orbit.df = 7,
   state.res = 1;
   view3d(state).orbit.target = glm::dvec3(0.0);
-  session::reset_camera(state);
+  session::reset_camera(state, state);
   CHECK(view3d(state).orbit.d == 5);
   CHECK(view3d(state).orbit.theta == Approx(glm::radians(40.0)));
   CHECK(view3d(state).orbit.phi == Approx(glm::radians(70.0)));
@@ -70,13 +70,13 @@ TEST_CASE("Reset camera returns to the scene file's preset, with the command lin
   CHECK(state.overhead_fit_pending);
   session::AppState overridden = state_for({"--scene", preset_scene, "--d", "9"});
   view3d(overridden).orbit.d = 2;
-  session::reset_camera(overridden);
+  session::reset_camera(overridden, overridden);
   CHECK(view3d(overridden).orbit.d == 9);
   // A scene opened later brings its own preset.
   session::AppState opened = state_for({});
   REQUIRE(session::open_scene(opened, preset_scene));
   view3d(opened).orbit.phi = 0.1;
-  session::reset_camera(opened);
+  session::reset_camera(opened, opened);
   CHECK(view3d(opened).orbit.phi == Approx(glm::radians(70.0)));
 }
 
@@ -84,7 +84,7 @@ TEST_CASE("the observer frames the camera and follows it round the orbit", "[ui]
   session::AppState state = state_for({});
   session::place_cameras(state);
   {  // Default settings: the camera's screen is at least a tenth of the view's height.
-    const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
+    const session::ObserverCamera observer = session::observer_camera(state, state, kObserverAspect);
     double low = 1, high = -1;
     for (const glm::dvec3& corner : view3d(state).camera.screen_corners()) {
       low = std::min(low, ndc(observer, corner).y);
@@ -97,7 +97,7 @@ TEST_CASE("the observer frames the camera and follows it round the orbit", "[ui]
       view3d(state).orbit.theta = glm::radians(theta_deg);
       view3d(state).orbit.phi = glm::radians(phi_deg);
       session::place_cameras(state);
-      const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
+      const session::ObserverCamera observer = session::observer_camera(state, state, kObserverAspect);
       std::vector<glm::dvec3> points{view3d(state).camera.eye(), view3d(state).orbit.target};
       for (const glm::dvec3& corner : view3d(state).camera.screen_corners()) points.push_back(corner);
       for (const glm::dvec3& p : points) {
@@ -120,7 +120,7 @@ TEST_CASE("dragging in the observer view moves the camera the way the mouse goes
           view3d(state).orbit.theta = glm::radians(theta_deg);
           view3d(state).orbit.phi = glm::radians(phi_deg);
           session::place_cameras(state);
-          const session::ObserverCamera observer = session::observer_camera(state, kObserverAspect);
+          const session::ObserverCamera observer = session::observer_camera(state, state, kObserverAspect);
           const glm::dvec2 before = ndc(observer, view3d(state).camera.screen_centre());
           INFO("yaw " << yaw << ", pitch " << pitch << ", theta " << theta_deg << ", phi " << phi_deg);
           session::AppState up = state;  // screen y grows downwards: up is dy < 0

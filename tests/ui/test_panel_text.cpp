@@ -257,14 +257,15 @@ TEST_CASE("the French window shows no English word", "[ui][text]") {
       for (const char* id : {"###camera", "###mistakes", "###caster", "###files", "###lecture", "###construction",
                              "###inspector"})
         window->StateStorage.SetInt(window->GetID(id), 1);
-      ui::camera_section(state);
+      ui::PanelState panels = ui::panel_state_for({}, state);  // as the hosts start it: the export's name in French
+      ui::camera_section(state, panels);
       ui::mistakes_section(state);
-      ui::caster_section(state);
-      ui::files_section(state);
-      ui::lecture_section(state);
-      ui::construction_section(state);
+      ui::caster_section(state, panels);
+      ui::files_section(state, panels);
+      ui::lecture_section(state, panels);
+      ui::construction_section(state, panels);
       ui::inspector_section(state);
-      ui::status_line(state);
+      ui::status_line(state, panels);
     });
     INFO(view << ":\n" << shown);
     CHECK(shown.find("Caméra") != std::string::npos);  // it is the French window
@@ -285,16 +286,17 @@ TEST_CASE("Export figure's replace question is not shown beside the last export'
   // question, so the panel said both "… already exists. Replace it?" and "wrote …" at once.
   TextCapture text;
   session::AppState state = state_for({"--view", "2d"});
-  state.figure_path = "raycam-figure.svg";
-  state.figure_replace_pending = 1;
+  ui::PanelState panels;
+  panels.figure_path = "raycam-figure.svg";
+  panels.figure_replace_pending = 1;
   session::set_message(state, session::MessageSource::construction, false, "wrote /somewhere/raycam-figure.svg");
-  const std::string asking = text.capture([&] { ui::construction_section(state); });
+  const std::string asking = text.capture([&] { ui::construction_section(state, panels); });
   CHECK(asking.find("already exists. Replace it?") != std::string::npos);
   CHECK(asking.find("wrote") == std::string::npos);
   CHECK(state.message.empty());  // nor on the line above the status (lecture sizes): the question replaced it
   // Another panel's message stays.
   session::set_message(state, session::MessageSource::files, false, "saved scene.json");
-  text.capture([&] { ui::construction_section(state); });
+  text.capture([&] { ui::construction_section(state, panels); });
   CHECK(state.message == "saved scene.json");
 }
 
@@ -304,12 +306,13 @@ TEST_CASE("Export figure's replace question shows the files found when asked, wi
   // to look for the files (a whole figure per frame; and a name no longer a figure's threw out of the frame).
   TextCapture text;
   session::AppState state = state_for({"--view", "2d"});
-  state.figure_replace_pending = 2;
-  state.figure_replace_files = {"/home/ada/figs/steps-a.svg", "/home/ada/figs/steps-b.svg",
+  ui::PanelState panels;
+  panels.figure_replace_pending = 2;
+  panels.figure_replace_files = {"/home/ada/figs/steps-a.svg", "/home/ada/figs/steps-b.svg",
                                 "/home/ada/figs/steps-c.svg", "/home/ada/figs/steps-d.svg"};
-  state.figure_path = "notes.gif";  // no figure's name: building the figure for it throws
+  panels.figure_path = "notes.gif";  // no figure's name: building the figure for it throws
   std::string asking;
-  REQUIRE_NOTHROW(asking = text.capture([&] { ui::construction_section(state); }));
+  REQUIRE_NOTHROW(asking = text.capture([&] { ui::construction_section(state, panels); }));
   CHECK(asking.find("4 files already exist: /home/ada/figs/steps-a…d.svg. Replace them?") != std::string::npos);
 }
 
@@ -317,7 +320,8 @@ TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no
   TextCapture text;
   for (const char* view : {"2d", "3d"}) {
     session::AppState state = state_for({"--view", view});
-    const std::string shown = text.capture([&] { ui::construction_section(state); });
+    ui::PanelState panels;
+    const std::string shown = text.capture([&] { ui::construction_section(state, panels); });
     INFO(view);
     CHECK(shown.find("Export figure") != std::string::npos);
     CHECK((shown.find("rays") != std::string::npos) == (std::string(view) == "2d"));

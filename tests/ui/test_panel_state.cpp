@@ -1,0 +1,117 @@
+// The panels' own state (ui/panel_state.h), kept by the frame beside the session's AppState: the Open and
+// Save as boxes, the Replace question, the start-up options that reach the panels. The session only says
+// what happened (a scene opened, Save as needs a yes); the panels keep their boxes from that.
+#include <catch2/catch.hpp>
+#include <imgui.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "../scratch_dir.h"
+#include "../session/app_state_for.h"
+#include "frame_host.h"
+#include "panel_state.h"
+
+using namespace raycam;
+
+namespace {
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+}  // namespace
+
+TEST_CASE("the start-up options reach the panels: --check's program, the Open box, the export's name",
+          "[ui][panel-state]") {
+  session::AppOptions options = flags::parse_app_options(
+      {"--scene", std::string(SCENES_DIR) + "/many3d.json", "--check", "./my_camera", "--lang", "fr"});
+  const session::AppState state = session::make_app_state(options);
+  const ui::PanelState panels = ui::panel_state_for(options, state);
+  CHECK(panels.check_command == "./my_camera");
+  CHECK(panels.path_input == std::string(SCENES_DIR) + "/many3d.json");
+  CHECK(panels.save_path.empty());  // never the opened file
+  CHECK(panels.export_path == ui::tr(Language::fr, "raycam-colour-map.png"));
+  CHECK(panels.export_path != "raycam-colour-map.png");  // the French name, not the English key
+  // The demo scene: no file to show.
+  CHECK(ui::panel_state_for(session::AppOptions{}, test::state_for({})).path_input.empty());
+}
+
+TEST_CASE("the panels follow an opened scene: the Open box shows it, Save as starts empty, no question left",
+          "[ui][panel-state][files]") {
+  const test::ScratchDir scratch("panel-state-open");
+  const std::string first = scratch.path("first.json"), second = scratch.path("second.json");
+  session::AppState state = test::state_for({});
+  REQUIRE(session::save_preset(state, first));
+  REQUIRE(session::save_preset(state, second));
+  ui::PanelState panels;
+  REQUIRE(session::open_scene(state, first));
+  ui::follow_opened_scene(state, panels);
+  CHECK(panels.path_input == first);
+  // Everything a user can have left in the boxes on the first scene.
+  panels.save_path = scratch.path("typed-for-first.json");  // typed in Save as, not saved yet
+  panels.overwrite_pending = first;                          // a Replace question not answered
+  panels.path_input = scratch.path("half-typed");
+  ui::follow_opened_scene(state, panels);  // nothing opened since: the boxes stay
+  CHECK(panels.path_input == scratch.path("half-typed"));
+  CHECK(panels.overwrite_pending == first);
+
+  REQUIRE(session::open_scene(state, second));
+  ui::follow_opened_scene(state, panels);
+  CHECK(panels.save_path.empty());          // Save as never offers the old scene's path
+  CHECK(panels.overwrite_pending.empty());  // nor its pending Replace
+  CHECK(panels.path_input == second);
+
+  // A failed open: the box keeps the typo, to be fixed in place.
+  const std::string typo = scratch.path("typo.json");
+  panels.path_input = typo;
+  CHECK_FALSE(session::open_scene(state, typo));
+  ui::follow_opened_scene(state, panels);
+  CHECK(panels.path_input == typo);
+}
+
+TEST_CASE("a scene opened outside the panel (dropped, the page's picker) shows in the Open box at the next frame",
+          "[ui][panel-state][files][null-host]") {
+  const test::ScratchDir scratch("panel-state-drop");
+  const std::string dropped = scratch.path("dropped.json");
+  session::AppState state = test::state_for({"--size", "32x24"});
+  REQUIRE(session::save_preset(state, dropped));
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  {
+    ui::NullHost host(1280, 720);
+    ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
+    ui::run_frame(host, frame, state);
+    frame.panels().save_path = scratch.path("typed.json");
+    REQUIRE(session::open_scene(state, dropped));  // what the host's drop callback does
+    ui::run_frame(host, frame, state);
+    CHECK(frame.panels().path_input == dropped);
+    CHECK(frame.panels().save_path.empty());
+  }
+  ImGui::DestroyContext();
+}
+
+TEST_CASE("Save as from the panel asks before replacing, and Replace writes the file the question names",
+          "[ui][panel-state][files]") {
+  const test::ScratchDir scratch("panel-state-save");
+  const std::string path = scratch.path("lesson.json");
+  session::AppState state = test::state_for({});
+  REQUIRE(session::save_preset(state, path));
+  const std::string before = read(path);
+  session::view3d(state).orbit.d = 3.5;
+  ui::PanelState panels;
+  panels.save_path = path;
+  CHECK_FALSE(ui::save_as(state, panels, panels.save_path, false));  // "… already exists. Replace it?"
+  REQUIRE(panels.overwrite_pending == path);
+  CHECK(read(path) == before);  // nothing written yet
+  // The Replace button hands the pending path itself (a reference to the panels' own string).
+  CHECK(ui::save_as(state, panels, panels.overwrite_pending, true));
+  CHECK(panels.overwrite_pending.empty());
+  CHECK_FALSE(state.message_is_error);
+  CHECK(read(path) != before);
+  CHECK(session::open_scene(state, path));
+  CHECK(session::view3d(state).orbit.d == 3.5);
+  // An empty box: no question, an error that says what to type.
+  CHECK_FALSE(ui::save_as(state, panels, "", false));
+  CHECK(panels.overwrite_pending.empty());
+  CHECK(state.message_is_error);
+}
