@@ -286,6 +286,14 @@ mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_
 # --- #34 page speed and big files ---
 # The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
+# --- #34 big files parsed in steps ---
+# The resumable scene reader (src/io/scene_file_reader.cpp) against parse_scene_json (test_scene_file_reader.cpp).
+READER_TESTS="^core: the resumable reader"
+mutant reader-drops-a-steps-last-object src/io/scene_file_reader.cpp 's/^      if (milliseconds_since(start) >= budget_ms) break;$/      if (milliseconds_since(start) >= budget_ms) { if (phase_ == Phase::reading \&\& next_object_ > 0) visit_scene(file_, [](auto\& s) { objects_of(s).pop_back(); }); break; }/' "$CORE" "$READER_TESTS"
+mutant reader-comma-optional src/io/scene_file_reader.cpp "s/^    if (text_\[at_\] != ',') return false;$/    if (text_[at_] != ',') --at_;/" "$CORE" "$READER_TESTS"
+mutant reader-escapes-ignored src/io/scene_file_reader.cpp 's/^    if (text\[at\] == .\\\\.)$/    if (false)/' "$CORE" "$READER_TESTS"
+mutant reader-always-in-one-go src/io/scene_file_reader.cpp 's/^      if (!regular) fall_back();/      fall_back();/' "$CORE" "$READER_TESTS"
+mutant reader-text-after-the-end src/io/scene_file_reader.cpp 's/^      return at_ == text_.size();/      return true;/' "$CORE" "$READER_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
