@@ -285,7 +285,8 @@ mutant page-download-asks-to-replace src/session/app_state.cpp 's/  if (!overwri
 mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_advance += std::round(advance \* scale);/    m.x_advance += advance * scale;/' "$FIGURE" "^figure: ?the page's text metrics"
 # --- #34 page speed and big files ---
 # The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
-mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
+mutant big-file-open-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
+mutant big-file-parsed-in-one-go src/web/scene_loading.cpp 's/constexpr double kParseSliceMs = 50.0;/constexpr double kParseSliceMs = 1e9;/' "raycam_web_page" "^web: a big scene file opens"
 # --- #34 big files parsed in steps ---
 # The resumable scene reader (src/io/scene_file_reader.cpp) against parse_scene_json (test_scene_file_reader.cpp).
 READER_TESTS="^core: the resumable reader"

@@ -34,6 +34,9 @@ class SceneFileReader {
   std::size_t objects_found() const { return objects_.size(); }
   std::size_t objects_read() const { return next_object_; }
 
+  // Once done: whether take() throws, and how many objects the scene it returns holds.
+  bool failed() const { return error_ != nullptr; }
+  std::size_t objects() const { return file_.scene2d.circles.size() + file_.scene3d.spheres.size(); }
   // Once done: the scene, or parse_scene_json's exception for this text.
   SceneFile take();
 
