@@ -22,11 +22,12 @@ from page_driver import Page, open_big_scene  # noqa: E402
 COUNTS = (100000, 1000000)
 # The longest wait allowed between two animation frames while a file opens: a parse slice (50 ms,
 # scene_loading.cpp) plus the frame drawn after it (30-80 ms in software WebGL), or an 8 MiB slice of the
-# reading (a copy). Measured about 100 ms with the shared 2-core machine lightly loaded, up to 285 ms when it
-# ran other builds (a load of 7). The parse in one step waited 1.0 s (10⁵) and 7.2 s (10⁶). At 10⁵ the bound
-# holds to the first image; at 10⁶ the frame that packs and draws 10⁶ objects (0.7-1.2 s) is one step,
-# printed, not bounded (docs/web.md).
-MAX_GAP_MS = 300
+# reading (a copy). Measured 83-112 ms with the shared 2-core machine lightly loaded, and up to 460 ms when
+# other builds and browsers held it (a load of 7-8, 2026-11-26). The parse in one step waited 1.0-1.8 s at 10⁵
+# and 7-13 s at 10⁶ (the same loads): 2 and 14 times the bound at the least. At 10⁵ the bound holds to the
+# first image; at 10⁶ the frame that packs and draws 10⁶ objects (0.7-1.4 s) is one step, printed, not
+# bounded (docs/web.md).
+MAX_GAP_MS = 500
 
 
 def ids_match_the_cli(page, name, scratch):
@@ -80,7 +81,7 @@ try:
             print("  longest waits between frames: reading %.0f ms, parsing %.0f ms (%d frames); then the packing "
                   "and the first image: %s ms" % (max(reading or [0]), max(parsing or [0]), len(parsing),
                                                    [round(gap) for gap in last]), flush=True)
-            # 10⁶: the packing (0.2-0.3 s) and the first frame drawing 10⁶ objects are single steps: not bounded.
+            # 10⁶: the packing (0.2-0.3 s) and the first frame drawing 10⁶ objects are one step: not bounded.
             bounded = record["gaps"] if count == COUNTS[0] else [(at, gap) for at, gap in record["gaps"] if at <= at_packing]
             longest = max(gap for _, gap in bounded)
             check(packing and longest < MAX_GAP_MS,
