@@ -294,6 +294,16 @@ mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t s
 mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^  if (outcome == SaveAsOutcome::needs_yes) panels.overwrite_pending = asked;.*$/  (void)outcome;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
 mutant check-command-not-handed-over src/ui/panel_state.cpp '/^  panels.check_command = options.check_command;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
 mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_opened_scene(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
+mutant big-file-open-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
+mutant big-file-parsed-in-one-go src/web/scene_loading.cpp 's/constexpr double kParseSliceMs = 50.0;/constexpr double kParseSliceMs = 1e9;/' "raycam_web_page" "^web: a big scene file opens"
+# --- #34 big files parsed in steps ---
+# The resumable scene reader (src/io/scene_file_reader.cpp) against parse_scene_json (test_scene_file_reader.cpp).
+READER_TESTS="^core: ?the resumable reader"
+mutant reader-drops-a-steps-last-object src/io/scene_file_reader.cpp 's/^      if (milliseconds_since(start) >= budget_ms) break;$/      if (milliseconds_since(start) >= budget_ms) { if (phase_ == Phase::reading \&\& next_object_ > 0) visit_scene(file_, [](auto\& s) { objects_of(s).pop_back(); }); break; }/' "$CORE" "$READER_TESTS"
+mutant reader-comma-optional src/io/scene_file_reader.cpp "s/^    if (text_\[at_\] != ',') return false;$/    if (text_[at_] != ',') --at_;/" "$CORE" "$READER_TESTS"
+mutant reader-escapes-ignored src/io/scene_file_reader.cpp 's/^    if (text\[at\] == .\\\\.)$/    if (false)/' "$CORE" "$READER_TESTS"
+mutant reader-always-in-one-go src/io/scene_file_reader.cpp 's/^      if (!regular) fall_back();/      fall_back();/' "$CORE" "$READER_TESTS"
+mutant reader-text-after-the-end src/io/scene_file_reader.cpp 's/^      return at_ == text_.size();/      return true;/' "$CORE" "$READER_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -13,6 +13,7 @@
 #include <type_traits>
 
 #include "raycam/limits.h"
+#include "scene_file_parts.h"
 
 namespace raycam {
 
@@ -43,7 +44,8 @@ class FieldName {
 
 class FieldReader {
  public:
-  explicit FieldReader(std::string source) : source_(std::move(source)) {}
+  // `source` outlives the reader (the parse's argument): one reader per object costs no copy.
+  explicit FieldReader(const std::string& source) : source_(source) {}
 
   [[noreturn]] void fail(const FieldName& field, const std::string& expected,
                          const json* got = nullptr) const {
@@ -120,7 +122,7 @@ class FieldReader {
   }
 
  private:
-  std::string source_;
+  const std::string& source_;
 };
 
 // ---- objects -----------------------------------------------------------------------------------------
@@ -258,6 +260,11 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   } catch (const json::exception& error) {  // e.g. a number too large for a double
     throw std::invalid_argument(source + ": invalid JSON: " + reason_of(error));
   }
+  return scene_file_parts::read_scene(root, source);
+}
+
+namespace scene_file_parts {
+SceneFile read_scene(const json& root, const std::string& source) {
   const FieldReader reader(source);
   if (!root.is_object()) reader.fail("(top level)", "a JSON object {\"dimension\", \"objects\", ...}", &root);
   reader.require_known_keys(root, "", {"dimension", "background", "objects", "camera"});
@@ -271,17 +278,24 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   if (!objects.is_array()) reader.fail("objects", "an array", &objects);
   if (objects.size() > kMaxObjects)
     reader.fail("objects", "at most " + std::to_string(kMaxObjects) + " objects");
+  for (std::size_t i = 0; i < objects.size(); ++i) read_scene_object(file, objects[i], i, source);
+  if (root.contains("camera"))
+    visit_scene(file, [&](const auto& scene) { file.camera = read_camera(reader, root["camera"], scene); });
+  return file;
+}
+
+void read_scene_object(SceneFile& file, const json& item, std::size_t index, const std::string& source) {
+  const FieldReader reader(source);
   const FieldName objects_path("objects");
   visit_scene(file, [&](auto& scene) {
     auto& read = objects_of(scene);
     using Object = typename std::decay_t<decltype(read)>::value_type;
-    for (std::size_t i = 0; i < objects.size(); ++i) read.push_back(read_object<Object>(reader, objects[i], FieldName(objects_path, i)));
-    if (root.contains("camera")) file.camera = read_camera(reader, root["camera"], scene);
+    read.push_back(read_object<Object>(reader, item, FieldName(objects_path, index)));
   });
-  return file;
 }
+}  // namespace scene_file_parts
 
-SceneFile load_scene_file(const std::string& path) {
+std::string read_scene_text(const std::string& path) {
   // A folder opens as a stream whose size reads as huge: it would be refused as "larger than the limit".
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) throw std::invalid_argument(path + ": is a folder, not a scene file");
@@ -295,8 +309,10 @@ SceneFile load_scene_file(const std::string& path) {
   in.seekg(0);
   in.read(text.data(), size);
   if (!in) throw std::invalid_argument(path + ": cannot read scene file");
-  return parse_scene_json(text, path);
+  return text;
 }
+
+SceneFile load_scene_file(const std::string& path) { return parse_scene_json(read_scene_text(path), path); }
 
 // ---- write -------------------------------------------------------------------------------------------
 namespace {

@@ -42,13 +42,18 @@ void place(Camera3D& camera, const CameraPreset& preset, const CameraPreset&) {
 }  // namespace
 
 ViewSetup make_view_setup(const ViewFlags& flags) {
+  if (flags.scene_path) return make_view_setup(flags, load_scene_file(*flags.scene_path));
+  return make_view_setup(flags, std::nullopt);
+}
+
+ViewSetup make_view_setup(const ViewFlags& flags, std::optional<SceneFile> parsed) {
   ViewSetup setup;
-  if (flags.scene_path) {
-    setup.scene_path = *flags.scene_path;
-    setup.file = load_scene_file(*flags.scene_path);
+  if (parsed) {
+    setup.scene_path = flags.scene_path.value_or("");
+    setup.file = std::move(*parsed);
     if (flags.dimension && *flags.dimension != setup.file.dimension)
       throw std::invalid_argument("--mode: " + std::to_string(*flags.dimension) +
-                                  "d does not match the scene file " + *flags.scene_path + ", which is " +
+                                  "d does not match the scene file " + setup.scene_path + ", which is " +
                                   std::to_string(setup.file.dimension) + "D");
   } else {
     setup.file.dimension = flags.dimension.value_or(3);

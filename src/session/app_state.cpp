@@ -150,6 +150,10 @@ std::string cannot_open_message(Language language, const std::string& path, cons
 }
 
 bool open_scene(AppState& state, const std::string& path) {
+  return open_scene(state, path, [&] { return load_scene_file(path); });
+}
+
+bool open_scene(AppState& state, const std::string& path, const std::function<SceneFile()>& read) {
   if (path.empty()) {  // Open with an empty box: what to do, not "cannot open: : ..."
     set_message(state, MessageSource::files, true, tr(state.language, "type a scene file's path in the box, then Open"));
     return false;
@@ -157,7 +161,7 @@ bool open_scene(AppState& state, const std::string& path) {
   try {
     ViewFlags flags;
     flags.scene_path = path;
-    const ViewSetup setup = make_view_setup(flags);
+    const ViewSetup setup = make_view_setup(flags, read());
     validate(views_from_setup(setup).on_screen);  // before anything changes: a bad file leaves the state as it was
     adopt_view_setup(state, state, setup);
     state.pinned_pixel.reset();

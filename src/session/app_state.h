@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <glm/mat4x4.hpp>
 #include <optional>
 #include <string>
@@ -142,6 +143,9 @@ bool recast_if_needed(AppState& state, bool interacting = false);
 // Loads a scene file; on error keeps the current scene and sets an error message. Returns success (and
 // counts it in scene_opens).
 bool open_scene(AppState& state, const std::string& path);
+// The same with the file's scene from `read` (the file at `path` parsed elsewhere, e.g. over several frames
+// in the page; its exception is the file's error, shown as open_scene shows it).
+bool open_scene(AppState& state, const std::string& path, const std::function<SceneFile()>& read);
 // Saves the current camera as the scene file's preset (written atomically). Returns success.
 bool save_preset(AppState& state, const std::string& path);
 // What Save as did: saved, wrote nothing because `path` exists and the user has not said yes to replacing

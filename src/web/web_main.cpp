@@ -49,6 +49,21 @@ std::string browser_language() {
 }
 
 std::string last_error;
+
+// The ids of a view's primary rays (as `raycam-cli render --ids` casts them) written to `ids_path`; 0, or 1
+// with last_error set.
+int write_view_ids(const raycam::session::View& view, const char* ids_path) {
+  try {
+    raycam::session::validate(view);
+    raycam::write_ids(std::visit([](const auto& v) { return raycam::cast_primary_rays(v.camera, v.scene, raycam::CastOptions{}); },
+                                 view),
+                      ids_path);
+    return 0;
+  } catch (const std::exception& error) {
+    last_error = error.what();
+    return 1;
+  }
+}
 }  // namespace
 
 extern "C" {
@@ -63,17 +78,15 @@ EMSCRIPTEN_KEEPALIVE int raycam_render_ids(const char* scene_path, const char* i
   try {
     raycam::ViewFlags flags;
     flags.scene_path = std::string(scene_path);
-    const raycam::ViewSetup setup = raycam::make_view_setup(flags);
-    const raycam::session::View view = raycam::session::views_from_setup(setup).on_screen;
-    raycam::session::validate(view);
-    raycam::write_ids(std::visit([](const auto& v) { return raycam::cast_primary_rays(v.camera, v.scene, raycam::CastOptions{}); },
-                                 view),
-                      ids_path);
-    return 0;
+    return write_view_ids(raycam::session::views_from_setup(raycam::make_view_setup(flags)).on_screen, ids_path);
   } catch (const std::exception& error) {
     last_error = error.what();
     return 1;
   }
+}
+// The same for the scene and camera on screen (the browser tests: a file opened by the picker's route).
+EMSCRIPTEN_KEEPALIVE int raycam_shown_ids(const char* ids_path) {
+  return write_view_ids(raycam::web::page_state().view, ids_path);
 }
 // The median time in milliseconds of a cast (`repeats` samples, after half a second of casts) of a 3D scene
 // file's camera at side×side pixels, as `raycam-cli bench speed --scene FILE --size side` times it (the

@@ -88,6 +88,8 @@ const start = performance.now();
 let last = start, drawn = frames(), finished = false;
 const initial = status();
 const finish = () => {
+  const now = performance.now();
+  record.gaps.push([now - start, now - last]);  // the wait before this frame: watch may not have run yet
   finished = true;
   Module.postMainLoop = undefined;
   record.total_ms = performance.now() - start;

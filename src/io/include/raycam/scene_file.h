@@ -43,6 +43,8 @@ decltype(auto) visit_scene(File& file, Function&& function) {
 // JSON syntax errors). `source` names the file in messages.
 SceneFile parse_scene_json(const std::string& text, const std::string& source);
 SceneFile load_scene_file(const std::string& path);
+// load_scene_file's first half: the file's text, with its errors (a folder, too big, unreadable).
+std::string read_scene_text(const std::string& path);
 std::string scene_to_json(const SceneFile& file);
 // Writes to a temporary file beside `path`, then renames: an existing file is never left truncated.
 void save_scene_file(const SceneFile& file, const std::string& path);

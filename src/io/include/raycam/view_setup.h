@@ -56,6 +56,9 @@ decltype(auto) visit_view_setup(Setup& setup, Function&& function) {
 
 // Loads the scene (or the demo scene) and places the camera. Throws std::invalid_argument.
 ViewSetup make_view_setup(const ViewFlags& flags);
+// The same with the scene file already parsed (`parsed`, read from flags.scene_path; none: the demo scene):
+// the page parses a big file over several frames first (src/web/scene_loading.cpp).
+ViewSetup make_view_setup(const ViewFlags& flags, std::optional<SceneFile> parsed);
 
 // The colour map with the accuracy knobs applied: the camera re-placed by the chosen route (same P, C, d_f)
 // first, then render_with_accuracy(camera, scene, knobs) of the core.
