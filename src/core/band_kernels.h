@@ -61,9 +61,14 @@ inline void test_pixel(const glm::dvec3& centre, double radius, int object, std:
                        double* depth, int* id, unsigned char* covered) {
   const double t = nearest_hit_t(glm::dvec3(ox[p], oy[p], oz[p]), glm::dvec3(dx[p], dy[p], dz[p]), centre, radius,
                                  kFormula);
-  const bool nearer = nearer_hit(t, object, depth[p], id[p]);
-  depth[p] = nearer ? t : depth[p];
-  id[p] = nearer ? object : id[p];
+  // nearer_hit with both sides evaluated, and stores of selects of locals: with nearer_hit's short circuit, LLVM
+  // made the two stores conditional, which WebAssembly (no masked store) runs as a branch per lane, a coin
+  // toss when the sphere's silhouette crosses the row.
+  const double held = depth[p];
+  const int held_id = id[p];
+  const bool nearer = (t < held) | ((t == held) & (object < held_id));
+  depth[p] = nearer ? t : held;
+  id[p] = nearer ? object : held_id;
   covered[p] = 1;
 }
 
