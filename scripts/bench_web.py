@@ -5,12 +5,15 @@ families (`raycam-cli bench speed --write-family`, K = 10³, 10⁴, 10⁵) and o
 K = 50 to 500), in headless Chromium (the page's one thread) and in `raycam-cli bench speed --threads 1`.
 The two sides alternate, scene by scene, for --rounds rounds (the machine's load then weighs on both
 alike); the table gives each side's median over the rounds and their ratio, with the lowest and highest
-ratio of a round. Then the idle page's CPU time over 10 s.
+ratio of a round, by the wall clock and by CPU time (the page thread's, from /proc, and bench speed's process
+time: on a loaded machine the wall clock also counts other programs' turns on the core, one side's more than
+the other's in a round). Each round's figures go to stderr. Then the idle page's CPU time over 10 s.
 With --big: instead, opening scene files of 10⁵ and 10⁶ spheres in the page by the picker's route (made in
 the page): the time to the first image, how long the reading took and the longest wait between two frames
 while reading, and the longest wait overall (the parse).
-Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [WEB_FOLDER] [RAYCAM_CLI]
-       (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only)"""
+Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [--only TEXT] [WEB_FOLDER] [RAYCAM_CLI]
+       (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only;
+       --only: the scenes whose label holds TEXT)"""
 import argparse
 import os
 import re
