@@ -286,6 +286,9 @@ mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_
 # --- #34 page speed and big files ---
 # The page's mutants rebuild the page (raycam_web_page: scripts/web.sh --build-only in the scratch tree).
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
+# --- #34 page speed: writing the band (item 8) ---
+mutant background-group-one-id-a-word src/core/footprint_caster.cpp 's/constexpr std::uint64_t kSigns = 0x8000000080000000u;/constexpr std::uint64_t kSigns = 0x80000000u;/' "$CORE" "$CORE_TESTS"
+mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered += std::uint32_t((w \* 0x0101010101010101u) >> 56);/covered += std::uint32_t(w \& 1u);/' "$CORE" "$CORE_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
