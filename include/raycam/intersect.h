@@ -27,8 +27,8 @@ template <class T>
 inline constexpr T kNoHit = std::numeric_limits<T>::infinity();
 
 // std::copysign(magnitude, sign), the same bits. In WebAssembly a double's is masks on its bits: LLVM 14 has
-// no vector copysign there, and took each lane of a vector out to a scalar copysign and back (in the page's
-// loop over a row of pixels, the two lanes' copysigns cost as much as a quarter of the test).
+// no vector copysign there, and took each lane of a vector out to a scalar copysign and back (the page's cast
+// of radii ×20 at K = 10³: 0.79 -> 0.76 ms, in Node).
 template <class T>
 inline T copysign_bits(T magnitude, T sign) {
 #ifdef __wasm__
