@@ -5,13 +5,16 @@ families (`raycam-cli bench speed --write-family`, K = 10³, 10⁴, 10⁵) and o
 K = 50 to 500), in headless Chromium (the page's one thread) and in `raycam-cli bench speed --threads 1`.
 The two sides alternate, scene by scene, for --rounds rounds (the machine's load then weighs on both
 alike); the table gives each side's median over the rounds and their ratio, with the lowest and highest
-ratio of a round. Then the idle page's CPU time over 10 s.
+ratio of a round, by the wall clock and by CPU time (the page thread's, from /proc, and bench speed's process
+time: on a loaded machine the wall clock also counts other programs' turns on the core, one side's more than
+the other's in a round). Each round's figures go to stderr. Then the idle page's CPU time over 10 s.
 With --big: instead, opening scene files of 10⁵ and 10⁶ spheres in the page by the picker's route (made in
 the page): the time to the first image; how long the reading and the parse took, with the longest wait
 between two animation frames in each (and the parse's frames); the wait of the step that packs the objects
 and draws the first image.
-Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [WEB_FOLDER] [RAYCAM_CLI]
-       (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only)"""
+Usage: scripts/bench_web.py [--rounds N] [--quick | --big] [--only TEXT] [WEB_FOLDER] [RAYCAM_CLI]
+       (defaults: 3 rounds, build-web, build/raycam-cli; --quick: K = 10³ and the sparse scenes only;
+       --only: the scenes whose label holds TEXT)"""
 import argparse
 import os
 import re
@@ -28,6 +31,7 @@ from page_driver import Page, open_big_scene  # noqa: E402
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 parser.add_argument("--rounds", type=int, default=3, help="rounds of the alternation (1 to 20, default 3)")
 parser.add_argument("--quick", action="store_true", help="K = 10³ and the sparse scenes only")
+parser.add_argument("--only", default="", help="only the scenes whose label holds this text (e.g. 'clumps')")
 parser.add_argument("--big", action="store_true", help="time opening 10⁵ and 10⁶ spheres in the page instead")
 parser.add_argument("web_folder", nargs="?", default=os.path.join(root, "build-web"))
 parser.add_argument("cli", nargs="?", default=os.path.join(root, "build", "raycam-cli"))
@@ -57,20 +61,53 @@ def write_family(name, count, path):
 
 
 def native_ms(scene):
+    """(wall, CPU) milliseconds of a cast: the medians of `bench speed`'s repetitions (its CPU time is the
+    process's: one thread)."""
     run = subprocess.run([cli, "bench", "speed", "--scene", scene, "--size", str(SIDE), "--threads", "1",
                           "--repeats", "5", "--benchmark_filter=automatic"], capture_output=True, text=True,
                          check=True)
-    return float(re.search(r"automatic ([0-9.]+) ms median", run.stdout).group(1))
+    median = re.search(r"automatic\S*real_time_median\s+([0-9.]+) ms\s+([0-9.]+) ms", run.stdout)
+    return float(median.group(1)), float(median.group(2))
+
+
+def page_thread_seconds(page):
+    """CPU time (user + system) of the main thread of every renderer process of the browser, from /proc: the
+    page's WebAssembly runs on one of them (any other stays idle)."""
+    ticks = os.sysconf("SC_CLK_TCK")
+    total, stack = 0.0, [page.driver.service.process.pid]
+    while stack:
+        pid = stack.pop()
+        try:
+            with open("/proc/%d/cmdline" % pid, "rb") as text:
+                renderer = b"--type=renderer" in text.read()
+            if renderer:
+                with open("/proc/%d/task/%d/stat" % (pid, pid)) as text:
+                    fields = text.read().rsplit(")", 1)[1].split()
+                total += (int(fields[11]) + int(fields[12])) / ticks
+            for task in os.listdir("/proc/%d/task" % pid):
+                with open("/proc/%d/task/%s/children" % (pid, task)) as text:
+                    stack += [int(child) for child in text.read().split()]
+        except OSError:
+            pass
+    return total
+
+
+def page_error(page):
+    return page.call("return Module.ccall('raycam_last_error', 'string', [], []);")
 
 
 def page_ms(page, page_path):
-    # The page's own timer: a half-second warm-up, then the median of 21 samples of at least 20 ms each.
-    time_taken = page.call("""return Module.ccall('raycam_time_cast', 'number', ['string', 'number', 'number'],
-                                                  [arguments[0], arguments[1], 21]);""", page_path, SIDE)
-    if time_taken < 0:
-        raise RuntimeError("the page could not time %s: %s" % (page_path, page.call(
-            "return Module.ccall('raycam_last_error', 'string', [], []);")))
-    return time_taken
+    """(wall, CPU) milliseconds of a cast in the page: prepared (parsed, packed, half a second of warm-up
+    casts), then the median of 21 samples of at least 20 ms each by the page's clock (it counts in 0.1 ms),
+    and the page thread's CPU time over all the samples divided by their casts (/proc counts in 10 ms)."""
+    if page.call("return Module.ccall('raycam_prepare_cast', 'number', ['string', 'number'], [arguments[0], arguments[1]]);",
+                 page_path, SIDE) != 0:
+        raise RuntimeError("the page could not time %s: %s" % (page_path, page_error(page)))
+    before = page_thread_seconds(page)
+    wall = page.call("return Module.ccall('raycam_time_prepared_cast', 'number', ['number'], [21]);")
+    cpu = page_thread_seconds(page) - before
+    casts = page.call("return Module.ccall('raycam_casts_timed', 'number', [], []);")
+    return wall, 1000.0 * cpu / casts
 
 
 def cpu_seconds(pid):
@@ -139,6 +176,9 @@ with tempfile.TemporaryDirectory() as scratch:
             path = os.path.join(scratch, "family%d-%d.json" % (len(scenes), count))
             write_family(name, count, path)
             scenes.append(("%s, K = %s" % (name, k_label(count)), path))
+    scenes = [scene for scene in scenes if arguments.only in scene[0]]
+    if not scenes:
+        parser.error("--only: no scene's label holds '%s'" % arguments.only)
     page = Page(arguments.web_folder)
     try:
         page.open()
@@ -147,7 +187,7 @@ with tempfile.TemporaryDirectory() as scratch:
             with open(path) as text:
                 page_paths.append("/bench%d.json" % index)
                 page.call("FS.writeFile(arguments[0], arguments[1]);", page_paths[-1], text.read())
-        native = [[] for _ in scenes]
+        native = [[] for _ in scenes]  # (wall, CPU) a round
         web = [[] for _ in scenes]
         for round_index in range(arguments.rounds):
             for index, (label, path) in enumerate(scenes):
@@ -157,20 +197,27 @@ with tempfile.TemporaryDirectory() as scratch:
                         native[index].append(native_ms(path))
                     else:
                         web[index].append(page_ms(page, page_paths[index]))
-            print("round %d of %d done" % (round_index + 1, arguments.rounds), file=sys.stderr)
+                print("round %d, %s: native %.3f ms (CPU %.3f), page %.3f ms (CPU %.3f)"
+                      % ((round_index + 1, label) + native[index][-1] + web[index][-1]), file=sys.stderr)
         print("%d rounds, native and page alternating, %d² pixels; medians over the rounds\n"
               % (arguments.rounds, SIDE))
-        print("| scene | native, 1 thread | page (Chromium, WebAssembly) | page / native | rounds' ratios |")
-        print("|---|---|---|---|---|")
-        ratios = []
+        print("| scene | native, 1 thread | page (Chromium, WebAssembly) | page / native | rounds' ratios "
+              "| CPU: native | page | page / native | rounds' ratios |")
+        print("|---|---|---|---|---|---|---|---|---|")
+        ratios = {0: [], 1: []}
         for index, (label, _) in enumerate(scenes):
-            n, w = statistics.median(native[index]), statistics.median(web[index])
-            per_round = [b / a for a, b in zip(native[index], web[index])]
-            ratios.append(w / n)
-            print("| %s | %.3f ms | %.3f ms | %.2f× | %.2f–%.2f× |"
-                  % (label, n, w, w / n, min(per_round), max(per_round)))
-        print("\npage / native: %.2f× to %.2f× (median %.2f×) over %d scenes"
-              % (min(ratios), max(ratios), statistics.median(ratios), len(ratios)))
+            row = "| %s " % label
+            for clock in (0, 1):  # wall, then CPU
+                n = statistics.median(sample[clock] for sample in native[index])
+                w = statistics.median(sample[clock] for sample in web[index])
+                per_round = [b[clock] / a[clock] for a, b in zip(native[index], web[index])]
+                ratios[clock].append(w / n)
+                row += "| %.3f ms | %.3f ms | %.2f× | %.2f–%.2f× " % (n, w, w / n, min(per_round), max(per_round))
+            print(row + "|")
+        for clock, name in ((0, "wall time"), (1, "CPU time")):
+            print("\npage / native (%s): %.2f× to %.2f× (median %.2f×) over %d scenes"
+                  % (name, min(ratios[clock]), max(ratios[clock]), statistics.median(ratios[clock]),
+                     len(ratios[clock])))
         time.sleep(3)  # the page settles, then sleeps
         browser = page.driver.service.process.pid
         before = cpu_seconds(browser)

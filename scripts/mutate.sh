@@ -36,7 +36,7 @@ mutant no-renormalise src/core/primary_ray.h 's/if (renormalise) direction \*=/i
 mutant printed-rotation-2d src/core/camera2d.cpp 's/placement.alpha = view_angle - \(.*\);/placement.alpha = view_angle + \1;/' "$CORE" "$CORE_TESTS"
 mutant negative-t-hits include/raycam/intersect.h 's/const bool moving_away = c > T(0) \&\& b > T(0);/const bool moving_away = false;/; s/T t = t_near >= T(0) ? t_near :/T t = true ? t_near :/' "$CORE" "$CORE_TESTS"
 mutant mirrored-bar include/raycam/camera2d.h 's/int column_of_pixel(int k) const { return pixel_count_ - 1 - k; }/int column_of_pixel(int k) const { return k; }/' "$CORE" "$CORE_TESTS"
-mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/d.bounded ? higher(0.0, ceil_a) : 0.0/d.bounded ? higher(0.0, ceil_a + 1.0) : 0.0/' "$CORE" "$CORE_TESTS"
+mutant footprint-shrunk-by-a-pixel src/core/screen_footprint.cpp 's/d.bounded ? higher(k.zero, ceil_a) : 0.0/d.bounded ? higher(k.zero, ceil_a + 1.0) : 0.0/' "$CORE" "$CORE_TESTS"
 # The exact 2D bar's three kinds of breakpoint, one dropped at a time: silhouettes, the screen line
 # entering or leaving a circle, two circles crossing.
 mutant exact-bar-no-silhouettes src/core/exact_bar.cpp '/add_direction(Vec(cos_beta \* u.x [+-] sin_beta/d' "$CORE" "$CORE_TESTS"
@@ -46,7 +46,7 @@ mutant exact-bar-no-circle-crossings src/core/exact_bar.cpp '/add_direction(base
 mutant footprint-no-rounding-slack src/core/screen_footprint.cpp 's/slack = 64 \* kEpsilon/slack = 0 * kEpsilon/; s/slack += 16 \* kEpsilon/slack += 0 * kEpsilon/; s/kRelativeSlack = 1e-9;/kRelativeSlack = 0;/; s/kIndexSlack = 1e-6;/kIndexSlack = 0;/' "$CORE" "$CORE_TESTS"
 mutant plain-ties-to-higher-index src/core/ray_caster.cpp 's/if (t < hit.t) hit/if (t <= hit.t) hit/' "$CORE" "$CORE_TESTS"
 mutant fast-ties-to-higher-index-2d src/core/footprint_caster.cpp 's/if (t < depth\[p\])/if (t <= depth[p])/' "$CORE" "$CORE_TESTS"
-mutant fast-ties-to-higher-index-3d src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t <= depth;/' "$CORE" "$CORE_TESTS"
+mutant fast-ties-to-higher-index-3d src/core/band_kernels.h 's/return (t < depth) | ((t == depth) \& (object < id));/return t <= depth;/' "$CORE" "$CORE_TESTS"
 mutant radius-0-accepted src/core/validation.cpp 's/value > 0.0 \&\& value <= kMaxCoordinate/value >= 0.0 \&\& value <= kMaxCoordinate/' "$CORE" "$CORE_TESTS"
 mutant res-0-accepted src/core/validation.cpp 's/if (!(value > 0.0 \&\& value <= 1.0))/if (!(value >= 0.0 \&\& value <= 1.0))/' "$CORE" "$CORE_TESTS"
 mutant roll-left-out-of-the-product src/core/camera3d.cpp 's/const glm::dmat4 factors\[\] = {placement.scale, placement.roll,/const glm::dmat4 factors[] = {placement.scale, glm::dmat4(1.0),/' "$CORE" "$CORE_TESTS"
@@ -112,7 +112,7 @@ mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export co
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"
 mutant show-me-object-centred src/session/mistake_lessons.cpp 's/  const Vector screen_centre = nearest->centre + view \* depth - side \* r;/  const Vector screen_centre = nearest->centre + view * depth;/' "$SESSION" "^session:"
 # --- fast on scenes it has never seen ---
-mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return t < depth || (t == depth \&\& object < id);/return t < depth;/' "$CORE" "$CORE_TESTS"
+mutant near-to-far-tie-to-first src/core/band_kernels.h 's/return (t < depth) | ((t == depth) \& (object < id));/return t < depth;/' "$CORE" "$CORE_TESTS"
 mutant near-bound-from-the-eye src/core/footprint_caster.cpp 's/out\[i\] = distance - radius\[i\] - corner_distance - 1e-6/out[i] = distance - radius[i] - 1e-6/' "$CORE" "$CORE_TESTS"
 mutant pending-tests-left-in-the-queue src/core/footprint_caster.cpp 's/^    run_pending_tests(options.formula, s.pixels);/    (void)0;/' "$CORE" "$CORE_TESTS"
 mutant band-sort-reads-one-candidate src/core/footprint_caster.cpp 's/for (const Candidate\& c : s.sorted) use(c);/for (const Candidate\& c : s.sorted) { use(c); break; }/' "$CORE" "$CORE_TESTS"
@@ -304,6 +304,9 @@ mutant reader-comma-optional src/io/scene_file_reader.cpp "s/^    if (text_\[at_
 mutant reader-escapes-ignored src/io/scene_file_reader.cpp 's/^    if (text\[at\] == .\\\\.)$/    if (false)/' "$CORE" "$READER_TESTS"
 mutant reader-always-in-one-go src/io/scene_file_reader.cpp 's/^      if (!regular) fall_back();/      fall_back();/' "$CORE" "$READER_TESTS"
 mutant reader-text-after-the-end src/io/scene_file_reader.cpp 's/^      return at_ == text_.size();/      return true;/' "$CORE" "$READER_TESTS"
+# --- #34 page speed: writing the band (item 8) ---
+mutant background-group-one-id-a-word src/core/footprint_caster.cpp 's/constexpr std::uint64_t kSigns = 0x8000000080000000u;/constexpr std::uint64_t kSigns = 0x80000000u;/' "$CORE" "$CORE_TESTS"
+mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered += std::uint32_t((w \* 0x0101010101010101u) >> 56);/covered += std::uint32_t(w \& 1u);/' "$CORE" "$CORE_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -60,7 +60,7 @@ void run_pending_tests(IntersectFormula formula, BandPixels& band) {
     const std::size_t p = std::size_t(q.pixel[i]);
     const double t = q.t[i], held = depth[p];
     const int object = q.object[i], held_id = id[p];
-    const bool nearer = (t < held) | ((t == held) & (object < held_id));  // nearer_hit, both sides evaluated
+    const bool nearer = nearer_hit(t, object, held, held_id);
     depth[p] = nearer ? t : held;
     id[p] = nearer ? object : held_id;
   }

@@ -426,14 +426,27 @@ void write_band(Rgb8 background, const Rgb8* colour, int row_begin, int row_end,
   };
   std::size_t p = 0;
   for (; p + kGroup <= pixels; p += kGroup) {
-    int all = -1;  // its sign bit stays set only if every id of the group is negative (no hit)
-    for (std::size_t k = 0; k < kGroup; ++k) all &= id[p + k];
-    if (all < 0) std::memcpy(colours + p, backgrounds, sizeof backgrounds);
+    // Two ids a 64-bit word: the group is all background when every id's sign bit is set. A loop over the eight
+    // ids compiled to eight scalar steps in WebAssembly (the page's colours took twice as long).
+    std::uint64_t words[kGroup / 2];
+    std::memcpy(words, id + p, sizeof words);
+    const std::uint64_t all = words[0] & words[1] & words[2] & words[3];
+    constexpr std::uint64_t kSigns = 0x8000000080000000u;
+    if ((all & kSigns) == kSigns) std::memcpy(colours + p, backgrounds, sizeof backgrounds);
     else write_each(p, p + kGroup);
   }
   write_each(p, pixels);
-  std::uint32_t covered = 0;  // a byte a pixel, summed in 32 bits: a loop that vectorises well
-  for (std::size_t q = 0; q < pixels; ++q) covered += scratch.pixels.covered[q];
+  // A byte a pixel, 0 or 1: eight at a time, their sum in a word's top byte after one multiplication (a loop over
+  // the bytes took twice as long in WebAssembly; natively the same time).
+  std::uint32_t covered = 0;
+  const unsigned char* cov = scratch.pixels.covered.data();
+  std::size_t q = 0;
+  for (; q + 8 <= pixels; q += 8) {
+    std::uint64_t w;
+    std::memcpy(&w, cov + q, 8);
+    covered += std::uint32_t((w * 0x0101010101010101u) >> 56);
+  }
+  for (; q < pixels; ++q) covered += cov[q];
   scratch.covered_pixels += covered;
 }
 }  // namespace
