@@ -138,7 +138,7 @@ mutant cluster-split-at-wrong-centre src/core/sphere_clusters.cpp 's/splits.push
 mutant figure-ray-hit-from-the-eye src/figure/construction_figure.cpp 's/nearest_hit_t<2, double>(pixel, u,/nearest_hit_t<2, double>(eye, u,/' "$FIGURE" "^figure: ?every 2D frame's rays"
 mutant figure-png-red-blue-swapped src/figure/figure_files.cpp 's/row\[std::size_t(x) \* 3 + 0\] = (pixel\[x\] >> 16) \& 0xff;/row[std::size_t(x) * 3 + 0] = pixel[x] \& 0xff;/; s/row\[std::size_t(x) \* 3 + 2\] = pixel\[x\] \& 0xff;/row[std::size_t(x) * 3 + 2] = (pixel[x] >> 16) \& 0xff;/' "$FIGURE" "^figure: ?a PNG figure fills"
 mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"reçu : {got} ; attendu : {wanted}"/"reçu : {wanted} ; attendu : {got}"/' "$SESSION" "^session: ?error reasons: a sample"
-mutant open-keeps-save-as-path src/ui/panel_state.cpp 's/^  panels.save_path.clear();  \/\/ Save as starts empty.*$/  \/\/ (Save as kept)/' "raycam_ui_tests" "^ui: ?(the panels follow an opened scene|a scene opened outside the panel)"
+mutant open-keeps-save-as-path src/ui/panel_state.cpp 's/^  if (opened) panels.save_path.clear();  \/\/ Save as starts empty.*$/  \/\/ (Save as kept)/' "raycam_ui_tests" "^ui: ?(the panels follow an opened scene|a scene opened outside the panel)"
 # --- a large course: shards, merge, grade books ---
 SHARDS="^check:.*(slice|shard|--shard|csv records|merge|Gradescope|gradescope|CSV's last column)|^check: (GNU parallel|Gradescope)"
 mutant shard-hash-not-fnv src/check/shards.cpp 's/    hash \*= 1099511628211ull;/    hash *= 1099511628213ull;/' "$CHECK" "$SHARDS"
@@ -244,7 +244,7 @@ mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' ||
 mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
 # --- #35 lecture words ---
 # The lecture-hall walk at 3x in French (issue 35 items 2, 5, 6, 8): what a typed path, an export and a label say.
-mutant open-failure-empties-box src/ui/panel_state.cpp 's/^  if (panels.scene_opens_seen == lesson.scene_opens) return;$/  (void)0;/' "raycam_ui_tests" "^ui: ?the panels follow an opened scene"
+mutant open-failure-empties-box src/ui/panel_state.cpp 's/^  if (!opened && !switched) return;$/  (void)0;/' "raycam_ui_tests" "^ui: ?the panels follow an opened scene"
 mutant open-keeps-look-at src/session/app_state.cpp '/^    state.mistake_look_at.clear();  \/\/ a "show me" pointed at the old scene/d' "$SESSION" "^session: ?Open resets every field"
 mutant clicks-not-spread src/ui/key_queue.h 's/  static bool changes_a_key(const Event\& e) { return e.key >= 0 || e.button >= 0; }/  static bool changes_a_key(const Event\& e) { return e.key >= 0; }/' "raycam_ui_tests" "^ui: ?Ctrl\+A, Home and a double-click"
 mutant chord-split-by-its-modifier src/ui/key_queue.h 's/    return (changes_a_key(e) \&\& changed(id_of(e))) || (e.modifier \&\& pressed_key_);/    return changes_a_key(e) \&\& changed(id_of(e));/' "raycam_ui_tests" "^ui: ?a chord whose modifier"
@@ -293,7 +293,7 @@ mutant cli-figure-file-names-translated src/io/demo_names.cpp 's/^  if (!setup.s
 mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t scene_opens = 0; .*$/&\n  std::string path_input;  \/\/ the Open box/' "$STRUCTURE" "^structure: src/session reads no panel state"
 mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^  if (outcome == SaveAsOutcome::needs_yes) panels.overwrite_pending = asked;.*$/  (void)outcome;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
 mutant check-command-not-handed-over src/ui/panel_state.cpp '/^  panels.check_command = options.check_command;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
-mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_opened_scene(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
+mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_scene_shown(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
 mutant big-file-parsed-in-one-go src/web/scene_loading.cpp 's/constexpr double kParseSliceMs = 50.0;/constexpr double kParseSliceMs = 1e9;/' "raycam_web_page" "^web: a big scene file opens"
 # --- #34 big files parsed in steps ---
@@ -307,6 +307,9 @@ mutant reader-text-after-the-end src/io/scene_file_reader.cpp 's/^      return a
 # --- #34 page speed: writing the band (item 8) ---
 mutant background-group-one-id-a-word src/core/footprint_caster.cpp 's/constexpr std::uint64_t kSigns = 0x8000000080000000u;/constexpr std::uint64_t kSigns = 0x80000000u;/' "$CORE" "$CORE_TESTS"
 mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered += std::uint32_t((w \* 0x0101010101010101u) >> 56);/covered += std::uint32_t(w \& 1u);/' "$CORE" "$CORE_TESTS"
+# --- QA after the panel move: questions follow the scene on screen ---
+mutant questions-survive-tab src/ui/panel_state.cpp 's/^  const bool switched = panels.dimension_seen != shown_dimension;/  const bool switched = false;/' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
+mutant figure-question-survives-open src/ui/panel_state.cpp '/^  panels.figure_replace_pending = 0;$/d' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

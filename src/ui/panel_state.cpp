@@ -11,17 +11,26 @@ PanelState panel_state_for(const AppOptions& options, const Lesson& lesson) {
   panels.check_command = options.check_command;
   panels.path_input = scene_path(lesson);
   panels.scene_opens_seen = lesson.scene_opens;
+  panels.dimension_seen = dimension(lesson);
   // The colour map's default file name in the window's language too.
   panels.export_path = tr(lesson.language, "raycam-colour-map.png");
   return panels;
 }
 
-void follow_opened_scene(const Lesson& lesson, PanelState& panels) {
-  if (panels.scene_opens_seen == lesson.scene_opens) return;
+void follow_scene_shown(const Lesson& lesson, PanelState& panels) {
+  const int shown_dimension = dimension(lesson);
+  const bool opened = panels.scene_opens_seen != lesson.scene_opens;
+  const bool switched = panels.dimension_seen != shown_dimension;
   panels.scene_opens_seen = lesson.scene_opens;
-  panels.path_input = scene_path(lesson);
-  panels.save_path.clear();  // Save as starts empty: never the file just opened unless the user types it
+  panels.dimension_seen = shown_dimension;
+  if (!opened && !switched) return;
+  // Both questions were about the scene that was on screen: Replace must never write another scene's camera
+  // (Save as) or other files than it named (Export figure: 2D frames a … d, 3D steps 0 … 5).
   panels.overwrite_pending.clear();
+  panels.figure_replace_pending = 0;
+  panels.figure_replace_files.clear();
+  panels.path_input = scene_path(lesson);  // the file on screen (empty: the demo)
+  if (opened) panels.save_path.clear();  // Save as starts empty: never the file just opened unless typed
 }
 
 bool save_as(AppState& state, PanelState& panels, const std::string& path, bool overwrite) {

@@ -35,6 +35,7 @@ struct PanelState {
   // Text inputs (Open and Save as have their own paths).
   std::string path_input;         // Open: the file last opened, or what the user typed
   std::uint64_t scene_opens_seen = 0;  // the session's scene_opens when path_input last followed an open
+  int dimension_seen = 3;              // the dimension on screen then (a switch withdraws the questions too)
   std::string save_path;          // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   std::string export_path = "raycam-colour-map.png";
@@ -50,8 +51,10 @@ struct PanelState {
 PanelState panel_state_for(const session::AppOptions& options, const session::Lesson& lesson);
 
 // After a scene file opened (the Open button, a dropped file, the page's picker: session::open_scene counts
-// them): the Open box shows its path, and Save as starts empty, with no question left from the old scene.
-void follow_opened_scene(const session::Lesson& lesson, PanelState& panels);
+// them) or the other dimension came on screen (Tab, the 2D/3D buttons): the Open box shows the file on screen,
+// and no Replace question is left from the scene before (it would write another scene's camera, or other
+// files than it named); after an open, Save as starts empty too.
+void follow_scene_shown(const session::Lesson& lesson, PanelState& panels);
 
 // Save as (session::save_preset_as) from the panel: an existing file is replaced only with `overwrite`;
 // otherwise panels.overwrite_pending names it and the panel asks. Returns true if it saved.

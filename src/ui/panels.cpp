@@ -689,7 +689,7 @@ void files_section(AppState& state, PanelState& panels) {
   } else {
     bool open = path_box(tr(state.language, "open###open_path"), panels.path_input);
     open |= button(tr(state.language, "Open"));
-    if (open && open_scene(state, panels.path_input)) follow_opened_scene(state, panels);
+    if (open && open_scene(state, panels.path_input)) follow_scene_shown(state, panels);
     explain(tr(state.language, "or drop a scene file on the window"));
   }
   if (downloads) {  // a download named after the scene; the browser asks where, if it is set to

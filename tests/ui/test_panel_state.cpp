@@ -45,18 +45,18 @@ TEST_CASE("the panels follow an opened scene: the Open box shows it, Save as sta
   REQUIRE(session::save_preset(state, second));
   ui::PanelState panels;
   REQUIRE(session::open_scene(state, first));
-  ui::follow_opened_scene(state, panels);
+  ui::follow_scene_shown(state, panels);
   CHECK(panels.path_input == first);
   // Everything a user can have left in the boxes on the first scene.
   panels.save_path = scratch.path("typed-for-first.json");  // typed in Save as, not saved yet
   panels.overwrite_pending = first;                          // a Replace question not answered
   panels.path_input = scratch.path("half-typed");
-  ui::follow_opened_scene(state, panels);  // nothing opened since: the boxes stay
+  ui::follow_scene_shown(state, panels);  // nothing opened since: the boxes stay
   CHECK(panels.path_input == scratch.path("half-typed"));
   CHECK(panels.overwrite_pending == first);
 
   REQUIRE(session::open_scene(state, second));
-  ui::follow_opened_scene(state, panels);
+  ui::follow_scene_shown(state, panels);
   CHECK(panels.save_path.empty());          // Save as never offers the old scene's path
   CHECK(panels.overwrite_pending.empty());  // nor its pending Replace
   CHECK(panels.path_input == second);
@@ -65,7 +65,7 @@ TEST_CASE("the panels follow an opened scene: the Open box shows it, Save as sta
   const std::string typo = scratch.path("typo.json");
   panels.path_input = typo;
   CHECK_FALSE(session::open_scene(state, typo));
-  ui::follow_opened_scene(state, panels);
+  ui::follow_scene_shown(state, panels);
   CHECK(panels.path_input == typo);
 }
 
@@ -114,4 +114,47 @@ TEST_CASE("Save as from the panel asks before replacing, and Replace writes the 
   CHECK_FALSE(ui::save_as(state, panels, "", false));
   CHECK(panels.overwrite_pending.empty());
   CHECK(state.message_is_error);
+}
+
+// QA: with Export figure's question up in 3D (steps-0 … 5), Tab to 2D and Replace wrote steps-a … d, which it
+// never named; the other way round it replaced six files nobody was asked about. Save as's question the same:
+// Replace wrote the 2D demo over the file asked about for the 3D scene.
+TEST_CASE("a Replace question is withdrawn when the other dimension comes on screen or a scene opens",
+          "[ui][panel-state][files]") {
+  const test::ScratchDir scratch("panel-state-switch");
+  const std::string file = scratch.path("lesson3d.json");
+  session::AppState state = test::state_for({});
+  REQUIRE(session::save_preset(state, file));
+  REQUIRE(session::open_scene(state, file));
+  ui::PanelState panels;
+  ui::follow_scene_shown(state, panels);
+  auto ask_both = [&] {
+    panels.overwrite_pending = file;
+    panels.figure_replace_pending = 2;
+    panels.figure_replace_files = {scratch.path("steps-0.svg"), scratch.path("steps-5.svg")};
+  };
+  ask_both();
+  ui::follow_scene_shown(state, panels);  // nothing changed: the questions stay
+  CHECK(panels.overwrite_pending == file);
+  CHECK(panels.figure_replace_pending == 2);
+
+  session::switch_dimension(state, 2);  // Tab
+  ui::follow_scene_shown(state, panels);
+  CHECK(panels.overwrite_pending.empty());
+  CHECK(panels.figure_replace_pending == 0);
+  CHECK(panels.figure_replace_files.empty());
+  CHECK(panels.path_input.empty());  // the 2D demo is on screen: no file, not the 3D scene's path
+
+  ask_both();
+  session::switch_dimension(state, 3);  // and back: the 3D scene's file again
+  ui::follow_scene_shown(state, panels);
+  CHECK(panels.overwrite_pending.empty());
+  CHECK(panels.figure_replace_pending == 0);
+  CHECK(panels.path_input == file);
+
+  ask_both();
+  REQUIRE(session::open_scene(state, file));  // an open: the same
+  ui::follow_scene_shown(state, panels);
+  CHECK(panels.overwrite_pending.empty());
+  CHECK(panels.figure_replace_pending == 0);
 }
