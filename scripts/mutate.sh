@@ -268,7 +268,7 @@ mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, f
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant combo-choice-cut src/ui/panels.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
-mutant verdict-scrolls-under-the-mouse src/ui/check_panel.cpp 's/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/  if (in_view.scroll_pending) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
+mutant verdict-scrolls-under-the-mouse src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
 mutant missing-answer-file-a-crash src/check/check_run.cpp 's/^  if (run.end == RunResult::End::could_not_start) result.status = CaseStatus::bad_output;$/  (void)0;/' "raycam_check_tests" "^check: ?grade_case reads an answer file"
 # --- #33 view model leftovers ---
 mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  preset = merged(preset, flags.camera);$/&\n  const bool is_2d = setup.dimension == 2;\n  if (is_2d \&\& flags.camera.phi_deg) throw std::invalid_argument("--phi: 3D only");\n  if (is_2d \&\& flags.camera.res_rows) throw std::invalid_argument("--res: one in 2D");\n  if (is_2d \&\& preset.size \&\& preset.size->size() != 1) throw std::invalid_argument("--size: N in 2D");\n  if (!is_2d \&\& preset.size \&\& preset.size->empty()) throw std::invalid_argument("--size: WxH in 3D");\n  if (is_2d) setup.camera2d = camera2d_from_preset(preset);/' "raycam_io" "^structure: at most 30 dimension branches"
@@ -310,6 +310,7 @@ mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered +=
 # --- QA after the panel move: questions follow the scene on screen ---
 mutant questions-survive-tab src/ui/panel_state.cpp 's/^  const bool switched = panels.dimension_seen != shown_dimension;/  const bool switched = false;/' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
 mutant figure-question-survives-open src/ui/panel_state.cpp '/^  panels.figure_replace_pending = 0;$/d' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
+mutant verdict-scrolls-on-a-click src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

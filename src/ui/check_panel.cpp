@@ -105,7 +105,11 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
                                            : tr(language, "answer for an earlier camera: download the new case"));
   }
   ImGui::PopStyleColor();
-  if (in_view.scroll_pending && !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {
+  // ImGui counts a window as not hovered while one of its controls is held (a click on a box, a slider, a
+  // header): the scroll waits for the mouse itself to be elsewhere, with no button down.
+  const bool mouse_on_panel =
+      ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
+  if (in_view.scroll_pending && !mouse_on_panel && !ImGui::IsAnyMouseDown()) {
     ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
     in_view.scroll_pending = false;
   }
