@@ -311,6 +311,8 @@ mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered +=
 mutant questions-survive-tab src/ui/panel_state.cpp 's/^  const bool switched = panels.dimension_seen != shown_dimension;/  const bool switched = false;/' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
 mutant figure-question-survives-open src/ui/panel_state.cpp '/^  panels.figure_replace_pending = 0;$/d' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
 mutant verdict-scrolls-on-a-click src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
+mutant save-question-beside-saved src/ui/panel_state.cpp '/^    if (state.message_source == MessageSource::files) state.message.clear();$/d' "raycam_ui_tests" "^ui: ?Save as from the panel asks"
+mutant bad-start-scene-empties-box src/ui/panel_state.cpp '/^  if (panels.path_input.empty() \&\& options.view.scene_path) panels.path_input = \*options.view.scene_path;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

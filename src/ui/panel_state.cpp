@@ -10,6 +10,9 @@ PanelState panel_state_for(const AppOptions& options, const Lesson& lesson) {
   PanelState panels;
   panels.check_command = options.check_command;
   panels.path_input = scene_path(lesson);
+  // A scene file that could not be opened (the demo shows, with the error): its path stays in the box, to be
+  // fixed in place as a typed one is.
+  if (panels.path_input.empty() && options.view.scene_path) panels.path_input = *options.view.scene_path;
   panels.scene_opens_seen = lesson.scene_opens;
   panels.dimension_seen = dimension(lesson);
   // The colour map's default file name in the window's language too.
@@ -38,7 +41,12 @@ bool save_as(AppState& state, PanelState& panels, const std::string& path, bool 
   const std::string asked = path;
   panels.overwrite_pending.clear();
   const SaveAsOutcome outcome = save_preset_as(state, asked, overwrite);
-  if (outcome == SaveAsOutcome::needs_yes) panels.overwrite_pending = asked;  // the panel asks
+  if (outcome == SaveAsOutcome::needs_yes) {  // the panel asks
+    panels.overwrite_pending = asked;
+    // An earlier "saved the camera preset to …" beside "… already exists. Replace it?" read as done, and
+    // stayed after Cancel as if it had saved.
+    if (state.message_source == MessageSource::files) state.message.clear();
+  }
   return outcome == SaveAsOutcome::saved;
 }
 

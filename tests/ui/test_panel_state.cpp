@@ -34,6 +34,13 @@ TEST_CASE("the start-up options reach the panels: --check's program, the Open bo
   CHECK(panels.export_path != "raycam-colour-map.png");  // the French name, not the English key
   // The demo scene: no file to show.
   CHECK(ui::panel_state_for(session::AppOptions{}, test::state_for({})).path_input.empty());
+  // A file that does not open: the app shows the demo and the error; the box keeps the path, to be fixed (QA:
+  // it was empty).
+  session::AppOptions typo = flags::parse_app_options({"--scene", std::string(SCENES_DIR) + "/many3d.jsn"});
+  typo.demo_on_bad_scene = true;
+  const session::AppState on_demo = session::make_app_state(typo);
+  REQUIRE(session::scene_path(on_demo).empty());
+  CHECK(ui::panel_state_for(typo, on_demo).path_input == std::string(SCENES_DIR) + "/many3d.jsn");
 }
 
 TEST_CASE("the panels follow an opened scene: the Open box shows it, Save as starts empty, no question left",
@@ -99,9 +106,12 @@ TEST_CASE("Save as from the panel asks before replacing, and Replace writes the 
   const std::string before = read(path);
   session::view3d(state).orbit.d = 3.5;
   ui::PanelState panels;
+  REQUIRE(ui::save_as(state, panels, scratch.path("other.json"), false));  // "saved the camera preset to …"
+  REQUIRE_FALSE(state.message.empty());
   panels.save_path = path;
   CHECK_FALSE(ui::save_as(state, panels, panels.save_path, false));  // "… already exists. Replace it?"
   REQUIRE(panels.overwrite_pending == path);
+  CHECK(state.message.empty());  // no "saved" left beside the question (it read as done, and after Cancel)
   CHECK(read(path) == before);  // nothing written yet
   // The Replace button hands the pending path itself (a reference to the panels' own string).
   CHECK(ui::save_as(state, panels, panels.overwrite_pending, true));
