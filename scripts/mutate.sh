@@ -291,7 +291,7 @@ mutant cli-figure-demo-names-english src/cli/figure_command.cpp '/^  name_demo_o
 mutant cli-figure-file-names-translated src/io/demo_names.cpp 's/^  if (!setup.scene_path.empty()) return;.*/  (void)0;/' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
 # --- #33 panel state in ui ---
 mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t scene_opens = 0; .*$/&\n  std::string path_input;  \/\/ the Open box/' "$STRUCTURE" "^structure: src/session reads no panel state"
-mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^  if (outcome == SaveAsOutcome::needs_yes) panels.overwrite_pending = asked;.*$/  (void)outcome;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
+mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^    panels.overwrite_pending = asked;$/    (void)asked;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
 mutant check-command-not-handed-over src/ui/panel_state.cpp '/^  panels.check_command = options.check_command;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
 mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_scene_shown(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
@@ -313,6 +313,10 @@ mutant figure-question-survives-open src/ui/panel_state.cpp '/^  panels.figure_r
 mutant verdict-scrolls-on-a-click src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
 mutant save-question-beside-saved src/ui/panel_state.cpp '/^    if (state.message_source == MessageSource::files) state.message.clear();$/d' "raycam_ui_tests" "^ui: ?Save as from the panel asks"
 mutant bad-start-scene-empties-box src/ui/panel_state.cpp '/^  if (panels.path_input.empty() \&\& options.view.scene_path) panels.path_input = \*options.view.scene_path;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
+# --- QA: a newer check stops a stale run ---
+mutant stale-check-run-kept src/session/camera_check.cpp '/^  if (shared_->running) shared_->cancel_running = true;  \/\/ and stops one still running$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
+mutant case-cancel-not-passed src/check/case_verdict.cpp '/^    limits.cancel = source.cancel;$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
+mutant run-ignores-cancel src/check/student_process.cpp 's/^    auto cancelled = \[\&\] { return limits.cancel \&\& limits.cancel->load(); };/    auto cancelled = [] { return false; };/' "raycam_session_tests" "^session: ?a newer check stops a run"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -20,8 +20,10 @@ CaseVerdict grade_case(const CheckCase& checked, const CaseSource& source) {
   } else {
     RunLimits limits;
     limits.timeout_seconds = source.timeout_seconds;
-    verdict.result =
-        result_of_run(1, checked, reference, run_student(source.argv, scene_to_json(checked.file), limits, sandbox));
+    limits.cancel = source.cancel;
+    const RunResult run = run_student(source.argv, scene_to_json(checked.file), limits, sandbox);
+    if (run.cancelled) return verdict;  // nobody waits for it: no grading, no diagnosis
+    verdict.result = result_of_run(1, checked, reference, run);
   }
   verdict.dimension = reference.dimension;
   verdict.rows = reference.rows;

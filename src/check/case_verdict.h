@@ -3,6 +3,7 @@
 // the diagnosis when it is affordable.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ struct CaseSource {
   // Above this many ray-object tests (pixels × objects) the case is graded but not diagnosed: the diagnosis
   // renders it again 91 times.
   double diagnosis_budget = 2e7;
+  // The caller gave up (RunLimits::cancel): the run stops within 50 ms, the verdict is not diagnosed and is
+  // of no use.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Runs (or reads) `source` on `checked` and grades it. Throws std::invalid_argument on a camera the core

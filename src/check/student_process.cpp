@@ -482,9 +482,10 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     rusage usage {};
     bool exited = false;
     Clock::time_point drained_by = deadline;
+    auto cancelled = [&] { return limits.cancel && limits.cancel->load(); };
     while (out.read >= 0 || err.read >= 0) {
       const auto now = Clock::now();
-      if (now >= deadline && !exited) {
+      if ((now >= deadline || cancelled()) && !exited) {
         timed_out = true;
         break;
       }
@@ -540,7 +541,7 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     // Output closed: wait for the exit, still under the deadline (a program may close stdout and go on).
     pid_t done = exited ? pid : 0;
     while (!exited && !timed_out && !too_large && (done = wait_with_usage(pid, &status, WNOHANG, &usage)) == 0) {
-      if (Clock::now() >= deadline) timed_out = true;
+      if (Clock::now() >= deadline || cancelled()) timed_out = true;
       else if (group && group->cpu_seconds() > cpu_limit) timed_out = cpu_out = true;
       else usleep(2000);
     }
@@ -550,6 +551,10 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
       wait_with_usage(pid, &status, 0, &usage);
       result.end = timed_out ? RunResult::End::timed_out : RunResult::End::output_too_large;
       result.limit = timed_out ? kTimeLimit : kOutputLimit;
+      if (timed_out && !cpu_out && Clock::now() < deadline && cancelled()) {
+        result.cancelled = true;  // no bound ended it: the caller gave up
+        result.limit.clear();
+      }
       if (cpu_out) result.error = "CPU time";
     } else if (WIFEXITED(status)) {
       result.end = RunResult::End::exited;

@@ -13,6 +13,7 @@
 // limits apply except the isolation, the tmpfs and the uid.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,9 @@ struct RunLimits {
   long long file_bytes = 64LL << 20;    // largest file it may write (RLIMIT_FSIZE)
   int max_processes = 256;  // processes and threads of the run (its control group; else RLIMIT_NPROC)
   bool use_run_groups = true;  // false: per-process limits only (the fallback, also for tests)
+  // Set by the caller when it no longer wants the answer (the window's check: the camera moved on): the run
+  // is stopped at its next poll (within 50 ms) and its result says cancelled.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Which bound ended a run (isolate's meta file's "status"), as the report and the CSV name it.
@@ -73,6 +77,7 @@ struct RunResult {
   long long peak_memory_bytes = 0;
   std::string limit;
   bool bounded_per_run = false;  // memory and processes counted for the run as a whole (a control group)
+  bool cancelled = false;        // RunLimits::cancel stopped it (then ended as timed_out, limit "")
 };
 
 // Runs `argv` (argv[0] looked up in PATH if it has no '/') with `input` on stdin. Never throws for what the

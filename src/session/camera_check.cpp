@@ -3,6 +3,7 @@
 
 #include <sys/stat.h>
 
+#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
@@ -29,6 +30,9 @@ struct CheckShared {
   std::condition_variable wake;
   std::optional<CheckJob> pending;
   bool running = false, stop = false, worker_started = false;
+  // Set when a newer job arrives while one runs: the running program is stopped (within 50 ms) and its
+  // verdict dropped, so the newer camera's verdict does not wait up to a whole timeout behind a stale run.
+  std::atomic<bool> cancel_running{false};
   std::shared_ptr<const KeyedVerdict> latest;
   double started_at = 0;
 };
@@ -64,10 +68,12 @@ void work(std::shared_ptr<CheckShared> shared) {
       job = std::move(*shared->pending);
       shared->pending.reset();
       shared->running = true;
+      shared->cancel_running = false;
     }
+    job.source.cancel = &shared->cancel_running;
     std::shared_ptr<const KeyedVerdict> verdict = graded(job);
     std::lock_guard<std::mutex> lock(shared->mutex);
-    shared->latest = std::move(verdict);
+    if (!shared->cancel_running) shared->latest = std::move(verdict);  // else a newer job waits: its turn
     shared->running = false;
   }
 }
@@ -84,6 +90,7 @@ CameraCheck::CameraCheck() : shared_(std::make_shared<CheckShared>()) {}
 CameraCheck::~CameraCheck() {
   std::lock_guard<std::mutex> lock(shared_->mutex);
   shared_->stop = true;
+  shared_->cancel_running = true;  // a program still running is stopped, not left to its timeout
   shared_->wake.notify_all();
 }
 
@@ -174,6 +181,7 @@ void CameraCheck::update(const Lesson& state, const HostLink& link, double now) 
   }
   std::lock_guard<std::mutex> lock(shared_->mutex);
   shared_->pending = std::move(job);  // a newer case replaces one still waiting
+  if (shared_->running) shared_->cancel_running = true;  // and stops one still running
   shared_->started_at = now;
   if (!shared_->worker_started) {
     shared_->worker_started = true;

@@ -76,6 +76,28 @@ TEST_CASE("a hanging program never blocks a frame", "[ui][check]") {
   CHECK_FALSE(check.up_to_date());
 }  // the destructor does not wait either: the worker finishes on its own
 
+// QA: with a hanging program running, a new program (or camera) waited behind it for the whole timeout (a
+// verdict 21 s after the change). The run that nobody wants any more is stopped: the new verdict comes in
+// seconds, and the stale one is never shown.
+TEST_CASE("a newer check stops a run still going instead of waiting for its timeout", "[ui][check]") {
+  AppState state = classic_2d();
+  CameraCheck check;
+  check.set_command(std::string("python3 ") + MISBEHAVING_PY + " hang", false);
+  double now = 0;
+  while (!check.busy() && now < 5.0) {  // past the quiet time: the hanging run starts
+    now += 0.1;
+    check.update(state, state, now);
+  }
+  REQUIRE(check.busy());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // it is running now
+  const auto changed = std::chrono::steady_clock::now();
+  check.set_command(EXAMPLE_STUDENT_CPP, false);
+  settle(check, state, now);
+  const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - changed).count();
+  CHECK(check.status() == "pass");  // the new program's verdict, not the stale run's timeout
+  CHECK(waited < 6.0);              // the hang's timeout is 10 s (kCheckTimeout)
+}
+
 TEST_CASE("a host without a thread to spare (the page) has the verdict in the frame that asks for it",
           "[ui][check][host]") {
   const test::ScratchDir scratch("page-check");
