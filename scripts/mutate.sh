@@ -317,6 +317,7 @@ mutant bad-start-scene-empties-box src/ui/panel_state.cpp '/^  if (panels.path_i
 mutant stale-check-run-kept src/session/camera_check.cpp '/^  if (shared_->running) shared_->cancel_running = true;  \/\/ and stops one still running$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant case-cancel-not-passed src/check/case_verdict.cpp '/^    limits.cancel = source.cancel;$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant run-ignores-cancel src/check/student_process.cpp 's/^    auto cancelled = \[\&\] { return limits.cancel \&\& limits.cancel->load(); };/    auto cancelled = [] { return false; };/' "raycam_session_tests" "^session: ?a newer check stops a run"
+mutant colour-map-message-relative src/ui/panels.cpp 's/shown_file_name(state.host, whole).c_str()/shown_file_name(state.host, export_path).c_str()/' "raycam_render_tests" "^render: ?Export colour map names the file"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <filesystem>
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/constants.hpp>
@@ -719,7 +720,9 @@ void files_section(AppState& state, PanelState& panels) {
   if (export_png) {
     try {
       write_png(state.map, export_path, 1, image_is_bar(state.view) ? 32 : 1);
-      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, export_path).c_str()));
+      // The whole path, as the screenshot and the figure exports name it (a relative name says nothing of where).
+      const std::string whole = std::filesystem::absolute(export_path).lexically_normal().string();
+      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, whole).c_str()));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), export_path));
     }

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <glm/trigonometric.hpp>
 #include <map>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../scratch_dir.h"
 #include "app_flags.h"
 #include "app_options.h"
 #include "gl.h"
@@ -368,4 +370,37 @@ TEST_CASE("lecture mode: a font scale changed in a running window draws what a w
     }
   CHECK(compared > 0.8 * from_start.width * from_start.height);
   CHECK(differing == 0);
+}
+
+// QA: Export colour map said "wrote raycam-colour-map.png" (the name as typed, relative to a folder the
+// student does not see) where the screenshot and the figure exports name the whole path.
+TEST_CASE("Export colour map names the file it wrote by its whole path", "[render][files]") {
+  const test::ScratchDir scratch("export-colour-map");
+  struct InFolder {  // the default name is relative: written into the scratch folder, whatever happens
+    std::filesystem::path before = std::filesystem::current_path();
+    explicit InFolder(const std::filesystem::path& dir) { std::filesystem::current_path(dir); }
+    ~InFolder() { std::filesystem::current_path(before); }
+  } in_folder(scratch.dir);
+  session::AppState state = state_for({"--size", "32x32"});
+  ui::WidgetRects rects;
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.panels().widget_rects = &rects;
+  renderer.run_frame(state);
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  panel->StateStorage.SetInt(panel->GetID("###files"), 1);  // the Scene file section open
+  renderer.render_settled(state);
+  const auto button = widget_rect(rects, "###export_png");
+  REQUIRE(button);
+  renderer.move_mouse(centre(*button).x, centre(*button).y);
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, true);
+  renderer.run_frame(state);
+  renderer.set_mouse_button(0, false);
+  renderer.run_frame(state);
+  const std::string written = (scratch.dir / renderer.panels().export_path).lexically_normal().string();
+  CHECK(std::filesystem::exists(written));
+  CHECK_FALSE(state.message_is_error);
+  INFO(state.message);
+  CHECK(state.message.find(written) != std::string::npos);
 }
