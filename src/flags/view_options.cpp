@@ -143,18 +143,18 @@ CLI::Option_group* add_caster_options(CLI::App& command, CastOptions& cast, Accu
   ReferenceOptions& knobs = accuracy.options;
   add_checked_option<int>(*group, "--precision", "P", "arithmetic per ray (default double)",
                           one_of({"float", "double", "long-double"}),
-                          [&accuracy, &knobs](int index) { knobs.scalar = kScalars[index]; });
+                          [&knobs](int index) { knobs.scalar = kScalars[index]; });
   add_checked_option<int>(*group, "--intersect", "F",
                           "naive (textbook b^2 - c) or stable (Ray Tracing Gems; default)",
-                          one_of({"naive", "stable"}), [&accuracy, &knobs](int index) {
+                          one_of({"naive", "stable"}), [&knobs](int index) {
                             knobs.formula = index == 0 ? IntersectFormula::naive : IntersectFormula::stable;
                           });
   add_checked_option<int>(
       *group, "--spp", "N", "stratified samples per pixel, colours averaged (3D: a square: 1, 4, 9, 16...)",
-      integer_in(1, kMaxSamplesPerPixel), [&accuracy, &knobs](int spp) { knobs.samples_per_pixel = spp; });
+      integer_in(1, kMaxSamplesPerPixel), [&knobs](int spp) { knobs.samples_per_pixel = spp; });
   add_checked_option<int>(
       *group, "--frame", "F", "world (default) or relative: coordinates relative to the eye",
-      one_of({"world", "relative"}), [&accuracy, &knobs](int index) { knobs.camera_relative = index == 1; });
+      one_of({"world", "relative"}), [&knobs](int index) { knobs.camera_relative = index == 1; });
   add_checked_option<int>(*group, "--placement", "R",
                           "orbit (default), arccos (handout) or stable (atan2): free placement from P and C",
                           one_of({"orbit", "arccos", "stable"}),
