@@ -26,7 +26,7 @@ import time
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(root, "tests", "web"))
-from page_driver import Page, open_big_scene  # noqa: E402
+from page_driver import Page, browser_cpu_seconds, open_big_scene  # noqa: E402
 
 parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 parser.add_argument("--rounds", type=int, default=3, help="rounds of the alternation (1 to 20, default 3)")
@@ -71,25 +71,8 @@ def native_ms(scene):
 
 
 def page_thread_seconds(page):
-    """CPU time (user + system) of the main thread of every renderer process of the browser, from /proc: the
-    page's WebAssembly runs on one of them (any other stays idle)."""
-    ticks = os.sysconf("SC_CLK_TCK")
-    total, stack = 0.0, [page.driver.service.process.pid]
-    while stack:
-        pid = stack.pop()
-        try:
-            with open("/proc/%d/cmdline" % pid, "rb") as text:
-                renderer = b"--type=renderer" in text.read()
-            if renderer:
-                with open("/proc/%d/task/%d/stat" % (pid, pid)) as text:
-                    fields = text.read().rsplit(")", 1)[1].split()
-                total += (int(fields[11]) + int(fields[12])) / ticks
-            for task in os.listdir("/proc/%d/task" % pid):
-                with open("/proc/%d/task/%s/children" % (pid, task)) as text:
-                    stack += [int(child) for child in text.read().split()]
-        except OSError:
-            pass
-    return total
+    """CPU time of the page's thread: the main thread of the browser's renderer processes."""
+    return browser_cpu_seconds(page, renderers_main_thread=True)
 
 
 def page_error(page):

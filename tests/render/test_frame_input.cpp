@@ -69,16 +69,20 @@ void tap(headless::HeadlessRenderer& renderer, session::AppState& state, int key
   renderer.run_frame(state);
 }
 
-// Ctrl+click, as ImGui's sliders take it to type a value: hover, press with ctrl held, release.
-void ctrl_click(headless::HeadlessRenderer& renderer, session::AppState& state, ImVec2 at) {
+// A click as a hand makes it: hover, press (with ctrl held for a Ctrl+click), release, a frame each.
+void click(headless::HeadlessRenderer& renderer, session::AppState& state, ImVec2 at, bool ctrl = false) {
   renderer.move_mouse(at.x, at.y);
   renderer.run_frame(state);
-  ImGui::GetIO().KeyCtrl = true;
+  ImGui::GetIO().KeyCtrl = ctrl;
   renderer.set_mouse_button(0, true);
   renderer.run_frame(state);
   renderer.set_mouse_button(0, false);
   ImGui::GetIO().KeyCtrl = false;
   renderer.run_frame(state);
+}
+// Ctrl+click, as ImGui's sliders take it to type a value.
+void ctrl_click(headless::HeadlessRenderer& renderer, session::AppState& state, ImVec2 at) {
+  click(renderer, state, at, true);
 }
 
 ImVec2 centre(const std::pair<ImVec2, ImVec2>& r) {
@@ -392,12 +396,7 @@ TEST_CASE("Export colour map names the file it wrote by its whole path", "[rende
   renderer.render_settled(state);
   const auto button = widget_rect(rects, "###export_png");
   REQUIRE(button);
-  renderer.move_mouse(centre(*button).x, centre(*button).y);
-  renderer.run_frame(state);
-  renderer.set_mouse_button(0, true);
-  renderer.run_frame(state);
-  renderer.set_mouse_button(0, false);
-  renderer.run_frame(state);
+  click(renderer, state, centre(*button));
   const std::string written = (scratch.dir / renderer.panels().export_path).lexically_normal().string();
   CHECK(std::filesystem::exists(written));
   CHECK_FALSE(state.message_is_error);

@@ -4,6 +4,7 @@ chromium + chromium-driver).
 WebGL 2 runs on SwiftShader, Chromium's CPU renderer, so no GPU is needed."""
 import functools
 import http.server
+import os
 import pathlib
 import threading
 import time
@@ -120,3 +121,29 @@ requestAnimationFrame(watch);
 def open_big_scene(page, count, seconds=120):
     page.driver.set_script_timeout(seconds + 30)
     return page.driver.execute_async_script(BIG_SCENE_SCRIPT, count, seconds)
+
+
+def browser_cpu_seconds(page, renderers_main_thread=False):
+    """User + system CPU seconds of the browser's processes (chromedriver's descendants), from /proc; with
+    `renderers_main_thread`, only the main thread of each renderer process (the page's WebAssembly runs on one
+    of them; any other stays idle)."""
+    ticks = os.sysconf("SC_CLK_TCK")
+    total, stack = 0.0, [page.driver.service.process.pid]
+    while stack:
+        pid = stack.pop()
+        try:
+            counted = True
+            if renderers_main_thread:
+                with open("/proc/%d/cmdline" % pid, "rb") as text:
+                    counted = b"--type=renderer" in text.read()
+            if counted:
+                stat = "/proc/%d/task/%d/stat" % (pid, pid) if renderers_main_thread else "/proc/%d/stat" % pid
+                with open(stat) as text:
+                    fields = text.read().rsplit(")", 1)[1].split()
+                total += (int(fields[11]) + int(fields[12])) / ticks
+            for task in os.listdir("/proc/%d/task" % pid):
+                with open("/proc/%d/task/%s/children" % (pid, task)) as text:
+                    stack += [int(child) for child in text.read().split()]
+        except OSError:
+            pass
+    return total

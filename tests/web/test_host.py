@@ -15,7 +15,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_checks import check, errors_in, failures, skip_unless_built, wait_for  # noqa: E402
 
 skip_unless_built(sys.argv[1] if len(sys.argv) == 2 else "", ("index.html", "index.js", "index.wasm", "index.data"))
-from page_driver import Page  # noqa: E402
+from page_driver import Page, browser_cpu_seconds  # noqa: E402
 
 from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 from selenium.webdriver.common.keys import Keys  # noqa: E402
@@ -159,24 +159,6 @@ def ratio_two(at_one, layout_one):
         check(errors_in(page.console()) == [], "ratio 2: no error in the console")
     finally:
         page.close()
-
-
-def browser_cpu_seconds(page):
-    """User + system CPU time of every process of the browser (chromedriver's descendants), from /proc."""
-    ticks = os.sysconf("SC_CLK_TCK")
-    total, stack = 0.0, [page.driver.service.process.pid]
-    while stack:
-        pid = stack.pop()
-        try:
-            with open("/proc/%d/stat" % pid) as text:
-                fields = text.read().rsplit(")", 1)[1].split()
-            total += (int(fields[11]) + int(fields[12])) / ticks
-            for task in os.listdir("/proc/%d/task" % pid):
-                with open("/proc/%d/task/%s/children" % (pid, task)) as text:
-                    stack += [int(child) for child in text.read().split()]
-        except OSError:
-            pass
-    return total
 
 
 def main_thread_seconds(page):
