@@ -81,7 +81,7 @@ mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/std
 CHECK="raycam_check_tests raycam-cli"
 mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = result.wrong_pixels == 0 ? CaseStatus::pass/result.status = result.wrong_pixels <= 1 ? CaseStatus::pass/' "$CHECK" "^check:"
 mutant sandbox-writable-host src/check/student_process.cpp 's/  words.insert(words.end(), {"--remount-ro", "\/tmp"/  words.insert(words.end(), {"--bind", "\/var", "\/var", "--remount-ro", "\/tmp"/' "$CHECK" "^check:"
-mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline) timed_out = true;/      if (false) timed_out = true;/' "$CHECK" "^check:"
+mutant no-deadline-after-stdout-closes src/check/student_process.cpp 's/      if (Clock::now() >= deadline || cancelled()) timed_out = true;/      if (cancelled()) timed_out = true;/' "$CHECK" "^check:"
 mutant score-line-counts-failures src/check/check_report.cpp 's/^               report.passed(), n,$/               n - report.passed(), n,/' "$CHECK" "^check:"
 mutant answer-ids-not-capped src/check/answer.cpp 's/    if (flat_ ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();//' "$CHECK" "^check:"
 mutant square-pixels-ignored src/core/camera3d.cpp 's/return mistakes_.square_pixels ? x \* double(columns_) \/ double(rows_) : x;/return x;/' "$CHECK raycam_core_tests" "^(check|core):"
@@ -318,6 +318,16 @@ mutant stale-check-run-kept src/session/camera_check.cpp '/^  if (shared_->runni
 mutant case-cancel-not-passed src/check/case_verdict.cpp '/^    limits.cancel = source.cancel;$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant run-ignores-cancel src/check/student_process.cpp 's/^    auto cancelled = \[\&\] { return limits.cancel \&\& limits.cancel->load(); };/    auto cancelled = [] { return false; };/' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant colour-map-message-relative src/ui/panels.cpp 's/shown_file_name(state.host, whole).c_str()/shown_file_name(state.host, export_path).c_str()/' "raycam_render_tests" "^render: ?Export colour map names the file"
+# --- #34 page speed: the float culling pass (item 8) ---
+FLOAT_TESTS="^core: ?(the float pass|casts with and without the float pass)"
+# A growth of one float rounding: the float centre's error alone then drops spheres. (Rows mapped upside
+# down is not a mutant: the pixel centres are symmetric, so the test cannot tell, and neither can the ids.)
+mutant float-culling-growth-too-small src/core/float_culling.cpp 's/^constexpr float kGrowth = 0x1p-12f;/constexpr float kGrowth = 0x1p-24f;/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-rows-counted-as-columns src/core/float_culling.cpp 's/-f.df, f.rows);/-f.df, f.columns);/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-half-width-centre-only src/core/float_culling.cpp 's/spread \* (std::abs(a) \* far + c2)/spread * c2/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-behind-by-the-near-side src/core/float_culling.cpp 's/const bool behind = far < f.df \* (1.0f - kGrowth);/const bool behind = near < f.df;/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-gathers-the-wrong-radius src/core/footprint_caster.cpp 's/gathered\[3\]\[j\] = spheres.radius\[i\];/gathered[3][j] = spheres.radius[at + std::size_t(j)];/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-keeps-everything src/core/float_culling.cpp 's/^    unseen\[i\] = behind | (bounded \& (off_columns | off_rows));/    unseen[i] = behind \& !behind;/' "$CORE" "$FLOAT_TESTS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -46,6 +46,10 @@ struct CastOptions {
   // be nearer than its hit so far (the stable formula only). false: object order and every test, the
   // caster as it was before (the speed bench's before/after). The ids are the same either way.
   bool near_to_far = true;
+  // 3D footprint and binned casters: a first culling pass in single precision, proven never to drop a sphere
+  // the double pass keeps (src/core/float_culling.cpp), where most spheres are culled; the same ids either
+  // way. false: the double pass alone (the speed bench's before/after).
+  bool float_culling = true;
 };
 
 // Work done by one cast, shown by the app's status line.

@@ -56,6 +56,8 @@ struct SphereClusters {
   static constexpr int kSize = 64;
   std::vector<double> x, y, z, radius;  // the spheres, cluster after cluster
   std::vector<int> object;              // each one's index in the scene (its id)
+  // The same spheres rounded to float, for a cheap first culling pass (four a WebAssembly vector, not two).
+  std::vector<float> float_x, float_y, float_z, float_radius;
   // Cluster k holds spheres k·kSize … min(size, (k+1)·kSize) - 1, all inside this sphere.
   std::vector<double> bound_x, bound_y, bound_z, bound_radius;
 

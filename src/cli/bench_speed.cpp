@@ -262,6 +262,8 @@ struct Variant {
 
 // The automatic caster as it was before the near-to-far order: the before/after in one run.
 const char* const kObjectOrder = "object order";
+// The automatic caster without the float culling pass (CastOptions::float_culling): what that pass saves.
+const char* const kDoubleCulling = "double culling";
 
 std::vector<Variant> variants() {
   std::vector<Variant> v = {
@@ -270,6 +272,7 @@ std::vector<Variant> variants() {
                             CastMethod::automatic})
     v.push_back({cast_method_name(method), Kind::raycam});
   v.push_back({kObjectOrder, Kind::raycam});
+  v.push_back({kDoubleCulling, Kind::raycam});
 #ifdef RAYCAM_HAVE_EMBREE
   for (const char* name : {"embree packet1", "embree packet16", "embree p16 ray table"})
     v.push_back({name, Kind::embree});
@@ -345,8 +348,10 @@ void run_case(benchmark::State& state, Run& run, Case& c) {
   }
 #endif
   else {
-    options.method = name == kObjectOrder ? CastMethod::automatic : cast_method_named(name).value();
+    const bool automatic = name == kObjectOrder || name == kDoubleCulling;
+    options.method = automatic ? CastMethod::automatic : cast_method_named(name).value();
     options.near_to_far = name != kObjectOrder;
+    options.float_culling = name != kDoubleCulling;
     cast = [&] { cast_primary_rays(camera, fixture.packed, map, options, &stats); };
   }
   cast();  // warm-up: first touch of the map and of the caster's reused memory
@@ -627,14 +632,15 @@ int run_scene(const SpeedOptions& o) {
   session::pack_scene(view, packed);
   std::map<std::string, Result> results;
   CastStats stats;
-  for (const char* method : {"automatic", "plain"}) {
+  for (const char* method : {"automatic", kDoubleCulling, "plain"}) {
     if (std::string(method) == "plain" && !plain_affordable) continue;
     configure(benchmark::RegisterBenchmark(
                   (std::string("scene/") + method).c_str(),
                   [&, method](benchmark::State& state) {
                     ColourMap map;
                     CastOptions options;
-                    options.method = cast_method_named(method).value();
+                    options.method = cast_method_named(method).value_or(CastMethod::automatic);
+                    options.float_culling = method != std::string(kDoubleCulling);
                     options.threads = threads;
                     for (auto _ : state) session::cast_view(view, packed, map, options, &stats);
                     state.counters["Mrays/s"] =
@@ -649,6 +655,9 @@ int run_scene(const SpeedOptions& o) {
   const Result& fast = results["scene/automatic"];
   std::printf("%s: %dD, %.0f pixels, %d threads: automatic %.3f ms median (%.1f Mrays/s)",
               o.scene_path.c_str(), session::dimension_of(view), pixels, threads, fast.median_ms, fast.mrays);
+  const Result& double_only = results[std::string("scene/") + kDoubleCulling];
+  std::printf("; without the float culling pass %.3f ms (%.2fx)", double_only.median_ms,
+              double_only.median_ms / fast.median_ms);
   if (results.count("scene/plain"))
     std::printf("; plain loop %.3f ms (%.1fx)", results["scene/plain"].median_ms,
                 results["scene/plain"].median_ms / fast.median_ms);

@@ -205,33 +205,55 @@ void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
 // each cluster of the run, where its survivors start.
 Candidate* project_run(const Camera3D& camera, const Footprint& footprint, const NearestTBound& nearest_t,
                        const SphereClusters& spheres, int first, int size, Candidate* out, long long& area,
-                       Candidate** cluster_start, int* band_count) {
+                       Candidate** cluster_start, int* band_count, bool float_first) {
   PixelBox boxes[kMaxRun];
   double nearest[kMaxRun];
-  const std::size_t at = std::size_t(first);
-  const SphereColumns columns{&spheres.x[at], &spheres.y[at], &spheres.z[at], &spheres.radius[at]};
-  footprint.sphere_boxes(columns, size, camera.rows(), camera.columns(), boxes);
-  nearest_t(columns, size, nearest);
+  // The spheres projected in double: all of the run, or those the float pass kept (kept[j] is the run's
+  // sphere j's place in the run), gathered into columns.
+  int kept[kMaxRun];
+  int projected = size;
+  std::size_t at = std::size_t(first);
+  SphereColumns columns{&spheres.x[at], &spheres.y[at], &spheres.z[at], &spheres.radius[at]};
+  double gathered[4][kMaxRun];
+  if (float_first) {
+    unsigned char scratch[kMaxRun];
+    projected = footprint.spheres_maybe_seen({&spheres.float_x[at], &spheres.float_y[at], &spheres.float_z[at],
+                                              &spheres.float_radius[at]},
+                                             size, camera.rows(), camera.columns(), kept, scratch);
+    for (int j = 0; j < projected; ++j) {
+      const std::size_t i = at + std::size_t(kept[j]);
+      gathered[0][j] = spheres.x[i];
+      gathered[1][j] = spheres.y[i];
+      gathered[2][j] = spheres.z[i];
+      gathered[3][j] = spheres.radius[i];
+    }
+    columns = SphereColumns{gathered[0], gathered[1], gathered[2], gathered[3]};
+  } else {
+    for (int j = 0; j < size; ++j) kept[j] = j;
+  }
+  footprint.sphere_boxes(columns, projected, camera.rows(), camera.columns(), boxes);
+  nearest_t(columns, projected, nearest);
   int survivor[kMaxRun];
   int survivors = 0;
   long long run_area = 0;
+  int j = 0;  // the projected sphere next
   for (int cluster = 0; cluster * kBatch < size; ++cluster) {
     cluster_start[cluster] = out + survivors;
-    for (int k = cluster * kBatch; k < std::min(size, (cluster + 1) * kBatch); ++k) {
+    for (const int end = std::min(size, (cluster + 1) * kBatch); j < projected && kept[j] < end; ++j) {
       // Sizes by max, not PixelBox::empty's test: a branch here was as unpredictable as the one above.
-      const int box_rows = std::max(0, boxes[k].rows.last - boxes[k].rows.first + 1);
-      const int box_columns = std::max(0, boxes[k].columns.last - boxes[k].columns.first + 1);
-      survivor[survivors] = k;
+      const int box_rows = std::max(0, boxes[j].rows.last - boxes[j].rows.first + 1);
+      const int box_columns = std::max(0, boxes[j].columns.last - boxes[j].columns.first + 1);
+      survivor[survivors] = j;
       survivors += (box_rows > 0) & (box_columns > 0);
       run_area += static_cast<long long>(box_rows) * box_columns;  // 0 for a culled sphere
     }
   }
   area += run_area;
   // Field by field: a whole Candidate built first went through the stack (a stalled store forward).
-  for (int j = 0; j < survivors; ++j) {
-    const int k = survivor[j];
-    const std::size_t i = at + std::size_t(k);
-    Candidate& c = out[j];
+  for (int s = 0; s < survivors; ++s) {
+    const int k = survivor[s];
+    const std::size_t i = at + std::size_t(kept[k]);
+    Candidate& c = out[s];
     c.centre = glm::dvec3(spheres.x[i], spheres.y[i], spheres.z[i]);
     c.radius = spheres.radius[i];
     c.nearest_t = float_below(nearest[k]);
@@ -258,6 +280,7 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
   const int count = spheres.size(), cluster_count = spheres.cluster_count();
   const int chunks = (count + kObjectsPerChunk - 1) / kObjectsPerChunk;
   const bool cull_clusters = footprint.culls_clusters();
+  const bool may_cull_in_float = cull_clusters && options.float_culling;
   w.projected.resize(std::size_t(count));
   w.kept_in_chunk.assign(std::size_t(chunks), 0);
   w.chunk_area.assign(std::size_t(chunks), 0);
@@ -298,6 +321,11 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
       start.assign(std::size_t(bands) + 1, 0);
       band_count = start.data();
     }
+    // The float pass pays only where most spheres are culled (it costs about half the double pass a sphere,
+    // and its survivors are gathered): used for a run when the run before it kept less than 40 % (runs are
+    // neighbours in space: the clusters' order). Measured in the page: the clumps at K = 10⁵ (91 % culled)
+    // 1.8 → 1.2 ms; used on every run, the cube at 10⁵ (most kept) took 9 % longer.
+    bool float_first = false;
     for (int k = 0; k < clusters;) {
       const int cluster = first_cluster + k;
       if (out_of_view[k]) {  // no survivors, at the current place (a place from an earlier cast may be past the end)
@@ -310,7 +338,9 @@ void project_spheres(const Camera3D& camera, const PackedScene3D& scene, const C
       while (k + run < clusters && run * kBatch < kMaxRun && !out_of_view[k + run]) ++run;
       const int first = cluster * kBatch, size = std::min(run * kBatch, count - first);
       Candidate* starts[kMaxRun / kBatch];
-      out = project_run(camera, footprint, nearest_t, spheres, first, size, out, area, starts, band_count);
+      Candidate* const run_start = out;
+      out = project_run(camera, footprint, nearest_t, spheres, first, size, out, area, starts, band_count, float_first);
+      float_first = may_cull_in_float && (out - run_start) * 5 < size * 2;
       for (int r = 0; r < run; ++r)
         w.cluster_kept[std::size_t(cluster + r)] = int((r + 1 < run ? starts[r + 1] : out) - starts[r]);
       for (int r = 0; r < run; ++r) w.cluster_start[std::size_t(cluster + r)] = int(starts[r] - w.projected.data());

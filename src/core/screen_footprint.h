@@ -32,6 +32,10 @@ struct PixelBox {
 struct SphereColumns {
   const double *x, *y, *z, *radius;
 };
+// The same in single precision (SphereClusters' float copy), for the first pass of spheres_maybe_seen.
+struct FloatSphereColumns {
+  const float *x, *y, *z, *radius;
+};
 
 // The camera's frame, read off M_d = T·R·H: the eye, the unit right/up/forward axes and d_f, the eye's
 // distance to the screen. A world direction (a, b, c) in this frame crosses the canonical screen at
@@ -62,6 +66,12 @@ struct Footprint {
   // slack stays far below the growth); culls_clusters() says whether.
   bool culls_clusters() const;
   void clusters_out_of_view(const SphereColumns& bounds, int count, unsigned char* out) const;
+
+  // A cheaper first pass, in single precision (float_culling.cpp): writes to kept[0…n-1] the indices, in
+  // order, of the spheres whose box sphere_boxes may find non-empty, and returns n. Every sphere it drops has
+  // an empty double box; some it keeps may too. scratch holds count bytes. Where culls_clusters() holds.
+  int spheres_maybe_seen(const FloatSphereColumns& spheres, int count, int rows, int columns, int* kept,
+                         unsigned char* scratch) const;
 };
 
 }  // namespace raycam::detail

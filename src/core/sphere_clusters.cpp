@@ -74,6 +74,10 @@ void SphereClusters::build(const std::vector<double>& sx, const std::vector<doub
     radius[j] = sr[i];
     object[j] = int(i);
   }
+  float_x.assign(x.begin(), x.end());
+  float_y.assign(y.begin(), y.end());
+  float_z.assign(z.begin(), z.end());
+  float_radius.assign(radius.begin(), radius.end());
   const std::size_t clusters = (count + kSize - 1) / kSize;
   for (std::vector<double>* column : {&bound_x, &bound_y, &bound_z, &bound_radius}) column->resize(clusters);
   for (std::size_t k = 0; k < clusters; ++k) {
