@@ -33,12 +33,18 @@ parser.add_argument("--rounds", type=int, default=3, help="rounds of the alterna
 parser.add_argument("--quick", action="store_true", help="K = 10³ and the sparse scenes only")
 parser.add_argument("--only", default="", help="only the scenes whose label holds this text (e.g. 'clumps')")
 parser.add_argument("--big", action="store_true", help="time opening 10⁵ and 10⁶ spheres in the page instead")
+parser.add_argument("--same-width", metavar="CLI", default="",
+                    help="also time this raycam-cli, built with -DRAYCAM_VECTOR_CLONES=OFF (its loops two doubles a "
+                         "vector, as WebAssembly's), in the same alternation, and give the page against it")
 parser.add_argument("web_folder", nargs="?", default=os.path.join(root, "build-web"))
 parser.add_argument("cli", nargs="?", default=os.path.join(root, "build", "raycam-cli"))
 arguments = parser.parse_args()
 if not 1 <= arguments.rounds <= 20:
     parser.error("--rounds: expected 1 to 20, got %d" % arguments.rounds)
 cli = arguments.cli
+if arguments.same_width and not os.access(arguments.same_width, os.X_OK):
+    parser.error("--same-width: no program at %s (build one: cmake -S . -B build-narrow -DRAYCAM_VECTOR_CLONES=OFF, "
+                 "then cmake --build build-narrow --target raycam-cli)" % arguments.same_width)
 
 FAMILY_COUNTS = [1000] if arguments.quick else [1000, 10000, 100000]
 SPARSE_COUNTS = [50, 100, 200, 500]
@@ -60,10 +66,10 @@ def write_family(name, count, path):
                    capture_output=True, text=True, check=True)
 
 
-def native_ms(scene):
+def native_ms(scene, program=None):
     """(wall, CPU) milliseconds of a cast: the medians of `bench speed`'s repetitions (its CPU time is the
     process's: one thread)."""
-    run = subprocess.run([cli, "bench", "speed", "--scene", scene, "--size", str(SIDE), "--threads", "1",
+    run = subprocess.run([program or cli, "bench", "speed", "--scene", scene, "--size", str(SIDE), "--threads", "1",
                           "--repeats", "5", "--benchmark_filter=automatic"], capture_output=True, text=True,
                          check=True)
     median = re.search(r"automatic\S*real_time_median\s+([0-9.]+) ms\s+([0-9.]+) ms", run.stdout)
@@ -172,22 +178,29 @@ with tempfile.TemporaryDirectory() as scratch:
                 page.call("FS.writeFile(arguments[0], arguments[1]);", page_paths[-1], text.read())
         native = [[] for _ in scenes]  # (wall, CPU) a round
         web = [[] for _ in scenes]
+        narrow = [[] for _ in scenes]  # --same-width's program
+        sides = (0, 1, 2) if arguments.same_width else (0, 1)
         for round_index in range(arguments.rounds):
             for index, (label, path) in enumerate(scenes):
                 # Alternately: native first in even rounds, the page first in odd ones.
-                for side in ((0, 1) if round_index % 2 == 0 else (1, 0)):
+                for side in (sides if round_index % 2 == 0 else sides[::-1]):
                     if side == 0:
                         native[index].append(native_ms(path))
-                    else:
+                    elif side == 1:
                         web[index].append(page_ms(page, page_paths[index]))
+                    else:
+                        narrow[index].append(native_ms(path, arguments.same_width))
                 print("round %d, %s: native %.3f ms (CPU %.3f), page %.3f ms (CPU %.3f)"
-                      % ((round_index + 1, label) + native[index][-1] + web[index][-1]), file=sys.stderr)
+                      % ((round_index + 1, label) + native[index][-1] + web[index][-1])
+                      + (", native at two doubles a vector %.3f ms (CPU %.3f)" % narrow[index][-1]
+                         if narrow[index] else ""), file=sys.stderr)
         print("%d rounds, native and page alternating, %d² pixels; medians over the rounds\n"
               % (arguments.rounds, SIDE))
+        same_width_heading = ("| CPU: native, two doubles a vector | page / it " if arguments.same_width else "")
         print("| scene | native, 1 thread | page (Chromium, WebAssembly) | page / native | rounds' ratios "
-              "| CPU: native | page | page / native | rounds' ratios |")
-        print("|---|---|---|---|---|---|---|---|---|")
-        ratios = {0: [], 1: []}
+              "| CPU: native | page | page / native | rounds' ratios " + same_width_heading + "|")
+        print("|---" * (9 + (2 if arguments.same_width else 0)) + "|")
+        ratios = {0: [], 1: [], 2: []}
         for index, (label, _) in enumerate(scenes):
             row = "| %s " % label
             for clock in (0, 1):  # wall, then CPU
@@ -196,7 +209,15 @@ with tempfile.TemporaryDirectory() as scratch:
                 per_round = [b[clock] / a[clock] for a, b in zip(native[index], web[index])]
                 ratios[clock].append(w / n)
                 row += "| %.3f ms | %.3f ms | %.2f× | %.2f–%.2f× " % (n, w, w / n, min(per_round), max(per_round))
+            if arguments.same_width:
+                n = statistics.median(sample[1] for sample in narrow[index])
+                w = statistics.median(sample[1] for sample in web[index])
+                ratios[2].append(w / n)
+                row += "| %.3f ms | %.2f× " % (n, w / n)
             print(row + "|")
+        if arguments.same_width:
+            print("\npage / native at two doubles a vector (CPU time): %.2f× to %.2f× (median %.2f×) over %d scenes"
+                  % (min(ratios[2]), max(ratios[2]), statistics.median(ratios[2]), len(ratios[2])))
         for clock, name in ((0, "wall time"), (1, "CPU time")):
             print("\npage / native (%s): %.2f× to %.2f× (median %.2f×) over %d scenes"
                   % (name, min(ratios[clock]), max(ratios[clock]), statistics.median(ratios[clock]),

@@ -322,7 +322,7 @@ mutant colour-map-message-relative src/ui/panels.cpp 's/shown_file_name(state.ho
 FLOAT_TESTS="^core: ?(the float pass|casts with and without the float pass)"
 # A growth of one float rounding: the float centre's error alone then drops spheres. (Rows mapped upside
 # down is not a mutant: the pixel centres are symmetric, so the test cannot tell, and neither can the ids.)
-mutant float-culling-growth-too-small src/core/float_culling.cpp 's/^constexpr float kGrowth = 0x1p-12f;/constexpr float kGrowth = 0x1p-24f;/' "$CORE" "$FLOAT_TESTS"
+mutant float-culling-growth-too-small src/core/float_culling.cpp 's/^constexpr float kGrowth = 0x1p-15f;/constexpr float kGrowth = 0x1p-24f;/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-rows-counted-as-columns src/core/float_culling.cpp 's/-f.df, f.rows);/-f.df, f.columns);/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-half-width-centre-only src/core/float_culling.cpp 's/spread \* (std::abs(a) \* far + c2)/spread * c2/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-behind-by-the-near-side src/core/float_culling.cpp 's/const bool behind = far < f.df \* (1.0f - kGrowth);/const bool behind = near < f.df;/' "$CORE" "$FLOAT_TESTS"

@@ -3,22 +3,24 @@
 // doubles. It may keep a sphere the double box then culls; it must never drop one the double box keeps.
 //
 // Why its verdict is safe (the test cross-checks it, tests/core/test_float_culling.cpp, where a growth of
-// 2⁻²² still passed and 2⁻²⁴ did not):
-// - The sphere is grown first, by 2⁻¹² of its radius and of the numbers' size (the centre's distance |q|₁
-//   from the eye plus the eye's own size). The float centre (a, b, c) along the camera's axes is within ~10⁻⁶
-//   of that size of the exact one (a few roundings of numbers that size), so the grown sphere about it holds
-//   the exact sphere with 200 times room to spare.
+// 2⁻²³ still passed and 2⁻²⁴ did not):
+// - The sphere is grown first, by 2⁻¹⁵ of its radius and of the numbers' size (the centre's distance |q|₁
+//   from the eye plus the eye's own size). The float centre (a, b, c) along the camera's axes is within
+//   ~12·2⁻²⁴ of that size of the exact one (a few roundings of numbers that size), so the grown sphere about
+//   it holds the exact sphere with 40 times room to spare.
 // - What the growth adds to the slopes covers the rest. A tangent of slope m from the eye moves by at least
 //   (1 + m²)/|q| per unit of radius (the distance of the line y = m·x from the centre (c, a) changes by
-//   |c + a·m|/(1 + m²)^(3/2) ≤ |q|/(1 + m²) per unit of slope), so by 2⁻¹²·(1 + m²): far more than the
-//   double box's own slack (at most ~10⁻⁸ as a slope, screen_footprint.cpp), than the float arithmetic after
-//   the growth (about 40 roundings of 2⁻²⁴ relative to |m| + 1, each step being a product, quotient or sum
-//   of numbers of one sign, or a difference computed as a product of differences), and than the mapping to
-//   pixel indices (4·2⁻²⁴ of (d_f·|m| + 1), against 2⁻¹²·(1 + m²)·d_f with d_f ≥ 10⁻²).
+//   |c + a·m|/(1 + m²)^(3/2) ≤ |q|/(1 + m²) per unit of slope), so by about 2⁻¹⁵·(1 + m²): far more than the
+//   double box's own slack (at most ~10⁻⁸ as a slope, screen_footprint.cpp) and than the float arithmetic
+//   after the growth: each step a product, quotient or sum of numbers of one sign, or a difference computed
+//   as a product of differences, about 10 roundings of 2⁻²⁴ relative to |m0| + half, which the bound below
+//   keeps within 8 times the true slopes (6 times room). The mapping to pixel indices rounds four times more:
+//   kIndexRoom, twice that, widens the index range.
 // - The tangent slopes need a square root per axis; a bound on them does not: with c the depth, a the
 //   offset along one axis and r the radius, the tangents m± = (a·c ± r·√(a² + c² - r²)) / (c² - r²) differ
 //   from a/c by r·|a·r ± c·√(…)| / (c·(c² - r²)) ≤ r·(|a|·(r + c) + c²) / (c·(c² - r²)) (as √(a² + c²) ≤
-//   |a| + c): one division for both axes, a box at most √2 wider than the exact one.
+//   |a| + c): one division for both axes, a box at most √2 wider than the exact one for a small sphere, and
+//   at most 8 times under the guard below.
 // - Only where that holds comfortably: the grown sphere wholly in front of the eye (c - r > (c + r)/64, so
 //   no difference loses more than six bits) and the numbers' size below 2⁴⁰ (no overflow); otherwise, or on
 //   a NaN, the sphere is kept. Only for the stable formula and d_f ≥ 10⁻² (Footprint::culls_clusters): the
@@ -32,8 +34,9 @@
 namespace raycam::detail {
 
 namespace {
-constexpr float kGrowth = 0x1p-12f;  // of the radius and of the numbers' size
-constexpr float kLargest = 0x1p40f;  // numbers' size beyond which nothing is culled
+constexpr float kGrowth = 0x1p-15f;     // of the radius and of the numbers' size
+constexpr float kIndexRoom = 0x1p-20f;  // of the indices' size: the four roundings mapping slopes to pixels
+constexpr float kLargest = 0x1p40f;     // numbers' size beyond which nothing is culled
 
 inline float lower(float a, float b) { return b < a ? b : a; }
 inline float higher(float a, float b) { return a < b ? b : a; }
@@ -44,8 +47,9 @@ inline bool misses_every_centre(float m0, float half, float signed_df, float cou
   const float half_count = 0.5f * count;
   const float i0 = (signed_df * (m0 - half) + 1.0f) * half_count - 0.5f;
   const float i1 = (signed_df * (m0 + half) + 1.0f) * half_count - 0.5f;
-  const float first = higher(std::ceil(lower(i0, i1)), 0.0f);
-  const float last = lower(std::floor(higher(i0, i1)), count - 1.0f);
+  const float room = kIndexRoom * (std::abs(i0) + std::abs(i1) + count);
+  const float first = higher(std::ceil(lower(i0, i1) - room), 0.0f);
+  const float last = lower(std::floor(higher(i0, i1) + room), count - 1.0f);
   return first > last;
 }
 

@@ -8,7 +8,11 @@
 // compiled with the flags that let GCC vectorise them (src/core/CMakeLists.txt).
 #pragma once
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// Built with -DRAYCAM_VECTOR_CLONES=OFF, one copy for x86-64-v2 (SSE4.2: two doubles a vector, and the
+// rounding instructions, as WebAssembly's SIMD has): native timed at the page's width.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(RAYCAM_NO_VECTOR_CLONES)
+#define RAYCAM_VECTOR_LOOP __attribute__((flatten, target("arch=x86-64-v2")))
+#elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define RAYCAM_VECTOR_LOOP __attribute__((flatten, target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define RAYCAM_VECTOR_LOOP
