@@ -215,13 +215,13 @@ with tempfile.TemporaryDirectory() as scratch:
                 ratios[2].append(w / n)
                 row += "| %.3f ms | %.2f× " % (n, w / n)
             print(row + "|")
-        if arguments.same_width:
-            print("\npage / native at two doubles a vector (CPU time): %.2f× to %.2f× (median %.2f×) over %d scenes"
-                  % (min(ratios[2]), max(ratios[2]), statistics.median(ratios[2]), len(ratios[2])))
         for clock, name in ((0, "wall time"), (1, "CPU time")):
             print("\npage / native (%s): %.2f× to %.2f× (median %.2f×) over %d scenes"
                   % (name, min(ratios[clock]), max(ratios[clock]), statistics.median(ratios[clock]),
                      len(ratios[clock])))
+        if arguments.same_width:
+            print("\npage / native at two doubles a vector (CPU time): %.2f× to %.2f× (median %.2f×) over %d scenes"
+                  % (min(ratios[2]), max(ratios[2]), statistics.median(ratios[2]), len(ratios[2])))
         time.sleep(3)  # the page settles, then sleeps
         browser = page.driver.service.process.pid
         before = cpu_seconds(browser)

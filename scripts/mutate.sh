@@ -328,6 +328,9 @@ mutant float-culling-half-width-centre-only src/core/float_culling.cpp 's/spread
 mutant float-culling-behind-by-the-near-side src/core/float_culling.cpp 's/const bool behind = far < f.df \* (1.0f - kGrowth);/const bool behind = near < f.df;/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-gathers-the-wrong-radius src/core/footprint_caster.cpp 's/gathered\[3\]\[j\] = spheres.radius\[i\];/gathered[3][j] = spheres.radius[at + std::size_t(j)];/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-keeps-everything src/core/float_culling.cpp 's/^    unseen\[i\] = behind | (bounded \& (off_columns | off_rows));/    unseen[i] = behind \& !behind;/' "$CORE" "$FLOAT_TESTS"
+# --- QA leftovers: the colour map's name follows the language ---
+mutant colour-map-name-keeps-start-language src/ui/frame.cpp '/^  follow_language(state, panels_);$/d' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
+mutant colour-map-typed-name-translated src/ui/panel_state.cpp 's/^  if (panels.export_path == tr(panels.language_seen, "raycam-colour-map.png"))$/  if (true)/' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

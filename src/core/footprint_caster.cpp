@@ -202,7 +202,8 @@ void bin_by_band(ForEach&& for_each, int bands, Bands& binned) {
 // survives is a coin toss when many fall between pixel centres, and a branch on it was mispredicted about
 // half the time (measured: a third of the projection's time). Then only the survivors are copied (a copy of
 // every sphere, culled or not, was 27 % of a cast of the grazing layer at 256²). `cluster_start` gets, for
-// each cluster of the run, where its survivors start.
+// each cluster of the run, where its survivors start. With float_first, the float pass drops what it can
+// first (Footprint::spheres_maybe_seen) and only the rest are boxed in double.
 Candidate* project_run(const Camera3D& camera, const Footprint& footprint, const NearestTBound& nearest_t,
                        const SphereClusters& spheres, int first, int size, Candidate* out, long long& area,
                        Candidate** cluster_start, int* band_count, bool float_first) {
@@ -212,7 +213,7 @@ Candidate* project_run(const Camera3D& camera, const Footprint& footprint, const
   // sphere j's place in the run), gathered into columns.
   int kept[kMaxRun];
   int projected = size;
-  std::size_t at = std::size_t(first);
+  const std::size_t at = std::size_t(first);
   SphereColumns columns{&spheres.x[at], &spheres.y[at], &spheres.z[at], &spheres.radius[at]};
   double gathered[4][kMaxRun];
   if (float_first) {

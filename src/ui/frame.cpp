@@ -210,6 +210,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state, applied_theme_);
   // 1. input (a scene file may have opened since the last frame: dropped, or the page's picker)
   follow_scene_shown(state, panels_);
+  follow_language(state, panels_);
   handle_shortcuts(state);
   view_input(state);
   // 2. the panel's controls

@@ -17,7 +17,15 @@ PanelState panel_state_for(const AppOptions& options, const Lesson& lesson) {
   panels.dimension_seen = dimension(lesson);
   // The colour map's default file name in the window's language too.
   panels.export_path = tr(lesson.language, "raycam-colour-map.png");
+  panels.language_seen = lesson.language;
   return panels;
+}
+
+void follow_language(const Lesson& lesson, PanelState& panels) {
+  if (panels.language_seen == lesson.language) return;
+  if (panels.export_path == tr(panels.language_seen, "raycam-colour-map.png"))
+    panels.export_path = tr(lesson.language, "raycam-colour-map.png");
+  panels.language_seen = lesson.language;
 }
 
 void follow_scene_shown(const Lesson& lesson, PanelState& panels) {

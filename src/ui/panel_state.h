@@ -39,6 +39,7 @@ struct PanelState {
   std::string save_path;          // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
   std::string export_path = "raycam-colour-map.png";
+  Language language_seen = Language::en;  // the window's language when export_path's default was named
   std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
   int figure_format = 0;             // its format: 0 SVG, 1 PDF, 2 PNG, 3 TikZ (sets figure_path's extension)
   session::FigureContent figure;     // its rays per 2D frame and whether each frame's matrix is printed
@@ -55,6 +56,10 @@ PanelState panel_state_for(const session::AppOptions& options, const session::Le
 // and no Replace question is left from the scene before (it would write another scene's camera, or other
 // files than it named); after an open, Save as starts empty too.
 void follow_scene_shown(const session::Lesson& lesson, PanelState& panels);
+
+// After the window's language changed: the colour map's default file name follows it, unless the user typed
+// another (QA: it stayed in the language the app started in).
+void follow_language(const session::Lesson& lesson, PanelState& panels);
 
 // Save as (session::save_preset_as) from the panel: an existing file is replaced only with `overwrite`;
 // otherwise panels.overwrite_pending names it and the panel asks. Returns true if it saved.

@@ -168,3 +168,32 @@ TEST_CASE("a Replace question is withdrawn when the other dimension comes on scr
   CHECK(panels.overwrite_pending.empty());
   CHECK(panels.figure_replace_pending == 0);
 }
+
+TEST_CASE("the colour map's default file name follows the window's language, a typed one stays",
+          "[ui][panel-state][files][null-host]") {
+  session::AppState state = test::state_for({"--size", "32x24"});
+  REQUIRE(state.language == Language::en);
+  const std::string english = ui::tr(Language::en, "raycam-colour-map.png");
+  const std::string french = ui::tr(Language::fr, "raycam-colour-map.png");
+  REQUIRE(english != french);
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  {
+    ui::NullHost host(1280, 720);
+    ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
+    frame.panels() = ui::panel_state_for(session::AppOptions{}, state);
+    ui::run_frame(host, frame, state);
+    CHECK(frame.panels().export_path == english);
+    state.language = Language::fr;  // what the Language control does
+    ui::run_frame(host, frame, state);
+    CHECK(frame.panels().export_path == french);  // QA: it stayed "raycam-colour-map.png"
+    state.language = Language::en;
+    ui::run_frame(host, frame, state);
+    CHECK(frame.panels().export_path == english);
+    frame.panels().export_path = "lecture-3.png";  // typed by the user: kept in any language
+    state.language = Language::fr;
+    ui::run_frame(host, frame, state);
+    CHECK(frame.panels().export_path == "lecture-3.png");
+  }
+  ImGui::DestroyContext();
+}
