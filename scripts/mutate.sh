@@ -328,9 +328,11 @@ mutant float-culling-half-width-centre-only src/core/float_culling.cpp 's/spread
 mutant float-culling-behind-by-the-near-side src/core/float_culling.cpp 's/const bool behind = far < f.df \* (1.0f - kGrowth);/const bool behind = near < f.df;/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-gathers-the-wrong-radius src/core/footprint_caster.cpp 's/gathered\[3\]\[j\] = spheres.radius\[i\];/gathered[3][j] = spheres.radius[at + std::size_t(j)];/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-keeps-everything src/core/float_culling.cpp 's/^    unseen\[i\] = behind | (bounded \& (off_columns | off_rows));/    unseen[i] = behind \& !behind;/' "$CORE" "$FLOAT_TESTS"
-# --- QA leftovers: the colour map's name follows the language ---
+# --- QA leftovers: the colour map's name follows the language; a message in one place ---
 mutant colour-map-name-keeps-start-language src/ui/frame.cpp '/^  follow_language(state, panels_);$/d' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
 mutant colour-map-typed-name-translated src/ui/panel_state.cpp 's/^  if (panels.export_path == tr(panels.language_seen, "raycam-colour-map.png"))$/  if (true)/' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
+mutant message-cut-in-section-too src/ui/panels.cpp 's|^    ImGui::Dummy(ImVec2(wrap, height));  // its room kept.*$|    draw_message(state, panels, "###message/section");|' "raycam_render_tests" "^render: ?a section's message shows in one place"
+mutant message-under-the-title-bar src/ui/panels.cpp 's/^  if (top < inside.Min.y || top + height > inside.Max.y) {/  if (top < ImGui::GetWindowPos().y || top + height > inside.Max.y) {/' "raycam_render_tests" "^render: ?a section's message shows in one place"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -279,7 +279,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
       // In front of the views (a view that appeared after it, the 3D observer, would hide it), without
       // taking the keyboard from a text being edited.
       ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
-      show_message(state, state.message_source);
+      show_message_line(state, panels_);
     }
     ImGui::End();
   }

@@ -343,7 +343,7 @@ void camera_section(AppState& state, const PanelState& panels) {
                                glm::degrees(fov)).c_str());
   if (button(tr(state.language, "Reset camera"))) reset_camera(state, state);  // the scene file's preset
   explain(tr(state.language, "drag in a view: orbit; wheel: d; shift+wheel: d_f; double-click an object: target"));
-  show_message(state, MessageSource::camera);
+  show_message(state, panels, MessageSource::camera);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -473,7 +473,7 @@ void figure_export_row(AppState& state, PanelState& panels) {
     // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
     if (just_asked) ImGui::SetScrollHereY(1.0f);
   }
-  show_message(state, MessageSource::construction);  // right under the buttons, where the eye is
+  show_message(state, panels, MessageSource::construction);  // right under the buttons, where the eye is
   explain(tr(state.language, "The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
 }
 
@@ -664,7 +664,7 @@ void caster_section(AppState& state, const PanelState& panels) {
               ? tr(state.language, "These knobs use the reference caster: slower, and the method above is not used. Which "
                    "settings to use for what: README, Accuracy.")
               : tr(state.language, "double, 1 sample, world coordinates: the fast caster."));
-  show_message(state, MessageSource::caster);
+  show_message(state, panels, MessageSource::caster);
   if (changed) state.cameras_dirty = true;
 }
 
@@ -729,7 +729,7 @@ void files_section(AppState& state, PanelState& panels) {
   }
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Screenshot (F12)"))) request_screenshot(state);
-  show_message(state, MessageSource::files);
+  show_message(state, panels, MessageSource::files);
 }
 
 // ---- lecture -------------------------------------------------------------------------------------------
@@ -769,19 +769,37 @@ void lecture_section(AppState& state, PanelState& panels) {
 }
 
 // ---- messages ------------------------------------------------------------------------------------------
-bool show_message(AppState& state, MessageSource source) {
-  if (state.message.empty() || state.message_source != source) return false;
+namespace {
+void draw_message(AppState& state, const PanelState& panels, const std::string& id) {
   const ThemeColours& theme = current_theme();
   ImGui::PushStyleColor(ImGuiCol_Text, state.message_is_error ? theme.error : theme.confirmation);
   ImGui::TextWrapped("%s", state.message.c_str());  // wrapped: never clipped
   ImGui::PopStyleColor();
-  // Shown here only if in view: below the panel's fold (lecture sizes), the line above the status line
-  // shows it instead, where the eye is.
-  const bool in_view = ImGui::IsItemVisible() && ImGui::GetItemRectMax().y <= ImGui::GetWindowPos().y +
-                                                                              ImGui::GetWindowHeight();
+  record_item_rect(panels, id);
   if (ImGui::SmallButton(tr(state.language, "Dismiss###dismiss_message"))) state.message.clear();
-  if (in_view) state.message_shown_frame = state.frame_count;
+}
+}  // namespace
+
+bool show_message(AppState& state, const PanelState& panels, MessageSource source) {
+  if (state.message.empty() || state.message_source != source) return false;
+  // Whether the wrapped text fits between the panel's top and bottom edges, decided before drawing it: below
+  // the fold (lecture sizes) or scrolled past, the line above the status line shows it, where the eye is.
+  const float wrap = ImGui::GetContentRegionAvail().x;
+  const float height = ImGui::CalcTextSize(state.message.c_str(), nullptr, false, wrap).y;
+  // The window's visible inside: below its title bar (a text scrolled under it is cut, QA at 3×).
+  const ImRect inside = ImGui::GetCurrentWindow()->InnerClipRect;
+  const float top = ImGui::GetCursorScreenPos().y;
+  if (top < inside.Min.y || top + height > inside.Max.y) {
+    ImGui::Dummy(ImVec2(wrap, height));  // its room kept: the panel's scroll range does not jump
+    return false;
+  }
+  draw_message(state, panels, "###message/section");
+  state.message_shown_frame = state.frame_count;
   return true;
+}
+
+void show_message_line(AppState& state, const PanelState& panels) {
+  if (!state.message.empty()) draw_message(state, panels, "###message/line");
 }
 
 bool message_shown_this_frame(const Messages& messages, const HostLink& link) {

@@ -33,8 +33,13 @@ void lecture_section(session::AppState& state, PanelState& panels);
 void status_line(session::AppState& state, const PanelState& panels);
 // The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
 void status_counters(const session::AppState& state);
-// Shows the message here if it came from `source` (wrapped, red for errors, with a Dismiss button).
-bool show_message(session::AppState& state, session::MessageSource source);
+// In a panel section: shows the message here if it came from `source` (wrapped, red for errors, with a
+// Dismiss button) and it fits wholly in the panel's view; otherwise leaves its room empty, and the frame's line
+// above the status line shows it (never both: at 3× a message cut by the panel's edge showed twice). Returns
+// whether it showed it.
+bool show_message(session::AppState& state, const PanelState& panels, session::MessageSource source);
+// The frame's line above the status line: the message whole, whatever its source.
+void show_message_line(session::AppState& state, const PanelState& panels);
 // Did a section show the message this frame? If not, the frame shows it above the status line.
 bool message_shown_this_frame(const session::Messages& messages, const session::HostLink& link);
 // Is a text field (or a slider typed into with ctrl+click) being edited now?

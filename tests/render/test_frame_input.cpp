@@ -271,6 +271,45 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK(renderer.layout().message.w == 0);
 }
 
+TEST_CASE("a section's message shows in one place: wholly in the panel, or on the line above the status line",
+          "[render][messages]") {
+  // At 3× a message cut by the panel's bottom edge showed twice (QA): cut in its section, whole above the status.
+  session::AppState state = state_for({});
+  state.font_scale = 3.0f;
+  ui::WidgetRects rects;
+  headless::HeadlessRenderer renderer(1280, 800);
+  renderer.panels().widget_rects = &rects;
+  renderer.render_settled(state);
+  CHECK_FALSE(session::open_scene(state, "no/such/folder/for/this/test/scene_file_for_the_test.json"));
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  panel->StateStorage.SetInt(panel->GetID("###files"), 1);
+  renderer.run_frame(state);
+  int in_section = 0, on_line = 0;
+  // Every scroll of the panel, a few pixels at a time: the message passes the bottom edge, is in view, then
+  // passes the top edge.
+  for (float scroll = 0; scroll <= panel->ScrollMax.y + 1; scroll += 11) {
+    ImGui::SetScrollY(panel, scroll);
+    renderer.run_frame(state);  // the scroll applies
+    rects.clear();
+    renderer.run_frame(state);
+    const auto section = widget_rect(rects, "###message/section");
+    const bool line = renderer.layout().message.w > 0;
+    INFO("scroll " << scroll << " of " << panel->ScrollMax.y);
+    CHECK(section.has_value() != line);  // one place, never both, never neither
+    if (section) {
+      ++in_section;
+      // Whole inside the panel's window, below its title bar.
+      CHECK(section->first.y >= panel->InnerClipRect.Min.y - 0.5f);
+      CHECK(section->second.y <= panel->InnerClipRect.Max.y + 0.5f);
+    }
+    on_line += line;
+  }
+  CHECK(in_section > 0);  // scrolled into view, the section shows it
+  CHECK(on_line > 0);     // below the fold or scrolled past, the line does
+  REQUIRE(state.message_is_error);
+}
+
 TEST_CASE("lecture mode: at 1×, 1.5×, 2× and 3× the image keeps half the window and the panel 40% at most",
           "[render][lecture]") {
   for (const auto& [width, height] : {std::pair{1280, 800}, std::pair{1024, 768}})  // a laptop, a projector
