@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -445,17 +447,49 @@ ImVec2 place_label(ImVec2 wanted, ImVec2 size, ImVec2 low, ImVec2 high,
   return start;  // nowhere free: where it was wanted
 }
 
+// A least-significant-digit radix sort on the doubles' bits, 16 at a time (stable, so ties keep their order),
+// skipping a digit every key shares. Not std::stable_sort through the objects: a cache miss a comparison,
+// 225 ms for 10⁶ spheres (a std::sort of (key, index) pairs: 88 ms), a frame's worth of the page's first image
+// after opening them.
+std::vector<std::uint32_t> lowest_first(const std::vector<double>& keys) {
+  const std::size_t n = keys.size();
+  std::vector<std::uint64_t> bits(n), bits_next(n);
+  std::vector<std::uint32_t> order(n), order_next(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double key = keys[i] == 0.0 ? 0.0 : keys[i];  // -0 ties with +0, as under <
+    std::uint64_t b;
+    std::memcpy(&b, &key, sizeof b);
+    // Order-preserving: the negatives' bits reversed, below the positives' (no NaN in a valid scene).
+    bits[i] = b >> 63 ? ~b : b | (std::uint64_t(1) << 63);
+    order[i] = std::uint32_t(i);
+  }
+  std::vector<std::size_t> start(65537);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::fill(start.begin(), start.end(), 0);
+    for (std::size_t i = 0; i < n; ++i) ++start[((bits[i] >> shift) & 0xFFFF) + 1];
+    if (n == 0 || *std::max_element(start.begin(), start.end()) == n) continue;  // one digit for all
+    for (std::size_t d = 0; d < 65536; ++d) start[d + 1] += start[d];
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t at = start[(bits[i] >> shift) & 0xFFFF]++;
+      bits_next[at] = bits[i];
+      order_next[at] = order[i];
+    }
+    bits.swap(bits_next);
+    order.swap(order_next);
+  }
+  return order;
+}
+
 std::vector<gl::Disc> overhead_discs(const Lesson& state) {
   std::vector<gl::Disc> discs;
   std::visit(
       [&](const auto& view) {
         const auto& objects = objects_of(view.scene);
-        std::vector<std::size_t> order(objects.size());
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(),
-                         [&](std::size_t a, std::size_t b) { return top_of(objects[a]) < top_of(objects[b]); });
+        std::vector<double> tops(objects.size());
+        for (std::size_t i = 0; i < objects.size(); ++i) tops[i] = top_of(objects[i]);
+        const std::vector<std::uint32_t> order = lowest_first(tops);
         discs.reserve(order.size());
-        for (std::size_t i : order) discs.push_back({xy(objects[i].centre), objects[i].radius, objects[i].colour});
+        for (std::uint32_t i : order) discs.push_back({xy(objects[i].centre), objects[i].radius, objects[i].colour});
       },
       state.view);
   return discs;
