@@ -38,9 +38,6 @@ constexpr float kGrowth = 0x1p-15f;     // of the radius and of the numbers' siz
 constexpr float kIndexRoom = 0x1p-20f;  // of the indices' size: the four roundings mapping slopes to pixels
 constexpr float kLargest = 0x1p40f;     // numbers' size beyond which nothing is culled
 
-inline float lower(float a, float b) { return b < a ? b : a; }
-inline float higher(float a, float b) { return a < b ? b : a; }
-
 // True when no pixel centre of an axis of `count` pixels lies in the slope interval m0 ± half (screen
 // coordinate sign·d_f·m): the pixel-index interval holds no whole number in [0, count - 1]. False on a NaN.
 inline bool misses_every_centre(float m0, float half, float signed_df, float count) {

@@ -18,8 +18,6 @@ constexpr double kIndexSlack = 1e-6;  // of a pixel: far above the rounding of a
 
 // Everything below is branch-free (selects on values, no early return), so that sphere_boxes' loop over
 // many spheres vectorises; one object alone runs the same code.
-inline double lower(double a, double b) { return b < a ? b : a; }
-inline double higher(double a, double b) { return a < b ? b : a; }
 inline double clamped(double x, double lo, double hi) { return lower(higher(x, lo), hi); }
 // The constants of the selects in axis_pixels, given to the loops as values. With a constant C, LLVM compiles
 // `x < C ? C : x` for WebAssembly to f64x2.max, which must order -0 below +0 and pass NaNs on, and which V8

@@ -17,3 +17,16 @@
 #else
 #define RAYCAM_VECTOR_LOOP
 #endif
+
+namespace raycam::detail {
+// Selects on values, for the loops above (branch-free: a vector unit's min and max, with a's side on a tie or
+// a NaN in b), in double (the boxes) and in float (the float culling pass).
+template <class T>
+inline T lower(T a, T b) {
+  return b < a ? b : a;
+}
+template <class T>
+inline T higher(T a, T b) {
+  return a < b ? b : a;
+}
+}  // namespace raycam::detail

@@ -96,6 +96,13 @@ std::optional<std::pair<ImVec2, ImVec2>> widget_rect(const ui::WidgetRects& rect
   const ui::WidgetRect& r = found->second;
   return std::pair<ImVec2, ImVec2>{{r.x0, r.y0}, {r.x1, r.y1}};
 }
+// Opens the panel's section "###id" (as a click on its header does); the panel window, for its scroll.
+ImGuiWindow* open_panel_section(const char* id) {
+  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  panel->StateStorage.SetInt(panel->GetID(id), 1);
+  return panel;
+}
 }  // namespace
 
 TEST_CASE("the page's host offers its file picker at the status line's end, the desktop's does not",
@@ -235,9 +242,7 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   // The Scene file section is closed: the message has its own line above the status line, in view.
   CHECK(layout.message.w > 0);
   // Opened, the section shows it, in view: no line above the status line.
-  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
-  REQUIRE(panel);
-  panel->StateStorage.SetInt(panel->GetID("###files"), 1);
+  open_panel_section("###files");
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
   CHECK(renderer.layout().message.w == 0);
   // At 3× the section's message is below the panel's fold: the line above the status line shows it again
@@ -281,9 +286,7 @@ TEST_CASE("a section's message shows in one place: wholly in the panel, or on th
   renderer.panels().widget_rects = &rects;
   renderer.render_settled(state);
   CHECK_FALSE(session::open_scene(state, "no/such/folder/for/this/test/scene_file_for_the_test.json"));
-  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
-  REQUIRE(panel);
-  panel->StateStorage.SetInt(panel->GetID("###files"), 1);
+  ImGuiWindow* panel = open_panel_section("###files");
   renderer.run_frame(state);
   int in_section = 0, on_line = 0;
   // Every scroll of the panel, a few pixels at a time: the message passes the bottom edge, is in view, then
@@ -363,9 +366,7 @@ TEST_CASE("lecture mode: after a change of font scale its slider is still in vie
   headless::HeadlessRenderer renderer(1024, 768);
   renderer.panels().widget_rects = &rects;
   renderer.render_settled(state);
-  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
-  REQUIRE(panel);
-  panel->StateStorage.SetInt(panel->GetID("###lecture"), 1);  // Lecture mode opened
+  ImGuiWindow* panel = open_panel_section("###lecture");  // Lecture mode opened
   renderer.render_settled(state);
   const auto in_view = [&] {
     const auto slider = widget_rect(rects, "###font_scale");
@@ -429,9 +430,7 @@ TEST_CASE("Export colour map names the file it wrote by its whole path", "[rende
   headless::HeadlessRenderer renderer(1280, 720);
   renderer.panels().widget_rects = &rects;
   renderer.run_frame(state);
-  ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
-  REQUIRE(panel);
-  panel->StateStorage.SetInt(panel->GetID("###files"), 1);  // the Scene file section open
+  open_panel_section("###files");  // the Scene file section open
   renderer.render_settled(state);
   const auto button = widget_rect(rects, "###export_png");
   REQUIRE(button);

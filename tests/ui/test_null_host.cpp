@@ -4,19 +4,12 @@
 
 #include "../session/app_state_for.h"
 #include "frame_host.h"
+#include "imgui_context_scope.h"
 #include "raycam/ray_caster.h"
 
 using namespace raycam;
 
-namespace {
-struct ImGuiContextScope {  // what a host sets up around its frames
-  ImGuiContextScope() {
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-  }
-  ~ImGuiContextScope() { ImGui::DestroyContext(); }
-};
-}  // namespace
+using test::ImGuiContextScope;
 
 TEST_CASE("the null host runs whole frames without GL: the cast, the panels and the views follow the camera",
           "[ui][null-host]") {

@@ -10,6 +10,7 @@
 #include "../scratch_dir.h"
 #include "../session/app_state_for.h"
 #include "frame_host.h"
+#include "imgui_context_scope.h"
 #include "panel_state.h"
 
 using namespace raycam;
@@ -82,19 +83,15 @@ TEST_CASE("a scene opened outside the panel (dropped, the page's picker) shows i
   const std::string dropped = scratch.path("dropped.json");
   session::AppState state = test::state_for({"--size", "32x24"});
   REQUIRE(session::save_preset(state, dropped));
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;
-  {
-    ui::NullHost host(1280, 720);
-    ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
-    ui::run_frame(host, frame, state);
-    frame.panels().save_path = scratch.path("typed.json");
-    REQUIRE(session::open_scene(state, dropped));  // what the host's drop callback does
-    ui::run_frame(host, frame, state);
-    CHECK(frame.panels().path_input == dropped);
-    CHECK(frame.panels().save_path.empty());
-  }
-  ImGui::DestroyContext();
+  const test::ImGuiContextScope imgui;
+  ui::NullHost host(1280, 720);
+  ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
+  ui::run_frame(host, frame, state);
+  frame.panels().save_path = scratch.path("typed.json");
+  REQUIRE(session::open_scene(state, dropped));  // what the host's drop callback does
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().path_input == dropped);
+  CHECK(frame.panels().save_path.empty());
 }
 
 TEST_CASE("Save as from the panel asks before replacing, and Replace writes the file the question names",
@@ -176,24 +173,20 @@ TEST_CASE("the colour map's default file name follows the window's language, a t
   const std::string english = ui::tr(Language::en, "raycam-colour-map.png");
   const std::string french = ui::tr(Language::fr, "raycam-colour-map.png");
   REQUIRE(english != french);
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;
-  {
-    ui::NullHost host(1280, 720);
-    ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
-    frame.panels() = ui::panel_state_for(session::AppOptions{}, state);
-    ui::run_frame(host, frame, state);
-    CHECK(frame.panels().export_path == english);
-    state.language = Language::fr;  // what the Language control does
-    ui::run_frame(host, frame, state);
-    CHECK(frame.panels().export_path == french);  // QA: it stayed "raycam-colour-map.png"
-    state.language = Language::en;
-    ui::run_frame(host, frame, state);
-    CHECK(frame.panels().export_path == english);
-    frame.panels().export_path = "lecture-3.png";  // typed by the user: kept in any language
-    state.language = Language::fr;
-    ui::run_frame(host, frame, state);
-    CHECK(frame.panels().export_path == "lecture-3.png");
-  }
-  ImGui::DestroyContext();
+  const test::ImGuiContextScope imgui;
+  ui::NullHost host(1280, 720);
+  ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
+  frame.panels() = ui::panel_state_for(session::AppOptions{}, state);
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == english);
+  state.language = Language::fr;  // what the Language control does
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == french);  // QA: it stayed "raycam-colour-map.png"
+  state.language = Language::en;
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == english);
+  frame.panels().export_path = "lecture-3.png";  // typed by the user: kept in any language
+  state.language = Language::fr;
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == "lecture-3.png");
 }
