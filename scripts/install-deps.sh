@@ -12,7 +12,7 @@ packages=(
   libcli11-dev                               # command lines
   libcairo2-dev libpng-dev poppler-utils     # course figures (SVG, PDF, PNG) and their tests (pdftotext)
   texlive-latex-base texlive-latex-extra texlive-pictures texlive-lang-french lmodern  # TikZ figures' tests: pdflatex, standalone and Beamer, TikZ, babel French, Latin Modern
-  bubblewrap python3                         # `check`: sandbox and the Python example student
+  bubblewrap libseccomp-dev keyutils python3 # `check`: sandbox, its system-call filter, the Python example student
   parallel                                   # `check`: the large course recipe's test (GNU parallel, 3 shards)
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers

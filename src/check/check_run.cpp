@@ -159,6 +159,9 @@ std::vector<StudentReport> check_submissions(
       if (!submissions[s].setup_error.empty()) {  // nothing to run: the checker's error, said per case
         run.error = submissions[s].setup_error;
         run.infrastructure_failure = true;
+      } else if (!submissions[s].refusal.empty()) {  // nothing to run: the submission's own, said per case
+        run.end = RunResult::End::could_not_start;
+        run.error = submissions[s].refusal;
       } else {
         run = run_student(submissions[s].argv, inputs[i], limits, submissions[s].sandbox);
         if (run.infrastructure_failure)  // once more (a process table full for a moment), then the checker's error

@@ -51,6 +51,9 @@ struct Submission {
   // Why the checker cannot run this submission at all (a folder the sandbox's user cannot read): every case
   // is then the checker's error, never the student's crash. "" when it can.
   std::string setup_error;
+  // Why this submission is refused (submission_refusal: a link out of its folder, a folder for a program):
+  // every case is then "could not start" with this reason, in its own row; the class goes on. "" when none.
+  std::string refusal;
 };
 
 // The report's sentence for a run ended by its memory, process or disk bound (`limit` as RunResult::limit),

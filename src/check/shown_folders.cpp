@@ -51,6 +51,29 @@ void refuse_exposed_folders(const std::vector<std::string>& shown, const std::st
   }
 }
 
+std::string submission_refusal(const std::string& folder, const std::string& root, const std::vector<std::string>& argv) {
+  std::error_code error;
+  const fs::path name = fs::path(folder).filename();
+  if (fs::is_symlink(folder, error))
+    return "the submission folder " + name.string() + " is a symbolic link (to " +
+           fs::read_symlink(folder, error).string() + "): only real folders inside the batch are graded";
+  const fs::path real = fs::canonical(folder, error), real_root = fs::canonical(root, error);
+  if (error || !inside(real, real_root))
+    return "the submission folder " + name.string() + " leads out of the batch's folder: only real folders inside it are graded";
+  for (const std::string& word : argv) {
+    if (word.empty() || word[0] != '/' || !inside(fs::path(word), fs::path(folder)) || fs::path(word) == fs::path(folder))
+      continue;
+    const std::string shown = fs::relative(word, folder, error).string();
+    if (!fs::exists(fs::symlink_status(word, error))) continue;  // missing: the run says so (cannot find)
+    const fs::path target = fs::weakly_canonical(word, error);
+    if (!inside(target, real))
+      return shown + " leads out of the student's folder (to " + target.string() +
+             "): a submission's program must be its own files";
+    if (&word == &argv[0] && fs::is_directory(target, error)) return shown + " is a folder, not a program";
+  }
+  return {};
+}
+
 std::string unreadable_by_others(const std::string& folder) {
   struct stat info {};
   if (stat(folder.c_str(), &info) != 0 || (info.st_mode & (S_IROTH | S_IXOTH)) != (S_IROTH | S_IXOTH))

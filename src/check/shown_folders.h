@@ -18,6 +18,12 @@ std::vector<std::string> folders_named(const std::vector<std::string>& argv);
 void refuse_exposed_folders(const std::vector<std::string>& shown, const std::string& home,
                             const std::vector<std::string>& protected_paths, const std::string& flag);
 
+// Why one submission of a batch is not run, or "" when it can be: its folder (`folder`, an entry of the
+// batch's folder `root`) is a symbolic link or its real path leaves `root`; a word of its command naming a
+// path inside the folder leads out of it through a link, or names a folder where a file is expected. The
+// refusal is that row's, in words an instructor can act on; the rest of the class is graded.
+std::string submission_refusal(const std::string& folder, const std::string& root, const std::vector<std::string>& argv);
+
 // Why a sandboxed run by root could not read `folder` (root's runs have no more rights than any user: the
 // folder and those above it must be crossable by others, the folder readable), or "" when it can.
 std::string unreadable_by_others(const std::string& folder);

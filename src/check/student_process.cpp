@@ -33,7 +33,9 @@
 
 #include "folder_removal.h"
 #include "run_group.h"
+#include "sandbox_policy.h"
 #include "shown_folders.h"
+#include "syscall_filter.h"
 
 namespace raycam::check {
 
@@ -156,45 +158,16 @@ std::vector<std::string> child_environment(const std::string& work) {
           "LANG=C.UTF-8", "LC_ALL=C.UTF-8", "PYTHONDONTWRITEBYTECODE=1"};
 }
 
-// What a program needs to run and nothing else: the system's programs and libraries (/usr and the root's
-// links into it), the few /etc files the dynamic loader and interpreters read, /opt; not /home, /root, /etc's
-// other files, the instructor's output folders, other submissions nor anything else of the machine.
-const char* const kSystemFolders[] = {"/usr", "/opt"};
-const char* const kRootLinks[] = {"/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"};
-const char* const kEtcFiles[] = {"/etc/ld.so.cache", "/etc/ld.so.conf", "/etc/ld.so.conf.d", "/etc/alternatives",
-                                 "/etc/localtime", "/etc/mime.types"};
-
-// The bwrap command line around `argv` (see the header for what each part isolates). bwrap reads a byte on
-// fd 5 once its set-up is done (the byte left unread: the sandbox failed, not the program).
-std::vector<std::string> sandboxed(const Sandbox& sandbox, const std::string& work, long long disk_bytes,
-                                   const std::vector<std::string>& argv) {
-  std::vector<std::string> words = {sandbox.bwrap};
-  for (const char* folder : kSystemFolders) words.insert(words.end(), {"--ro-bind-try", folder, folder});
-  for (const char* link : kRootLinks) {
-    std::error_code error;
-    if (fs::is_symlink(link, error))  // merged /usr: /bin -> usr/bin
-      words.insert(words.end(), {"--symlink", fs::read_symlink(link, error).string(), link});
-    else if (fs::is_directory(link, error))
-      words.insert(words.end(), {"--ro-bind", link, link});
-  }
-  for (const char* file : kEtcFiles) words.insert(words.end(), {"--ro-bind-try", file, file});
-  words.insert(words.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
-  // A class's folder is hidden even where a system folder holds it (a batch under /opt).
-  for (const std::string& dir : sandbox.hidden) words.insert(words.end(), {"--tmpfs", dir});
-  // The student's own folder, and the folders of the files its command names (its program, its script).
-  std::vector<std::string> shown = sandbox.shown;
-  for (const std::string& dir : folders_named(argv)) shown.push_back(dir);
-  for (const std::string& dir : shown)
-    if (dir != "/") words.insert(words.end(), {"--ro-bind", dir, dir});
-  // bwrap writes its "child-pid" JSON on fd 4 once the sandbox is up: no bytes there means it never started.
-  words.insert(words.end(), {"--info-fd", "4", "--block-fd", "5"});
-  // The only writable folder: a tmpfs of its own, so a full disk is this run's failure, never the machine's.
-  words.insert(words.end(), {"--size", std::to_string(disk_bytes), "--tmpfs", work});
-  words.insert(words.end(), {"--remount-ro", "/tmp", "--remount-ro", "/dev", "--unshare-all",
-                             "--unshare-user", "--uid", "65534", "--gid", "65534", "--die-with-parent",
-                             "--new-session", "--chdir", work, "--"});
-  words.insert(words.end(), argv.begin(), argv.end());
-  return words;
+// raycam-exec (exec_checkpoint.cpp): beside the running program, as every executable of a build; else
+// where this build put it.
+std::string exec_checkpoint_path() {
+  std::error_code error;
+  const fs::path beside = fs::read_symlink("/proc/self/exe", error).parent_path() / "raycam-exec";
+  if (!error && access(beside.c_str(), X_OK) == 0) return beside.string();
+#ifdef RAYCAM_EXEC_CHECKPOINT
+  if (access(RAYCAM_EXEC_CHECKPOINT, X_OK) == 0) return RAYCAM_EXEC_CHECKPOINT;
+#endif
+  return {};
 }
 
 // Run as root, a sandboxed program would keep root's rights on every file bwrap shows it (a user namespace
@@ -261,6 +234,29 @@ void stop_live_runs() { stop_runs(false); }
 void stop_live_runs_for_good() { stop_runs(true); }
 
 namespace {
+// A sandboxed run's processes that are not the program's: bwrap's launcher outside and its pid 1 inside.
+constexpr int kSandboxProcesses = 2;
+}  // namespace
+
+void sweep_stale_run_folders(const std::string& base) {
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(base, error)) {
+    const std::string name = entry.path().filename().string();
+    const std::string prefix = "raycam-check-";
+    if (name.rfind(prefix, 0) != 0) continue;
+    const std::size_t dash = name.find('-', prefix.size());
+    if (dash == std::string::npos) continue;
+    const long pid = std::atol(name.substr(prefix.size(), dash - prefix.size()).c_str());
+    if (pid <= 0 || pid == getpid() || kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;
+    struct stat info {};
+    if (lstat(entry.path().c_str(), &info) == 0 && S_ISDIR(info.st_mode) &&
+        (geteuid() == 0 || info.st_uid == geteuid()))  // root's runs chown theirs to the run's uid
+      remove_folder_whatever_modes(entry.path().string());
+  }
+}
+
+namespace {
+
 void track(const std::string& folder, pid_t group, const RunGroup* control = nullptr) {
   LiveRuns& r = live_runs();
   std::lock_guard<std::mutex> lock(r.mutex);
@@ -277,20 +273,41 @@ void stop(pid_t pid) {
   kill(pid, SIGKILL);
 }
 
+// A run's temporary folder, TMPDIR/raycam-check-PID-XXXXXX (tracked; "" with result's error when it cannot be
+// made). The checker's pid in the name lets a later check sweep the folders of one that was killed.
+std::string make_run_folder(RunResult& result) {
+  const char* tmp = std::getenv("TMPDIR");
+  const std::string base = tmp && *tmp ? tmp : "/tmp";
+  static std::once_flag swept;
+  std::call_once(swept, [&] { sweep_stale_run_folders(base); });
+  std::string pattern = base + "/raycam-check-" + std::to_string(getpid()) + "-XXXXXX";
+  if (!mkdtemp(pattern.data())) {
+    result.error = "cannot create a temporary directory: " + std::string(std::strerror(errno));
+    result.infrastructure_failure = true;
+    return {};
+  }
+  track(pattern, 0);
+  return pattern;
+}
+
 // ---- the child (after fork: async-signal-safe calls only) -------------------------------------------------
-// What the child needs besides its command, prepared before the fork.
+// What the child needs besides its command, prepared before the fork. Descriptors are the parent's; the
+// child moves them to 0–2, 3 (its report) and, sandboxed, to sandbox_policy.h's numbers.
 struct ChildSetup {
-  const char* work;
-  int in, out, err, report, info, block;  // block: bwrap's --block-fd (-1 without the sandbox)
-  const RunLimits* limits;
-  uid_t run_uid;
-  rlim_t max_processes;                // RLIMIT_NPROC, 0: none (a run group bounds the processes)
-  const std::vector<int>* join_group;  // the run group's cgroup.procs, or nullptr
+  const char* work = nullptr;
+  int in = -1, out = -1, err = -1, report = -1;
+  int info = -1, block = -1, checkpoint = -1, filter = -1, shim = -1;  // sandboxed only
+  const RunLimits* limits = nullptr;
+  uid_t run_uid = 0;
+  rlim_t max_processes = 0;                      // RLIMIT_NPROC, 0: none (a run group bounds the processes)
+  const std::vector<int>* join_group = nullptr;  // the run group's cgroup.procs, or nullptr
 };
 
-[[noreturn]] void fail_in_child(int report) {
-  const int code = errno;
-  ssize_t ignored = write(report, &code, sizeof code);
+// The child's report to the parent (its fd 3, closed on exec): which step failed, and errno.
+enum ChildStep : int { kSetupStep = 1, kExecStep = 2 };
+[[noreturn]] void fail_in_child(int report, int step) {
+  const int message[2] = {step, errno};
+  ssize_t ignored = write(report, message, sizeof message);
   (void)ignored;
   _exit(127);
 }
@@ -298,16 +315,17 @@ struct ChildSetup {
 [[noreturn]] void exec_child(const char* program, char* const* argv, char* const* envp, const ChildSetup& c) {
   setpgid(0, 0);
   // Into the run's group first, while still allowed to (its files belong to the checker's user).
-  if (c.join_group && !join_run_group(*c.join_group)) fail_in_child(c.report);
+  if (c.join_group && !join_run_group(*c.join_group)) fail_in_child(c.report, kSetupStep);
   sigset_t none;  // raycam-cli check blocks SIGINT and SIGTERM for its signal thread: not the student's
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
   if (c.run_uid != 0 && (setgroups(0, nullptr) != 0 || setgid(gid_t(c.run_uid)) != 0 || setuid(c.run_uid) != 0))
-    fail_in_child(c.report);
+    fail_in_child(c.report, kSetupStep);
   // Keyrings are not namespaced: a fresh, empty session keyring, so that no key of the checker's session or
-  // of an earlier run is within reach.
+  // of an earlier run is within reach. Checked: if it cannot be made (a key quota filled), the run does not
+  // start rather than share the checker's (the filter then refuses keyctl to the program).
 #ifdef KEYCTL_JOIN_SESSION_KEYRING
-  syscall(SYS_keyctl, KEYCTL_JOIN_SESSION_KEYRING, nullptr);
+  if (syscall(SYS_keyctl, KEYCTL_JOIN_SESSION_KEYRING, nullptr) < 0) fail_in_child(c.report, kSetupStep);
 #endif
   if (c.max_processes > 0) {
     const rlimit processes{c.max_processes, c.max_processes};
@@ -326,17 +344,83 @@ struct ChildSetup {
   setrlimit(RLIMIT_CPU, &cpu_time);
   setrlimit(RLIMIT_FSIZE, &file);
   setrlimit(RLIMIT_CORE, &no_core);
-  if (dup2(c.in, 0) < 0 || dup2(c.out, 1) < 0 || dup2(c.err, 2) < 0 || dup2(c.report, 3) < 0 ||
-      (c.info >= 0 && dup2(c.info, 4) < 0) || (c.block >= 0 && dup2(c.block, 5) < 0))
-    _exit(127);
+  // The report first to a number above every target, so that no dup2 below overwrites it.
+  const int report = fcntl(c.report, F_DUPFD_CLOEXEC, 16);
+  if (report < 0) _exit(127);
+  const std::pair<int, int> moves[] = {{c.in, 0},          {c.out, 1},          {c.err, 2},
+                                       {c.info, kInfoFd},  {c.block, kBlockFd}, {c.checkpoint, kCheckpointFd},
+                                       {c.filter, kFilterFd}, {c.shim, kShimFd}};
+  for (const auto& [from, to] : moves)
+    if (from >= 0 && dup2(from, to) < 0) fail_in_child(report, kSetupStep);
+  if (dup2(report, 3) < 0) fail_in_child(report, kSetupStep);
   fcntl(3, F_SETFD, FD_CLOEXEC);
-  close_descriptors_from(c.block >= 0 ? 6 : 4);  // nothing else of ours leaks into the student's program
-  if (chdir(c.work) == 0) execve(program, argv, envp);
-  fail_in_child(3);
+  close_descriptors_from(c.info >= 0 ? kShimFd + 1 : 4);  // nothing else of ours leaks into the sandbox
+  if (chdir(c.work) != 0) fail_in_child(3, kSetupStep);
+  execve(program, argv, envp);
+  fail_in_child(3, kExecStep);
 }
 }  // namespace
 
-// ---- the parent's poll loop ------------------------------------------------------------------------------
+// ---- the facts' verdict ------------------------------------------------------------------------------------
+void classify_run(const RunFacts& f, RunResult& r) {
+  r.infrastructure_failure = false;
+  r.limit.clear();
+  r.error.clear();
+  if (!f.setup_failure.empty()) {
+    r.end = RunResult::End::could_not_start;
+    r.infrastructure_failure = true;
+    r.error = f.setup_failure;
+    return;
+  }
+  using Stop = RunFacts::Stop;
+  switch (f.stopped) {
+    case Stop::timeout: case Stop::cpu_time: case Stop::cancelled:
+      r.end = RunResult::End::timed_out;
+      r.limit = f.stopped == Stop::cancelled ? "" : kTimeLimit;
+      r.cancelled = f.stopped == Stop::cancelled;
+      if (f.stopped == Stop::cpu_time) r.error = "CPU time";
+      break;
+    case Stop::output: r.end = RunResult::End::output_too_large; r.limit = kOutputLimit; break;
+    case Stop::files: r.end = RunResult::End::signalled; r.signal = SIGKILL; r.limit = kDiskLimit; break;
+    case Stop::none:
+      if (WIFEXITED(f.wait_status)) {
+        r.end = RunResult::End::exited;
+        r.exit_code = WEXITSTATUS(f.wait_status);
+      } else {
+        r.end = RunResult::End::signalled;
+        r.signal = WIFSIGNALED(f.wait_status) ? WTERMSIG(f.wait_status) : 0;
+      }
+  }
+  // Whose fault: sandboxed, the program ran only if the exec checkpoint wrote its byte; before that every
+  // failure is the sandbox's, after it every failure is the program's, whatever either printed.
+  const bool program_started = f.sandboxed ? !f.checkpoint.empty() : f.exec_errno == 0;
+  if (f.sandboxed && !program_started) {
+    if (f.stopped == Stop::cancelled) return;  // nobody's: the caller gave up
+    r.infrastructure_failure = true;
+    r.end = RunResult::End::could_not_start;
+    r.error = f.exec_errno ? "cannot start bwrap: " + std::string(std::strerror(f.exec_errno))
+              : !f.sandbox_named_child ? "the sandbox did not start (bwrap named no child)"
+              : !f.sandbox_setup_done  ? "the sandbox's set-up did not finish"
+                                       : "the sandbox failed after its set-up, before the program started";
+    r.limit.clear();
+    return;
+  }
+  int exec_errno = f.exec_errno;
+  if (f.sandboxed && f.checkpoint.size() >= 1 + sizeof(int)) std::memcpy(&exec_errno, f.checkpoint.data() + 1, sizeof(int));
+  if (exec_errno != 0) {  // the program itself cannot be exec'd: the submission's (no run bit, CRLF, …)
+    r.end = RunResult::End::could_not_start;
+    r.error = std::strerror(exec_errno);
+    r.limit.clear();
+    return;
+  }
+  if (r.limit.empty() && f.memory_limit_hit) r.limit = kMemoryLimit;
+  else if (r.limit.empty() && f.process_limit_hit) r.limit = kProcessLimit;
+  else if (r.limit.empty() && f.cpu_over_limit) r.limit = kTimeLimit;
+  if (r.limit.empty() && f.disk_full && r.end != RunResult::End::exited) r.limit = kDiskLimit;
+  if (r.limit.empty() && f.disk_full && r.end == RunResult::End::exited && r.exit_code != 0) r.limit = kDiskLimit;
+}
+
+// ---- launching, waiting --------------------------------------------------------------------------------
 namespace {
 // The pid bwrap's info fd names ("child-pid": N), or 0.
 pid_t child_pid_in(const std::string& info) {
@@ -347,7 +431,7 @@ pid_t child_pid_in(const std::string& info) {
 }
 
 // The run's tmpfs, seen through the sandbox's root once it is up (a tmpfs of exactly its size: never the
-// host's folder of the same name), kept open so that it can be measured after the run has ended. -1 if not.
+// host's folder of the same name), kept open so that it can be measured during and after the run. -1 if not.
 int open_run_disk(pid_t child, const std::string& work, long long disk_bytes) {
   const std::string path = "/proc/" + std::to_string(child) + "/root" + work;
   const int fd = open(path.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
@@ -363,17 +447,175 @@ bool disk_full(int fd) {
   return fd >= 0 && fstatfs(fd, &info) == 0 && info.f_bavail == 0;
 }
 
-// A program writing into a full disk says so on stderr; a run that ended before its disk could be measured.
+long long files_in(int fd) {
+  struct statfs info {};
+  return fd >= 0 && fstatfs(fd, &info) == 0 ? (long long)info.f_files - (long long)info.f_ffree : 0;
+}
+
+// A program writing into a full disk says so on stderr: the one fact a run that ended before its disk could
+// be measured leaves (it only ever names the disk bound, never whose fault a failure is).
 bool says_disk_full(const std::string& err) {
   return err.find("No space left on device") != std::string::npos || err.find("[Errno 28]") != std::string::npos;
 }
 
-// A sandbox that failed after its set-up's checkpoint ("bwrap: Can't fork for pid 1"): bwrap's own message,
-// and never more than bwrap's two processes in the run's group, so the program never started (a program
-// printing "bwrap: …" itself ran as a third). Without a group's count (peak_processes < 0), that one message.
-bool bwrap_failed_late(const RunResult& r, long long peak_processes) {
-  return r.end == RunResult::End::exited && r.exit_code == 1 && r.err.rfind("bwrap: ", 0) == 0 &&
-         (peak_processes >= 0 ? peak_processes <= 2 : r.err.rfind("bwrap: Can't fork for pid 1", 0) == 0);
+void drain_into(int fd, std::string& text) {
+  char buffer[4096];
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0;) text.append(buffer, std::size_t(n));
+}
+
+// A started run: the child's pid and the parent's ends of its pipes.
+struct Launched {
+  pid_t pid = 0;
+  Pipe in, out, err, report, info, block, checkpoint, filter;
+  int shim = -1;
+  ~Launched() {
+    if (shim >= 0) ::close(shim);
+  }
+};
+
+// Forks and execs the run's command (bwrap's or the program). Throws on the machine's failures (pipes, fork).
+void launch(Launched& run, std::vector<char*>& c_argv, std::vector<char*>& c_envp, const std::string& work,
+            const RunLimits& limits, uid_t run_uid, rlim_t max_processes, const RunGroup* group,
+            const std::string* filter, const std::string& shim_path) {
+  const bool sandboxed = !shim_path.empty();
+  if (write(run.block.write, "x", 1) != 1) throw std::runtime_error("pipe: cannot write");
+  if (sandboxed && filter) {  // bwrap reads the filter to its end: written whole, then closed
+    if (write(run.filter.write, filter->data(), filter->size()) != ssize_t(filter->size()))
+      throw std::runtime_error("pipe: cannot write the system-call filter");
+    run.filter.close_write();
+  }
+  if (sandboxed && (run.shim = open(shim_path.c_str(), O_RDONLY | O_CLOEXEC)) < 0)
+    throw std::runtime_error("cannot open " + shim_path + ": " + std::strerror(errno));
+  ChildSetup setup;
+  setup.work = work.c_str();
+  setup.in = run.in.read;
+  setup.out = run.out.write;
+  setup.err = run.err.write;
+  setup.report = run.report.write;
+  if (sandboxed) {
+    setup.info = run.info.write;
+    setup.block = run.block.read;
+    setup.checkpoint = run.checkpoint.write;
+    setup.filter = filter ? run.filter.read : -1;
+    setup.shim = run.shim;
+  }
+  setup.limits = &limits;
+  setup.run_uid = run_uid;
+  setup.max_processes = max_processes;
+  setup.join_group = group ? &group->join_fds() : nullptr;
+  run.pid = fork();
+  if (run.pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
+  if (run.pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), setup);
+  setpgid(run.pid, run.pid);  // also here: whichever runs first, the group exists before we may signal it
+  for (Pipe* pipe : {&run.out, &run.err, &run.report, &run.info, &run.block, &run.checkpoint}) pipe->close_write();
+  run.in.close_read();
+  run.filter.close_read();
+}
+
+// Feeds the input, collects the output and polls the bounds until the run ends or is stopped; fills the
+// facts and the result's output. The program's own exit counts once it has exited, after a short drain of
+// what it wrote (something it started may still hold its output open: a setsid child).
+void wait_for(Launched& run, const std::string& input, const RunLimits& limits, const RunGroup* group,
+              const std::string& work, bool sandboxed, RunFacts& facts, RunResult& result, rusage& usage,
+              int& disk) {
+  const auto start = Clock::now();
+  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.timeout_seconds));
+  const double cpu_limit = limits.cpu_seconds > 0 ? limits.cpu_seconds : limits.timeout_seconds;
+  const long long max_files = limits.max_files > 0 ? limits.max_files : std::max(1LL, limits.disk_bytes >> 12);
+  using Stop = RunFacts::Stop;
+  auto cancelled = [&] { return limits.cancel && limits.cancel->load(); };
+  fcntl(run.in.write, F_SETFL, O_NONBLOCK);
+  fcntl(run.info.read, F_SETFL, O_NONBLOCK);
+  std::size_t written = 0;
+  if (input.empty()) run.in.close_write();
+  std::string info_text;
+  pid_t sandbox_child = 0;
+  char buffer[65536];
+  bool exited = false;
+  Clock::time_point drained_by = deadline;
+  // The bounds the checker itself polls: wall time, a cancel, CPU time (a group's count), files on disk.
+  auto over_a_bound = [&](Clock::time_point now) {
+    if (now >= deadline) return Stop::timeout;
+    if (cancelled()) return Stop::cancelled;
+    if (group && group->cpu_seconds() > cpu_limit) return Stop::cpu_time;
+    if (files_in(disk) > max_files) return Stop::files;
+    return Stop::none;
+  };
+  while (run.out.read >= 0 || run.err.read >= 0) {
+    const auto now = Clock::now();
+    if (!exited && (facts.stopped = over_a_bound(now)) != Stop::none) break;
+    if (!exited && wait_with_usage(run.pid, &facts.wait_status, WNOHANG, &usage) == run.pid) {
+      exited = true;
+      drained_by = std::min(deadline, now + std::chrono::milliseconds(200));
+    }
+    if (exited && now >= drained_by) break;
+    if (sandboxed && run.info.read >= 0) {  // bwrap names its child once the namespaces exist
+      const ssize_t n = read(run.info.read, buffer, sizeof buffer);
+      if (n > 0) info_text.append(buffer, std::size_t(n));
+      else if (n == 0) run.info.close_read();
+      if (!sandbox_child) sandbox_child = child_pid_in(info_text);
+    }
+    if (sandbox_child && disk < 0 && !exited) disk = open_run_disk(sandbox_child, work, limits.disk_bytes);
+    pollfd fds[3];
+    int count = 0;
+    if (run.in.write >= 0) fds[count++] = {run.in.write, POLLOUT, 0};
+    if (run.out.read >= 0) fds[count++] = {run.out.read, POLLIN, 0};
+    if (run.err.read >= 0) fds[count++] = {run.err.read, POLLIN, 0};
+    // Short waits until the program has exited (its exit is noticed above), then until the drain ends;
+    // shorter while the run's disk is still to be found.
+    const int step = sandbox_child && disk < 0 ? 5 : 50;
+    const int wait_ms = exited ? int(std::chrono::duration_cast<std::chrono::milliseconds>(drained_by - now).count()) + 1
+                               : std::min(step, int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1);
+    if (poll(fds, nfds_t(count), wait_ms) < 0 && errno != EINTR) break;
+    bool too_large = false;
+    for (int i = 0; i < count; ++i) {
+      if (!fds[i].revents) continue;
+      if (fds[i].fd == run.in.write) {
+        const ssize_t n = write(run.in.write, input.data() + written, input.size() - written);
+        if (n > 0) written += std::size_t(n);
+        if (n < 0 && errno != EAGAIN) run.in.close_write();  // EPIPE: the program does not read its input
+        if (written == input.size()) run.in.close_write();
+        continue;
+      }
+      const bool is_out = fds[i].fd == run.out.read;
+      const ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
+      if (n <= 0) {
+        if (n == 0 || errno != EAGAIN) (is_out ? run.out : run.err).close_read();
+        continue;
+      }
+      std::string& sink = is_out ? result.out : result.err;
+      const std::size_t cap = is_out ? limits.max_stdout_bytes : limits.max_stderr_bytes;
+      sink.append(buffer, std::min(std::size_t(n), cap - std::min(cap, sink.size())));
+      if (is_out && result.out.size() >= limits.max_stdout_bytes) too_large = true;
+    }
+    if (too_large) {
+      facts.stopped = Stop::output;
+      break;
+    }
+  }
+  // Output closed: wait for the exit, still under the bounds (a program may close stdout and go on).
+  while (!exited && facts.stopped == Stop::none && wait_with_usage(run.pid, &facts.wait_status, WNOHANG, &usage) == 0)
+    if ((facts.stopped = over_a_bound(Clock::now())) == Stop::none) usleep(2000);
+  if (facts.stopped != Stop::none) {
+    stop(run.pid);
+    if (group) group->kill_all();
+    wait_with_usage(run.pid, &facts.wait_status, 0, &usage);
+    // A cancel after the deadline, or with the CPU spent, is that bound's.
+    if (facts.stopped == Stop::cancelled && Clock::now() >= deadline) facts.stopped = Stop::timeout;
+  }
+  kill(-run.pid, SIGKILL);  // anything it left behind in its process group
+  if (group) group->kill_all();
+  if (sandboxed) {
+    if (run.info.read >= 0) drain_into(run.info.read, info_text);
+    int unread = 0;  // bwrap's set-up reads the byte on its --block-fd when it is done
+    ioctl(run.block.read, FIONREAD, &unread);
+    facts.sandbox_named_child = child_pid_in(info_text) != 0;
+    facts.sandbox_setup_done = unread == 0;
+    // Every holder of the checkpoint's pipe is gone once bwrap has ended: read to its end.
+    fcntl(run.checkpoint.read, F_SETFL, O_NONBLOCK);
+    drain_into(run.checkpoint.read, facts.checkpoint);
+  }
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
 }
 }  // namespace
 
@@ -386,7 +628,8 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     result.error = "empty command";
     return result;
   }
-  std::vector<std::string> argv = argv_in;
+  // Sandboxed, the program sees only real paths (sandbox_policy.h): a link in its command is resolved.
+  std::vector<std::string> argv = sandbox ? canonical_paths(argv_in) : argv_in;
   // Sandboxed under root the run has no rights of root's: its program comes from where anyone may run it
   // (/usr/bin/python3, not a shim in root's home).
   const bool unprivileged = sandbox && geteuid() == 0;
@@ -401,16 +644,22 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
     return result;
   }
   argv[0] = program;
-
-  const char* tmp = std::getenv("TMPDIR");
-  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/raycam-check-XXXXXX";
-  if (!mkdtemp(pattern.data())) {
-    result.error = "cannot create a temporary directory: " + std::string(std::strerror(errno));
-    result.infrastructure_failure = true;
-    return result;
+  std::string shim, no_filter;
+  const std::string* filter = nullptr;
+  if (sandbox) {
+    shim = exec_checkpoint_path();
+    const std::string& compiled = syscall_filter_program(no_filter);
+    if (!compiled.empty()) filter = &compiled;
+    if (shim.empty() || !filter) {
+      result.infrastructure_failure = true;
+      result.error = shim.empty() ? "raycam-exec (the sandbox's exec checkpoint) is not beside this program"
+                                  : "no system-call filter: " + no_filter;
+      return result;
+    }
   }
-  const std::string work = pattern;
-  track(work, 0);
+
+  const std::string work = make_run_folder(result);
+  if (work.empty()) return result;
   auto give_up = [&](const std::string& why) {
     result.error = why;
     result.infrastructure_failure = true;
@@ -422,198 +671,75 @@ RunResult run_student(const std::vector<std::string>& argv_in, const std::string
   const uid_t run_uid = unprivileged ? next_run_uid() : 0;
   if (run_uid != 0 && chown(work.c_str(), run_uid, gid_t(run_uid)) != 0)
     return give_up("cannot give the run its temporary directory: " + std::string(std::strerror(errno)));
+  // bwrap's own two processes (its launcher outside, its pid 1 inside) are not the program's: counted on top.
+  const int overhead = sandbox ? kSandboxProcesses : 0;
   std::string no_group;
   std::unique_ptr<RunGroup> group;
   if (limits.use_run_groups && run_groups_available(no_group)) {
-    group = RunGroup::create({limits.memory_bytes, limits.max_processes}, no_group);
+    group = RunGroup::create({limits.memory_bytes, limits.max_processes + overhead}, no_group);
     if (!group) return give_up(no_group);
   }
   result.bounded_per_run = bool(group);
   // Without a group the process cap counts per uid: a run's own uid under root, else this user's processes
   // now plus the run's.
   const rlim_t max_processes =
-      group ? 0 : rlim_t(limits.max_processes) + rlim_t(run_uid != 0 ? 0 : processes_of(geteuid()));
-  std::vector<std::string> command = sandbox ? sandboxed(*sandbox, work, limits.disk_bytes, argv) : argv;
+      group ? 0 : rlim_t(limits.max_processes + overhead) + rlim_t(run_uid != 0 ? 0 : processes_of(geteuid()));
+  std::vector<std::string> command =
+      sandbox ? bwrap_arguments(sandbox_policy(sandbox->bwrap, sandbox->hidden, sandbox->shown, argv, work,
+                                               limits.disk_bytes),
+                                argv)
+              : argv;
   std::vector<std::string> environment = child_environment(work);
   std::vector<char*> c_argv = c_strings(command), c_envp = c_strings(environment);
-  const double cpu_limit = limits.cpu_seconds > 0 ? limits.cpu_seconds : limits.timeout_seconds;
 
-  const auto start = Clock::now();
-  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limits.timeout_seconds));
+  RunFacts facts;
+  facts.sandboxed = bool(sandbox);
+  rusage usage{};
   int disk = -1;  // the run's tmpfs (open_run_disk)
   try {
-    Pipe in, out, err, report, info, block;
-    if (write(block.write, "x", 1) != 1) throw std::runtime_error("pipe: cannot write");
-    const ChildSetup setup{work.c_str(), in.read, out.write, err.write, report.write, sandbox ? info.write : -1,
-                           sandbox ? block.read : -1, &limits, run_uid, max_processes,
-                           group ? &group->join_fds() : nullptr};
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error(std::string("fork: ") + std::strerror(errno));
-    if (pid == 0) exec_child(c_argv[0], c_argv.data(), c_envp.data(), setup);
-    setpgid(pid, pid);  // also here: whichever runs first, the group exists before we may signal it
-    track(work, pid, group.get());
-    in.close_read();
-    out.close_write();
-    err.close_write();
-    report.close_write();
-    info.close_write();
-    block.close_write();
-    int exec_errno = 0;
-    if (read(report.read, &exec_errno, sizeof exec_errno) == sizeof exec_errno) {
-      waitpid(pid, nullptr, 0);
-      const std::string hint = launch_hint(argv);
-      result.error = hint.empty() ? "cannot run '" + argv[0] + "': " + std::strerror(exec_errno) : hint;
-      group.reset();
-      remove_folder_whatever_modes(work);
-      untrack(work);
-      return result;
-    }
-    fcntl(in.write, F_SETFL, O_NONBLOCK);
-    fcntl(info.read, F_SETFL, O_NONBLOCK);
-    std::size_t written = 0;
-    if (input.empty()) in.close_write();
-    bool too_large = false, timed_out = false, cpu_out = false;
-    std::string info_text;
-    pid_t sandbox_child = 0;
-    char buffer[65536];
-    // The program itself may end while something it started still holds its output open (a setsid child,
-    // out of its process group): its answer counts once it has exited, after a short drain of what it wrote.
-    int status = 0;
-    rusage usage {};
-    bool exited = false;
-    Clock::time_point drained_by = deadline;
-    auto cancelled = [&] { return limits.cancel && limits.cancel->load(); };
-    while (out.read >= 0 || err.read >= 0) {
-      const auto now = Clock::now();
-      if ((now >= deadline || cancelled()) && !exited) {
-        timed_out = true;
-        break;
-      }
-      if (group && !exited && group->cpu_seconds() > cpu_limit) {
-        timed_out = cpu_out = true;
-        break;
-      }
-      if (!exited && wait_with_usage(pid, &status, WNOHANG, &usage) == pid) {
-        exited = true;
-        drained_by = std::min(deadline, now + std::chrono::milliseconds(200));
-      }
-      if (exited && now >= drained_by) break;
-      if (sandbox && info.read >= 0) {  // bwrap names its child once the namespaces exist
-        const ssize_t n = read(info.read, buffer, sizeof buffer);
-        if (n > 0) info_text.append(buffer, std::size_t(n));
-        else if (n == 0) info.close_read();
-        if (!sandbox_child) sandbox_child = child_pid_in(info_text);
-      }
-      if (sandbox_child && disk < 0 && !exited) disk = open_run_disk(sandbox_child, work, limits.disk_bytes);
-      pollfd fds[3];
-      int count = 0;
-      if (in.write >= 0) fds[count++] = {in.write, POLLOUT, 0};
-      if (out.read >= 0) fds[count++] = {out.read, POLLIN, 0};
-      if (err.read >= 0) fds[count++] = {err.read, POLLIN, 0};
-      // Short waits until the program has exited (its exit is noticed above), then until the drain ends;
-      // shorter while the run's disk is still to be found.
-      const int step = sandbox_child && disk < 0 ? 5 : 50;
-      const int wait_ms = exited ? int(std::chrono::duration_cast<std::chrono::milliseconds>(drained_by - now).count()) + 1
-                                 : std::min(step, int(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1);
-      if (poll(fds, nfds_t(count), wait_ms) < 0 && errno != EINTR) break;
-      for (int i = 0; i < count; ++i) {
-        if (!fds[i].revents) continue;
-        if (fds[i].fd == in.write) {
-          const ssize_t n = write(in.write, input.data() + written, input.size() - written);
-          if (n > 0) written += std::size_t(n);
-          if (n < 0 && errno != EAGAIN) in.close_write();  // EPIPE: the program does not read its input
-          if (written == input.size()) in.close_write();
-          continue;
-        }
-        const bool is_out = fds[i].fd == out.read;
-        const ssize_t n = read(fds[i].fd, buffer, sizeof buffer);
-        if (n <= 0) {
-          if (n == 0 || errno != EAGAIN) (is_out ? out : err).close_read();
-          continue;
-        }
-        std::string& sink = is_out ? result.out : result.err;
-        const std::size_t cap = is_out ? limits.max_stdout_bytes : limits.max_stderr_bytes;
-        sink.append(buffer, std::min(std::size_t(n), cap - std::min(cap, sink.size())));
-        if (is_out && result.out.size() >= limits.max_stdout_bytes) too_large = true;
-      }
-      if (too_large) break;
-    }
-    // Output closed: wait for the exit, still under the deadline (a program may close stdout and go on).
-    pid_t done = exited ? pid : 0;
-    while (!exited && !timed_out && !too_large && (done = wait_with_usage(pid, &status, WNOHANG, &usage)) == 0) {
-      if (Clock::now() >= deadline || cancelled()) timed_out = true;
-      else if (group && group->cpu_seconds() > cpu_limit) timed_out = cpu_out = true;
-      else usleep(2000);
-    }
-    if (timed_out || too_large) {
-      stop(pid);
-      if (group) group->kill_all();
-      wait_with_usage(pid, &status, 0, &usage);
-      result.end = timed_out ? RunResult::End::timed_out : RunResult::End::output_too_large;
-      result.limit = timed_out ? kTimeLimit : kOutputLimit;
-      if (timed_out && !cpu_out && Clock::now() < deadline && cancelled()) {
-        result.cancelled = true;  // no bound ended it: the caller gave up
-        result.limit.clear();
-      }
-      if (cpu_out) result.error = "CPU time";
-    } else if (WIFEXITED(status)) {
-      result.end = RunResult::End::exited;
-      result.exit_code = WEXITSTATUS(status);
+    Launched run;
+    launch(run, c_argv, c_envp, work, limits, run_uid, max_processes, group.get(), filter, shim);
+    track(work, run.pid, group.get());
+    int message[2] = {0, 0};
+    if (read(run.report.read, message, sizeof message) == sizeof message) {  // the child failed before exec
+      waitpid(run.pid, nullptr, 0);
+      if (message[0] == kSetupStep) facts.setup_failure = std::string("cannot set the run up: ") + std::strerror(message[1]);
+      else facts.exec_errno = message[1];
     } else {
-      result.end = RunResult::End::signalled;
-      result.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+      wait_for(run, input, limits, group.get(), work, bool(sandbox), facts, result, usage, disk);
     }
-    kill(-pid, SIGKILL);  // anything it left behind in its group
-    if (group) group->kill_all();
-    if (sandbox) {  // see RunResult::infrastructure_failure
-      if (info.read >= 0) {
-        const ssize_t n = read(info.read, buffer, sizeof buffer);
-        if (n > 0) info_text.append(buffer, std::size_t(n));
-      }
-      int unread = 0;  // bwrap's set-up reads the byte on its --block-fd when it is done
-      ioctl(block.read, FIONREAD, &unread);
-      result.infrastructure_failure = info_text.empty() || unread > 0 ||
-                                      bwrap_failed_late(result, group ? group->usage().peak_processes : -1);
-    }
-    if (group) {
-      const GroupUsage counted = group->usage();
-      result.cpu_seconds = counted.cpu_seconds;
-      result.peak_memory_bytes = counted.peak_memory_bytes;
-      if (result.limit.empty() && counted.memory_limit_hit) result.limit = kMemoryLimit;
-      else if (result.limit.empty() && counted.process_limit_hit) result.limit = kProcessLimit;
-    } else {
-      result.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                           1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-      result.peak_memory_bytes = (long long)usage.ru_maxrss << 10;
-      if (result.end == RunResult::End::signalled && (result.signal == SIGXCPU || result.signal == SIGKILL) &&
-          result.cpu_seconds >= cpu_limit)
-        result.limit = kTimeLimit;
-    }
-    if (result.limit.empty() && sandbox && (disk_full(disk) || says_disk_full(result.err))) result.limit = kDiskLimit;
-    // The sandbox is up but the program cannot start (bwrap says "execvp"): the submission's, with a hint.
-    if (sandbox && !result.infrastructure_failure && result.err.rfind("bwrap: execvp ", 0) == 0) {
-      const std::string hint = launch_hint(argv);
-      result.end = RunResult::End::could_not_start;
-      result.error = hint.empty() ? "cannot run '" + argv[0] + "': " + result.err.substr(result.err.rfind(": ") + 2)
-                                  : hint;
-      if (!result.error.empty() && result.error.back() == '\n') result.error.pop_back();
-    }
-    // "#!/usr/bin/env python3\r" starts env, which then finds no 'python3\r' (exit 127, its message quoting
-    // the \r as "\\r"): the script's line ends, as when the kernel finds no interpreter.
-    if (!result.infrastructure_failure && result.end == RunResult::End::exited && result.exit_code == 127 &&
-        (result.err.find('\r') != std::string::npos || result.err.find("\\r") != std::string::npos)) {
-      if (const std::string hint = launch_hint(argv); hint.find("(CRLF)") != std::string::npos) {
-        result.end = RunResult::End::could_not_start;
-        result.error = hint;
-      }
-    }
-  } catch (const std::exception& error) {  // fork or pipe failed: the machine, not the program
-    result.end = RunResult::End::could_not_start;
-    result.error = error.what();
-    result.infrastructure_failure = true;
+  } catch (const std::exception& error) {  // pipes or fork failed: the machine, not the program
+    facts.setup_failure = error.what();
   }
+  if (group) {
+    const GroupUsage counted = group->usage();
+    result.cpu_seconds = counted.cpu_seconds;
+    result.peak_memory_bytes = counted.peak_memory_bytes;
+    facts.memory_limit_hit = counted.memory_limit_hit;
+    facts.process_limit_hit = counted.process_limit_hit;
+  } else {
+    result.cpu_seconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    result.peak_memory_bytes = (long long)usage.ru_maxrss << 10;
+    const int signal = WIFSIGNALED(facts.wait_status) ? WTERMSIG(facts.wait_status) : 0;
+    const double cpu_limit = limits.cpu_seconds > 0 ? limits.cpu_seconds : limits.timeout_seconds;
+    facts.cpu_over_limit = (signal == SIGXCPU || signal == SIGKILL) && result.cpu_seconds >= cpu_limit;
+  }
+  facts.disk_full = sandbox && (disk_full(disk) || says_disk_full(result.err));
+  classify_run(facts, result);
+  if (result.end == RunResult::End::could_not_start && !result.infrastructure_failure) {
+    // The program cannot be exec'd: the submission's, with a hint where one applies (CRLF, no run bit).
+    const std::string hint = launch_hint(argv);
+    result.error = hint.empty() ? "cannot run '" + argv[0] + "': " + result.error : hint;
+  }
+  // "#!/usr/bin/env python3\r" starts env, which then finds no 'python3\r' and exits 127: the script's line
+  // ends (read from the file, not from what the run printed), as when the kernel finds no interpreter.
+  if (result.end == RunResult::End::exited && result.exit_code == 127 && !result.infrastructure_failure)
+    if (const std::string hint = launch_hint(argv); hint.find("(CRLF)") != std::string::npos) {
+      result.end = RunResult::End::could_not_start;
+      result.error = hint;
+    }
   if (disk >= 0) close(disk);
-  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   group.reset();
   remove_folder_whatever_modes(work);
   untrack(work);

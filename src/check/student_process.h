@@ -1,16 +1,12 @@
 // Running one untrusted student program on one case: no shell, a fresh temporary directory, the case on
 // stdin, a timeout, capped output, stderr kept, and (where it works) a bubblewrap sandbox.
 //
-// The sandbox (bwrap) shows the program only what running needs, read-only: /usr (and /bin, /lib… that link
-// into it), /opt, the dynamic loader's few /etc files, its own folder and the folders of the files its command
-// names; /tmp empty, /dev only the basic devices, its own temporary directory the only writable place. Not
-// /home, /root, the rest of /etc, the report or CSV folders, other submissions. No network (a new network
-// namespace: not even the host's loopback), new user/PID/IPC/UTS namespaces (all its processes die with it).
-// Run by root, the program runs under an unprivileged uid of its own (never root's rights on what it sees);
-// its writable folder is a tmpfs of RunLimits::disk_bytes; a fresh session keyring of its own. Each run is a
-// control group of its own (run_group.h) bounding its memory, processes and CPU time as a whole; where none
-// can be made, per-process limits (address space, RLIMIT_NPROC, RLIMIT_CPU). Without the sandbox the same
-// limits apply except the isolation, the tmpfs and the uid.
+// The sandbox's policy (what a run sees and may do, and the bwrap command line) is sandbox_policy.h's. Run
+// by root, the program runs under an unprivileged uid of its own (never root's rights on what it sees); a
+// fresh session keyring of its own, checked before anything of the student's runs. Each run is a control
+// group of its own (run_group.h) bounding its memory, processes and CPU time as a whole; where none can be
+// made, per-process limits (address space, RLIMIT_NPROC, RLIMIT_CPU). Without the sandbox the same limits
+// apply except the isolation, the tmpfs, the filter and the uid.
 #pragma once
 
 #include <atomic>
@@ -39,7 +35,10 @@ struct RunLimits {
   long long memory_bytes = 1LL << 30;
   long long disk_bytes = 256LL << 20;   // the sandbox's writable folder (a tmpfs of this size)
   long long file_bytes = 64LL << 20;    // largest file it may write (RLIMIT_FSIZE)
-  int max_processes = 256;  // processes and threads of the run (its control group; else RLIMIT_NPROC)
+  int max_processes = 256;  // processes and threads of the program (its control group; else RLIMIT_NPROC)
+  // Files and folders in the sandbox's writable folder (its tmpfs's inodes, polled: an empty file costs the
+  // kernel memory but no disk); 0: one per 4 KiB of disk_bytes.
+  long long max_files = 0;
   bool use_run_groups = true;  // false: per-process limits only (the fallback, also for tests)
   // Set by the caller when it no longer wants the answer (the window's check: the camera moved on): the run
   // is stopped at its next poll (within 50 ms) and its result says cancelled.
@@ -62,8 +61,8 @@ struct Sandbox {
 
 struct RunResult {
   enum class End { exited, signalled, timed_out, output_too_large, could_not_start };
-  // The checker's own failure, not the program's: the sandbox did not start (bwrap wrote no "started"
-  // message on its info pipe) or this process could not fork or make a folder.
+  // The checker's own failure, not the program's: the sandbox did not reach the program (classify_run) or
+  // this process could not fork, make a folder or set the run up.
   bool infrastructure_failure = false;
   End end = End::could_not_start;
   int exit_code = 0;
@@ -80,6 +79,30 @@ struct RunResult {
   bool cancelled = false;        // RunLimits::cancel stopped it (then ended as timed_out, limit "")
 };
 
+// What the checker itself saw of one run: facts, never what the program printed. classify_run turns them
+// into the result's end, its bound and whose fault a failure is.
+struct RunFacts {
+  bool sandboxed = false;
+  // The child failed before it could exec (joining the run's group, dropping to the run's uid, a keyring of
+  // its own): the checker's error, with why.
+  std::string setup_failure;
+  int exec_errno = 0;  // the exec of the program (unsandboxed) or of bwrap (sandboxed) failed with this
+  // Sandboxed: bwrap named its child on its info fd (the namespaces exist), read the byte on its block fd
+  // (its mounts are done), and what the exec checkpoint wrote ("": never reached; "S": the program was
+  // exec'd; "S" then an errno: its exec failed).
+  bool sandbox_named_child = false, sandbox_setup_done = false;
+  std::string checkpoint;
+  enum class Stop { none, timeout, cpu_time, output, cancelled, files };
+  Stop stopped = Stop::none;  // the checker stopped the run, and why
+  int wait_status = 0;        // as waitpid gave it (when not stopped)
+  bool memory_limit_hit = false, process_limit_hit = false, disk_full = false;
+  bool cpu_over_limit = false;  // per-process fallback: the kernel's CPU limit killed it (SIGXCPU/SIGKILL past it)
+};
+
+// The end, the bound and the fault of a run from its facts (RunResult's end, exit_code, signal, limit,
+// infrastructure_failure and, for could_not_start, error).
+void classify_run(const RunFacts& facts, RunResult& result);
+
 // Runs `argv` (argv[0] looked up in PATH if it has no '/') with `input` on stdin. Never throws for what the
 // program does; SIGPIPE is ignored in this process from the first call.
 RunResult run_student(const std::vector<std::string>& argv, const std::string& input, const RunLimits& limits,
@@ -91,6 +114,10 @@ void stop_live_runs();
 // The same, for a process about to end (raycam-cli check's interrupt): no run starts or ends afterwards, so
 // that a worker whose run was just killed cannot finish the check first with its own exit status.
 void stop_live_runs_for_good();
+
+// Removes the folders TMPDIR/raycam-check-PID-… of checks that no longer run (killed by SIGKILL: nothing of
+// theirs could clean up), this user's only. Called once per process, at its first run.
+void sweep_stale_run_folders(const std::string& base);
 
 // Whether bwrap exists and can start a sandbox here (checked once per process by running `true` in it).
 // On failure `why` says what went wrong.

@@ -196,16 +196,21 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
 
   std::vector<Submission> submissions;
   for (const fs::directory_entry& entry : fs::directory_iterator(root))
-    if (entry.is_directory() && entry.path().filename().string()[0] != '.') {
+    if (entry.is_directory() && entry.path().filename().string()[0] != '.') {  // a link to a folder too: refused below
       Submission s;
       s.name = entry.path().filename().string();
-      for (const std::string& word : words) s.argv.push_back(substituted(word, entry.path().string(), s.name));
-      if (sandbox) {
-        s.sandbox = Sandbox{sandbox->bwrap, {root.string()}, {entry.path().string()}};
-        std::vector<std::string> shown = folders_named(s.argv);
-        shown.erase(std::remove(shown.begin(), shown.end(), entry.path().string()), shown.end());
+      const std::string folder = entry.path().string();
+      for (const std::string& word : words) s.argv.push_back(substituted(word, folder, s.name));
+      // A submission that leads out of its folder is refused in its own row, before anything of it is shown.
+      s.refusal = submission_refusal(folder, root.string(), s.argv);
+      if (sandbox && s.refusal.empty()) {
+        s.sandbox = Sandbox{sandbox->bwrap, {root.string()}, {folder}};
+        // The instructor's own paths in the template (the student's are refused above if they leave).
+        std::vector<std::string> shown;
+        for (const std::string& dir : folders_named(s.argv))
+          if (dir != folder && dir.rfind(folder + "/", 0) != 0) shown.push_back(dir);
         guard_shown_folders(flags, shown, root.string(), "--student-cmd");
-        if (geteuid() == 0) s.setup_error = unreadable_by_others(entry.path().string());
+        if (geteuid() == 0) s.setup_error = unreadable_by_others(folder);
       }
       submissions.push_back(s);
     }
