@@ -444,3 +444,40 @@ TEST_CASE("bounds: without a control group the report says so once, and --requir
   CHECK(refused.exit_code == 2);
   CHECK_THAT(refused.output, Catch::Contains("--require-limits"));
 }
+
+TEST_CASE("bounds: a submission that leads out of its folder is refused in its own row; the class is graded",
+          "[check][bounds][exposure][cli]") {
+  const OpenScratch scratch("refused");
+  const std::string root = scratch.path("class");
+  submission(root, "alice", "exit 0");
+  fs::remove(submission(root, "bob", "exit 0") + "/camera.py");
+  fs::create_directory_symlink("/", root + "/bob/camera.py");  // the whole machine as a "script"
+  fs::remove(submission(root, "carol", "exit 0") + "/camera.py");
+  fs::create_symlink("../alice/camera.py", root + "/carol/camera.py");  // a neighbour's file
+  fs::create_directory_symlink(root + "/alice", root + "/dave");  // a folder that is a link
+  const std::string csv = scratch.path("g.csv"), reports = scratch.path("reports");
+  const Cli c = raycam_check("--batch " + root + " --student-cmd \"python3 {dir}/camera.py\" --csv " + csv +
+                             " --cases 1 --report " + reports);
+  INFO(c.output);
+  CHECK(c.exit_code == 1);  // students failed: never 2 (the batch refused) for one submission's links
+  const std::vector<std::string> rows = lines_of(csv);
+  REQUIRE(rows.size() == 5);
+  for (const std::string& row : rows) {
+    if (row.rfind("student,", 0) == 0) continue;
+    INFO(row);
+    const bool passes = row.rfind("alice,1,1,", 0) == 0;
+    CHECK((passes || row.rfind("bob,0,1,", 0) == 0 || row.rfind("carol,0,1,", 0) == 0 ||
+           row.rfind("dave,0,1,", 0) == 0));
+  }
+  const std::pair<const char*, const char*> reasons[] = {
+      {"bob", "camera.py leads out of the student's folder (to /)"},
+      {"carol", "camera.py leads out of the student's folder"},
+      {"dave", "the submission folder dave is a symbolic link"}};
+  for (const auto& [student, reason] : reasons) {
+    INFO(student);
+    const json report = read_json(reports + "/" + student + ".json");
+    REQUIRE(report.is_object());
+    CHECK(report["results"][0]["status"] != "checker-error");
+    CHECK_THAT(report.dump(), Catch::Contains(reason));
+  }
+}
