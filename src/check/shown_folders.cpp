@@ -63,7 +63,7 @@ std::string submission_refusal(const std::string& folder, const std::string& roo
   for (const std::string& word : argv) {
     if (word.empty() || word[0] != '/' || !inside(fs::path(word), fs::path(folder)) || fs::path(word) == fs::path(folder))
       continue;
-    const std::string shown = fs::relative(word, folder, error).string();
+    const std::string shown = fs::path(word).lexically_relative(folder).string();
     if (!fs::exists(fs::symlink_status(word, error))) continue;  // missing: the run says so (cannot find)
     const fs::path target = fs::weakly_canonical(word, error);
     if (!inside(target, real))
