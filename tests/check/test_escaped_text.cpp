@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -223,6 +224,17 @@ TEST_CASE("csv: check merge joins the rows of hostile names, recorded beside eac
   CHECK(merged.text == expected);
   CHECK(merged.record.students == students);
   CHECK(inert(merged.text, true));
+  // A shard left out: the message names its students escaped (it goes to the terminal).
+  const std::string garbled = kHostile[6];
+  std::string message;
+  try {
+    merge_shard_csvs({paths[std::size_t(2 - shard_of(garbled, 2))]});
+  } catch (const std::invalid_argument& error) {
+    message = error.what();
+  }
+  INFO(bytes_of(message));
+  CHECK(inert(message, false));
+  CHECK_THAT(message, Catch::Contains("missing students: ") && Catch::Contains(kWritten[6]));
 }
 
 TEST_CASE("json and text reports: a student's invalid UTF-8 and 8-bit controls are \\xNN, the JSON valid",
@@ -274,6 +286,10 @@ TEST_CASE("batch: hostile folder names reach the CSV as text and the terminal es
   for (const char* name : {"=HYPERLINK(\"x\",\"y\")", "+1", "-2", "@SUM(1)", "\tTAB"}) student(name, "exec python3 camera.py");
   // The 8-bit CSI and invalid UTF-8 in its name and on its stderr (octal: dash's printf).
   student(garbled, "printf '\\233[2J\\377\\300\\257 score: 12 / 12\\n' >&2; exit 1");
+  // Its report cannot be written (a folder is in the way): the error naming it is escaped too.
+  const std::string blocked = "b\x9b\xfe";
+  student(blocked, "exec python3 camera.py");
+  fs::create_directories(scratch.path("reports/" + blocked + ".json"));
   const std::string csv = scratch.path("grades.csv");
   const std::string command = std::string("/usr/bin/timeout 120 ") + RAYCAM_CLI + " check --batch " + root +
                               " --student-cmd \"{dir}/run.sh\" --csv " + csv + " --report " + scratch.path("reports") +
@@ -299,6 +315,7 @@ TEST_CASE("batch: hostile folder names reach the CSV as text and the terminal es
   CHECK(inert(rows, true));
   CHECK(inert(output, true));  // the terminal: progress lines name every folder
   CHECK_THAT(output, Catch::Contains("a\\x9b[2Jb\\xff\\xc0\\xaf: 0/1"));
+  CHECK_THAT(output, Catch::Contains("/b\\x9b\\xfe.json: cannot write"));
   json report;
   REQUIRE_NOTHROW(report = json::parse(file_text(scratch.path("reports/" + garbled + ".json"))));
   CHECK(report["results"][0]["stderr"] == "\\x9b[2J\\xff\\xc0\\xaf score: 12 / 12\n");
