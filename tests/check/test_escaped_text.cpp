@@ -34,10 +34,12 @@ std::string hex(unsigned char byte) {
   return code;
 }
 
-// `text` for a failure's message: printable ASCII as it is, every other byte in hex (never the code under test).
+// `text` for a failure's message: printable ASCII as it is (a backslash doubled), every other byte in hex, so
+// that a raw byte and its escaped form differ there (never the code under test).
 std::string bytes_of(const std::string& text) {
   std::string out;
-  for (char c : text) out += c >= 0x20 && c < 0x7f ? std::string(1, c) : hex(static_cast<unsigned char>(c));
+  for (char c : text)
+    out += c == '\\' ? "\\\\" : c >= 0x20 && c < 0x7f ? std::string(1, c) : hex(static_cast<unsigned char>(c));
   return out;
 }
 
