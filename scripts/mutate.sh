@@ -189,6 +189,11 @@ mutant no-sandbox-by-default src/cli/check_command.cpp 's/^    throw std::invali
 mutant dir-substituted-again src/cli/check_command.cpp 's/^      out += dir;/      out += word.substr(at, 5);/' "$CHECK" "$BOUNDS"
 mutant stderr-unescaped src/check/check_report.cpp 's/escaped_control(err.substr(start, std::min<std::size_t>(end - start, 160)))/err.substr(start, std::min<std::size_t>(end - start, 160))/' "$CHECK" "$BOUNDS"
 mutant cpu-time-not-polled src/check/student_process.cpp '/    if (group \&\& group->cpu_seconds() > cpu_limit) return Stop::cpu_time;/d' "$CHECK" "$BOUNDS"
+# Text a student controls, inert (issue 44): bytes that are not UTF-8 shown raw; a folder named =HYPERLINK(...)
+# written as a live formula.
+TEXT="^check: ?(escaping|csv: (a name|check merge)|json and text|batch: hostile)"
+mutant invalid-utf8-shown-raw src/check/escaped_text.cpp 's/^      append_hex(out, byte);$/      out += text[i];/' "$CHECK" "$TEXT"
+mutant csv-formula-unguarded src/check/check_report.cpp 's/  const bool formula = !text.empty() \&\& /  const bool formula = false \&\& /' "$CHECK" "$TEXT"
 mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.require_limits) throw/  if (false) throw/' "$CHECK" "$BOUNDS"
 # --- one view model, one language, one mistake row, two resolutions, docs that cannot go stale (issue 33) ---
 STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do

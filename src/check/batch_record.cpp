@@ -4,11 +4,33 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "escaped_text.h"
+
 namespace raycam::check {
 
 namespace {
 using json = nlohmann::json;
+
+// A folder's name as it is: a string when it is UTF-8 (nearly always), else {"bytes": [...]}. JSON holds no
+// other bytes, and the merge computes a student's slice and CSV field from the name read back.
+json name_json(const std::string& name) {
+  if (valid_utf8(name)) return name;
+  json bytes = json::array();
+  for (unsigned char byte : name) bytes.push_back(int(byte));
+  return json{{"bytes", bytes}};
 }
+
+std::string name_of(const json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  std::string name;
+  for (const json& byte : value.at("bytes")) {
+    const int b = byte.get<int>();
+    if (b < 0 || b > 255) throw json::other_error::create(501, "a byte out of range: " + std::to_string(b), &byte);
+    name += char(b);
+  }
+  return name;
+}
+}  // namespace
 
 std::string raycam_version() { return RAYCAM_VERSION; }
 
@@ -29,12 +51,13 @@ std::string BatchRecord::difference_from(const BatchRecord& other) const {
 std::string battery_sidecar_path(const std::string& csv_path) { return csv_path + ".battery.json"; }
 
 std::string battery_record_json(const BatchRecord& r) {
-  const json root = {{"raycam", r.raycam},           {"seed", r.seed},
-                     {"cases", r.cases},             {"mode", r.mode},
-                     {"timeout", r.timeout_seconds}, {"memory_mb", r.memory_mb},
-                     {"disk_mb", r.disk_mb},         {"processes", r.processes},
-                     {"student_cmd", r.student_cmd}, {"shard", shard_text(r.shard)},
-                     {"students", r.students}};
+  json root = {{"raycam", r.raycam},           {"seed", r.seed},
+               {"cases", r.cases},             {"mode", r.mode},
+               {"timeout", r.timeout_seconds}, {"memory_mb", r.memory_mb},
+               {"disk_mb", r.disk_mb},         {"processes", r.processes},
+               {"student_cmd", r.student_cmd}, {"shard", shard_text(r.shard)},
+               {"students", json::array()}};
+  for (const std::string& name : r.students) root["students"].push_back(name_json(name));
   return root.dump(1, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -56,7 +79,8 @@ BatchRecord read_battery_record(const std::string& path) {
     field = "disk_mb", r.disk_mb = root.at(field).get<int>();
     field = "processes", r.processes = root.at(field).get<int>();
     field = "student_cmd", r.student_cmd = root.at(field).get<std::string>();
-    field = "students", r.students = root.at(field).get<std::vector<std::string>>();
+    field = "students";
+    for (const json& name : root.at(field)) r.students.push_back(name_of(name));
     field = "shard", r.shard = parse_shard(root.at(field).get<std::string>(), path + ": shard");
   } catch (const json::exception& error) {
     throw std::invalid_argument(path + ": not a battery record" + (field.empty() ? "" : " (field '" + field + "')") +

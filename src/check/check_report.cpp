@@ -169,24 +169,33 @@ std::string json_report(const ReportHeader& h, const StudentReport& report) {
       pixel["got"] = r.worst->got;
       entry["worst_pixel"] = pixel;
     }
-    if (!r.detail.empty()) entry["detail"] = r.detail;
+    // What a student controls, escaped as on the terminal: a tool printing the JSON prints no control, and
+    // the file is valid UTF-8 whatever the program wrote.
+    if (!r.detail.empty()) entry["detail"] = escaped_control(r.detail);
     entry["cpu_seconds"] = r.cpu_seconds;  // the run's status, as isolate's meta file gives it
     entry["peak_memory_bytes"] = r.peak_memory_bytes;
     if (!r.limit.empty()) entry["limit"] = r.limit;
-    if (!r.stderr_text.empty()) entry["stderr"] = r.stderr_text;
+    if (!r.stderr_text.empty()) entry["stderr"] = escaped_control(r.stderr_text, true);
     entry["explained_by"] = r.explained_by;
     results.push_back(entry);
   }
   root["results"] = results;
-  // Student output may hold any bytes: replace invalid UTF-8 rather than fail.
+  // Student text is escaped above; `replace` stays as the last guard: a report is never a crash of the grader.
   return root.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 // ---- CSV -------------------------------------------------------------------------------------------------
 namespace {
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
+// A text field holding what a student chose (its folder's name): escaped, and read by a spreadsheet as text.
+// One starting with = + - @, a tab or a carriage return would be a live formula (CSV injection: =HYPERLINK,
+// =cmd|...): it gets a ' inside double quotes, as OWASP advises. Quoted too when it holds a separator a
+// spreadsheet may split on (',', ';' where the locale's list separator is one, as in French, a tab), so that
+// no piece of it starts a cell of its own. Numbers raycam writes never come here: a grade is not mangled.
+std::string csv_text_field(const std::string& raw) {
+  const std::string text = escaped_control(raw);
+  const bool formula = !text.empty() && std::string("=+-@\t\r").find(text[0]) != std::string::npos;
+  if (!formula && text.find_first_of(",;\"\t\r\n") == std::string::npos) return text;
+  std::string quoted = formula ? "\"'" : "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
 }
@@ -218,7 +227,7 @@ std::string csv_row(const std::string& student, const StudentReport& report, boo
   char score[32];
   std::snprintf(score, sizeof score, "%.1f", n ? 100.0 * report.passed() / n : 0.0);
   const bool explained = !report.diagnosis.empty();
-  return csv_field(escaped_control(student)) + "," + std::to_string(report.passed()) + "," + std::to_string(n) + "," + score + "," +
+  return csv_text_field(student) + "," + std::to_string(report.passed()) + "," + std::to_string(n) + "," + score + "," +
          (explained ? report.diagnosis[0].id() : std::string()) + "," +
          (explained ? std::to_string(report.diagnosis[0].cases.size()) : std::string("0")) + "," +
          std::to_string(report.count(CaseStatus::fail)) + "," + std::to_string(report.count(CaseStatus::crash)) + "," +

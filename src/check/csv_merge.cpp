@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "check_report.h"
+#include "escaped_text.h"
 
 namespace raycam::check {
 
@@ -88,17 +89,18 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
     for (std::size_t r = 1; r < records.size(); ++r) {
       const std::string& row = records[r];
       const std::string key = csv_first_field(row);
+      const std::string shown = escaped_control(key);  // a row of a file given: its bytes reach the terminal
       const auto student = student_of_key.find(key);
       if (row.back() != '\n') {
-        problems.push_back(path + ": its last row (" + key + ") is cut off: grade that shard again");
+        problems.push_back(path + ": its last row (" + shown + ") is cut off: grade that shard again");
       } else if (student == student_of_key.end()) {
-        problems.push_back(path + ": a row for " + key + ", who is not in the batch it saw");
+        problems.push_back(path + ": a row for " + shown + ", who is not in the batch it saw");
       } else if (shard_of(*student->second, record.shard.count) != record.shard.index) {
-        problems.push_back(path + ": a row for " + key + ", who is in shard " +
+        problems.push_back(path + ": a row for " + shown + ", who is in shard " +
                            std::to_string(shard_of(*student->second, record.shard.count)) + ", not " +
                            shard_text(record.shard));
       } else if (const auto seen = file_of_key.find(key); seen != file_of_key.end()) {
-        problems.push_back("overlap: " + key + " is in " + seen->second + " and " + path);
+        problems.push_back("overlap: " + shown + " is in " + seen->second + " and " + path);
       } else {
         row_of_key[key] = row;
         file_of_key[key] = path;
@@ -112,7 +114,7 @@ MergedCsv merge_shard_csvs(const std::vector<std::string>& csv_paths) {
   for (const std::string& student : merged.record.students) {
     const auto row = row_of_key.find(csv_student_field(student));
     if (row == row_of_key.end())
-      missing.push_back(student + " (" + shard_text(Shard{shard_of(student, first.shard.count), first.shard.count}) + ")");
+      missing.push_back(escaped_control(student) + " (" + shard_text(Shard{shard_of(student, first.shard.count), first.shard.count}) + ")");
     else merged.text += row->second;
   }
   if (!missing.empty()) {

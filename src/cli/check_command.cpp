@@ -278,7 +278,8 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     on_run(runs, runs);  // the bar ends at N/N students, whatever order the last callbacks came in
     std::fprintf(stderr, "\n");
   }
-  for (const std::string& error : output_errors) std::fprintf(stderr, "raycam-cli check: %s\n", error.c_str());
+  for (const std::string& error : output_errors)  // they name the student's folder
+    std::fprintf(stderr, "raycam-cli check: %s\n", escaped_control(error).c_str());
   csv.close();
   std::string sorted = header_line;
   for (const std::string& row : rows) sorted += row;
