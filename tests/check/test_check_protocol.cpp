@@ -95,12 +95,15 @@ TEST_CASE("with --two-res it fails only the two-resolution case, and is told so 
 }
 
 TEST_CASE("a program that reads both resolutions passes --two-res, with no note", "[check][cli][protocol]") {
-  const Checked c = run_check(std::string("--two-res --student \"python3 ") + EXAMPLE_STUDENT_PY + "\"", "example_two");
-  INFO(c.output);
-  CHECK(c.exit_code == 0);
-  CHECK(c.report["passed"] == kDefaultCases);
-  CHECK_FALSE(c.report.contains("two_res_note"));
-  CHECK_THAT(c.output, !Catch::Contains("two-resolution"));
+  // The examples (examples/student/) read res as a number or a pair.
+  for (const std::string student : {std::string(EXAMPLE_STUDENT_CPP), std::string("python3 ") + EXAMPLE_STUDENT_PY}) {
+    const Checked c = run_check("--two-res --student \"" + student + "\"", "example_two");
+    INFO(student << "\n" << c.output);
+    CHECK(c.exit_code == 0);
+    CHECK(c.report["passed"] == kDefaultCases);
+    CHECK_FALSE(c.report.contains("two_res_note"));
+    CHECK_THAT(c.output, !Catch::Contains("two-resolution"));
+  }
 }
 
 TEST_CASE("the note is for the two-resolution case alone: another failure, or the checker's, has none",
