@@ -1,5 +1,6 @@
 // What a --batch CSV was graded with, in a file beside it (GRADES.csv.battery.json): the battery (seed, cases,
-// mode, protocol version, --two-res), the limits and the command, raycam's version, the shard and every student of the batch's folder.
+// mode, protocol version, --two-res), the limits and the command, raycam's version, the shard and every
+// student of the batch's folder.
 // `check merge` compares these before joining shards. A sidecar rather than a line in the CSV, so the CSV
 // stays one header line and one row per student, as a grade book's import expects.
 #pragma once
