@@ -202,8 +202,8 @@ mutant architecture-row-misses-a-link docs/architecture.md 's/the figure export 
 mutant preset-takes-one-res src/io/view_setup.cpp 's/  if (preset.res) camera.set_res(\*preset.res, preset.res_rows.value_or(\*preset.res));/  if (preset.res) camera.set_res(*preset.res);/' "raycam_flags_tests" "^flags: ?.*(nbc|resolution)"
 mutant window-drops-the-rows-res src/session/app_state.cpp 's/        set_res_of(camera, state.res, state.res_rows);/        set_res_of(camera, state.res, std::nullopt);/' "raycam_session_tests" "^session: ?the window's two resolutions"
 mutant preview-squares-two-res src/session/app_state.cpp 's/std::max(\*state.res_rows \* factor, least)/std::max(state.res * factor, least)/' "raycam_session_tests" "^session: ?the window's two resolutions"
-mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));/fractional_res(j, 44, 25, 35));/' "raycam_check_tests" "^check: ?a 3D case has two resolutions"
-mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?the example students"
+mutant battery-has-one-res-only src/check/battery.cpp 's/fractional_res(j, 44, 25, 35), fractional_res(j, 32, 8, 14));/fractional_res(j, 44, 25, 35));/' "raycam_check_tests" "^check: ?with --two-res a 3D case has two resolutions"
+mutant example-student-reads-one-res examples/student/camera.py 's/        rows = useful_size(res_rows, camera\["size"\]\[1\])/        rows = useful_size(res_columns, camera["size"][1])/' "raycam_check_tests raycam-cli" "^check: ?(the example students|a program that reads both resolutions)"
 mutant mistake-row-wrong-hook src/core/classic_mistakes.cpp 's/MistakeHook::hit_rule, false,/MistakeHook::pixel, false,/' "$CORE" "^core: ?each mistake's row"
 mutant mirrored-claims-only-camera src/core/classic_mistakes.cpp 's/MistakeHook::pixel, false, "a scene not symmetric left to right"/MistakeHook::pixel, true, "a scene not symmetric left to right"/' "$CORE" "^core: ?(each mistake's row|accelerated casters equal)"
 mutant check-text-without-french src/check/check_texts.cpp 's/      {"none", "aucun"},/      {"none"},/' "raycam_session_tests" "^session: ?every text of every table has every language"
@@ -356,6 +356,12 @@ mutant message-under-the-title-bar src/ui/panels.cpp 's/^  if (top < inside.Min.
 mutant disc-order-minus-zero-below-zero src/ui/overhead_view.cpp 's/^    const double key = keys\[i\] == 0.0 ? 0.0 : keys\[i\];.*/    const double key = keys[i];/' "raycam_ui_tests" "^ui: ?the overhead discs' order"
 mutant disc-order-negatives-not-reversed src/ui/overhead_view.cpp 's/^    bits\[i\] = b >> 63 ? ~b : b | (std::uint64_t(1) << 63);/    bits[i] = b ^ (std::uint64_t(1) << 63);/' "raycam_ui_tests" "^ui: ?the overhead discs' order"
 mutant disc-order-skips-a-shared-majority src/ui/overhead_view.cpp 's/^    if (n == 0 || \*std::max_element(start.begin(), start.end()) == n) continue;.*/    if (n == 0 || *std::max_element(start.begin(), start.end()) >= n \/ 2) continue;/' "raycam_ui_tests" "^ui: ?the overhead discs' order"
+# --- #44 the handout's protocol by default ---
+# One resolution variable is what the handout requires: the pair is asked only by --two-res, and merge tells
+# shards graded with it from shards graded without.
+mutant battery-asks-two-res-by-default src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    (void)two_res;/' "$CHECK" "^check: ?(the default battery asks one|a program that reads res as one number)"
+mutant two-res-flag-ignored src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    file.camera.res_rows.reset();/' "$CHECK" "^check: ?(the flag --two-res|with --two-res)"
+mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", two_res, other.two_res)/differs("two_res", two_res, two_res)/' "$CHECK" "$SHARDS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -40,7 +40,8 @@ std::string BatchRecord::difference_from(const BatchRecord& other) const {
   };
   for (const std::string& difference :
        {differs("raycam", raycam, other.raycam), differs("seed", seed, other.seed), differs("cases", cases, other.cases),
-        differs("mode", mode, other.mode), differs("timeout", timeout_seconds, other.timeout_seconds),
+        differs("mode", mode, other.mode), differs("protocol", protocol, other.protocol),
+        differs("two_res", two_res, other.two_res), differs("timeout", timeout_seconds, other.timeout_seconds),
         differs("memory", memory_mb, other.memory_mb), differs("disk", disk_mb, other.disk_mb),
         differs("processes", processes, other.processes), differs("student_cmd", student_cmd, other.student_cmd),
         differs("shard count", shard.count, other.shard.count)})
@@ -53,6 +54,7 @@ std::string battery_sidecar_path(const std::string& csv_path) { return csv_path 
 std::string battery_record_json(const BatchRecord& r) {
   json root = {{"raycam", r.raycam},           {"seed", r.seed},
                {"cases", r.cases},             {"mode", r.mode},
+               {"protocol", r.protocol},       {"two_res", r.two_res},
                {"timeout", r.timeout_seconds}, {"memory_mb", r.memory_mb},
                {"disk_mb", r.disk_mb},         {"processes", r.processes},
                {"student_cmd", r.student_cmd}, {"shard", shard_text(r.shard)},
@@ -74,6 +76,9 @@ BatchRecord read_battery_record(const std::string& path) {
     field = "seed", r.seed = root.at(field).get<unsigned long long>();
     field = "cases", r.cases = root.at(field).get<int>();
     field = "mode", r.mode = root.at(field).get<std::string>();
+    // Written before protocols had versions: version 1, which had no --two-res.
+    field = "protocol", r.protocol = root.contains(field) ? root.at(field).get<int>() : 1;
+    field = "two_res", r.two_res = root.contains(field) ? root.at(field).get<bool>() : false;
     field = "timeout", r.timeout_seconds = root.at(field).get<double>();
     field = "memory_mb", r.memory_mb = root.at(field).get<int>();
     field = "disk_mb", r.disk_mb = root.at(field).get<int>();

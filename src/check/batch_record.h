@@ -1,5 +1,6 @@
 // What a --batch CSV was graded with, in a file beside it (GRADES.csv.battery.json): the battery (seed, cases,
-// mode), the limits and the command, raycam's version, the shard and every student of the batch's folder.
+// mode, protocol version, --two-res), the limits and the command, raycam's version, the shard and every
+// student of the batch's folder.
 // `check merge` compares these before joining shards. A sidecar rather than a line in the CSV, so the CSV
 // stays one header line and one row per student, as a grade book's import expects.
 #pragma once
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "battery.h"
 #include "shards.h"
 
 namespace raycam::check {
@@ -19,6 +21,10 @@ struct BatchRecord {
   unsigned long long seed = 0;
   int cases = 0;
   std::string mode;
+  // The protocol the battery followed (battery.h's kProtocolVersion; a record without the field is version
+  // 1's) and whether it asked the two-resolution case: shards graded with and without it are not one grading.
+  int protocol = kProtocolVersion;
+  bool two_res = false;
   double timeout_seconds = 0;
   int memory_mb = 0, disk_mb = 0, processes = 0;  // the per-run bounds: a bound decides a run's outcome
   std::string student_cmd;

@@ -225,9 +225,11 @@ std::vector<Design> designs_3d() {
          asymmetric_spheres(b, j, target);
          return b.file;
        }},
-      // Two resolutions, as the handout allows ("une (ou deux) variables de résolution"): a program that takes
-      // one number for res, or swaps columns and rows, fails this case (rows' res·32 < 15 < columns' res·32).
-      {"3D: res < 1 in both directions, one per side, overlapping spheres, theta in the fourth quadrant",
+      // Two resolutions, as the handout allows ("une (ou deux) variables de résolution"), asked only by
+      // --two-res: a program that takes one number for res, or swaps columns and rows, fails this case (rows'
+      // res·32 < 15 < columns' res·32). Without it the rows take the columns' res (designed_case), the one
+      // variable the handout requires; the jitter draws both either way, so the spheres stay where they are.
+      {"3D: res < 1 in both directions, overlapping spheres, theta in the fourth quadrant",
        {"res_truncated", "mirrored", "rows_flipped", "pixel_edges"},
        [](Jitter& j) {
          const glm::dvec3 target{j.around(0.0, 0.4), j.around(0.0, 0.4), j.around(-0.3, 0.3)};
@@ -308,17 +310,22 @@ bool reveals(const SceneFile& file, const CaseImage& right, const MistakeInfo& m
 
 constexpr int kAttempts = 60;
 
-CheckCase designed_case(const Design& design, std::uint64_t seed, int index) {
+CheckCase designed_case(const Design& design, std::uint64_t seed, int index, bool two_res) {
   Jitter jitter(seed * 0x9E3779B97F4A7C15ull + std::uint64_t(index));
   SceneFile file;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
     file = design.build(jitter);
+    // The handout requires one resolution variable: the second is asked only when the grader opts in.
+    if (!two_res) file.camera.res_rows.reset();
     const CaseImage right = render_case(file);
     bool all = true;
     for (const char* id : design.reveals) all = all && reveals(file, right, *find_mistake(id));
     if (all) break;
   }
-  return {design.purpose, file};
+  file.protocol = kProtocolVersion;
+  std::string purpose = design.purpose;
+  if (file.camera.res_rows) purpose += ", one res per side [res_c, res_l] (--two-res)";
+  return {purpose, file};
 }
 }  // namespace
 
@@ -327,7 +334,7 @@ int designed_case_count(BatteryMode mode) {
   return mode == BatteryMode::two_d ? two : mode == BatteryMode::three_d ? three : two + three;
 }
 
-std::vector<CheckCase> make_battery(BatteryMode mode, int count, std::uint64_t seed) {
+std::vector<CheckCase> make_battery(BatteryMode mode, int count, std::uint64_t seed, bool two_res) {
   if (count < 1 || count > 1000)
     throw std::invalid_argument("--cases: expected an integer in [1, 1000], got " + std::to_string(count));
   const std::vector<Design> two = designs_2d(), three = designs_3d();
@@ -337,14 +344,18 @@ std::vector<CheckCase> make_battery(BatteryMode mode, int count, std::uint64_t s
     if (mode != BatteryMode::two_d && i < three.size()) order.push_back(&three[i]);
   }
   std::vector<CheckCase> battery;
-  for (int i = 0; i < count && i < int(order.size()); ++i) battery.push_back(designed_case(*order[i], seed, i));
+  for (int i = 0; i < count && i < int(order.size()); ++i)
+    battery.push_back(designed_case(*order[i], seed, i, two_res));
   Jitter extra(seed ^ 0xC0FFEEull);
   for (int i = int(battery.size()); i < count; ++i) {
     const int dimension = mode == BatteryMode::two_d ? 2 : mode == BatteryMode::three_d ? 3 : 2 + i % 2;
     battery.push_back({"random scene", random_case(extra, dimension)});
+    battery.back().file.protocol = kProtocolVersion;
   }
   return battery;
 }
+
+bool asks_two_res(const CheckCase& c) { return c.file.dimension == 3 && c.file.camera.res_rows.has_value(); }
 
 BatteryMode parse_battery_mode(const std::string& text, const std::string& flag) {
   if (text == "2d") return BatteryMode::two_d;

@@ -85,6 +85,23 @@ std::string detail_text(Language lang, const std::string& detail) {
 }
 }  // namespace
 
+std::string two_res_note(Language lang, const std::vector<CheckCase>& cases, const StudentReport& report) {
+  int two_res_case = 0, other_failures = 0;
+  for (const CaseResult& r : report.results) {
+    if (r.status == CaseStatus::pass) continue;
+    const bool two_res = std::size_t(r.number - 1) < cases.size() && asks_two_res(cases[std::size_t(r.number - 1)]);
+    // The checker's own failure says nothing of how the program reads res.
+    if (two_res && r.status != CaseStatus::checker_error && two_res_case == 0) two_res_case = r.number;
+    else ++other_failures;
+  }
+  if (two_res_case == 0 || other_failures > 0) return {};
+  return textf(lang,
+               "fails only the two-resolution case (case %d, res = [res_c, res_l]): your program most likely reads "
+               "res as one number. One resolution variable is what the handout requires and all the default "
+               "battery asks; this case is asked only by --two-res.\n",
+               two_res_case);
+}
+
 std::string case_reason(Language lang, const CaseResult& r) {
   return r.status == CaseStatus::fail ? pixel_text(lang, r) : detail_text(lang, r.detail);
 }
@@ -115,6 +132,7 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
   if (const RunTotals t = totals_of(report); t.peak > 0)  // nothing ran for answer files
     out += textf(lang, "runs: %.2f s, %.2f s of CPU in all; peak memory %.1f MiB (case %d)\n", t.wall, t.cpu,
                  double(t.peak) / kMiB, t.peak_case);
+  out += two_res_note(lang, cases, report);  // before the diagnosis: a crash on it has none
   bool answered = false;  // a diagnosis needs at least one failing case with an answer to compare
   for (const CaseResult& r : report.results)
     answered = answered || (r.answer && r.status != CaseStatus::pass);
@@ -138,12 +156,16 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
 }
 
 // ---- JSON report -------------------------------------------------------------------------------------------
-std::string json_report(const ReportHeader& h, const StudentReport& report) {
+std::string json_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
   json root;
   root["cases"] = report.results.size();
   root["passed"] = report.passed();
   root["seed"] = h.seed;
   root["mode"] = h.mode;
+  root["protocol"] = kProtocolVersion;
+  root["two_res"] = h.two_res;
+  if (const std::string note = two_res_note(h.language, cases, report); !note.empty())
+    root["two_res_note"] = note.substr(0, note.size() - 1);  // the line without its end
   root["sandbox"] = h.sandboxed;
   if (!h.sandbox_note.empty()) root["sandbox_note"] = h.sandbox_note;
   if (!h.limits_note.empty()) root["limits_note"] = h.limits_note;

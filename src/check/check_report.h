@@ -14,6 +14,7 @@ namespace raycam::check {
 struct ReportHeader {
   std::string mode;  // "2d", "3d", "both"
   unsigned long long seed = kDefaultSeed;
+  bool two_res = false;  // --two-res: the battery asks the 3D case whose res is [res_c, res_l]
   bool sandboxed = false;
   std::string sandbox_note;  // why not, or what it isolates
   std::string limits_note;   // "memory not bounded per run: …" where no control group can be made
@@ -26,9 +27,14 @@ std::string text_report(const ReportHeader& header, const std::vector<CheckCase>
 // A case's "worst pixel or reason" in the table: the worst pixel of a failing case, else the run's detail.
 std::string case_reason(Language lang, const CaseResult& r);
 
+// The line for a program whose only failing case is the two-resolution one (--two-res), in `lang`: the
+// program most likely reads res as one number, which the handout allows. "" for any other report.
+std::string two_res_note(Language lang, const std::vector<CheckCase>& cases, const StudentReport& report);
+
 // --report: {"cases": N, "passed": P, "diagnosis": [{"mistake": ID, "explains": K, "text": ...}...],
-//            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, sandbox}.
-std::string json_report(const ReportHeader& header, const StudentReport& report);
+//            "results": [{"case": i, "status": ..., "wrong_pixels": w, ...}...], plus seed, mode, protocol,
+//            two_res, sandbox, and two_res_note when there is one}.
+std::string json_report(const ReportHeader& header, const std::vector<CheckCase>& cases, const StudentReport& report);
 
 // --batch --csv: the header line, and one row per student (the runs ended by each bound, the CPU seconds of
 // all runs and the largest peak memory in MiB at the end of the row).

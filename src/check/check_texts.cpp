@@ -65,6 +65,12 @@ const std::vector<Translation>& table() {
        "exécutions : %.2f s, dont %.2f s de calcul en tout ; mémoire au plus haut %.1f Mio (cas %d)\n"},
       {"CPU time over the timeout (all its processes together)",
        "temps de calcul au-delà du délai (tous ses processus ensemble)"},
+      {"fails only the two-resolution case (case %d, res = [res_c, res_l]): your program most likely reads "
+       "res as one number. One resolution variable is what the handout requires and all the default "
+       "battery asks; this case is asked only by --two-res.\n",
+       "seul le cas à deux résolutions échoue (cas %d, res = [res_c, res_l]) : votre programme lit sans doute "
+       "res comme un seul nombre. Une seule variable de résolution, c'est ce que le sujet exige et tout ce que "
+       "demande la batterie par défaut ; ce cas n'est demandé qu'avec --two-res.\n"},
       {"disk-limit: the run filled its writable folder (--disk)",
        "disk-limit : l'exécution a rempli son dossier inscriptible (--disk)"},
   };

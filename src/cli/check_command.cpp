@@ -42,6 +42,7 @@ struct CheckFlags {
   int memory_mb = 1024, disk_mb = 256, processes = 256;
   int threads = 0;
   bool require_sandbox = false, no_sandbox = false, require_limits = false;
+  bool two_res = false;  // ask the 3D case whose res is [res_c, res_l] (the handout's optional second variable)
   std::string shard, gradescope, visibility = "visible";  // a large course (shards) and grade books
   double scale = kDefaultGradeScale;
 };
@@ -119,7 +120,7 @@ void guard_shown_folders(const CheckFlags& flags, const std::vector<std::string>
 int finish(const CheckFlags& flags, const ReportHeader& header, const std::vector<CheckCase>& cases,
            const std::vector<CaseImage>& references, const StudentReport& report) {
   std::fputs(text_report(header, cases, report).c_str(), stdout);
-  if (!flags.report.empty()) write_text_file(flags.report, json_report(header, report));
+  if (!flags.report.empty()) write_text_file(flags.report, json_report(header, cases, report));
   if (!flags.gradescope.empty())
     write_text_file(flags.gradescope, gradescope_results_json(header, cases, report, flags.scale, flags.visibility));
   if (!flags.diff_dir.empty()) {
@@ -153,6 +154,7 @@ BatchRecord batch_record_of(const CheckFlags& flags, const std::vector<Submissio
   record.seed = flags.seed;
   record.cases = flags.cases > 0 ? flags.cases : designed_case_count(parse_battery_mode(flags.mode, "--mode"));
   record.mode = flags.mode;
+  record.two_res = flags.two_res;
   record.timeout_seconds = flags.timeout;
   record.memory_mb = flags.memory_mb;
   record.disk_mb = flags.disk_mb;
@@ -265,7 +267,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
                    report.passed(), cases.size());
     if (!flags.report.empty()) {
       fs::create_directories(flags.report);
-      write_text_file(flags.report + "/" + submissions[s].name + ".json", json_report(header, report));
+      write_text_file(flags.report + "/" + submissions[s].name + ".json", json_report(header, cases, report));
     }
     if (!flags.diff_dir.empty())
       write_difference_images(flags.diff_dir + "/" + submissions[s].name, cases, references, report);
@@ -334,6 +336,9 @@ int run_check(const Args& args) {
   const std::vector<std::string> modes = {"2d", "3d", "both"};
   add_checked_option<int>(app, "--mode", "2d|3d|both", "which cameras the cases use (default both)",
                           flags::one_of(modes), [&](int i) { flags.mode = modes[std::size_t(i)]; });
+  app.add_flag("--two-res", flags.two_res,
+               "also ask the handout's optional second resolution variable: the 3D case with res = [res_c, res_l] "
+               "(the default battery has one number res in every case)");
   add_checked_option<int>(app, "--cases", "N",
                           "number of cases (default: the designed ones, 6 per dimension)",
                           flags::integer_in(1, 1000), [&](int n) { flags.cases = n; });
@@ -396,9 +401,15 @@ int run_check(const Args& args) {
   header.language = check_language(flags.lang);
   header.mode = flags.mode;
   header.seed = flags.seed;
+  header.two_res = flags.two_res;
   const BatteryMode mode = parse_battery_mode(flags.mode, "--mode");
   const std::vector<CheckCase> cases =
-      make_battery(mode, flags.cases > 0 ? flags.cases : designed_case_count(mode), flags.seed);
+      make_battery(mode, flags.cases > 0 ? flags.cases : designed_case_count(mode), flags.seed, flags.two_res);
+  // An opt-in that asks nothing would be read as passed: bad usage, before any run.
+  if (flags.two_res && std::none_of(cases.begin(), cases.end(), asks_two_res))
+    throw std::invalid_argument("--two-res: the two-resolution case is a designed 3D case (case 8 with --mode both, "
+                                "case 4 with --mode 3d); this battery (--mode " + flags.mode + ", " +
+                                std::to_string(cases.size()) + " cases) has none");
 
   if (!flags.write_cases.empty()) {
     fs::create_directories(flags.write_cases);

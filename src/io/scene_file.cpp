@@ -267,7 +267,7 @@ namespace scene_file_parts {
 SceneFile read_scene(const json& root, const std::string& source) {
   const FieldReader reader(source);
   if (!root.is_object()) reader.fail("(top level)", "a JSON object {\"dimension\", \"objects\", ...}", &root);
-  reader.require_known_keys(root, "", {"dimension", "background", "objects", "camera"});
+  reader.require_known_keys(root, "", {"dimension", "background", "objects", "camera", "protocol"});
   SceneFile file;
   file.dimension = int(reader.integer_in(reader.member(root, "dimension", "dimension"), "dimension", 2, 3));
   Rgb8 background = kDefaultBackground;
@@ -281,6 +281,7 @@ SceneFile read_scene(const json& root, const std::string& source) {
   for (std::size_t i = 0; i < objects.size(); ++i) read_scene_object(file, objects[i], i, source);
   if (root.contains("camera"))
     visit_scene(file, [&](const auto& scene) { file.camera = read_camera(reader, root["camera"], scene); });
+  if (root.contains("protocol")) file.protocol = int(reader.integer_in(root["protocol"], "protocol", 1, 1000));
   return file;
 }
 
@@ -408,6 +409,7 @@ std::string scene_to_json(const SceneFile& file) {
   });
   root["objects"] = objects;
   if (!camera.empty()) root["camera"] = camera;
+  if (file.protocol) root["protocol"] = *file.protocol;
   return readable_json(root, 0) + "\n";
 }
 

@@ -2,11 +2,13 @@
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <random>
 
 #include "battery.h"
 #include "case_image.h"
 #include "grading.h"
+#include "raycam/scene_file.h"
 
 using namespace raycam;
 using namespace raycam::check;
@@ -152,13 +154,14 @@ TEST_CASE("a seed's designed cases are the first draw of its documented jitter t
   }
 }
 
-TEST_CASE("a 3D case has two resolutions, and its image has the handout's nbl rows of nbc columns",
+TEST_CASE("with --two-res a 3D case has two resolutions, and its image has the handout's nbl rows of nbc columns",
           "[check][battery][res]") {
   // The handout's useful size, from its formula: res·N rounded, at least 1.
   const auto handout_count = [](double res, int size) { return std::max(1, int(std::floor(res * size + 0.5))); };
   for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(914273), std::uint64_t(1)}) {
     int two = 0;
-    for (const CheckCase& c : make_battery(BatteryMode::three_d, designed_case_count(BatteryMode::three_d), seed)) {
+    for (const CheckCase& c :
+         make_battery(BatteryMode::three_d, designed_case_count(BatteryMode::three_d), seed, /*two_res=*/true)) {
       const CameraPreset& camera = c.file.camera;
       if (!camera.res_rows) continue;
       ++two;
@@ -173,4 +176,56 @@ TEST_CASE("a 3D case has two resolutions, and its image has the handout's nbl ro
     }
     CHECK(two >= 1);
   }
+}
+
+namespace {
+// The case's "res" as the protocol's input writes it (the JSON a program reads), not as the battery holds it.
+nlohmann::json res_of(const CheckCase& c) { return nlohmann::json::parse(scene_to_json(c.file)).at("camera").at("res"); }
+}  // namespace
+
+TEST_CASE("the default battery asks one resolution variable: every case's res is one number",
+          "[check][battery][res][protocol]") {
+  // The handout requires one resolution variable ("une (ou deux) variables de résolution": two are optional).
+  for (const BatteryMode mode : {BatteryMode::two_d, BatteryMode::three_d, BatteryMode::both})
+    for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(1), std::uint64_t(77), std::uint64_t(914273)}) {
+      const int count = designed_case_count(mode) + 6;  // random cases too
+      for (const CheckCase& c : make_battery(mode, count, seed)) {
+        INFO("seed " << seed << ", " << c.purpose);
+        CHECK(res_of(c).is_number());
+        CHECK_FALSE(asks_two_res(c));
+        CHECK(parse_scene_json(scene_to_json(c.file), "case").protocol == kProtocolVersion);  // the case says so
+      }
+    }
+}
+
+TEST_CASE("the flag --two-res asks exactly one case with res = [res_c, res_l], in place of its one-number version",
+          "[check][battery][res][protocol]") {
+  // Where docs/check.md says it is: case 8 of --mode both, case 4 of --mode 3d (1-based).
+  for (const auto& [mode, position] : {std::pair<BatteryMode, int>{BatteryMode::three_d, 4}, {BatteryMode::both, 8}})
+    for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t(1), std::uint64_t(77), std::uint64_t(914273)}) {
+      const int count = designed_case_count(mode) + 4;
+      const std::vector<CheckCase> one = make_battery(mode, count, seed);
+      const std::vector<CheckCase> two = make_battery(mode, count, seed, /*two_res=*/true);
+      REQUIRE(two.size() == one.size());
+      int pairs = 0;
+      for (std::size_t i = 0; i < two.size(); ++i) {
+        INFO("seed " << seed << ", case " << i + 1 << ": " << two[i].purpose);
+        const nlohmann::json res = res_of(two[i]);
+        if (res.is_array()) {
+          ++pairs;
+          CHECK(int(i) + 1 == position);
+          CHECK(asks_two_res(two[i]));
+          REQUIRE(res.size() == 2);
+          // The default's version: the same scene with the columns' res for both sides.
+          SceneFile same = two[i].file;
+          same.camera.res_rows.reset();
+          CHECK(scene_to_json(same) == scene_to_json(one[i].file));
+          CHECK(res_of(one[i]) == res[0]);
+        } else {
+          CHECK(scene_to_json(two[i].file) == scene_to_json(one[i].file));  // every other case unchanged
+          CHECK(two[i].purpose == one[i].purpose);
+        }
+      }
+      CHECK(pairs == 1);
+    }
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -68,6 +69,7 @@ struct HandShards {
   std::vector<std::string> students = {"ann", "bo", "cy", "di", "ed", "fa", "gil", "hu", "o,brien"};
   std::string header = "student,passed,score,extra_column,grade_20\n";
   int disk_mb = 256;  // a per-run bound: shards with other bounds graded differently
+  bool two_res = false;  // --two-res: another battery
 
   std::string write(const std::string& file, int index, int count, const std::vector<std::string>& rows,
                     unsigned long long seed = 7) {
@@ -78,6 +80,7 @@ struct HandShards {
     record.timeout_seconds = 10;
     record.memory_mb = 2048;
     record.disk_mb = disk_mb;
+    record.two_res = two_res;
     record.processes = 256;
     record.student_cmd = "{dir}/run.sh";
     record.shard = Shard{index, count};
@@ -164,6 +167,20 @@ TEST_CASE("merge refuses missing students, overlaps, another battery or header, 
     hand.disk_mb = 256;
     hand.header = "student,passed,score,grade_100\n";
     CHECK_THAT(refusal({one, hand.write("header.csv", 2, 2, rows[2])}), Catch::Contains("header line differs"));
+  }
+  SECTION("the two-resolution case asked in one shard and not the other, or a record from before protocols") {
+    hand.two_res = true;
+    CHECK_THAT(refusal({one, hand.write("two_res.csv", 2, 2, rows[2])}),
+               Catch::Contains("graded differently") && Catch::Contains("two_res true vs false"));
+    hand.two_res = false;
+    // A record written before protocols had versions is version 1's: another battery.
+    const std::string old = hand.write("old.csv", 2, 2, rows[2]);
+    nlohmann::json record = nlohmann::json::parse(std::ifstream(battery_sidecar_path(old)));
+    REQUIRE(record.at("protocol") == kProtocolVersion);
+    record.erase("protocol");
+    record.erase("two_res");
+    std::ofstream(battery_sidecar_path(old)) << record.dump();
+    CHECK_THAT(refusal({one, old}), Catch::Contains("protocol 1 vs 2"));
   }
   SECTION("a row for a student not in the batch, or in another slice") {
     rows[2].push_back("zed,1,25.0,x,5.00\n");

@@ -53,6 +53,20 @@ TEST_CASE("scene files round-trip through scene_to_json", "[scene_file]") {
   CHECK(again2.camera.size->at(0) == 64);
 }
 
+TEST_CASE("a case file's check protocol is read, written back, and checked", "[scene_file]") {
+  // raycam-cli check writes "protocol" in its case files (docs/check.md); they stay scene files.
+  const std::string text = R"({"dimension": 2, "objects": [], "protocol": 2})";
+  const SceneFile file = parse_scene_json(text, "case.json");
+  REQUIRE(file.protocol);
+  CHECK(*file.protocol == 2);
+  CHECK(parse_scene_json(scene_to_json(file), "again.json").protocol == 2);
+  const SceneFile plain = parse_scene_json(R"({"dimension": 2, "objects": []})", "scene.json");
+  CHECK_FALSE(plain.protocol);
+  CHECK(scene_to_json(plain).find("protocol") == std::string::npos);  // a scene file without it stays so
+  CHECK_THAT(error_of(R"({"dimension": 2, "objects": [], "protocol": "2"})"), Catch::Contains("protocol"));
+  CHECK_THAT(error_of(R"({"dimension": 2, "objects": [], "protocol": 0})"), Catch::Contains("protocol"));
+}
+
 TEST_CASE("bad scene files name the file, the field and what was expected", "[scene_file][input]") {
   CHECK_THAT(error_of("{ \"dimension\": 3, \"objects\": [ }"),
              Catch::Contains("scene.json") && Catch::Contains("line 1"));

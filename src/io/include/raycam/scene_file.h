@@ -29,6 +29,10 @@ struct SceneFile {
   Scene2D scene2d;  // the scene of a 2D file
   Scene3D scene3d;  // of a 3D file (the other stays empty)
   CameraPreset camera;
+  // The version of `raycam-cli check`'s protocol a case file follows (docs/check.md, "Protocol versions"):
+  // written by check --write-cases and on a program's stdin, read so a case file stays a scene file; the
+  // renderer ignores it.
+  std::optional<int> protocol;
 };
 
 // Calls function(scene) with the scene the file's dimension holds, Scene2D or Scene3D, as std::visit does on a
