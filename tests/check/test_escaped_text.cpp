@@ -244,14 +244,14 @@ TEST_CASE("json and text reports: a student's invalid UTF-8 and 8-bit controls a
   const StudentReport report = one_case_report();
   ReportHeader header;
   header.mode = "both";
+  const std::vector<CheckCase> cases(1);
   std::string text;
-  REQUIRE_NOTHROW(text = json_report(header, report));
+  REQUIRE_NOTHROW(text = json_report(header, cases, report));
   json parsed;
   REQUIRE_NOTHROW(parsed = json::parse(text));  // strict: throws on invalid UTF-8
   CHECK(parsed["results"][0]["stderr"] ==
         "\\x9b2J\\x1b[Hscore: 12 / 12\n\\xff\\xfe bad \\xed\\xa0\\x80 utf-8\n\xc3\xa9 kept\n");
   CHECK(parsed["results"][0]["detail"] == "exit status 1 from /class/a\\x9b\\xff/run.sh");
-  const std::vector<CheckCase> cases(1);
   const std::string table = text_report(header, cases, report);
   CHECK(inert(table, true));
   CHECK_THAT(table, Catch::Contains("| \\x9b2J\\x1b[Hscore: 12 / 12") && Catch::Contains("\\xff\\xfe bad"));
