@@ -446,7 +446,7 @@ TEST_CASE("bounds: without a control group the report says so once, and --requir
   CHECK_THAT(refused.output, Catch::Contains("--require-limits"));
 }
 
-TEST_CASE("bounds: a submission that leads out of its folder is refused in its own row; the class is graded",
+TEST_CASE("bounds: a submission that leads out of its folder is refused in its own row, the class graded",
           "[check][bounds][exposure][cli]") {
   const OpenScratch scratch("refused");
   const std::string root = scratch.path("class");
