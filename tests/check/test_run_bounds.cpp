@@ -10,7 +10,9 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -36,9 +38,18 @@ struct Cli {
   std::string output;  // stdout and stderr
 };
 
+// How much slower than a machine's own this one runs (RAYCAM_TEST_TIME_SCALE: the cgroup v2 VM's software
+// emulation, tests/vm): the timeouts that a slow but right run must not reach are scaled by it.
+double time_scale() {
+  const char* scale = std::getenv("RAYCAM_TEST_TIME_SCALE");
+  return scale ? std::max(1.0, std::atof(scale)) : 1.0;
+}
+
+std::string seconds_text(double seconds) { return std::to_string(int(seconds * time_scale())); }
+
 // `ENV raycam-cli check ARGS` through the shell, with a minute's guard (a hang fails instead of blocking).
 Cli raycam_check(const std::string& args, const std::string& env = "") {
-  const std::string command = env + " /usr/bin/timeout 60 " + RAYCAM_CLI + " check " + args + " 2>&1";
+  const std::string command = env + " /usr/bin/timeout " + seconds_text(60) + " " + RAYCAM_CLI + " check " + args + " 2>&1";
   Cli result;
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe);
@@ -99,6 +110,7 @@ TEST_CASE("bounds: a run's memory counts all its processes together", "[check][b
   }
   RunLimits limits;
   limits.memory_bytes = 256LL << 20;
+  limits.timeout_seconds *= time_scale();  // the memory bound, not the clock, must end the hog
   const std::vector<std::string> hog = {"python3", MISBEHAVING_PY, "hog", "4", "100"};  // 400 MiB in 4 processes
   const RunResult bounded = run_student(hog, "", limits, sandbox_here());
   CHECK(bounded.limit == kMemoryLimit);
@@ -151,7 +163,7 @@ TEST_CASE("bounds: a run's processes are its own: a bomb is stopped at --process
   if (!groups_here()) return;
   RunLimits limits;
   limits.max_processes = 40;
-  limits.timeout_seconds = 20;
+  limits.timeout_seconds = 20 * time_scale();
   const RunResult run = run_student({"python3", MISBEHAVING_PY, "bomb", "1"}, "", limits, sandbox_here());
   CHECK(run.limit == kProcessLimit);
   int started = -1;
@@ -173,7 +185,7 @@ TEST_CASE("bounds: a fork bomb beside a correct program fails only its author", 
              "sleep 1\npython3 misbehaving.py forks 32 2>&1 | grep -q 'started 32' || exit 3\nexec python3 camera.py");
   const std::string csv = scratch.path("grades.csv");
   const Cli c = raycam_check("--batch " + root + " --student-cmd \"{dir}/run.sh\" --csv " + csv +
-                             " --cases 2 --threads 4 --timeout 20 --processes 64");
+                             " --cases 2 --threads 4 --timeout " + seconds_text(20) + " --processes 64");
   INFO(c.output);
   const std::vector<std::string> rows = lines_of(csv);
   REQUIRE(rows.size() == 3);
