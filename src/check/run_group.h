@@ -1,8 +1,9 @@
 // One run bounded as a whole, like a contest grader's control group: its memory (resident memory and the
 // files it keeps in memory, every process together), its processes and threads, and its CPU time counted over
 // all of them; what it used and which bound it hit read back at the end. A kernel control group per run:
-// cgroup v2 where this process may make groups (root, or a delegated subtree such as systemd-run --user
-// --scope), else cgroup v1's memory, pids and cpuacct controllers (writable by root, or delegated by chown).
+// cgroup v2 where this process may make groups (root, or a delegated group it is the only process of, such as
+// systemd-run --user --scope -p Delegate=yes gives), else cgroup v1's memory, pids and cpuacct controllers
+// (writable by root, or delegated by chown).
 #pragma once
 
 #include <memory>
@@ -48,7 +49,8 @@ class RunGroup {
   std::vector<int> join_fds_;
 };
 
-// Whether run groups can be made here (tried once per process); `why` says what is missing when not.
+// Whether run groups can be made here (tried once per process); `why` says in one line what is missing when
+// not (which group, which processes or controllers) and what to type.
 bool run_groups_available(std::string& why);
 
 // Kills what is left in a group's folders and removes them (also from an interrupted check's signal thread).

@@ -97,15 +97,25 @@ RunLimits limits_of(const CheckFlags& flags) {
 }
 
 // Each run bounded as a whole (a control group), or said once at the top of the report (--batch: on the
-// terminal, and in each JSON report); --require-limits refuses instead.
-void choose_limits(const CheckFlags& flags, ReportHeader& header) {
+// terminal, and in each JSON report); --require-limits refuses instead. Returns how many runs may go at once.
+int choose_limits(const CheckFlags& flags, ReportHeader& header) {
+  const int threads = detail::resolve_threads(flags.threads);
   std::string why;
-  if (run_groups_available(why)) return;
+  if (run_groups_available(why)) return threads;
   if (flags.require_limits) throw std::invalid_argument("--require-limits: runs cannot be bounded as a whole: " + why);
   header.limits_note = "memory not bounded per run: " + why + "; per-process limits instead";
   // bwrap's pid 1 exits without passing its program's CPU time on: only a group counts it (seen: 2 ms for a
   // Python run of 20 ms).
   if (header.sandboxed) header.limits_note += "; CPU seconds not counted (the sandbox's launcher's only)";
+  // Without a group, processes are counted per uid (RLIMIT_NPROC). Root's sandboxed runs each have a uid of
+  // their own (student_process.cpp); anyone else's runs share one, so a fork bomb would take the processes of
+  // every run beside it, a neighbour's or another case of its own author (whose grade would then depend on
+  // timing). One run at a time: the next starts once the last one's processes are gone.
+  if (!(header.sandboxed && geteuid() == 0)) {
+    header.limits_note += "; one run at a time (processes are counted per user, shared by runs side by side)";
+    return 1;
+  }
+  return threads;
 }
 
 // What the sandbox will show of the machine (folders_named): refused (bad usage) when it holds the home, an
@@ -193,7 +203,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
                                                          "as {dir} (e.g. \"python3 {dir}/camera.py\")",
                                                          flags.student_cmd));
   const std::optional<Sandbox> sandbox = choose_sandbox(flags, header);
-  choose_limits(flags, header);
+  const int threads = choose_limits(flags, header);
   if (!header.limits_note.empty()) std::fprintf(stderr, "raycam-cli check: %s\n", header.limits_note.c_str());
 
   std::vector<Submission> submissions;
@@ -227,7 +237,6 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   if (!csv) throw std::runtime_error(flags.csv + ": cannot write");
   const std::string header_line = with_last_field(csv_header(), grade_column_name(flags.scale));
   csv << header_line << std::flush;
-  const int threads = detail::resolve_threads(flags.threads);
   const Language language = header.language;
   std::fprintf(stderr, "%s",
                textf(language, "%s x %s on %s\n",
@@ -441,7 +450,7 @@ int run_check(const Args& args) {
                                 (hint.empty() ? "cannot find an executable program '" + submission.argv[0] + "'" : hint));
   }
   submission.sandbox = choose_sandbox(flags, header);
-  choose_limits(flags, header);
+  const int threads = choose_limits(flags, header);
   if (submission.sandbox) {
     guard_shown_folders(flags, folders_named(submission.argv), "", "--student");
     for (const std::string& folder : folders_named(submission.argv))
@@ -449,7 +458,7 @@ int run_check(const Args& args) {
         throw std::invalid_argument("--student: " + why);
   }
   const std::vector<StudentReport> reports =
-      check_submissions({submission}, cases, references, limits_of(flags), detail::resolve_threads(flags.threads));
+      check_submissions({submission}, cases, references, limits_of(flags), threads);
   return finish(flags, header, cases, references, reports[0]);
 }
 
