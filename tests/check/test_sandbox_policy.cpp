@@ -285,7 +285,7 @@ TEST_CASE("sandbox: no /opt, no descriptor of the checker's, only the run's fold
 }
 
 TEST_CASE("sandbox: the files of a run's folder are bounded, and bwrap's processes are not the program's",
-          "[check][sandbox][bounds]") {
+          "[check][sandbox][bounds][disk][processes]") {
   std::string why;
   const std::optional<Sandbox> sandbox = probe_sandbox(why);
   if (!sandbox) return;
