@@ -1,4 +1,4 @@
-// One check case rendered the way the student protocol lays it out (README, "Check your own camera"):
+// One check case rendered the way the student protocol lays it out (docs/check.md):
 //   2D: one row of n ids in the handout's pixel order k (pixel k's canonical centre is x = -1 + (2k+1)/n);
 //   3D: nbl rows of nbc ids, row 0 at the top (canonical y near +1), column 0 at the left (x near -1).
 // Each pixel also says whether its centre ray is AMBIGUOUS: a pixel two correct programs may legitimately

@@ -1,5 +1,5 @@
 // `raycam-cli check`: grades a student's camera program (or answer files, or a whole class) on a battery of
-// cases and names the classic mistakes that reproduce its output (README, "Check your own camera").
+// cases and names the classic mistakes that reproduce its output (docs/check.md).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>

@@ -22,6 +22,8 @@ LAYERS = [
     ["raycam", "raycam-cli", "raycam_web_objects"],  # raycam_web_objects: the page's code, emscripten only
     ["raycam_web", "raycam_web_single"],  # the page linked twice: index.html and the one-file raycam.html
 ]
+# Targets that link nothing of raycam's and that nothing links: outside the chain.
+ALONE = {"raycam-exec"}  # the sandbox's exec checkpoint (src/check/exec_checkpoint.cpp): libc only
 RANK = {target: rank for rank, layer in enumerate(LAYERS) for target in layer}
 
 
@@ -50,6 +52,10 @@ def main(path):
                 continue
             target, field = (line.rstrip("\n").split("\t") + [""])[:2]
             if not is_raycams(target) or target.endswith("_tests"):
+                continue
+            if target in ALONE:
+                if any(is_raycams(name) for name in linked_names(field)):
+                    problems.append(f"{target}: listed as linking nothing of raycam's, but links {field}")
                 continue
             if target not in RANK:
                 problems.append(f"{target}: not in the layer table of {__file__}: give it its place")
