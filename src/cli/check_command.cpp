@@ -1,5 +1,5 @@
 // `raycam-cli check`: grades a student's camera program (or answer files, or a whole class) on a battery of
-// cases and names the classic mistakes that reproduce its output (docs/check.md).
+// cases and names the classic mistakes that reproduce its output (docs/check.md, "Checking a camera").
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -328,7 +328,8 @@ int run_check(const Args& args) {
   CheckFlags flags;
   CLI::App app{"Grades a student's camera program on a battery of cases and names the classic mistakes that "
                "reproduce its output. The program reads one case (a scene file, JSON) on stdin and prints "
-               "{\"ids\": ..., \"md\": ...} (README, \"Check your own camera\").",
+               "{\"ids\": ..., \"md\": ...} (docs/check.md, \"Checking a camera\"; a start: "
+               "examples/student/README.md).",
                "raycam-cli check"};
   app.footer("A large course: --batch DIR --shard i/N on each machine or job, then `raycam-cli check merge --csv "
              "OUT SHARD.csv...` (docs/check.md, \"A large course\"; `check merge --help`).");

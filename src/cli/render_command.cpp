@@ -22,7 +22,22 @@ struct RenderOptions {
   CastOptions cast;
   AccuracyFlags accuracy;
   std::string out_path, ids_path;
+  bool ids_in_k_order = false;  // --ids-order k: a 2D line in the answer's order k, not the image's
 };
+
+// The ids as a student's answer lists them. In 3D that is the image's order (row 0 the top, column 0 the left,
+// canonical x near -1). In 2D column 0 is the eye's left, which is pixel k = n-1 (docs/conventions.md): the
+// line is turned around so that entry k is pixel k, the handout's centre x = -1 + (2k+1)/n.
+ColourMap in_answer_order(const ColourMap& map, const session::View& view) {
+  const auto* view2d = std::get_if<session::View2D>(&view);
+  if (!view2d) return map;
+  if (view2d->camera.pixel_count() != map.width || map.height != 1)
+    throw std::logic_error("--ids-order k: the bar has not the camera's n pixels");
+  ColourMap out = map;
+  for (int column = 0; column < map.width; ++column)
+    out.ids[out.index(0, view2d->camera.pixel_of_column(column))] = map.id_at(0, column);
+  return out;
+}
 
 int run_render(RenderOptions options) {
   if (options.out_path.empty() && options.ids_path.empty()) options.out_path = "render.png";
@@ -44,7 +59,8 @@ int run_render(RenderOptions options) {
   const std::string& out = options.out_path;
   const std::string& ids = options.ids_path;
   if (!out.empty()) write_png(map, out, 1, session::image_is_bar(view) ? kBarHeight : 1);
-  if (!ids.empty()) write_ids(map, ids);
+  if (options.ids_in_k_order && ids.empty()) throw std::invalid_argument("--ids-order: only with --ids FILE");
+  if (!ids.empty()) write_ids(options.ids_in_k_order ? in_answer_order(map, view) : map, ids);
   const std::size_t objects = std::visit([](const auto& v) { return objects_of(v.scene).size(); }, view);
   std::printf("%dD %dx%d, %zu objects, %.1f%% background%s%s%s%s\n", session::dimension_of(view), map.width,
               map.height, objects,
@@ -70,8 +86,15 @@ void add_render_command(CLI::App& cli, int& exit_code) {
                                          path, [options](std::string p) { options->out_path = p; });
   flags::add_checked_option<std::string>(
       *render, "--ids", "FILE",
-      "object ids as text: one image row per line, space-separated, -1 = background", path,
-      [options](std::string p) { options->ids_path = p; });
+      "object ids as text: one image row per line, space-separated, -1 = background; in the image's order "
+      "(2D: column 0 = the eye's left = pixel k = n-1) unless --ids-order k",
+      path, [options](std::string p) { options->ids_path = p; });
+  const std::vector<std::string> orders = {"image", "k"};
+  flags::add_checked_option<int>(
+      *render, "--ids-order", "image|k",
+      "the order of --ids: image (default) or k, an answer's order (2D: entry k is pixel k, centre "
+      "x = -1 + (2k+1)/n, the image's line reversed; 3D: the same as image)",
+      flags::one_of(orders), [options](int i) { options->ids_in_k_order = i == 1; });
   render->callback([options, &exit_code] { exit_code = run_render(*options); });
 }
 
