@@ -22,7 +22,7 @@ TEST_CASE("the page names files by their names, the desktop by their paths", "[f
         "cannot open: /home/me/a.json");
 }
 
-TEST_CASE("a file the page cannot open is named alone in its error; the desktop names the path",
+TEST_CASE("a file the page cannot open is named alone in its error, the desktop names the path",
           "[files][host]") {
   const test::ScratchDir scratch("page-open-names");
   const std::string bad = scratch.path("notes.json");
