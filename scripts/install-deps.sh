@@ -7,7 +7,7 @@ packages=(
   catch2                                     # tests
   libglfw3-dev libimgui-dev libosmesa6-dev   # app (GLFW + Dear ImGui) and headless renderer (OSMesa)
   libfontconfig-dev fonts-dejavu-core        # the TrueType font with accents, rasterised at the lecture size
-  xvfb xauth mesa-utils                      # the real window under a virtual X server, in tests
+  xvfb xauth mesa-utils xdotool              # the real window under a virtual X server, driven by xdotool, in tests
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev                               # command lines
   libcairo2-dev libpng-dev poppler-utils     # course figures (SVG, PDF, PNG) and their tests (pdftotext)

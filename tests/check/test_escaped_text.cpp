@@ -87,7 +87,7 @@ TEST_CASE("escaping: every byte alone", "[check][text]") {
   }
 }
 
-TEST_CASE("escaping: valid UTF-8 stays, C1 in UTF-8 and every invalid sequence are \\xNN", "[check][text]") {
+TEST_CASE("escaping: valid UTF-8 stays, C1 in UTF-8 and every invalid sequence are escaped as xNN", "[check][text]") {
   for (const char* kept : {"\xc3\xa9l\xc3\xa8ve", "M\xc3\xbcller", "\xe5\xad\xa6\xe7\x94\x9f", "\xf0\x9f\x98\x80",
                            "\xc2\xa0", "\xc2\xbf", "\xdf\xbf", "\xe0\xa0\x80", "\xed\x9f\xbf", "\xee\x80\x80",
                            "\xef\xbf\xbf", "\xf0\x90\x80\x80", "\xf4\x8f\xbf\xbf", "back\\slash"}) {
@@ -239,7 +239,7 @@ TEST_CASE("csv: check merge joins the rows of hostile names, recorded beside eac
   CHECK_THAT(message, Catch::Contains("missing students: ") && Catch::Contains(kWritten[6]));
 }
 
-TEST_CASE("json and text reports: a student's invalid UTF-8 and 8-bit controls are \\xNN, the JSON valid",
+TEST_CASE("json and text reports: a student's invalid UTF-8 and 8-bit controls are escaped as xNN, the JSON valid",
           "[check][text][json]") {
   const StudentReport report = one_case_report();
   ReportHeader header;

@@ -187,7 +187,7 @@ TEST_CASE("a drag in the overhead view orbits the camera, and the frame agrees w
 }
 
 TEST_CASE(
-    "Tab always switches 2D/3D, also from a text field; arrows move the camera unless a field is edited",
+    "Tab always switches 2D/3D, also from a text field, and arrows move the camera unless a field is edited",
     "[render][input][keyboard]") {
   session::AppState state = state_for({});
   ui::WidgetRects rects;
