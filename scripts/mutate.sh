@@ -102,6 +102,7 @@ mutant bwrap-processes-counted src/check/student_process.cpp 's/^constexpr int k
 mutant raw-paths-bound src/check/sandbox_policy.cpp 's/    if (!seen) policy.shown.push_back(real);/    if (!seen) policy.shown.push_back(dir);/' "$CHECK" "$SANDBOX"
 mutant submission-links-followed src/cli/check_command.cpp 's/      s.refusal = submission_refusal(folder, root.string(), s.argv);/      s.refusal.clear();/' "$CHECK" "$SANDBOX"
 mutant stale-folders-kept src/check/student_process.cpp 's/    if (pid <= 0 || pid == getpid() || kill(pid_t(pid), 0) == 0 || errno != ESRCH) continue;/    continue;/' "$CHECK" "$SANDBOX"
+mutant stale-groups-kept src/check/run_group.cpp 's/^      for (const std::string\& parent : h.parents) sweep_stale_groups(parent);/      (void)0;/' "$CHECK" "^check: ?bounds: a killed check's control groups"
 mutant checkpoint-fd-inherited src/check/exec_checkpoint.cpp 's/  if (fcntl(fd, F_SETFD, FD_CLOEXEC) != 0 || write(fd, "S", 1) != 1) return 126;/  if (write(fd, "S", 1) != 1) return 126;/' "$CHECK raycam-exec" "$SANDBOX"
 # --- projector and state ---
 SESSION="raycam_session_tests"

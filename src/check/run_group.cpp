@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <mutex>
@@ -227,13 +228,46 @@ bool find_v1(Hierarchy& found) {
   return true;
 }
 
+// The number in a stale-looking name: "raycam-run-PID-N" or "raycam-check-PID" (0 for any other name).
+long checker_pid_in(const std::string& name) {
+  for (const char* prefix : {"raycam-run-", "raycam-check-"}) {
+    const std::size_t n = std::strlen(prefix);
+    if (name.compare(0, n, prefix) == 0) return std::atol(name.c_str() + n);
+  }
+  return 0;
+}
+
+// Groups a check made and could not remove (killed by SIGKILL: no exit handler ran): under `folder`, those
+// named after a checker pid that no longer runs, their own run groups first; what is left in them is killed.
+void sweep_stale_groups(const std::string& folder) {
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+    const long pid = checker_pid_in(entry.path().filename().string());
+    if (pid <= 0 || pid == long(getpid()) || !entry.is_directory(error) || kill(pid_t(pid), 0) == 0 || errno != ESRCH)
+      continue;
+    std::vector<std::string> stale;
+    for (const auto& inner : std::filesystem::directory_iterator(entry.path(), error))
+      if (inner.is_directory(error) && checker_pid_in(inner.path().filename().string()) > 0)
+        stale.push_back(inner.path().string());
+    stale.push_back(entry.path().string());
+    remove_run_group(stale);
+  }
+}
+
 const Hierarchy& hierarchy() {
   static const Hierarchy found = [] {
     Hierarchy h;
-    if (find_v2(h)) return h;
+    if (find_v2(h)) {
+      sweep_stale_groups(h.parents[0]);
+      sweep_stale_groups(std::filesystem::path(h.parents[0]).parent_path().string());  // root's: beside its own
+      return h;
+    }
     const std::string v2_why = h.why;  // empty where v2 is not this machine's hierarchy
     h = Hierarchy{};
-    if (find_v1(h)) return h;
+    if (find_v1(h)) {
+      for (const std::string& parent : h.parents) sweep_stale_groups(parent);
+      return h;
+    }
     const std::string v1_why = h.why;
     h = Hierarchy{};
     // One line: what is missing, and what to type. systemd-run's scope is a group of the command's own;

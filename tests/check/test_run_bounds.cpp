@@ -500,3 +500,33 @@ TEST_CASE("bounds: a submission that leads out of its folder is refused in its o
     CHECK_THAT(report.dump(), Catch::Contains(reason));
   }
 }
+
+TEST_CASE("bounds: a killed check's control groups are swept by the next check", "[check][bounds][cleanup][cli]") {
+  if (geteuid() != 0 || !groups_here()) return;  // root's groups: made where any check of root's makes them
+  const pid_t dead = fork();  // a checker pid that no longer runs
+  if (dead == 0) _exit(0);
+  REQUIRE(dead > 0);
+  waitpid(dead, nullptr, 0);
+  // Where the next check makes its runs' groups: cgroup v2's root, or under this process's own group in
+  // cgroup v1's memory hierarchy (a child check inherits it).
+  fs::path parent = "/sys/fs/cgroup";
+  if (!fs::exists("/sys/fs/cgroup/cgroup.controllers")) {
+    std::ifstream self("/proc/self/cgroup");
+    std::string own;
+    for (std::string line; std::getline(self, line);)
+      if (line.find(":memory:") != std::string::npos) own = line.substr(line.find(":memory:") + 8);
+    parent = fs::path("/sys/fs/cgroup/memory") / fs::path(own).relative_path();
+  }
+  const fs::path run = parent / ("raycam-run-" + std::to_string(dead) + "-0");
+  const fs::path check = parent / ("raycam-check-" + std::to_string(dead));
+  const fs::path inner = check / ("raycam-run-" + std::to_string(dead) + "-1");
+  const fs::path alive = parent / ("raycam-run-" + std::to_string(getpid()) + "-999");
+  for (const fs::path& folder : {run, check, inner, alive}) REQUIRE(fs::create_directory(folder));
+  const Cli c = raycam_check(std::string("--student \"python3 ") + EXAMPLE_STUDENT_PY + "\" --cases 1");
+  INFO(c.output);
+  CHECK_FALSE(fs::exists(run));
+  CHECK_FALSE(fs::exists(inner));
+  CHECK_FALSE(fs::exists(check));
+  CHECK(fs::exists(alive));  // its checker (this test) still runs
+  fs::remove(alive);
+}
