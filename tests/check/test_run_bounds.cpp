@@ -501,7 +501,7 @@ TEST_CASE("bounds: a submission that leads out of its folder is refused in its o
   }
 }
 
-TEST_CASE("bounds: a killed check's control groups are swept by the next check", "[check][bounds][cleanup][cli]") {
+TEST_CASE("bounds: a killed check's control groups are swept by the next check", "[check][bounds][cleanup][sweep][cli]") {
   if (geteuid() != 0 || !groups_here()) return;  // root's groups: made where any check of root's makes them
   const pid_t dead = fork();  // a checker pid that no longer runs
   if (dead == 0) _exit(0);

@@ -9,7 +9,7 @@
 set -u
 tests=$1 cli=$2 student=$3
 uid=1000  # the guest has no user database: a bare uid, groups cleared
-subset='[memory],[processes],[disk],[cpu],[fallback],[filter],[facts]'
+subset='[memory],[processes],[disk],[cpu],[fallback],[filter],[facts],[sweep]'
 advice='systemd-run --user --scope -p Delegate=yes raycam-cli check'
 # Software emulation runs code 3-5x slower: the tests' guards and timeouts that a right run must not reach.
 export RAYCAM_TEST_TIME_SCALE=3
