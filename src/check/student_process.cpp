@@ -416,8 +416,7 @@ void classify_run(const RunFacts& f, RunResult& r) {
   if (r.limit.empty() && f.memory_limit_hit) r.limit = kMemoryLimit;
   else if (r.limit.empty() && f.process_limit_hit) r.limit = kProcessLimit;
   else if (r.limit.empty() && f.cpu_over_limit) r.limit = kTimeLimit;
-  if (r.limit.empty() && f.disk_full && r.end != RunResult::End::exited) r.limit = kDiskLimit;
-  if (r.limit.empty() && f.disk_full && r.end == RunResult::End::exited && r.exit_code != 0) r.limit = kDiskLimit;
+  if (r.limit.empty() && f.disk_full) r.limit = kDiskLimit;
 }
 
 // ---- launching, waiting --------------------------------------------------------------------------------
