@@ -73,6 +73,11 @@ const std::vector<Translation>& table() {
        "demande la batterie par défaut ; ce cas n'est demandé qu'avec --two-res.\n"},
       {"disk-limit: the run filled its writable folder (--disk)",
        "disk-limit : l'exécution a rempli son dossier inscriptible (--disk)"},
+      // A batch's progress: runs and students done, and the time left at the pace so far.
+      {"%zu/%zu runs, %zu/%zu students", "%zu/%zu exécutions, %zu/%zu étudiants"},
+      {"about %d s left", "encore %d s environ"},
+      {"about %d min %02d s left", "encore %d min %02d s environ"},
+      {"about %d h %02d min left", "encore %d h %02d min environ"},
   };
   return entries;
 }
@@ -97,6 +102,15 @@ std::string textf(Language language, const char* english_format, ...) {
 
 std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many) {
   return textf(language, n == 1 ? english_one : english_many, n);
+}
+
+std::string time_left(Language language, std::size_t done, std::size_t total, double elapsed_seconds) {
+  if (done == 0 || done >= total || !(elapsed_seconds > 0)) return {};
+  // The pace so far, rounded up to whole seconds: "0 s left" would read as done.
+  const long long left = (long long)(elapsed_seconds * double(total - done) / double(done)) + 1;
+  if (left < 60) return textf(language, "about %d s left", int(left));
+  if (left < 3600) return textf(language, "about %d min %02d s left", int(left / 60), int(left % 60));
+  return textf(language, "about %d h %02d min left", int(left / 3600), int(left / 60 % 60));
 }
 
 }  // namespace raycam::check

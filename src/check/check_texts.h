@@ -24,6 +24,10 @@ std::string textf(Language language, const char* english_format, ...)
 // A count and its noun, singular for one: counted(language, n, "%zu thread", "%zu threads") ("1 thread").
 std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many);
 
+// The time a batch has left at its pace so far (`done` of `total` runs in `elapsed_seconds`): "about 3 min
+// 05 s left", in `language`; "" before the first run ends and once the last has.
+std::string time_left(Language language, std::size_t done, std::size_t total, double elapsed_seconds);
+
 // --lang's language, or the environment's (LANGUAGE, LC_ALL, LC_MESSAGES, LANG) when it was not given.
 Language check_language(std::optional<Language> flag);
 

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -245,12 +246,22 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
                      counted(language, std::size_t(threads), "%zu thread", "%zu threads").c_str())
                    .c_str());
   const bool terminal = isatty(2);
-  std::size_t students_done = 0;
+  std::size_t students_done = 0, runs_done = 0;
+  const auto started = std::chrono::steady_clock::now();
+  auto left = [&] {  // at the pace so far, "" until a run has ended
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const std::string text = time_left(language, runs_done, submissions.size() * cases.size(), elapsed);
+    return text.empty() ? text : " (" + text + ")";
+  };
   auto on_run = [&](std::size_t done, std::size_t total) {
+    runs_done = done;
     if (!terminal) return;
     const int width = 30, filled = int(width * done / total);
-    std::fprintf(stderr, "\r[%s%s] %zu/%zu runs, %zu/%zu students", std::string(std::size_t(filled), '#').c_str(),
-                 std::string(std::size_t(width - filled), '.').c_str(), done, total, students_done, submissions.size());
+    // Padded: a shorter line (the time left shrinking) must cover the longer one it replaces.
+    std::fprintf(stderr, "\r[%s%s] %s%s   ", std::string(std::size_t(filled), '#').c_str(),
+                 std::string(std::size_t(width - filled), '.').c_str(),
+                 textf(language, "%zu/%zu runs, %zu/%zu students", done, total, students_done, submissions.size()).c_str(),
+                 left().c_str());
     std::fflush(stderr);
   };
   std::vector<std::string> rows(submissions.size());
@@ -271,9 +282,8 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     rows[s] = with_last_field(csv_row(submissions[s].name, report, bool(sandbox)), scaled_grade(report, flags.scale));
     csv << rows[s] << std::flush;
     if (!terminal)
-      std::fprintf(stderr, "%zu/%zu %s: %d/%zu\n", students_done, submissions.size(),
-                   escaped_control(submissions[s].name).c_str(),
-                   report.passed(), cases.size());
+      std::fprintf(stderr, "%zu/%zu %s: %d/%zu%s\n", students_done, submissions.size(),
+                   escaped_control(submissions[s].name).c_str(), report.passed(), cases.size(), left().c_str());
     if (!flags.report.empty()) {
       fs::create_directories(flags.report);
       write_text_file(flags.report + "/" + submissions[s].name + ".json", json_report(header, cases, report));

@@ -72,3 +72,15 @@ TEST_CASE("check's counts: one is singular, in both languages (\"on 1 thread\", 
   CHECK(check::counted(Language::fr, 3, "%zu thread", "%zu threads") == "3 exécutions à la fois");
   CHECK(check::counted(Language::fr, 1, "%zu submission", "%zu submissions") == "1 rendu");
 }
+
+TEST_CASE("a batch's time left: the pace so far, rounded up, in the language, none before or after",
+          "[check][language][progress]") {
+  using raycam::check::time_left;
+  // 10 of 40 runs in 20 s: 2 s a run, 30 runs left, 60 s (+1 rounding up).
+  CHECK(time_left(Language::en, 10, 40, 20.0) == "about 1 min 01 s left");
+  CHECK(time_left(Language::fr, 10, 40, 20.0) == "encore 1 min 01 s environ");
+  CHECK(time_left(Language::en, 1, 2, 0.5) == "about 1 s left");
+  CHECK(time_left(Language::en, 1, 1000, 10.0) == "about 2 h 46 min left");  // 9990 s + 1
+  CHECK(time_left(Language::en, 0, 40, 5.0).empty());   // no pace yet
+  CHECK(time_left(Language::en, 40, 40, 80.0).empty());  // done
+}
