@@ -182,7 +182,7 @@ mutant run-disk-on-the-host src/check/sandbox_policy.cpp 's/{"--size", std::to_s
 mutant run-status-cpu-dropped src/check/check_run.cpp '/  result.cpu_seconds = run.cpu_seconds;/d' "$CHECK" "$BOUNDS"
 mutant keyring-shared src/check/student_process.cpp '/  if (syscall(SYS_keyctl, KEYCTL_JOIN_SESSION_KEYRING, nullptr) < 0) fail_in_child(c.report, kSetupStep);/d' "$CHECK" "$BOUNDS"
 mutant home-shown src/check/shown_folders.cpp 's/else if (!home.empty() \&\& inside/else if (false \&\& inside/' "$CHECK" "$BOUNDS"
-mutant class-under-opt-shown src/check/sandbox_policy.cpp '/  for (const std::string\& dir : policy.hidden) add(words, {"--tmpfs", dir});/d' "$CHECK" "$BOUNDS"
+mutant class-under-usr-shown src/check/sandbox_policy.cpp '/  for (const std::string\& dir : policy.hidden) add(words, {"--tmpfs", dir});/d' "$CHECK" "$BOUNDS"
 mutant modes-500-left-behind src/check/folder_removal.cpp 's/^  make_folders_ours(folder);$/  (void)make_folders_ours;/' "$CHECK" "$BOUNDS"
 mutant hangup-leaves-folders src/cli/check_command.cpp '/  sigaddset(\&signals, SIGHUP);/d' "$CHECK" "$BOUNDS"
 mutant unreadable-submission-crashes src/cli/check_command.cpp 's/        if (geteuid() == 0) s.setup_error = unreadable_by_others/        if (false) s.setup_error = unreadable_by_others/' "$CHECK" "$BOUNDS"

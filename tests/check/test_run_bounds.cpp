@@ -339,10 +339,12 @@ TEST_CASE("bounds: the sandbox never shows the home, an output's folder or the c
   CHECK_THAT(c.output, Catch::Contains("--student-cmd") && Catch::Contains("a folder of its own"));
 }
 
-TEST_CASE("bounds: a batch inside a system folder (/opt) shows no student the others' folders",
+TEST_CASE("bounds: a batch inside a shown system folder (/usr/local) shows no student the others' folders",
           "[check][bounds][exposure][cli]") {
-  if (geteuid() != 0 || !sandbox_here()) return;  // making a folder in /opt needs root
-  const fs::path root = fs::path("/opt") / ("raycam-class-" + std::to_string(getpid()));
+  if (geteuid() != 0 || !sandbox_here()) return;  // making a folder in /usr/local needs root
+  // /usr is shown to every run: a class kept under it is hidden behind an empty folder, the student's own
+  // shown again inside it.
+  const fs::path root = fs::path("/usr/local") / ("raycam-class-" + std::to_string(getpid()));
   fs::remove_all(root);
   const std::string secret = submission(root.string(), "bob", "exit 0") + "/secret.txt";
   std::ofstream(secret) << "bob's answer";
