@@ -3,12 +3,17 @@
 // Frame k shows the camera of time k/fps, exactly the frame `shot` gives for that camera.
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "app_flags.h"
 #include "app_options.h"
@@ -51,6 +56,68 @@ void hold_overhead_view(session::AppState& state, const session::CameraPath& pat
   state.overhead_fit_pending = false;
 }
 
+// Encoding beside rendering: the writer takes frame k on its own thread while the next frame is drawn
+// (llvmpipe and the encoder each keep a core busy). At most two frames wait, so memory stays small.
+class EncodingThread {
+ public:
+  explicit EncodingThread(video::VideoWriter& writer) : writer_(writer), thread_([this] { loop(); }) {}
+  ~EncodingThread() { stop(); }
+  EncodingThread(const EncodingThread&) = delete;
+  EncodingThread& operator=(const EncodingThread&) = delete;
+
+  // Throws the writer's error (a full disk) as soon as it is known.
+  void push(gl::RgbaImage image) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [this] { return queue_.size() < 2 || error_; });
+    if (error_) std::rethrow_exception(error_);
+    queue_.push_back(std::move(image));
+    changed_.notify_all();
+  }
+  // Waits for every frame to be written; throws the writer's error.
+  void finish() {
+    stop();
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  void stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    changed_.notify_all();
+    if (thread_.joinable()) thread_.join();
+  }
+  void loop() {
+    for (;;) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [this] { return !queue_.empty() || done_; });
+      if (queue_.empty()) return;
+      gl::RgbaImage image = std::move(queue_.front());
+      lock.unlock();
+      try {
+        writer_.add_frame(image.pixels.data());
+      } catch (...) {
+        lock.lock();
+        error_ = std::current_exception();
+        queue_.clear();
+        changed_.notify_all();
+        return;
+      }
+      lock.lock();
+      queue_.pop_front();
+      changed_.notify_all();
+    }
+  }
+  video::VideoWriter& writer_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<gl::RgbaImage> queue_;
+  bool done_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;  // last: starts once the rest is ready
+};
+
 void check_output(const RecordOptions& options, video::VideoFormat format) {
   for (const auto& [flag, side] : {std::pair{"--width", options.app.width}, std::pair{"--height", options.app.height}})
     if (const std::string rule = video::side_rule(format, side); !rule.empty())
@@ -83,17 +150,25 @@ int run_record(const RecordOptions& options) {
   headless::HeadlessRenderer renderer(options.app.width, options.app.height);
   renderer.panels() = ui::panel_state_for(options.app, state);
   const auto start = std::chrono::steady_clock::now();
+  double render_s = 0.0;
+  EncodingThread encoding(writer);
   for (int k = 0; k < frames; ++k) {
     session::apply_pose(state, path.at(double(k) / options.fps));
+    const auto render_start = std::chrono::steady_clock::now();
     // The first frame settles ImGui's layout as `shot` does; then one frame each, as the window draws.
-    const gl::RgbaImage image = renderer.render_settled(state, k == 0 ? 3 : 2);
-    writer.add_frame(image.pixels.data());
+    if (k == 0) renderer.render_settled(state, 2);
+    renderer.run_frame(state);
+    gl::RgbaImage image = renderer.read_back();
+    render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
+    encoding.push(std::move(image));
   }
+  encoding.finish();
   writer.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s (%s, %d frames of %dx%d at %d fps, %.2f s of video) in %.1f s: %.1f frames/s\n",
               options.out_path.c_str(), video::format_name(*format), frames, options.app.width, options.app.height,
               options.fps, double(frames) / options.fps, seconds, frames / seconds);
+  std::printf("per frame: %.1f ms rendering (the encoder works meanwhile, on its own thread)\n", 1e3 * render_s / frames);
   std::printf("overhead view held at --overhead-view %s,%s,%s,%s\n", flags::short_number(state.overhead_low.x).c_str(),
               flags::short_number(state.overhead_low.y).c_str(), flags::short_number(state.overhead_high.x).c_str(),
               flags::short_number(state.overhead_high.y).c_str());
