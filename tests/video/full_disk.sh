@@ -14,8 +14,10 @@ status=0
 ) > "$dir.log" 2>&1 || status=$?
 cat "$dir.log"
 left=$(ls -A "$dir")
+named=0
+grep -q "^raycam-cli record: error: cannot write $dir/clip.gif" "$dir.log" || named=1
 rm -f "$dir.log"
 [ "$status" -eq 1 ] || { echo "full_disk: expected exit 1, got $status"; exit 1; }
-grep -q "error: cannot write $dir/clip.gif" "$dir.log" 2>/dev/null || true
+[ "$named" -eq 0 ] || { echo "full_disk: the error does not name the file"; exit 1; }
 [ -z "$left" ] || { echo "full_disk: left in the folder: $left"; exit 1; }
 echo "full_disk: exit 1 and nothing left"
