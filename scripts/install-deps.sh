@@ -10,6 +10,7 @@ packages=(
   xvfb xauth mesa-utils xdotool              # the real window under a virtual X server, driven by xdotool, in tests
   libembree-dev libbenchmark-dev gnuplot-nox # speed reference, benchmarks, plots
   libcli11-dev                               # command lines
+  libavcodec-dev libavformat-dev libswscale-dev  # `record`: MP4 (libx264), WebM (VP9), GIF through FFmpeg's libraries
   libcairo2-dev libpng-dev poppler-utils     # course figures (SVG, PDF, PNG) and their tests (pdftotext)
   texlive-latex-base texlive-latex-extra texlive-pictures texlive-lang-french lmodern  # TikZ figures' tests: pdflatex, standalone and Beamer, TikZ, babel French, Latin Modern
   bubblewrap libseccomp-dev keyutils python3 # `check`: sandbox, its system-call filter, the Python example student

@@ -25,6 +25,7 @@ inline CLI::App* add_described_subcommand(CLI::App& parent, const std::string& n
 void add_render_command(CLI::App& cli, int& exit_code);
 void add_figure_command(CLI::App& cli, int& exit_code);  // the construction of M_d as figures (cairo)
 void add_shot_command(CLI::App& cli, int& exit_code);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
+void add_record_command(CLI::App& cli, int& exit_code);  // the same frames along a camera path, as a video
 // `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp) under `bench`.
 void add_bench_command(CLI::App& cli, int& exit_code);
 void add_bench_accuracy_command(CLI::App& bench, int& exit_code);

@@ -46,6 +46,12 @@ AppState make_app_state(const AppOptions& options) {
                                 "--mistake arccos");
   state.accuracy = options.accuracy;
   state.cast_options = options.cast_options;
+  if (options.overhead_view) {
+    const auto& r = *options.overhead_view;
+    state.overhead_low = {r[0], r[1]};
+    state.overhead_high = {r[2], r[3]};
+    state.overhead_fit_pending = false;
+  }
   state.font_scale = options.font_scale;
   state.high_contrast = options.high_contrast;
   place_cameras(state);  // throws on bad parameters before any window opens

@@ -3,6 +3,7 @@
 // sees argv.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct AppOptions {
   bool high_contrast = false;
   std::string check_command;         // --check "CMD": the "Check my camera" panel's program
   std::optional<Language> language;  // --lang fr|en; default: the environment (LANGUAGE, LC_ALL, LANG)
+  // --overhead-view X0,Y0,X1,Y1: the overhead view's world rectangle, held (else fitted to the scene and
+  // camera); `record` passes the one it fits to a whole path, so that `shot` can give the same frame.
+  std::optional<std::array<double, 4>> overhead_view;
   AccuracyFlags accuracy;    // --precision --intersect --spp --frame --exact (--placement: use --mistake arccos)
   CastOptions cast_options;  // --method
   bool demo_on_bad_scene =

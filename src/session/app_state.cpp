@@ -166,6 +166,7 @@ bool open_scene(AppState& state, const std::string& path, const std::function<Sc
     adopt_view_setup(state, state, setup);
     state.pinned_pixel.reset();
     state.construction_step = -1;
+    state.construction_fraction = 1.0;
     state.mistake_look_at.clear();  // a "show me" pointed at the old scene's objects
     state.cameras_dirty = true;
     ++state.scene_opens;
@@ -253,6 +254,7 @@ void switch_dimension(AppState& state, int dimension) {
              state.view);
   state.overhead_fit_pending = true;
   state.construction_step = -1;
+  state.construction_fraction = 1.0;
   state.pinned_pixel.reset();
   ++state.scene_version;
   state.cameras_dirty = true;

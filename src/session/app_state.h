@@ -58,6 +58,10 @@ struct Lesson {
   bool arccos_route = false;  // free placement through the handout's arccos (the mistake near a pole)
   std::string mistake_look_at;  // after a mistake's "show me": what to look at (empty: nothing shown)
   int construction_step = -1;  // -1: the final camera; 0..steps: the handout's frames a → d
+  // How much of step `construction_step`'s own factor is applied (a recording's in-between poses: a rotation
+  // by that part of its angle, a translation along that part of its vector, H by that part of its scale);
+  // 1: the step itself, all the app's panels ever set.
+  double construction_fraction = 1.0;
   std::optional<PixelIndex> pinned_pixel;   // clicked, or --inspect
   std::optional<glm::dvec2> pin_point;      // its canonical point as a fraction of the image (follows res)
   PixelIndex pin_placed;                    // the pixel the last image pinned for that point

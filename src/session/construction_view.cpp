@@ -1,11 +1,53 @@
 #include "construction_view.h"
 
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "raycam/camera3d.h"
 #include "raycam/transform.h"
 
 namespace raycam::session {
+
+namespace {
+// A factor `fraction` of the way from the identity. Scales and translations blend linearly with the
+// identity (that is exactly the scale or the vector times the fraction); a rotation is slerped, so that
+// it turns by that part of its angle.
+glm::dmat4 partial_factor(const glm::dmat4& factor, double fraction, bool rotation) {
+  if (!rotation) return glm::dmat4(1.0) + fraction * (factor - glm::dmat4(1.0));
+  const glm::dquat turn = glm::quat_cast(glm::dmat3(factor));
+  return glm::mat4_cast(glm::slerp(glm::dquat(1.0, 0.0, 0.0, 0.0), turn, fraction));
+}
+glm::dmat3 partial_factor(const glm::dmat3& factor, double fraction, bool rotation) {
+  if (!rotation) return glm::dmat3(1.0) + fraction * (factor - glm::dmat3(1.0));
+  const double angle = std::atan2(factor[0][1], factor[0][0]);  // column 0 is (cos α, sin α)
+  return rotation_2d(fraction * angle);
+}
+template <class Matrix, std::size_t N>
+Matrix pose_of(const Matrix (&factors)[N], const bool (&rotations)[N], int step, double fraction) {
+  if (fraction >= 1.0 || step <= 0) return compose_first(factors, step);
+  return partial_factor(factors[step - 1], fraction, rotations[step - 1]) * compose_first(factors, step - 1);
+}
+}  // namespace
+
+glm::dmat3 construction_pose(const Placement2D& p, int step, double fraction) {
+  if (fraction >= 1.0) return construction_step(p, step);  // the very matrices the panel shows
+  const glm::dmat3 factors[] = {p.scale, p.rotation, p.translation};
+  const bool rotations[] = {false, true, false};
+  return pose_of(factors, rotations, step, fraction);
+}
+
+glm::dmat4 construction_pose(const Placement3D& p, int step, double fraction) {
+  if (fraction >= 1.0) return construction_step(p, step);
+  const glm::dmat4 factors[] = {p.scale, p.roll, p.polar, p.azimuth, p.translation};
+  const bool rotations[] = {false, true, true, true, false};
+  return pose_of(factors, rotations, step, fraction);
+}
+
+bool shows_construction(const Lesson& state) {
+  const int steps = construction_steps(state);
+  return state.construction_step >= 0 && (state.construction_step < steps || state.construction_fraction < 1.0);
+}
 
 std::vector<ConstructionSegment> construction_camera(const glm::dmat4& m, double axis_length) {
   std::vector<ConstructionSegment> segments;

@@ -6,12 +6,26 @@
 // about z, T carries the camera to P.
 #pragma once
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <vector>
 
+#include "app_state.h"
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
+
 namespace raycam::session {
+
+// The construction's pose after `step` factors with the last one applied only `fraction` of the way
+// (fraction 1: construction_step(placement, step), exactly). Rotations turn by fraction·angle (the shorter
+// way), H scales by 1 + fraction·(d_f − 1), T moves by fraction·OP.
+glm::dmat3 construction_pose(const Placement2D& placement, int step, double fraction);
+glm::dmat4 construction_pose(const Placement3D& placement, int step, double fraction);
+// True when the views draw a construction pose besides the placed camera: a step before the last, or the
+// last one part way (a recording sliding the camera to P).
+bool shows_construction(const Lesson& state);
 
 enum class ConstructionPart { screen, top_edge, field_edge, right_axis, up_axis, view_axis };
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "camera_ranges.h"
+#include "construction_view.h"
 
 namespace raycam::session {
 
@@ -25,12 +26,16 @@ ObserverCamera observer_camera(const Lesson& state, const Display& display, doub
   if (state.construction_step >= 0 && state.construction_step < kConstructionSteps3D) {
     // A construction step before T(OP): the intermediate camera sits at the origin; frame it closely, so that
     // each factor's change (eye pushed back, axes rolled, tilted, turned) is large on screen.
-    const glm::dmat4 m = construction_step(camera.placement(), state.construction_step);
+    const glm::dmat4 m = construction_pose(camera.placement(), state.construction_step, state.construction_fraction);
     low = high = eye_of(m);
     for (const glm::dvec3& corner : screen_corners_of(m)) include(corner), include(corner * 1.5);
   } else {
     for (const glm::dvec3& corner : camera.screen_corners()) include(corner);
     include(target);
+    if (shows_construction(state))  // T(OP) part way: the camera sliding from the origin to P stays in view
+      for (const glm::dvec3& corner :
+           screen_corners_of(construction_pose(camera.placement(), state.construction_step, state.construction_fraction)))
+        include(corner);
     const double near_target = view3d(state).orbit.d;
     for (const Sphere& s : view3d(state).scene.spheres)
       if (glm::length(s.centre - target) + s.radius <= near_target + 1e-9)

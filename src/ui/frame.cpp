@@ -435,8 +435,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
         frame.lines.push_back({t - offset, t + offset, yellow});
       }
       // The same rays as the image and the overhead view (the middle row), to where the caster hit.
-      const bool constructing =
-          state.construction_step >= 0 && state.construction_step < kConstructionSteps3D;
+      const bool constructing = shows_construction(state);
       for (const InspectedRay& ray : primary_ray_fan(state, state, constructing ? 0 : kObserverFanRays)) {
         const Rgb8 c =
             ray.hit.id >= 0 ? state.map.colour_at(ray.pixel.row, ray.pixel.column) : Rgb8{200, 200, 200};
@@ -451,7 +450,7 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
       }
       if (constructing)  // the handout's frames; GL lines are one pixel wide, so the key parts get a band
         for (const ConstructionSegment& segment :
-             construction_camera(construction_step(camera.placement(), state.construction_step), 1.5)) {
+             construction_camera(construction_pose(camera.placement(), state.construction_step, state.construction_fraction), 1.5)) {
           const glm::vec4 colour = construction_colour(segment.part);
           frame.overlay_lines.push_back({glm::vec3(segment.from), glm::vec3(segment.to), colour});
           if (segment.part == ConstructionPart::screen || segment.part == ConstructionPart::field_edge)

@@ -516,7 +516,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const Lesson& sta
     draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(discs->texture(placement))), clip_min,
                    clip_max);
 
-  const bool final_camera = state.construction_step < 0 || state.construction_step >= construction_steps(state);
+  const bool final_camera = !shows_construction(state);
   if (final_camera) draw_fan(draw, m, state, cast, far_length);
   std::visit([&](const auto& view) {
     draw_camera(draw, m, view.camera.world_from_camera(), kScreenColour, far_length, true);
@@ -526,12 +526,13 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const Lesson& sta
   std::visit(overloaded{[&](const View2D& view) {
                           mark_screen_segment(draw, m, state, view.camera, label_rects);
                           if (!final_camera)
-                            draw_camera(draw, m, construction_step(view.camera.placement(), step),
+                            draw_camera(draw, m, construction_pose(view.camera.placement(), step, state.construction_fraction),
                                         kConstructionColour, far_length * 0.3, true);
                         },
                         [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
                           if (!final_camera)
-                            draw_construction_3d(draw, m, construction_step(view.camera.placement(), step), placed, state.language);
+                            draw_construction_3d(draw, m, construction_pose(view.camera.placement(), step, state.construction_fraction), placed,
+                                                 state.language);
                         }},
              state.view);
   const glm::dvec2 target = active_target_xy(state);

@@ -12,7 +12,7 @@ import sys
 LAYERS = [
     ["raycam_core"],
     ["raycam_io", "raycam_testkit", "raycam_embree", "raycam_figure_tikz"],
-    ["raycam_check", "raycam_figure"],
+    ["raycam_check", "raycam_figure", "raycam_video"],  # raycam_video: FFmpeg, `record`'s files
     ["raycam_session"],
     ["raycam_flags"],
     ["raycam_app_flags"],

@@ -1,5 +1,6 @@
 #include "app_flags.h"
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,26 @@ ValueRule<session::PixelIndex> pixel_rule() {
             pixel.column = *column;
             pixel.row = *row;
             return pixel;
+          }};
+}
+
+// --overhead-view X0,Y0,X1,Y1: a rectangle of the plane seen from above, with some width and height.
+ValueRule<std::array<double, 4>> rectangle_rule() {
+  const ValueRule<double> coordinate = number_in({-1e12, 1e12});
+  return {"X0,Y0,X1,Y1 with X0 < X1, Y0 < Y1, each in [-1e12, 1e12]",
+          [coordinate](const std::string& text) -> std::optional<std::array<double, 4>> {
+            std::array<double, 4> r{};
+            std::size_t start = 0;
+            for (int i = 0; i < 4; ++i) {
+              const std::size_t comma = text.find(',', start);
+              if ((i < 3) != (comma != std::string::npos)) return std::nullopt;
+              const std::optional<double> x = coordinate.parse(text.substr(start, comma - start));
+              if (!x) return std::nullopt;
+              r[std::size_t(i)] = *x;
+              start = comma + 1;
+            }
+            if (!(r[0] < r[2] && r[1] < r[3])) return std::nullopt;
+            return r;
           }};
 }
 }  // namespace
@@ -67,6 +88,11 @@ void add_app_options(CLI::App& command, session::AppOptions& options) {
           "show a classic mistake: arccos or an ID of docs/check.md's table of classic mistakes (repeatable)")
       ->type_name("NAME")
       ->check(checked(mistake));
+  add_checked_option<std::array<double, 4>>(
+      *group, "--overhead-view", "X0,Y0,X1,Y1",
+      "the overhead view's world rectangle, held while the camera stays in it (default: fitted to the scene and "
+      "camera; `record` prints the one it holds)",
+      rectangle_rule(), [&options](std::array<double, 4> r) { options.overhead_view = r; });
   add_checked_option<double>(*group, "--font-scale", "S", "lecture mode: scale every font by S",
                              number_in({session::kFontScaleOptionMin, session::kFontScaleOptionMax}),
                              [&options](double scale) { options.font_scale = float(scale); });
