@@ -349,10 +349,16 @@ mutant float-culling-behind-by-the-near-side src/core/float_culling.cpp 's/const
 mutant float-culling-gathers-the-wrong-radius src/core/footprint_caster.cpp 's/gathered\[3\]\[j\] = spheres.radius\[i\];/gathered[3][j] = spheres.radius[at + std::size_t(j)];/' "$CORE" "$FLOAT_TESTS"
 mutant float-culling-keeps-everything src/core/float_culling.cpp 's/^    unseen\[i\] = behind | (bounded \& (off_columns | off_rows));/    unseen[i] = behind \& !behind;/' "$CORE" "$FLOAT_TESTS"
 # --- QA leftovers: the colour map's name follows the language; a message in one place ---
-mutant colour-map-name-keeps-start-language src/ui/frame.cpp '/^  follow_language(state, panels_);$/d' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
-mutant colour-map-typed-name-translated src/ui/panel_state.cpp 's/^  if (panels.export_path == tr(panels.language_seen, "raycam-colour-map.png"))$/  if (true)/' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
+mutant colour-map-name-keeps-start-language src/ui/frame.cpp '/^  follow_default_names(state, panels_);$/d' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
+mutant colour-map-typed-name-translated src/ui/panel_state.cpp 's/^    if (panels.export_path == panels.export_default) {  \/\/ never typed over: the new default$/    if (true) {/' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
 mutant message-cut-in-section-too src/ui/panels.cpp 's|^    ImGui::Dummy(ImVec2(wrap, height));  // its room kept.*$|    draw_message(state, panels, "###message/section");|' "raycam_render_tests" "^render: ?a section's message shows in one place"
 mutant message-under-the-title-bar src/ui/panels.cpp 's/^  if (top < inside.Min.y || top + height > inside.Max.y) {/  if (top < ImGui::GetWindowPos().y || top + height > inside.Max.y) {/' "raycam_render_tests" "^render: ?a section's message shows in one place"
+# --- #49 the lecture hall: messages beside the views, exports that ask ---
+mutant message-over-the-views src/ui/frame.cpp 's/^    layout.message = {layout.panel.x, layout.panel.y + layout.panel.h, layout.panel.w, message_h};/    layout.message = {status_area.x, status_area.y - message_h, status_area.w, message_h};/' "raycam_render_tests" "^render: ?a message never takes a view's room"
+mutant confirmation-never-goes src/session/app_state.cpp 's/^  if (now - messages.message_since < kConfirmationSeconds) return true;/  return true;/' "raycam_session_tests" "^session: ?a confirmation goes by itself"
+mutant colour-map-replaced-without-asking src/ui/panel_state.cpp 's/^  if (!overwrite \&\& !state.host.files_are_downloads \&\& std::filesystem::exists(asked, ignored)) {/  if (false) {/' "raycam_render_tests" "^render: ?Export colour map asks before replacing"
+mutant export-names-without-the-dimension src/session/shown_files.cpp 's/^    base += "-" + dimension;.*$/    (void)dimension;/' "raycam_ui_tests" "^ui: ?the colour map's default file name follows"
+mutant screenshot-named-in-english src/session/app_state.cpp 's/tr(language, "raycam-screenshot"), i);/"raycam-screenshot", i);/' "raycam_session_tests" "^session: ?screenshots are numbered"
 # --- #34 item 6: the overhead discs' order by a radix sort (10⁶ spheres: 225 -> 42 ms) ---
 mutant disc-order-minus-zero-below-zero src/ui/overhead_view.cpp 's/^    const double key = keys\[i\] == 0.0 ? 0.0 : keys\[i\];.*/    const double key = keys[i];/' "raycam_ui_tests" "^ui: ?the overhead discs' order"
 mutant disc-order-negatives-not-reversed src/ui/overhead_view.cpp 's/^    bits\[i\] = b >> 63 ? ~b : b | (std::uint64_t(1) << 63);/    bits[i] = b ^ (std::uint64_t(1) << 63);/' "raycam_ui_tests" "^ui: ?the overhead discs' order"

@@ -216,21 +216,31 @@ void set_message(Messages& messages, MessageSource source, bool is_error, std::s
   messages.message = std::move(text);
   messages.message_is_error = is_error;
   messages.message_source = source;
+  messages.message_since = -1.0;  // a new message (or the same one again) is read from its start
 }
 
-std::string next_screenshot_path(const std::string& directory) {
+bool age_message(Messages& messages, double now) {
+  if (messages.message.empty()) return false;
+  if (messages.message_since < 0.0) messages.message_since = now;
+  if (messages.message_is_error) return false;
+  if (now - messages.message_since < kConfirmationSeconds) return true;
+  messages.message.clear();
+  return false;
+}
+
+std::string next_screenshot_path(Language language, const std::string& directory) {
   for (int i = 1;; ++i) {
     char name[64];
-    std::snprintf(name, sizeof name, "raycam-screenshot-%03d.png", i);
+    std::snprintf(name, sizeof name, "%s-%03d.png", tr(language, "raycam-screenshot"), i);
     const std::filesystem::path path = std::filesystem::path(directory) / name;
     if (!std::filesystem::exists(path) || i >= 99999) return path.lexically_normal().string();
   }
 }
 
-void request_screenshot(HostLink& host) {
+void request_screenshot(HostLink& host, Language language) {
   std::error_code ignored;
   host.requests.ask(HostRequestKind::screenshot,
-                    std::filesystem::absolute(next_screenshot_path(), ignored).lexically_normal().string());
+                    std::filesystem::absolute(next_screenshot_path(language), ignored).lexically_normal().string());
 }
 
 std::string window_title(const Lesson& state) {

@@ -94,6 +94,7 @@ struct Display {
   float font_scale = 1.0f;  // the font is rasterised at this scale (fonts.h), not stretched
   bool high_contrast = false;
   bool show_help = false;
+  bool panel_hidden = false;  // P: the views take the panel's width (its button is in the status line then)
   ObserverOrbit observer;
   // The overhead view's world rectangle (x, y). Fitted to the scene and the camera when a scene is loaded,
   // the camera reset or "fit" asked for (button, F key), not every frame: fixed objects hold still while the
@@ -102,13 +103,18 @@ struct Display {
   bool overhead_fit_pending = true;
 };
 
-// Messages: one at a time, shown next to what caused it until dismissed or replaced.
+// Messages: one at a time, shown beside the views (never on them) next to what caused it. An error stays
+// until dismissed or replaced; a confirmation goes away by itself kConfirmationSeconds after it was first shown.
 struct Messages {
   std::string message;
   bool message_is_error = false;
   MessageSource message_source = MessageSource::general;
   long long message_shown_frame = -1;  // the frame in which a panel section showed it (else the frame does)
+  double message_since = -1.0;         // the frame clock (s) when it was first drawn; -1: not yet
 };
+
+// Long enough to read a path at 3× in front of a class, short enough not to linger over the next action.
+inline constexpr double kConfirmationSeconds = 5.0;
 
 // The host: what it can do (set once by the executable), what the session asks of it, and the frame clock.
 struct HostLink {
@@ -124,13 +130,18 @@ struct AppState : Lesson, CastCache, Display, Messages, HostLink {};
 
 // Sets the one message on screen (replacing any other).
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text);
+// At frame clock `now` (seconds): starts the shown message's clock, and clears a confirmation shown for
+// kConfirmationSeconds (errors stay until read). Returns whether a confirmation is still counting down
+// (the window keeps drawing until it goes).
+bool age_message(Messages& messages, double now);
 
-// Asks the host for a screenshot at the next free raycam-screenshot-NNN.png in the current directory.
-void request_screenshot(HostLink& host);
+// Asks the host for a screenshot at the next free raycam-screenshot-NNN.png (in French raycam-capture-NNN.png)
+// in the current directory.
+void request_screenshot(HostLink& host, Language language);
 // "cannot open PATH: REASON", without the path twice when the reason already names it.
 std::string cannot_open_message(Language language, const std::string& path, const std::string& reason);
-// The first raycam-screenshot-NNN.png (NNN from 001) that does not exist in `directory`.
-std::string next_screenshot_path(const std::string& directory = ".");
+// The first raycam-screenshot-NNN.png (NNN from 001; its French name in French) not in `directory`.
+std::string next_screenshot_path(Language language, const std::string& directory = ".");
 
 // "raycam — 3D — many3d.json" (the demo scene: its translated name).
 std::string window_title(const Lesson& state);

@@ -1,6 +1,10 @@
 #include "shown_files.h"
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
+
+#include "text.h"
 
 namespace raycam::session {
 
@@ -22,6 +26,16 @@ std::string named_after_scene(const Lesson& state, const std::string& suffix) {
   const std::string& path = scene_path(state);
   if (path.empty()) return "raycam-demo-" + std::to_string(dimension(state)) + "d" + suffix;
   return std::filesystem::path(path).stem().string() + suffix;
+}
+
+std::string default_export_name(const Lesson& state, ExportKind kind) {
+  const std::string dimension = std::to_string(session::dimension(state)) + "d";
+  std::string base = scene_path(state).empty() ? "raycam-demo" : std::filesystem::path(scene_path(state)).stem().string();
+  std::string lower = base;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (lower.size() < dimension.size() || lower.compare(lower.size() - dimension.size(), dimension.size(), dimension) != 0)
+    base += "-" + dimension;  // "lesson-3d", but "many3d" as it is
+  return base + (kind == ExportKind::colour_map ? ui::tr(state.language, "-colour-map.png") : "-figure.svg");
 }
 
 }  // namespace raycam::session

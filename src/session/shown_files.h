@@ -19,4 +19,11 @@ std::string with_file_shown(const HostCapabilities& host, std::string text, cons
 // scene is "raycam-demo-3d".
 std::string named_after_scene(const Lesson& state, const std::string& suffix);
 
+// What an export writes by default, named as the page names its downloads and with the dimension too where
+// the scene's name does not say it (2D and 3D never share a name: the 2D bar replaced the 3D map), the
+// words in the window's language: "raycam-demo-3d-colour-map.png", "lesson-2d-carte-des-couleurs.png",
+// "many3d-figure.svg".
+enum class ExportKind { colour_map, figure };
+std::string default_export_name(const Lesson& state, ExportKind kind);
+
 }  // namespace raycam::session

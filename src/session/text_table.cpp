@@ -269,7 +269,8 @@ const std::vector<Translation>& translation_table() {
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
       // ---- panels.cpp: the construction's figures ----
       {"figure###figure_path", "figure###figure_path"},
-      {"raycam-colour-map.png", "raycam-carte-des-couleurs.png"},
+      {"-colour-map.png", "-carte-des-couleurs.png"},
+      {"raycam-screenshot", "raycam-capture"},
       {"Export figure…", "Exporter la figure…"},
       {"Export every step", "Exporter toutes les étapes"},
       {"The step shown or every step, as raycam-cli figure draws them (docs/figures.md).",
@@ -306,6 +307,10 @@ const std::vector<Translation>& translation_table() {
       {"objects culled %lld", "objets élagués %lld"},
       {" (drawn with the fast caster)", " (dessiné avec le lanceur rapide)"},
       {"Dismiss###dismiss_message", "Fermer###dismiss_message"},
+      {"Panel (P)###show_panel", "Panneau (P)###show_panel"},
+      {"Hide the panel (P)###hide_panel", "Cacher le panneau (P)###hide_panel"},
+      {"P", "P"},
+      {"hide / show the panel: the views take its room", "cacher / montrer le panneau : les vues prennent sa place"},
       {"coarse preview while dragging", "aperçu grossier pendant le glissement"},
 
       // ---- panels.cpp: help ----
@@ -317,7 +322,7 @@ const std::vector<Translation>& translation_table() {
       {"The browser refused full screen for this page.", "Le navigateur a refusé le plein écran pour cette page."},
       {"F12", "F12"},
       {"numbered screenshot (raycam-screenshot-NNN.png)",
-       "capture d'écran numérotée (raycam-screenshot-NNN.png)"},
+       "capture d'écran numérotée (raycam-capture-NNN.png)"},
       {"← / →", "← / →"},
       {"θ −/+ 5°", "θ −/+ 5°"},
       {"↑ / ↓", "↑ / ↓"},

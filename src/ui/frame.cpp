@@ -138,6 +138,17 @@ void apply_theme(const Display& display, AppliedTheme& applied) {
   }
 }
 
+// The room a message needs at the panel's foot (wrapped at the panel's width, its Dismiss button under it),
+// when no section showed it in the last frame; else 0. At most half the window (a longer one scrolls).
+float message_room(const Messages& messages, const HostLink& link, float panel_width, float window_height) {
+  if (messages.message.empty() || messages.message_shown_frame == link.frame_count - 1) return 0.0f;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float wrap = panel_width - 2 * style.WindowPadding.x;
+  const float text = ImGui::CalcTextSize(messages.message.c_str(), nullptr, false, wrap).y;
+  const float room = text + style.ItemSpacing.y + ImGui::GetTextLineHeight() + 2 * style.WindowPadding.y + 2.0f;
+  return std::min(std::ceil(room), std::floor(0.5f * window_height));
+}
+
 void prepare_frame(const Display& display, float pixel_density) {
   update_fonts(display.font_scale, pixel_density);
   take_tab_key();
@@ -157,8 +168,10 @@ Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, in
   const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
   // The panel never takes more than 40% of the width: the image and the views keep the rest at any scale
   // (labels that do not fit beside their widget go above it: panels.cpp, labelled()).
-  layout.panel = {0, 0, std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f),
-                  float(height)};
+  // Hidden (P), the panel gives the views its whole width.
+  const float panel_w =
+      display.panel_hidden ? 0.0f : std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f);
+  layout.panel = {0, 0, panel_w, float(height)};
   const float right_x = layout.panel.w, right_w = width - layout.panel.w, body_h = height - status_height;
   if (image_is_bar(state.view)) {
     const float bar_h = std::min(body_h * 0.3f, 60.0f * scale + 2 * ImGui::GetFrameHeightWithSpacing());
@@ -166,12 +179,25 @@ Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, in
     overhead_area_ = {right_x, bar_h, right_w, body_h - bar_h};
     observer_area_ = {};
   } else {
-    // The image keeps at least half the window's height at every font scale (the views give way).
-    const float top_h = body_h * std::min(0.75f, 0.6f + 0.05f * (scale - 1.0f));
+    // The image keeps at least half the window's height at every font scale (the views give way). With the
+    // panel hidden it keeps just that, so that the overhead view under it keeps a usable height.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float top_h =
+        display.panel_hidden
+            ? std::ceil(0.5f * float(height) + ImGui::GetFrameHeight() + 2 * style.WindowPadding.y + 2.0f)
+            : body_h * std::min(0.75f, 0.6f + 0.05f * (scale - 1.0f));
     const float image_w = std::min(right_w * 0.6f, top_h - ImGui::GetFrameHeightWithSpacing() + 16.0f);
     image_area_ = {right_x, 0, image_w, top_h};
-    overhead_area_ = {right_x + image_w, 0, right_w - image_w, top_h};
-    observer_area_ = {right_x, top_h, right_w, body_h - top_h};
+    if (display.panel_hidden) {
+      // The panel's width goes to the observer, as a column of the window's height beside the image and the
+      // overhead view under it: under them all it stayed a strip (at 3× on 1024×768, 117 px tall, the
+      // ground 35 px), the one view that shows where the camera is.
+      overhead_area_ = {right_x, top_h, image_w, body_h - top_h};
+      observer_area_ = {right_x + image_w, 0, right_w - image_w, body_h};
+    } else {
+      overhead_area_ = {right_x + image_w, 0, right_w - image_w, top_h};
+      observer_area_ = {right_x, top_h, right_w, body_h - top_h};
+    }
   }
   return {right_x, body_h, right_w, status_height};
 }
@@ -210,13 +236,20 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   apply_theme(state, applied_theme_);
   // 1. input (a scene file may have opened since the last frame: dropped, or the page's picker)
   follow_scene_shown(state, panels_);
-  follow_language(state, panels_);
+  follow_default_names(state, panels_);
   handle_shortcuts(state);
   view_input(state);
+  // A confirmation goes by itself after a few seconds; an error stays until read (Dismiss, or the next one).
+  age_message(state, ImGui::GetTime());
   // 2. the panel's controls
   FrameLayout layout;
   layout_areas(state, state, width, height, layout);
-  const bool panel_open = begin_fixed_window("raycam###panel", layout.panel);
+  // A message no section showed last frame is read at the panel's foot: the panel gives it its room, the
+  // views keep theirs (over them it hid the observer's title and a third of the image at 3×).
+  const bool panel_shown = !state.panel_hidden;
+  const float message_h = panel_shown ? message_room(state, state, layout.panel.w, float(height)) : 0.0f;
+  layout.panel.h -= message_h;
+  const bool panel_open = panel_shown && begin_fixed_window("raycam###panel", layout.panel);
   if (panel_open) {
     camera_section(state, panels_);
     mistakes_section(state);
@@ -227,6 +260,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   // 3. the cast, once every control had its say (a control may also have switched 2D/3D or opened a file)
   recast_if_needed(state, ImGui::IsAnyMouseDown());
   const Rect status_area = layout_areas(state, state, width, height, layout);
+  layout.panel.h -= message_h;
   hover_image(state, state);
   // 4. what is derived from the state, all after the cast
   if (!panels_.check_command.empty()) {  // --check CMD: the panel's program from the command line
@@ -244,7 +278,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     const ImGuiWindow* panel = ImGui::GetCurrentWindow();
     panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;
   }
-  ImGui::End();
+  if (panel_shown) ImGui::End();
   if (draws_textures() && state.map_version != uploaded_map_version_) {
     texture_.upload(state.map);
     uploaded_map_version_ = state.map_version;
@@ -265,25 +299,24 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   shown_.map_version = state.map_version;
   layout.shown = shown_;
 
-  // The message, if no open section showed it: its own line above the status line, wrapped, never clipped.
+  // The message, if no open section showed it: at the panel's foot, in the room the panel left it, wrapped,
+  // never clipped (a message set during this frame waits for the next one's room). With the panel hidden,
+  // the status line says it (status_line).
   layout.status = status_area;
-  if (!state.message.empty() && !message_shown_this_frame(state, state)) {
-    const float wrap = status_area.w - 2 * ImGui::GetStyle().WindowPadding.x;
-    const float lines = std::ceil(ImGui::CalcTextSize(state.message.c_str(), nullptr, false, wrap).y /
-                                  ImGui::GetTextLineHeightWithSpacing());
-    const float h = (lines + 1) * ImGui::GetTextLineHeightWithSpacing() +
-                    2 * ImGui::GetStyle().WindowPadding.y + ImGui::GetStyle().ItemSpacing.y;
-    layout.message = {status_area.x, status_area.y - h, status_area.w, h};
+  if (!state.message.empty() && !message_shown_this_frame(state, state) && message_h > 0) {
+    layout.message = {layout.panel.x, layout.panel.y + layout.panel.h, layout.panel.w, message_h};
+    // Capped at half the window, a long one scrolls: its scroll bar from the first frame, so that the text
+    // wraps at the width it is drawn in.
+    const bool scrolls = message_h >= std::floor(0.5f * float(height));
     if (begin_fixed_window("##message", layout.message,
-                           ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
-      // In front of the views (a view that appeared after it, the 3D observer, would hide it), without
-      // taking the keyboard from a text being edited.
-      ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+                           ImGuiWindowFlags_NoTitleBar | (scrolls ? ImGuiWindowFlags_AlwaysVerticalScrollbar : 0)))
       show_message_line(state, panels_);
-    }
     ImGui::End();
   }
-  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) status_line(state, panels_);
+  if (begin_fixed_window("##status", layout.status, ImGuiWindowFlags_NoTitleBar)) {
+    status_line(state, panels_);
+    if (state.panel_hidden && !state.message.empty()) layout.message = layout.status;
+  }
   ImGui::End();
   help_overlay(state, state.language);
   state.window_title = window_title(state);
@@ -358,16 +391,20 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                                             tr(state.language, "Overhead view###overhead"), tr(state.language, "Overhead###overhead")},
                                            area.w);
   if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+    // A short view (under the image, panel hidden, at 3×) gives the button's row to the drawing: F fits it.
+    const bool short_view = ImGui::GetContentRegionAvail().y < 5 * ImGui::GetFrameHeightWithSpacing();
     const char* fit = tr(state.language, "Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
     if (ImGui::CalcTextSize(fit).x + 2 * ImGui::GetStyle().FramePadding.x > ImGui::GetContentRegionAvail().x)
       fit = tr(state.language, "Fit (F)###fit");
-    if (ImGui::SmallButton(fit)) state.overhead_fit_pending = true;
-    // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
-    const char* hint = tr(state.language, "holds still while the camera moves; drag: the camera around C");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);
-    ImGui::SameLine();
-    if (ImGui::CalcTextSize(hint).x <= ImGui::GetContentRegionAvail().x) ImGui::TextDisabled("%s", hint);
-    else ImGui::NewLine();
+    if (!short_view) {
+      if (ImGui::SmallButton(fit)) state.overhead_fit_pending = true;
+      // The hint on the rest of the line when it fits there (large fonts: in the button's tooltip instead).
+      const char* hint = tr(state.language, "holds still while the camera moves; drag: the camera around C");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", hint);
+      ImGui::SameLine();
+      if (ImGui::CalcTextSize(hint).x <= ImGui::GetContentRegionAvail().x) ImGui::TextDisabled("%s", hint);
+      else ImGui::NewLine();
+    }
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##overhead_input", size);

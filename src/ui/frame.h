@@ -43,7 +43,8 @@ struct FrameLayout {
   Rect observer;  // 3D only
   session::ObserverCamera observer_camera;  // the observer's viewpoint drawn this frame
   Rect status;    // the status line (frame time, work done and skipped)
-  Rect message;   // the message line above the status line, when no open panel section showed the message
+  Rect message;   // where the message was read when no open panel section showed it: the panel's foot, or
+                  // the status line while the panel is hidden (never a view's room)
   ShownValues shown;
 };
 

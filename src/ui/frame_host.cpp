@@ -69,7 +69,7 @@ bool frame_needs_redraw(const AppState& state, const PanelState& panels) {
   const HostRequests& asked = state.requests;
   return state.cameras_dirty || state.refine_pending || asked.pending(HostRequestKind::screenshot) ||
          asked.pending(HostRequestKind::toggle_fullscreen) || asked.pending(HostRequestKind::quit) ||
-         panels.check_waiting;
+         panels.check_waiting || (!state.message.empty() && !state.message_is_error);  // a confirmation goes by itself
 }
 
 }  // namespace raycam::ui

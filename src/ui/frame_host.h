@@ -66,7 +66,7 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, session::AppState& 
 
 // True while the window must keep drawing without waiting for input: the cameras changed, a coarse
 // preview waits for its refinement, a request is waiting for the executable, a check's verdict is on its
-// way (the panels say). Anything that makes the image change with no input (a background cast) adds its
+// way (the panels say), a confirmation is counting down its seconds on screen. Anything that makes the image change with no input (a background cast) adds its
 // condition here.
 bool frame_needs_redraw(const session::AppState& state, const PanelState& panels);
 

@@ -38,9 +38,12 @@ struct PanelState {
   int dimension_seen = 3;              // the dimension on screen then (a switch withdraws the questions too)
   std::string save_path;          // Save as: never filled with the opened file's path
   std::string overwrite_pending;  // Save as asked to replace this existing file: waiting for the user's yes
-  std::string export_path = "raycam-colour-map.png";
-  Language language_seen = Language::en;  // the window's language when export_path's default was named
-  std::string figure_path = "raycam-figure.svg";  // Export figure… (the construction panel)
+  // Export colour map's file: the default name (session::default_export_name) until the user types another.
+  std::string export_path;
+  std::string export_default;  // the default export_path was last given: while it still holds it, it follows
+  std::vector<std::string> colour_map_replace_files;  // Export colour map asked to replace this file (full path)
+  std::string figure_path;     // Export figure… (the construction panel); its default follows as export_path's
+  std::string figure_default;
   int figure_format = 0;             // its format: 0 SVG, 1 PDF, 2 PNG, 3 TikZ (sets figure_path's extension)
   session::FigureContent figure;     // its rays per 2D frame and whether each frame's matrix is printed
   int figure_replace_pending = 0;  // Export figure asked to replace existing files: 1 the step, 2 every step
@@ -57,9 +60,15 @@ PanelState panel_state_for(const session::AppOptions& options, const session::Le
 // files than it named); after an open, Save as starts empty too.
 void follow_scene_shown(const session::Lesson& lesson, PanelState& panels);
 
-// After the window's language changed: the colour map's default file name follows it, unless the user typed
-// another (QA: it stayed in the language the app started in).
-void follow_language(const session::Lesson& lesson, PanelState& panels);
+// The exports' default file names follow the window's language, the scene and the dimension on screen,
+// unless the user typed another name (QA: the name stayed in the language the app started in, and 2D and 3D
+// shared one, so the 2D bar replaced the 3D map).
+void follow_default_names(const session::Lesson& lesson, PanelState& panels);
+
+// Export colour map from the panel (the desktop's box, or the page's download name `path`): an existing file
+// is replaced only with `overwrite`; otherwise panels.colour_map_replace_files names it and the panel asks,
+// as Save as and Export figure do. Returns true if it wrote.
+bool export_colour_map(session::AppState& state, PanelState& panels, const std::string& path, bool overwrite);
 
 // Save as (session::save_preset_as) from the panel: an existing file is replaced only with `overwrite`;
 // otherwise panels.overwrite_pending names it and the panel asks. Returns true if it saved.

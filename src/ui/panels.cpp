@@ -229,6 +229,26 @@ void matrix_table(const char* id, const Matrix& m) {
   if (!fits) ImGui::EndChild();
 }
 
+
+// The one "… already exists. Replace it?" of every export (Save as, Export colour map, Export figure): the
+// files found when the user clicked (looked for once, not at every frame), Replace and Cancel under it, and
+// scrolled into view in the frame it is asked (at 3× it fell below the panel's edge: the click seemed to do
+// nothing). `id` names its buttons ("###ID_replace", "###ID_cancel").
+enum class ReplaceAnswer { waiting, replace, cancel };
+ReplaceAnswer replace_question(Language language, const PanelState& panels, const std::vector<std::string>& files,
+                               const std::string& id, bool just_asked) {
+  ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
+  ImGui::TextWrapped("%s", figure_replace_question(language, files).c_str());
+  ImGui::PopStyleColor();
+  ReplaceAnswer answer = ReplaceAnswer::waiting;
+  if (button((tr(language, "Replace") + ("###" + id + "_replace")).c_str())) answer = ReplaceAnswer::replace;
+  record_item_rect(panels, "###" + id + "_replace");
+  same_line_if_fits(ImGui::CalcTextSize(tr(language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
+  if (button((tr(language, "Cancel") + ("###" + id + "_cancel")).c_str())) answer = ReplaceAnswer::cancel;
+  record_item_rect(panels, "###" + id + "_cancel");
+  if (just_asked) ImGui::SetScrollHereY(1.0f);
+  return answer;
+}
 }  // namespace
 
 // A checkbox whose label wraps under itself when the line is too short for it (lecture sizes): the label
@@ -454,24 +474,16 @@ void figure_export_row(AppState& state, PanelState& panels) {
     }
   }
   const bool just_asked = asked != 0 && panels.figure_replace_pending != 0;
-  if (panels.figure_replace_pending != 0) {  // asked before replacing, as Save as
-    // The question replaces the last export's "wrote …": beside "… already exists. Replace it?" (here or on
-    // the line above the status at lecture sizes) it read as done.
+  if (panels.figure_replace_pending != 0) {  // asked before replacing, as every export
+    // The question replaces the last export's "wrote …": beside "… already exists. Replace it?" (here or at
+    // the panel's foot at lecture sizes) it read as done.
     if (state.message_source == MessageSource::construction) state.message.clear();
     const bool all = panels.figure_replace_pending == 2;
-    ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", panels.figure_replace_files.empty()
-                                 ? trf(state.language, "%s already exists. Replace it?", panels.figure_path.c_str()).c_str()
-                                 : figure_replace_question(state.language, panels.figure_replace_files).c_str());
-    ImGui::PopStyleColor();
-    if (button(tr(state.language, "Replace###figure_replace"))) {
-      panels.figure_replace_pending = 0;
-      export_figure_now(state, panels, all);
-    }
-    same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr(state.language, "Cancel###figure_cancel"))) panels.figure_replace_pending = 0;
-    // At 3× font the question falls below the panel's edge: the click seemed to do nothing.
-    if (just_asked) ImGui::SetScrollHereY(1.0f);
+    const std::vector<std::string> asked_about =
+        panels.figure_replace_files.empty() ? std::vector<std::string>{panels.figure_path} : panels.figure_replace_files;
+    const ReplaceAnswer answer = replace_question(state.language, panels, asked_about, "figure", just_asked);
+    if (answer != ReplaceAnswer::waiting) panels.figure_replace_pending = 0;
+    if (answer == ReplaceAnswer::replace) export_figure_now(state, panels, all);
   }
   show_message(state, panels, MessageSource::construction);  // right under the buttons, where the eye is
   explain(tr(state.language, "The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
@@ -670,9 +682,9 @@ void caster_section(AppState& state, const PanelState& panels) {
 
 // ---- files ---------------------------------------------------------------------------------------------
 void files_section(AppState& state, PanelState& panels) {
-  // The question "replace?" opens the section; a message does not (it shows above the status line while
+  // The question "replace?" opens the section; a message does not (it shows at the panel's foot while
   // the section is closed), so the section can be closed while a message shows.
-  if (!panels.overwrite_pending.empty()) ImGui::SetNextItemOpen(true);
+  if (!panels.overwrite_pending.empty() || !panels.colour_map_replace_files.empty()) ImGui::SetNextItemOpen(true);
   const bool open_section = section(tr(state.language, "Scene file###files"), tr(state.language, "Files###files"));
   record_item_rect(panels, "###files");
   if (!open_section) return;
@@ -693,42 +705,39 @@ void files_section(AppState& state, PanelState& panels) {
     if (open && open_scene(state, panels.path_input)) follow_scene_shown(state, panels);
     explain(tr(state.language, "or drop a scene file on the window"));
   }
+  bool save = false;
   if (downloads) {  // a download named after the scene; the browser asks where, if it is set to
     const std::string name = named_after_scene(state, ".json");
     if (button(trf(state.language, "Download the camera preset (%s)###save_download", name.c_str()).c_str()))
       save_as(state, panels, name, true);
     record_item_rect(panels, "###save_download");
   } else {
-    bool save = path_box(tr(state.language, "save as###save_path"), panels.save_path);
+    save = path_box(tr(state.language, "save as###save_path"), panels.save_path);
     save |= button(tr(state.language, "Save camera preset as…"));
     if (save) save_as(state, panels, panels.save_path, false);
   }
   if (!panels.overwrite_pending.empty()) {  // asked before replacing a file
-    ImGui::PushStyleColor(ImGuiCol_Text, current_theme().error);
-    ImGui::TextWrapped("%s", trf(state.language, "%s already exists. Replace it?", panels.overwrite_pending.c_str()).c_str());
-    ImGui::PopStyleColor();
-    if (button(tr(state.language, "Replace"))) save_as(state, panels, panels.overwrite_pending, true);
-    same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Cancel")).x + 2 * ImGui::GetStyle().FramePadding.x);
-    if (button(tr(state.language, "Cancel"))) panels.overwrite_pending.clear();
+    const ReplaceAnswer answer =
+        replace_question(state.language, panels, {panels.overwrite_pending}, "save_as", save && !downloads);
+    if (answer == ReplaceAnswer::replace) save_as(state, panels, panels.overwrite_pending, true);
+    if (answer == ReplaceAnswer::cancel) panels.overwrite_pending.clear();
   }
-  if (!downloads)
-    labelled(panels, tr(state.language, "export###export"),
-             [&](const char* l) { return ImGui::InputText(l, &panels.export_path); });
+  // A name edited while the question shows: the question was about another file.
+  if (!downloads && labelled(panels, tr(state.language, "export###export"),
+                             [&](const char* l) { return ImGui::InputText(l, &panels.export_path); }))
+    panels.colour_map_replace_files.clear();
   const std::string export_path = downloads ? named_after_scene(state, "-colour-map.png") : panels.export_path;
   const bool export_png = button(tr(state.language, "Export colour map PNG"));
   record_item_rect(panels, "###export_png");
-  if (export_png) {
-    try {
-      write_png(state.map, export_path, 1, image_is_bar(state.view) ? 32 : 1);
-      // The whole path, as the screenshot and the figure exports name it (a relative name says nothing of where).
-      const std::string whole = std::filesystem::absolute(export_path).lexically_normal().string();
-      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, whole).c_str()));
-    } catch (const std::exception& error) {
-      set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), export_path));
-    }
+  if (export_png) export_colour_map(state, panels, export_path, false);
+  if (!panels.colour_map_replace_files.empty()) {
+    const ReplaceAnswer answer =
+        replace_question(state.language, panels, panels.colour_map_replace_files, "colour_map", export_png);
+    if (answer == ReplaceAnswer::replace) export_colour_map(state, panels, panels.colour_map_replace_files.front(), true);
+    if (answer == ReplaceAnswer::cancel) panels.colour_map_replace_files.clear();
   }
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
-  if (button(tr(state.language, "Screenshot (F12)"))) request_screenshot(state);
+  if (button(tr(state.language, "Screenshot (F12)"))) request_screenshot(state, state.language);
   show_message(state, panels, MessageSource::files);
 }
 
@@ -766,6 +775,9 @@ void lecture_section(AppState& state, PanelState& panels) {
   record_item_rect(panels, "###fullscreen");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Help (F1)"))) state.show_help = !state.show_help;
+  // At 3× the views are strips beside the panel: hidden, it gives them its width (the status line brings it back).
+  if (button(tr(state.language, "Hide the panel (P)###hide_panel"))) state.panel_hidden = true;
+  record_item_rect(panels, "###hide_panel");
 }
 
 // ---- messages ------------------------------------------------------------------------------------------
@@ -807,7 +819,40 @@ bool message_shown_this_frame(const Messages& messages, const HostLink& link) {
 }
 
 // ---- status line ---------------------------------------------------------------------------------------
+namespace {
+// With the panel hidden: its button, then the message on one line (cut with "…", whole under the mouse)
+// and its Dismiss, in place of the timings. Returns whether the message took the line.
+bool hidden_panel_line(AppState& state, const PanelState& panels) {
+  if (ImGui::SmallButton(tr(state.language, "Panel (P)###show_panel"))) state.panel_hidden = false;  // the line's height
+  record_item_rect(panels, "###show_panel");
+  if (state.message.empty()) {
+    ImGui::SameLine();
+    return false;
+  }
+  const char* dismiss = tr(state.language, "Dismiss###dismiss_message");
+  const float dismiss_w = ImGui::CalcTextSize(dismiss, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+  ImGui::SameLine();
+  const float room = ImGui::GetContentRegionAvail().x - dismiss_w - ImGui::GetStyle().ItemSpacing.x;
+  const ThemeColours& theme = current_theme();
+  ImGui::PushStyleColor(ImGuiCol_Text, state.message_is_error ? theme.error : theme.confirmation);
+  ImGui::TextUnformatted(ellipsized(state.message, room).c_str());
+  ImGui::PopStyleColor();
+  record_item_rect(panels, "###message/status");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(0.6f * ImGui::GetIO().DisplaySize.x);
+    ImGui::TextUnformatted(state.message.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton(dismiss)) state.message.clear();
+  return true;
+}
+}  // namespace
+
 void status_line(AppState& state, const PanelState& panels) {
+  if (state.panel_hidden && hidden_panel_line(state, panels)) return;
   float room = ImGui::GetContentRegionAvail().x;
   // The page's file picker, at the line's right end in the app's font and language: the browser's own
   // button stays small, and covered the line's text at 1.5× and 2×.
@@ -891,6 +936,7 @@ void help_overlay(Display& shown, Language language) {
         {tr_later("[ / ]"), tr_later("construction step back / forward")},
         {tr_later("Tab"), tr_later("2D / 3D")},
         {tr_later("F"), tr_later("fit the overhead view to the scene and the camera")},
+        {tr_later("P"), tr_later("hide / show the panel: the views take its room")},
         {tr_later("Esc"), tr_later("leave a text field; else unpin the inspected pixel")},
         {tr_later("mouse drag"), tr_later("orbit the camera (overhead: around the target)")},
         {tr_later("wheel"), tr_later("d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom")},
@@ -960,6 +1006,7 @@ void handle_shortcuts(AppState& state) {
     if (c == ']') step = std::min(steps, step + 1);
     if (c == '[' || c == ']') state.construction_step = step == steps ? -1 : step;
     if (c == 'f' || c == 'F') state.overhead_fit_pending = true;
+    if (c == 'p' || c == 'P') state.panel_hidden = !state.panel_hidden;
   }
   if (changed) state.cameras_dirty = true;
 }

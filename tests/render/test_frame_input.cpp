@@ -5,6 +5,7 @@
 #include <imgui_internal.h>
 
 #include <catch2/catch.hpp>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -239,20 +240,20 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   const ui::FrameLayout& layout = renderer.layout();
   REQUIRE(state.message_is_error);
   CHECK_THAT(state.message, Catch::Contains("no/such/scene_file_for_the_test.json"));
-  // The Scene file section is closed: the message has its own line above the status line, in view.
+  // The Scene file section is closed: the message is read at the panel's foot, in view.
   CHECK(layout.message.w > 0);
-  // Opened, the section shows it, in view: no line above the status line.
+  // Opened, the section shows it, in view: nothing at the panel's foot.
   open_panel_section("###files");
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
   CHECK(renderer.layout().message.w == 0);
-  // At 3× the section's message is below the panel's fold: the line above the status line shows it again
+  // At 3× the section's message is below the panel's fold: the panel's foot shows it again
   // (a screenshot's confirmation used to land there, out of sight).
   state.font_scale = 3.0f;
   for (int frame = 0; frame < 3; ++frame) renderer.run_frame(state);
   CHECK(renderer.layout().message.w > 0);
   state.font_scale = 1.0f;
-  // A message whose section is closed (here: none) gets its own line above the status line, tall enough
-  // for its wrapped text at 3× font, inside the window.
+  // A message whose section is closed (here: none) is read at the panel's foot, tall enough for its wrapped
+  // text at 3× font, inside the window and beside the views (never over them).
   state.font_scale = 3.0f;
   session::set_message(state, session::MessageSource::general, true,
                   "a long message that cannot fit on one line of the right-hand side at three times the font size, "
@@ -263,8 +264,9 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   const float line = ImGui::GetTextLineHeightWithSpacing();
   CHECK(big.message.h >= 3 * line);  // wrapped over at least two lines, plus the Dismiss button
   CHECK(big.message.y >= 0);
-  CHECK(big.message.y + big.message.h <= big.status.y + 0.5f);  // above the status line, not over it
-  CHECK(big.message.x + big.message.w <= 1280.5f);
+  CHECK(big.message.y + big.message.h <= 800.5f);
+  CHECK(big.message.y >= big.panel.y + big.panel.h - 0.5f);      // under the panel, which gave it the room
+  CHECK(big.message.x + big.message.w <= big.panel.w + 0.5f);    // in the panel's column: no view's room
   CHECK(big.panel.w <= 0.4f * 1280 + 0.5f);
   CHECK(big.status.x + big.status.w <= 1280.5f);
   // Replaced by the next message; cleared by Dismiss (what the button does).
@@ -276,9 +278,9 @@ TEST_CASE("a message stays on screen, wrapped inside the window, until dismissed
   CHECK(renderer.layout().message.w == 0);
 }
 
-TEST_CASE("a section's message shows in one place: wholly in the panel, or on the line above the status line",
+TEST_CASE("a section's message shows in one place: wholly in its section, or at the panel's foot",
           "[render][messages]") {
-  // At 3× a message cut by the panel's bottom edge showed twice (QA): cut in its section, whole above the status.
+  // At 3× a message cut by the panel's bottom edge showed twice (QA): cut in its section, whole elsewhere.
   session::AppState state = state_for({});
   state.font_scale = 3.0f;
   ui::WidgetRects rects;
@@ -440,4 +442,50 @@ TEST_CASE("Export colour map names the file it wrote by its whole path", "[rende
   CHECK_FALSE(state.message_is_error);
   INFO(state.message);
   CHECK(state.message.find(written) != std::string::npos);
+}
+
+// QA: Export colour map wrote over the file of the last export without a word (the 3D map was replaced by
+// the 2D bar). Like Save as and Export figure, it asks; Cancel keeps the file, Replace writes it.
+TEST_CASE("Export colour map asks before replacing a file: Cancel keeps it, Replace writes it", "[render][files]") {
+  const test::ScratchDir scratch("export-colour-map-replace");
+  session::AppState state = state_for({"--size", "32x32"});
+  ui::WidgetRects rects;
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.panels().widget_rects = &rects;
+  renderer.panels().export_path = (scratch.dir / "lecture-map.png").string();
+  renderer.run_frame(state);
+  open_panel_section("###files");
+  renderer.render_settled(state);
+  auto press = [&](const char* id) {
+    renderer.render_settled(state);
+    const auto button = widget_rect(rects, id);
+    REQUIRE(button);
+    click(renderer, state, centre(*button));
+    renderer.move_mouse(-FLT_MAX, -FLT_MAX);  // off the panel, so that the next widget rects are fresh
+  };
+  press("###export_png");
+  const std::string path = renderer.panels().export_path;
+  REQUIRE(std::filesystem::exists(path));
+  auto bytes = [&] {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  const std::string first = bytes();
+  view3d(state).orbit.theta += 1.0;  // another picture
+  state.cameras_dirty = true;
+  press("###export_png");
+  CHECK((bytes() == first));  // not written: asked (parenthesised: no PNG bytes in a failure's report)
+  rects.clear();
+  renderer.render_settled(state);
+  REQUIRE(widget_rect(rects, "###colour_map_replace"));
+  press("###colour_map_cancel");
+  CHECK((bytes() == first));
+  rects.clear();
+  renderer.render_settled(state);
+  CHECK_FALSE(widget_rect(rects, "###colour_map_replace"));  // the question is gone
+  press("###export_png");
+  press("###colour_map_replace");
+  CHECK((bytes() != first));  // the new picture
+  CHECK_FALSE(state.message_is_error);
+  CHECK(state.message.find(path) != std::string::npos);
 }

@@ -13,6 +13,8 @@
 #include <catch2/catch.hpp>
 #include <cfloat>
 #include <chrono>
+#include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <map>
 #include <sstream>
 #include <string>
@@ -352,4 +354,130 @@ TEST_CASE("a verdict arriving while the mouse is over the panel waits for it to 
                        << panel->InnerClipRect.Max.y);
   CHECK(shown.y >= panel->InnerClipRect.Min.y);
   CHECK(shown.w <= panel->InnerClipRect.Max.y + 0.5f);
+}
+
+namespace {
+// The window rectangle ImGui gave a view this frame (title bar included), or an empty one.
+ui::Rect window_rect(const char* name) {
+  const ImGuiWindow* window = ImGui::FindWindowByName(name);
+  if (!window || !window->WasActive) return {};
+  return {window->Pos.x, window->Pos.y, window->Size.x, window->Size.y};
+}
+
+bool same_rect(const ui::Rect& a, const ui::Rect& b) { return a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h; }
+
+// The pixels of `r` that differ between two frames (what a message drawn over a view would change).
+int changed_pixels(const gl::RgbaImage& a, const gl::RgbaImage& b, const ui::Rect& r) {
+  int changed = 0;
+  for (int y = int(r.y); y < int(r.y + r.h); ++y)
+    for (int x = int(r.x); x < int(r.x + r.w); ++x) {
+      const std::uint8_t *p = a.at(x, y), *q = b.at(x, y);
+      changed += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+    }
+  return changed;
+}
+}  // namespace
+
+// A message (a start-up file that does not open, a screenshot's confirmation) is read beside the views, never
+// on them: each view's window, title bar included, has the same rectangle and the same pixels with the message
+// on screen as without it (QA at 3× on 1280×800: the message box hid the observer's title and a third of the
+// image), and the message is shown whole somewhere.
+TEST_CASE("a message never takes a view's room: each view's rectangle and pixels are the same without it",
+          "[render][lecture][layout][messages]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1], kScreens[2]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"fr", "en"})
+        for (const char* view : {"2d", "3d"})
+          for (const bool error : {true, false})
+            for (const bool hidden : {false, true}) {  // the panel hidden (P): the status line says it
+            if (hidden && scale != 3.0f) continue;     // the lecture's case
+
+            session::AppOptions options;
+            options.demo_on_bad_scene = true;  // as the app starts
+            session::AppState state = session::make_app_state(flags::parse_app_options(
+                {"no/such/folder/for/the/lecture/scene_file_that_does_not_open.json", "--view", view, "--lang",
+                 language},
+                options));
+            REQUIRE(state.message_is_error);
+            if (!error)  // a confirmation no section shows (as F12's), with a long path
+              session::set_message(state, session::MessageSource::general, false,
+                                   "wrote /home/instructor/lectures/chapter-3/raycam-screenshot-001.png");
+            state.font_scale = scale;
+            state.panel_hidden = hidden;
+            headless::HeadlessRenderer renderer(screen.width, screen.height);
+            const gl::RgbaImage with = renderer.render_settled(state, 3);
+            const ui::FrameLayout shown = renderer.layout();
+            const bool in_section = ui::message_shown_this_frame(state, state) || shown.message.w > 0;
+            const ui::Rect views[] = {window_rect("###image"), window_rect("###overhead"), window_rect("###observer")};
+            const std::string cut = everything_cut(shown);  // the message's frame: whole, and cutting nothing
+            state.message.clear();
+            const gl::RgbaImage without = renderer.render_settled(state, 3);
+            const ui::FrameLayout plain = renderer.layout();
+            INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view
+                              << (error ? ", an error" : ", a confirmation") << (hidden ? ", panel hidden" : ""));
+            CHECK(in_section);  // the message was on screen
+            INFO(cut);
+            CHECK(cut.empty());
+            CHECK(same_rect(shown.image, plain.image));
+            CHECK(same_rect(shown.overhead, plain.overhead));
+            CHECK(same_rect(shown.observer, plain.observer));
+            int view_index = 0;
+            for (const char* name : {"###image", "###overhead", "###observer"}) {
+              const ui::Rect r = window_rect(name);
+              CHECK(same_rect(r, views[view_index++]));
+              INFO(name << " at " << r.x << "," << r.y << " " << r.w << "x" << r.h);
+              if (r.w > 0) CHECK(changed_pixels(with, without, r) == 0);
+            }
+            ++checked;
+          }
+  CHECK(checked == 3 * 3 * 2 * 2 * 2 + 3 * 2 * 2 * 2);
+}
+
+namespace {
+// The ground sphere's height in the observer view, in window pixels: every point of a sphere projects inside
+// its silhouette, so the extent of its projected surface points is the silhouette's (clipped to the view).
+float observer_ground_height(const ui::FrameLayout& layout, const Sphere& ground) {
+  const ui::Rect& view = layout.observer;
+  const session::ObserverCamera& observer = layout.observer_camera;
+  double top = view.y + view.h, bottom = view.y;
+  for (int i = 0; i < 64; ++i)
+    for (int j = 0; j <= 32; ++j) {
+      const double azimuth = 2 * glm::pi<double>() * i / 64, polar = glm::pi<double>() * j / 32;
+      const glm::dvec3 p = ground.centre + ground.radius * glm::dvec3(std::sin(polar) * std::cos(azimuth),
+                                                                      std::sin(polar) * std::sin(azimuth), std::cos(polar));
+      const glm::vec4 clip = observer.projection * observer.view * glm::vec4(glm::vec3(p), 1.0f);
+      const double y = view.y + (1.0 - clip.y / clip.w) * 0.5 * view.h;  // NDC y up, window y down
+      top = std::min(top, std::max(y, double(view.y))), bottom = std::max(bottom, std::min(y, double(view.y + view.h)));
+    }
+  return float(std::max(0.0, bottom - top));
+}
+}  // namespace
+
+// In a lecture the 3D construction is read from the back row: at 3× on a projector and a laptop, with the panel
+// hidden (P), the observer view shows the default scene's ground sphere at least 15% of the window's height
+// (QA: a 100 px strip with a 25 px ground). docs/app.md gives the figures this prints.
+TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least 15% of the window's height",
+          "[render][lecture][layout][views]") {
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const bool hidden : {false, true}) {
+      session::AppState state = lecture_state("3d", "fr");
+      state.font_scale = 3.0f;
+      state.panel_hidden = hidden;
+      headless::HeadlessRenderer renderer(screen.width, screen.height);
+      renderer.render_settled(state, 3);
+      const auto& spheres = view3d(state).scene.spheres;
+      const Sphere ground = *std::max_element(spheres.begin(), spheres.end(),
+                                              [](const Sphere& a, const Sphere& b) { return a.radius < b.radius; });
+      const float height = observer_ground_height(renderer.layout(), ground);
+      const ui::Rect& view = renderer.layout().observer;
+      WARN(screen.width << "x" << screen.height << " at 3x, panel " << (hidden ? "hidden" : "shown") << ": observer "
+                        << view.w << "x" << view.h << " px, ground " << height << " px = "
+                        << 100.0f * height / float(screen.height) << "% of the window's height; overhead "
+                        << renderer.layout().overhead.w << "x" << renderer.layout().overhead.h << " px");
+      if (!hidden) continue;
+      CHECK(height >= 0.15f * float(screen.height));
+      CHECK(renderer.layout().image.h >= 0.5f * float(screen.height));  // the image keeps half the window
+      CHECK(renderer.layout().overhead.h >= 0.15f * float(screen.height));  // and the overhead view a usable height
+    }
 }

@@ -203,3 +203,26 @@ TEST_CASE("a pinned ray follows res: the same canonical point, not dropped, no d
   CHECK(state.pinned_pixel->column == 150);  // back at res 1: the very pixel, no drift through the others
   CHECK(state.pinned_pixel->row == 30);
 }
+
+// A confirmation ("wrote …") is read and goes by itself; an error stays until the user dismisses it. The
+// clock starts when the message is first drawn (the frame passes its own clock), not when it was set.
+TEST_CASE("a confirmation goes by itself after a few seconds, an error stays until read", "[ui][messages]") {
+  session::Messages messages;
+  session::set_message(messages, session::MessageSource::files, false, "wrote /tmp/lecture/map.png");
+  CHECK(session::age_message(messages, 100.0));  // first drawn at t = 100 s: counting down
+  CHECK(session::age_message(messages, 100.0 + 3.0));
+  CHECK(messages.message == "wrote /tmp/lecture/map.png");  // 3 s: still there, long enough to read a path
+  CHECK_FALSE(session::age_message(messages, 100.0 + 10.0));
+  CHECK(messages.message.empty());  // 10 s: gone
+  // A new message starts its own clock, even when it says the same thing again.
+  session::set_message(messages, session::MessageSource::files, false, "wrote /tmp/lecture/map.png");
+  session::age_message(messages, 200.0);
+  session::set_message(messages, session::MessageSource::files, false, "wrote /tmp/lecture/map.png");
+  CHECK(session::age_message(messages, 207.0));
+  CHECK_FALSE(messages.message.empty());
+  // An error is never timed out.
+  session::set_message(messages, session::MessageSource::files, true, "cannot open /tmp/lecture/typo.json");
+  CHECK_FALSE(session::age_message(messages, 300.0));
+  CHECK_FALSE(session::age_message(messages, 300.0 + 3600.0));
+  CHECK(messages.message == "cannot open /tmp/lecture/typo.json");
+}

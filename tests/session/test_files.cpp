@@ -181,14 +181,16 @@ TEST_CASE("a saved scene keeps short arrays and each object on one line", "[ui][
   CHECK(view3d(state).scene.spheres.size() == objects);
 }
 
-TEST_CASE("screenshots are numbered, never overwritten", "[ui][files]") {
+TEST_CASE("screenshots are numbered, never overwritten, and named in the window's language", "[ui][files]") {
   Scratch scratch;
-  const std::string first = session::next_screenshot_path(scratch.dir.string());
+  const std::string first = session::next_screenshot_path(Language::en, scratch.dir.string());
   CHECK(fs::path(first).filename() == "raycam-screenshot-001.png");
   std::ofstream(first) << "x";
-  CHECK(fs::path(session::next_screenshot_path(scratch.dir.string())).filename() == "raycam-screenshot-002.png");
+  CHECK(fs::path(session::next_screenshot_path(Language::en, scratch.dir.string())).filename() == "raycam-screenshot-002.png");
+  // QA: F12 wrote raycam-screenshot-001.png in front of a French class.
+  CHECK(fs::path(session::next_screenshot_path(Language::fr, scratch.dir.string())).filename() == "raycam-capture-001.png");
   session::AppState state = state_for({});
-  session::request_screenshot(state);
+  session::request_screenshot(state, state.language);
   const session::HostRequest* shot = state.requests.find(session::HostRequestKind::screenshot);
   REQUIRE(shot);
   CHECK(fs::path(shot->path).is_absolute());  // the message can say exactly where

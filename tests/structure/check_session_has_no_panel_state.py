@@ -16,7 +16,8 @@ import sys
 PANEL_FIELDS = ["shown_matrix", "font_scale_editing", "font_scale_seen", "font_scale_scroll_frames",
                 "widget_rects", "check_command", "check_waiting", "path_input", "scene_opens_seen", "save_path",
                 "overwrite_pending", "export_path", "figure_path", "figure_format", "figure_rays", "figure_matrix",
-                "figure_replace_pending", "figure_replace_files"]
+                "figure_replace_pending", "figure_replace_files", "export_default", "figure_default",
+                "colour_map_replace_files"]
 FIELD = re.compile(r"\b(" + "|".join(PANEL_FIELDS) + r")\b")
 # Options that share a name with a field and are not panel state: --check CMD is AppOptions' (the command
 # line's); the panels take it from there (ui::panel_state_for).

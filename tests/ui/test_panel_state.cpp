@@ -31,8 +31,7 @@ TEST_CASE("the start-up options reach the panels: --check's program, the Open bo
   CHECK(panels.check_command == "./my_camera");
   CHECK(panels.path_input == std::string(SCENES_DIR) + "/many3d.json");
   CHECK(panels.save_path.empty());  // never the opened file
-  CHECK(panels.export_path == ui::tr(Language::fr, "raycam-colour-map.png"));
-  CHECK(panels.export_path != "raycam-colour-map.png");  // the French name, not the English key
+  CHECK(panels.export_path == "many3d-carte-des-couleurs.png");  // after the scene, in French
   // The demo scene: no file to show.
   CHECK(ui::panel_state_for(session::AppOptions{}, test::state_for({})).path_input.empty());
   // A file that does not open: the app shows the demo and the error; the box keeps the path, to be fixed (QA:
@@ -166,27 +165,44 @@ TEST_CASE("a Replace question is withdrawn when the other dimension comes on scr
   CHECK(panels.figure_replace_pending == 0);
 }
 
-TEST_CASE("the colour map's default file name follows the window's language, a typed one stays",
+TEST_CASE("the colour map's default file name follows the scene, the dimension and the language, a typed one stays",
           "[ui][panel-state][files][null-host]") {
+  // Named as the page names its downloads (the demo is raycam-demo-3d), the suffix in the window's language.
   session::AppState state = test::state_for({"--size", "32x24"});
   REQUIRE(state.language == Language::en);
-  const std::string english = ui::tr(Language::en, "raycam-colour-map.png");
-  const std::string french = ui::tr(Language::fr, "raycam-colour-map.png");
-  REQUIRE(english != french);
   const test::ImGuiContextScope imgui;
   ui::NullHost host(1280, 720);
   ui::FrameRenderer frame(ui::FrameRenderer::Graphics::none);
   frame.panels() = ui::panel_state_for(session::AppOptions{}, state);
   ui::run_frame(host, frame, state);
-  CHECK(frame.panels().export_path == english);
+  CHECK(frame.panels().export_path == "raycam-demo-3d-colour-map.png");
+  CHECK(frame.panels().figure_path == "raycam-demo-3d-figure.svg");
   state.language = Language::fr;  // what the Language control does
   ui::run_frame(host, frame, state);
-  CHECK(frame.panels().export_path == french);  // QA: it stayed "raycam-colour-map.png"
+  CHECK(frame.panels().export_path == "raycam-demo-3d-carte-des-couleurs.png");  // QA: it stayed in English
+  session::switch_dimension(state, 2);  // Tab: QA, the 2D bar was written over the 3D map's file
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == "raycam-demo-2d-carte-des-couleurs.png");
+  CHECK(frame.panels().figure_path == "raycam-demo-2d-figure.svg");
   state.language = Language::en;
   ui::run_frame(host, frame, state);
-  CHECK(frame.panels().export_path == english);
-  frame.panels().export_path = "lecture-3.png";  // typed by the user: kept in any language
+  CHECK(frame.panels().export_path == "raycam-demo-2d-colour-map.png");
+  // A scene file: its name, and the dimension where the name does not say it.
+  const test::ScratchDir scratch("panel-state-names");
+  session::switch_dimension(state, 3);
+  REQUIRE(session::save_preset(state, scratch.path("lesson.json")));
+  REQUIRE(session::open_scene(state, scratch.path("lesson.json")));
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == "lesson-3d-colour-map.png");
+  REQUIRE(session::open_scene(state, std::string(SCENES_DIR) + "/many3d.json"));
+  ui::run_frame(host, frame, state);
+  CHECK(frame.panels().export_path == "many3d-colour-map.png");
+  // Typed by the user: kept whatever changes.
+  frame.panels().export_path = "lecture-3.png";
+  frame.panels().figure_path = "steps.pdf";
   state.language = Language::fr;
+  session::switch_dimension(state, 2);
   ui::run_frame(host, frame, state);
   CHECK(frame.panels().export_path == "lecture-3.png");
+  CHECK(frame.panels().figure_path == "steps.pdf");
 }
