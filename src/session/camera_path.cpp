@@ -198,8 +198,9 @@ CameraPath key_camera_path(const Pose& start, int dimension, const std::string& 
         eases = value.get<bool>();
         continue;
       }
+      const std::string field = name;  // a structured binding cannot be captured in C++17 (clang refuses)
       const auto info = std::find_if(path_sliders().begin(), path_sliders().end(),
-                                     [&](const SliderInfo& s) { return name == s.name; });
+                                     [&](const SliderInfo& s) { return field == s.name; });
       if (info == path_sliders().end()) fail(where, "a field among df, d, theta, phi, res, seconds, ease", name);
       if (info->only_3d && dimension != 3) fail(where, "no phi for a 2D camera", value);
       const double x = value.is_number() ? value.get<double>() : NAN;
