@@ -91,8 +91,8 @@ mutant detached-child-holds-the-answer src/check/student_process.cpp 's/^    if 
 mutant run-uid-kept-root src/check/student_process.cpp 's/  const uid_t run_uid = unprivileged ? next_run_uid() : 0;/  const uid_t run_uid = 0;/' "$CHECK" "^check:"
 # The sandbox one can audit (sandbox_policy.h, classify_run, syscall_filter.cpp): each fact and each part.
 SANDBOX="^check: ?(sandbox|run facts|bounds: a submission that leads|a killed check)"
-mutant checkpoint-ignored src/check/student_process.cpp 's/  const bool program_started = f.sandboxed ? !f.checkpoint.empty() : f.exec_errno == 0;/  const bool program_started = f.sandboxed ? true : f.exec_errno == 0;/' "$CHECK" "$SANDBOX"
-mutant exec-errno-ignored src/check/student_process.cpp 's/  if (exec_errno != 0) {  \/\/ the program itself cannot be exec/  if (false) {  \/\/ the program itself cannot be exec/' "$CHECK" "$SANDBOX"
+mutant checkpoint-ignored src/check/run_facts.cpp 's/  const bool program_started = f.sandboxed ? !f.checkpoint.empty() : f.exec_errno == 0;/  const bool program_started = f.sandboxed ? true : f.exec_errno == 0;/' "$CHECK" "$SANDBOX"
+mutant exec-errno-ignored src/check/run_facts.cpp 's/  if (exec_errno != 0) {  \/\/ the program itself cannot be exec/  if (false) {  \/\/ the program itself cannot be exec/' "$CHECK" "$SANDBOX"
 mutant opt-shown-again src/check/sandbox_policy.cpp 's/^const char\* const kSystemFolders\[\] = {"\/usr"};/const char* const kSystemFolders[] = {"\/usr", "\/opt"};/' "$CHECK" "$SANDBOX"
 mutant filter-lets-keyctl src/check/syscall_filter.cpp 's/^      "keyctl", "add_key", "request_key",/      "add_key", "request_key",/' "$CHECK" "$SANDBOX"
 mutant filter-not-passed src/check/sandbox_policy.cpp 's/  if (policy.filtered) add(words, {"--seccomp"/  if (false) add(words, {"--seccomp"/' "$CHECK" "$SANDBOX"

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "../scratch_dir.h"
+#include "run_facts.h"
 #include "run_group.h"
 #include "sandbox_policy.h"
 #include "student_process.h"
