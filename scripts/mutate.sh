@@ -369,6 +369,8 @@ mutant disc-order-skips-a-shared-majority src/ui/overhead_view.cpp 's/^    if (n
 mutant battery-asks-two-res-by-default src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    (void)two_res;/' "$CHECK" "^check: ?(the default battery asks one|a program that reads res as one number)"
 mutant two-res-flag-ignored src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    file.camera.res_rows.reset();/' "$CHECK" "^check: ?(the flag --two-res|with --two-res)"
 mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", two_res, other.two_res)/differs("two_res", two_res, two_res)/' "$CHECK" "$SHARDS"
+# --- #47 recording: the lossless format is lossless ---
+mutant lossless-video-through-yuv src/video/video_writer.cpp 's/AV_PIX_FMT_BGR0/AV_PIX_FMT_YUV444P/g' "raycam_video_tests" "^video: ?record: a lossless MKV"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

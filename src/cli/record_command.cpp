@@ -176,14 +176,14 @@ int run_record(const RecordOptions& options) {
 }
 
 constexpr const char* kRecordSummary =
-    "record the app's window headless along a camera path to MP4, WebM, GIF or PNG files";
+    "record the app's window headless along a camera path to MP4, WebM, GIF, MKV or PNG files";
 constexpr const char* kRecordDescription =
     "Renders the app's whole window as `shot` does (OSMesa, no display), once per frame, while the camera\n"
     "follows a path: sweeps of the Camera panel's sliders (--sweep theta=0:360 --sweep phi=60:30), key cameras\n"
     "(--path keys.json) or the construction of M_d (--construction). The format is the output's: FILE.mp4\n"
-    "(H.264), FILE.webm (VP9), FILE.gif, a FOLDER/ of PNGs or a PATTERN%03d.png. Frame k is the camera of time\n"
-    "k/fps, the last frame the path's end. The video is written under a temporary name and renamed when\n"
-    "complete. Examples: docs/cli.md.\n";
+    "(H.264), FILE.webm (VP9), FILE.gif, FILE.mkv (lossless FFV1), a FOLDER/ of PNGs or a PATTERN%03d.png.\n"
+    "Frame k is the camera of time k/fps, the last frame the path's end. The video is written under a\n"
+    "temporary name and renamed when complete. Examples: docs/record.md.\n";
 }  // namespace
 
 void add_record_command(CLI::App& cli, int& exit_code) {

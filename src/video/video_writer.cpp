@@ -98,6 +98,7 @@ std::optional<VideoFormat> format_of(const std::string& path) {
   if (ends_with(path, ".mp4")) return VideoFormat::mp4;
   if (ends_with(path, ".webm")) return VideoFormat::webm;
   if (ends_with(path, ".gif")) return VideoFormat::gif;
+  if (ends_with(path, ".mkv")) return VideoFormat::mkv;
   // One integer conversion (%d, %03d, …) in the file name, ending in .png.
   const std::size_t percent = path.find('%');
   if (ends_with(path, ".png") && percent != std::string::npos && path.find('%', percent + 1) == std::string::npos &&
@@ -109,13 +110,14 @@ std::optional<VideoFormat> format_of(const std::string& path) {
   return std::nullopt;
 }
 
-const char* accepted_outputs() { return "FILE.mp4, FILE.webm, FILE.gif, a FOLDER/ or a PATTERN%03d.png"; }
+const char* accepted_outputs() { return "FILE.mp4, FILE.webm, FILE.gif, FILE.mkv, a FOLDER/ or a PATTERN%03d.png"; }
 
 const char* format_name(VideoFormat format) {
   switch (format) {
     case VideoFormat::mp4: return "H.264 MP4";
     case VideoFormat::webm: return "VP9 WebM";
     case VideoFormat::gif: return "animated GIF";
+    case VideoFormat::mkv: return "lossless FFV1 Matroska";
     case VideoFormat::png_folder: return "PNG folder";
     case VideoFormat::png_pattern: return "PNG sequence";
   }
@@ -164,11 +166,15 @@ struct VideoWriter::State {
 
   void open_video() {
     av_log_set_level(AV_LOG_ERROR);  // the encoders' statistics are not the user's business; errors are
-    const char* muxer_name = format == VideoFormat::mp4 ? "mp4" : format == VideoFormat::webm ? "webm" : "gif";
+    const char* muxer_name = format == VideoFormat::mp4    ? "mp4"
+                             : format == VideoFormat::webm ? "webm"
+                             : format == VideoFormat::mkv  ? "matroska"
+                                                           : "gif";
     if (avformat_alloc_output_context2(&muxer, nullptr, muxer_name, temporary.c_str()) < 0 || !muxer)
       fail("FFmpeg has no " + std::string(muxer_name) + " muxer");
     const AVCodec* codec = format == VideoFormat::mp4    ? avcodec_find_encoder_by_name("libx264")
                            : format == VideoFormat::webm ? avcodec_find_encoder_by_name("libvpx-vp9")
+                           : format == VideoFormat::mkv  ? avcodec_find_encoder(AV_CODEC_ID_FFV1)
                                                          : avcodec_find_encoder(AV_CODEC_ID_GIF);
     if (!codec) fail(std::string("FFmpeg (libavcodec) has no encoder for ") + format_name(format));
     stream = avformat_new_stream(muxer, nullptr);
@@ -181,6 +187,12 @@ struct VideoWriter::State {
     AVDictionary* options = nullptr;
     if (format == VideoFormat::gif) {
       encoder->pix_fmt = AV_PIX_FMT_PAL8;
+    } else if (format == VideoFormat::mkv) {
+      // The window's pixels as they are: 8-bit RGB (BGR0 is a reordering of RGBA, no colour conversion), every
+      // frame a key frame (FFV1's intra coding): an instructor's master copy, and the test of every frame.
+      encoder->pix_fmt = AV_PIX_FMT_BGR0;
+      encoder->gop_size = 1;
+      encoder->thread_count = 0;
     } else {
       encoder->pix_fmt = AV_PIX_FMT_YUV420P;
       encoder->gop_size = 2 * settings.fps;  // a key frame every 2 s: a course page can seek
@@ -223,7 +235,11 @@ struct VideoWriter::State {
     frame->width = settings.width;
     frame->height = settings.height;
     if (av_frame_get_buffer(frame, 0) < 0) fail("FFmpeg: out of memory");
-    if (format != VideoFormat::gif) {
+    if (format == VideoFormat::mkv) {
+      scaler = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGBA, settings.width, settings.height,
+                              AV_PIX_FMT_BGR0, SWS_POINT, nullptr, nullptr, nullptr);
+      if (!scaler) fail("swscale: cannot convert RGBA to bgr0");
+    } else if (format != VideoFormat::gif) {
       scaler = sws_getContext(settings.width, settings.height, AV_PIX_FMT_RGBA, settings.width, settings.height,
                               AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND, nullptr, nullptr, nullptr);
       if (!scaler) fail("swscale: cannot convert RGBA to yuv420p");

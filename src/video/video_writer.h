@@ -1,5 +1,5 @@
 // Frames (RGBA, row 0 at the top) to a video file through Debian's FFmpeg libraries — MP4 (H.264 by
-// libx264), WebM (VP9 by libvpx), animated GIF — or to a PNG sequence. Nothing is left under the asked name
+// libx264), WebM (VP9 by libvpx), animated GIF, lossless Matroska (FFV1 in RGB) — or to a PNG sequence. Nothing is left under the asked name
 // until finish() succeeds: the video is written to a temporary name in the same folder and renamed at the
 // end; a writer destroyed before finish() (an error, a full disk) removes what it wrote.
 #pragma once
@@ -11,12 +11,12 @@
 
 namespace raycam::video {
 
-enum class VideoFormat { mp4, webm, gif, png_folder, png_pattern };
+enum class VideoFormat { mp4, webm, gif, mkv, png_folder, png_pattern };
 
-// The format an output name asks for: NAME.mp4, NAME.webm, NAME.gif, a folder (an existing one, or a name
+// The format an output name asks for: NAME.mp4, NAME.webm, NAME.gif, NAME.mkv, a folder (an existing one, or a name
 // ending in '/'), or a printf pattern of PNG files (frames/f%03d.png). nullopt: none of these.
 std::optional<VideoFormat> format_of(const std::string& path);
-// "FILE.mp4, FILE.webm, FILE.gif, a FOLDER/ or a PATTERN%03d.png": what format_of accepts.
+// "FILE.mp4, FILE.webm, FILE.gif, FILE.mkv, a FOLDER/ or a PATTERN%03d.png": what format_of accepts.
 const char* accepted_outputs();
 const char* format_name(VideoFormat format);  // "H.264 MP4", …
 

@@ -188,6 +188,25 @@ TEST_CASE("record: MP4, WebM and GIF decode back to the PNG frames, with the ask
   CHECK(entries == 4);
 }
 
+TEST_CASE("record: a lossless MKV (FFV1) decodes back to the PNG frames pixel for pixel", "[record]") {
+  const test::ScratchDir dir("record-lossless");
+  const std::vector<std::string> path{"record", "--sweep", "theta=10:100", "--sweep", "d=8:12", "--seconds", "0.5", "--fps", "20"};
+  REQUIRE(run(joined(joined(path, kWindow), {"--out", dir.path("png") + "/"})) == 0);
+  REQUIRE(run(joined(joined(path, kWindow), {"--out", dir.path("v.mkv")})) == 0);
+  const test::DecodedVideo video = test::decode_video(dir.path("v.mkv"));
+  CHECK(video.codec == "ffv1");
+  REQUIRE(video.frames.size() == 11);  // 0.5 s · 20 fps, and the last camera
+  CHECK(video.frame_rate == Approx(20.0));
+  const int rows = status_row(kWindow);  // the status line shows each run's own frame times
+  for (int k = 0; k < 11; ++k) {
+    INFO("frame " << k);
+    const test::Difference diff = test::compare(video.frames[std::size_t(k)], frame_png(dir.path("png"), k), 0, rows, 240);
+    CHECK(diff.differing == 0);
+  }
+  // And the frames move: a video of one frame repeated would pass the comparison above only if the PNGs did too.
+  CHECK(test::compare(video.frames[0], video.frames[10], 0, rows, 240).differing > 100);
+}
+
 TEST_CASE("record: a construction factor part way turns, scales and moves by that part", "[record]") {
   const Placement3D p = placement_matrix(Orbit3D{{1, 2, 3}, 8.0, glm::radians(30.0), glm::radians(60.0), 2.0});
   for (int step = 1; step <= kConstructionSteps3D; ++step) {
