@@ -369,8 +369,11 @@ mutant disc-order-skips-a-shared-majority src/ui/overhead_view.cpp 's/^    if (n
 mutant battery-asks-two-res-by-default src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    (void)two_res;/' "$CHECK" "^check: ?(the default battery asks one|a program that reads res as one number)"
 mutant two-res-flag-ignored src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    file.camera.res_rows.reset();/' "$CHECK" "^check: ?(the flag --two-res|with --two-res)"
 mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", two_res, other.two_res)/differs("two_res", two_res, two_res)/' "$CHECK" "$SHARDS"
-# --- #47 recording: the lossless format is lossless ---
+# --- #47 recording: the lossless format is lossless; the window records on F9 and saves at exit ---
 mutant lossless-video-through-yuv src/video/video_writer.cpp 's/AV_PIX_FMT_BGR0/AV_PIX_FMT_YUV444P/g' "raycam_video_tests" "^video: ?record: a lossless MKV"
+mutant live-frame-due-one-late src/video/live_recording.cpp 's/last + 1 - written/last - written/' "raycam_video_tests" "^video: ?live recording"
+mutant record-key-not-bound src/app/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9)/if (false)/' "raycam raycam_window_video_tests" "^video: ?window: F9"
+mutant recording-lost-at-exit src/app/glfw_host.cpp 's/^  host.save_recording();/  (void)0;/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

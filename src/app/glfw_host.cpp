@@ -15,6 +15,8 @@
 
 #include "gl.h"
 #include "renderer_backend.h"
+#include "shown_files.h"
+#include "text.h"
 
 namespace raycam::app {
 
@@ -56,11 +58,16 @@ void GlfwHost::wait_for_frame(const session::AppState& state, const ui::PanelSta
   }
   // Sleep until there is something to draw: input (the callbacks set the settle frames), pending work, or
   // a reason to leave. A timeout only re-checks the quit signal; it draws nothing. Minimised: sleep.
+  // Recording, the window also draws when the video's next frame is due (a still window is a still video,
+  // and the status line's clock moves).
   for (;;) {
     const bool minimised = glfwGetWindowAttrib(window_, GLFW_ICONIFIED);
-    const bool busy = !minimised && has_work(state, panels);
+    const bool frame_due = recording_ && recording_->frame_due(recording_seconds());
+    const bool busy = !minimised && (has_work(state, panels) || frame_due);
     if (busy || should_close()) break;
-    glfwWaitEventsTimeout(kIdleWaitSeconds);
+    const double wait = recording_ ? std::min(kIdleWaitSeconds, recording_->seconds_to_next_frame(recording_seconds()))
+                                   : kIdleWaitSeconds;
+    glfwWaitEventsTimeout(std::max(wait, 0.001));
   }
   spend_settle_frame();
   glfwPollEvents();
@@ -71,6 +78,63 @@ void GlfwHost::frame_started() {
 }
 
 void GlfwHost::present() { glfwSwapBuffers(window_); }
+
+void GlfwHost::save_recording() {
+  if (recording_) stop_recording();  // quitting while recording keeps the video
+}
+
+double GlfwHost::recording_seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - recording_start_).count();
+}
+
+void GlfwHost::toggle_recording() {
+  if (recording_) {
+    stop_recording();
+    return;
+  }
+  const std::string path = session::next_recording_path(state_);
+  const int width = video::LiveRecording::even(size_.width), height = video::LiveRecording::even(size_.height);
+  try {
+    if (width < 2 || height < 2) throw std::runtime_error("the window has no pixels to record");
+    recording_ = std::make_unique<video::LiveRecording>(path, video::VideoFormat::mp4, width, height, 30);
+    recording_start_ = std::chrono::steady_clock::now();
+    state_.recording = true;
+    state_.recording_seconds = 0.0;
+    session::set_message(state_, session::MessageSource::files, false,
+                         ui::trf(state_.language, "recording the window to %s (F9 stops)", path.c_str()));
+  } catch (const std::exception& error) {
+    session::set_message(state_, session::MessageSource::files, true,
+                         ui::trf(state_.language, "cannot record: %s", ui::tr_reason(state_.language, error.what()).c_str()));
+  }
+}
+
+void GlfwHost::stop_recording() {
+  const double seconds = recording_seconds();
+  std::unique_ptr<video::LiveRecording> recording = std::move(recording_);
+  state_.recording = false;
+  try {
+    const int frames = recording->finish();
+    const std::string saved = ui::trf(state_.language, "wrote %s (%d:%02d, %d frames)", recording->path().c_str(),
+                                      int(seconds) / 60, int(seconds) % 60, frames);
+    session::set_message(state_, session::MessageSource::files, false, saved);
+    std::printf("raycam: %s\n", saved.c_str());
+  } catch (const std::exception& error) {
+    session::set_message(state_, session::MessageSource::files, true,
+                         ui::trf(state_.language, "cannot record: %s", ui::tr_reason(state_.language, error.what()).c_str()));
+  }
+}
+
+void GlfwHost::frame_drawn(session::AppState& state) {
+  if (state.requests.take(session::HostRequestKind::toggle_recording)) toggle_recording();
+  if (!recording_) return;
+  if (const std::string error = recording_->error(); !error.empty()) {  // a full disk: the encoder stopped
+    stop_recording();
+    return;
+  }
+  const gl::RgbaImage frame = read_back();
+  recording_->add(frame.pixels.data(), frame.width, frame.height, recording_seconds());
+  state.recording_seconds = recording_seconds();
+}
 
 int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state) {
   glfwSetErrorCallback([](int, const char* message) { std::fprintf(stderr, "raycam: GLFW: %s\n", message); });
@@ -123,6 +187,7 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
       if (last) break;
     }
   }
+  host.save_recording();
   host.stop_imgui();
   glfwDestroyWindow(window);
   glfwTerminate();

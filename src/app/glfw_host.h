@@ -5,10 +5,13 @@
 // after each event, so that ImGui's hover and click states settle.
 #pragma once
 
+#include <chrono>
+#include <memory>
 #include <string>
 
 #include "app_options.h"
 #include "glfw_host_base.h"
+#include "live_recording.h"
 
 struct GLFWwindow;
 
@@ -34,8 +37,14 @@ class GlfwHost : public GlfwHostBase {
   GlfwHost(GLFWwindow* window, session::AppState& state, bool scripted)
       : GlfwHostBase(window, state), scripted_(scripted) {}
   void present() override;
+  void frame_drawn(session::AppState& state) override;
 
   bool should_close() const;
+  // F9 or the Record button: starts a recording of the window (an MP4 named after the scene, numbered, in
+  // the working folder) or stops it and says where it went. At exit a recording under way is saved.
+  void toggle_recording();
+  // Stops a recording under way and saves it (the loop's end: quitting while recording keeps the video).
+  void save_recording();
 
  private:
   void wait_for_frame(const session::AppState& state, const ui::PanelState& panels) override;
@@ -44,7 +53,12 @@ class GlfwHost : public GlfwHostBase {
   void key_pressed(int key) override;
   void install_own_callbacks() override;
 
+  void stop_recording();
+  double recording_seconds() const;
+
   bool scripted_;
+  std::unique_ptr<video::LiveRecording> recording_;
+  std::chrono::steady_clock::time_point recording_start_;
 };
 
 }  // namespace raycam::app

@@ -30,6 +30,7 @@ void GlfwHostBase::key_callback(GLFWwindow* window, int key, int, int action, in
   if (key == GLFW_KEY_F1) state.show_help = !state.show_help;
   if (key == GLFW_KEY_F11 && state.host.fullscreen) state.requests.ask(session::HostRequestKind::toggle_fullscreen);
   if (key == GLFW_KEY_F12) session::request_screenshot(state, state.language);  // as the Screenshot button (the page: a download)
+  if (key == GLFW_KEY_F9) state.requests.ask(session::HostRequestKind::toggle_recording);  // as the Record button
   host.key_pressed(key);
 }
 

@@ -123,6 +123,9 @@ struct HostLink {
   std::string window_title = "raycam";  // "raycam — 3D — many3d.json": the frame sets it, the host applies it
   long long frame_count = 0;
   double frame_ms = 0.0;
+  // A recording of the window under way (the host records; the panel and the status line show it).
+  bool recording = false;
+  double recording_seconds = 0.0;
 };
 
 // The session's whole state. The panels' own widget state is not in it: the frame keeps it (ui/panel_state.h).

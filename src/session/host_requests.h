@@ -15,6 +15,7 @@ enum class HostRequestKind {
   toggle_fullscreen,  // F11 or the button
   quit,               // Ctrl+Q
   pick_scene_file,    // the page: the status line's button asks the browser for a scene file
+  toggle_recording,   // F9 or the Record button: start recording the window, or stop and save
 };
 
 struct HostRequest {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 #include "text.h"
@@ -28,14 +29,31 @@ std::string named_after_scene(const Lesson& state, const std::string& suffix) {
   return std::filesystem::path(path).stem().string() + suffix;
 }
 
-std::string default_export_name(const Lesson& state, ExportKind kind) {
+namespace {
+// The scene's name with the dimension where it does not say it: "raycam-demo-3d", "lesson-2d", "many3d".
+std::string export_base(const Lesson& state) {
   const std::string dimension = std::to_string(session::dimension(state)) + "d";
   std::string base = scene_path(state).empty() ? "raycam-demo" : std::filesystem::path(scene_path(state)).stem().string();
   std::string lower = base;
   std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   if (lower.size() < dimension.size() || lower.compare(lower.size() - dimension.size(), dimension.size(), dimension) != 0)
     base += "-" + dimension;  // "lesson-3d", but "many3d" as it is
-  return base + (kind == ExportKind::colour_map ? ui::tr(state.language, "-colour-map.png") : "-figure.svg");
+  return base;
+}
+}  // namespace
+
+std::string default_export_name(const Lesson& state, ExportKind kind) {
+  return export_base(state) + (kind == ExportKind::colour_map ? ui::tr(state.language, "-colour-map.png") : "-figure.svg");
+}
+
+std::string next_recording_path(const Lesson& state, const std::string& directory) {
+  for (int i = 1;; ++i) {
+    char number[16];
+    std::snprintf(number, sizeof number, "-%03d.mp4", i);
+    const std::filesystem::path path =
+        std::filesystem::path(directory) / (export_base(state) + ui::tr(state.language, "-recording") + number);
+    if (!std::filesystem::exists(path) || i >= 99999) return path.lexically_normal().string();
+  }
 }
 
 }  // namespace raycam::session

@@ -26,4 +26,8 @@ std::string named_after_scene(const Lesson& state, const std::string& suffix);
 enum class ExportKind { colour_map, figure };
 std::string default_export_name(const Lesson& state, ExportKind kind);
 
+// Where the window's next recording goes: the first free "raycam-demo-3d-recording-NNN.mp4" (in French
+// "…-enregistrement-NNN.mp4"), NNN from 001, in `directory`: a recording never replaces a file.
+std::string next_recording_path(const Lesson& state, const std::string& directory = ".");
+
 }  // namespace raycam::session

@@ -38,6 +38,7 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
       result.screenshot_failed = true;
     }
   }
+  host.frame_drawn(state);
   host.present();
   state.frame_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -29,6 +29,8 @@ class FrameHost {
   // Draws ImGui's frame into the framebuffer: GL hosts with the shared GL code (frame_host.cpp); the null
   // host draws nothing.
   virtual void draw(const FramebufferSize& size);
+  // After the frame is drawn, before present(): a host that records the window reads the frame back here.
+  virtual void frame_drawn(session::AppState&) {}
   // Shows the frame just drawn (a window swaps its buffers; a buffer finishes drawing).
   virtual void present() = 0;
   // The frame just drawn, read before present() (a window's back buffer), top row first.

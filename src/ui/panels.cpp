@@ -738,6 +738,11 @@ void files_section(AppState& state, PanelState& panels) {
   }
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Screenshot (F12)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Screenshot (F12)"))) request_screenshot(state, state.language);
+  // The window as a video while the user works (the course page's), stopped by the same button, F9 or the
+  // status line's sign.
+  if (button(tr(state.language, state.recording ? "Stop recording (F9)###record" : "Record a video (F9)###record")))
+    state.requests.ask(HostRequestKind::toggle_recording);
+  record_item_rect(panels, "###record");
   show_message(state, panels, MessageSource::files);
 }
 
@@ -849,9 +854,25 @@ bool hidden_panel_line(AppState& state, const PanelState& panels) {
   if (ImGui::SmallButton(dismiss)) state.message.clear();
   return true;
 }
+
+// While the window records: a red sign with the time recorded, first on the status line (seen with the
+// panel hidden too), and a click on it stops.
+void recording_sign(AppState& state, const PanelState& panels) {
+  if (!state.recording) return;
+  const ThemeColours& theme = current_theme();
+  const int seconds = int(state.recording_seconds);
+  ImGui::PushStyleColor(ImGuiCol_Button, theme.error);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
+  if (ImGui::SmallButton(trf(state.language, "REC %d:%02d (F9 stops)###recording_sign", seconds / 60, seconds % 60).c_str()))
+    state.requests.ask(HostRequestKind::toggle_recording);
+  ImGui::PopStyleColor(2);
+  record_item_rect(panels, "###recording_sign");
+  ImGui::SameLine();
+}
 }  // namespace
 
 void status_line(AppState& state, const PanelState& panels) {
+  recording_sign(state, panels);
   if (state.panel_hidden && hidden_panel_line(state, panels)) return;
   float room = ImGui::GetContentRegionAvail().x;
   // The page's file picker, at the line's right end in the app's font and language: the browser's own
@@ -929,6 +950,7 @@ void help_overlay(Display& shown, Language language) {
         {tr_later("F1"), tr_later("this help")},
         {tr_later("F11"), tr_later("fullscreen")},
         {tr_later("F12"), tr_later("numbered screenshot (raycam-screenshot-NNN.png)")},
+        {tr_later("F9"), tr_later("record the window as a video, F9 again stops (SCENE-recording-NNN.mp4; the page: a WebM download)")},
         {tr_later("← / →"), tr_later("θ −/+ 5°")},
         {tr_later("↑ / ↓"), tr_later("φ −/+ 5° (3D)")},
         {tr_later("+ / −"), tr_later("d closer / further")},
