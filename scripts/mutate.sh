@@ -374,6 +374,7 @@ mutant lossless-video-through-yuv src/video/video_writer.cpp 's/AV_PIX_FMT_BGR0/
 mutant live-frame-due-one-late src/video/live_recording.cpp 's/last + 1 - written/last - written/' "raycam_video_tests" "^video: ?live recording"
 mutant record-key-not-bound src/app/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9)/if (false)/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant recording-lost-at-exit src/app/glfw_host.cpp 's/^  host.save_recording();/  (void)0;/' "raycam raycam_window_video_tests" "^video: ?window: F9"
+mutant page-sleeps-while-recording src/web/web_host.cpp 's/if (has_work(state, panels) || state.recording) {/if (has_work(state, panels)) {/' "raycam_web_page" "^web: the page's host"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -16,6 +16,7 @@
 #include "raycam/scene_file.h"
 #include "text.h"
 #include "gl.h"
+#include "page_recording.h"
 #include "renderer_backend.h"
 #include "scene_loading.h"
 
@@ -92,13 +93,13 @@ void follow_the_canvas_size() {
   });
 }
 
-// F1 (help), F11 (full screen) and F12 (screenshot) are the app's while the canvas has the focus: not the
+// F1 (help), F9 (record), F11 (full screen) and F12 (screenshot) are the app's while the canvas has the focus: not the
 // browser's help, its own full screen (which a page cannot leave) or its developer tools. Escape leaves the
 // app's full screen (browsers do it themselves; this also covers those that pass the key on).
 void keep_the_app_keys() {
   EM_ASM({
     Module.canvas.addEventListener('keydown', function(event) {
-      if (event.key === 'F1' || event.key === 'F11' || event.key === 'F12') event.preventDefault();
+      if (event.key === 'F1' || event.key === 'F9' || event.key === 'F11' || event.key === 'F12') event.preventDefault();
       if (event.key === 'Escape' && document.fullscreenElement) document.exitFullscreen().catch(function() {});
     });
   });
@@ -151,6 +152,8 @@ void tick() {
   }
   page.downloads->offer_new_files();  // Save as, PNGs, screenshots, the check's case become downloads
   if (page.state->requests.take(session::HostRequestKind::toggle_fullscreen)) toggle_fullscreen();
+  if (page.state->requests.take(session::HostRequestKind::toggle_recording)) toggle_page_recording(*page.state);
+  update_page_recording(*page.state);
   page.host->apply_title();  // the tab's title
 }
 }  // namespace
@@ -168,7 +171,8 @@ void WebHost::woken() {
 }
 
 bool WebHost::wants_frame(const session::AppState& state, const ui::PanelState& panels) {
-  if (has_work(state, panels)) {
+  // Recording, the page draws every animation frame: the canvas's stream and the status line's clock move.
+  if (has_work(state, panels) || state.recording) {
     spend_settle_frame();
     return true;
   }

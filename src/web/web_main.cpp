@@ -180,6 +180,8 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   add("d", o.d);
   add("df", o.df);
   add("font_scale", state.font_scale);
+  add("recording", state.recording ? 1 : 0);
+  add("recording_seconds", state.recording_seconds);
   json += "\"target\": [";
   for (int i = 0; i < 3; ++i) {
     std::snprintf(number, sizeof number, "%.17g", o.target[i]);

@@ -3,12 +3,14 @@ drawing buffer follows the window and the screen's pixel ratio (resizes, a ratio
 size to the eye with text rasterised at the ratio and spheres drawn round; full screen through the browser's
 Fullscreen API from the app's button and F11, Escape leaving it, and an idle page afterwards (no frame, at
 most 1 % of a core); F1, F11 and F12 kept from the browser; key taps however short (down and up in the same
-frame). Usage: test_host.py WEB_FOLDER. Exit code 0 when all pass, 77 when the page is not built."""
+frame); F9 records the canvas as a WebM download (MediaRecorder) and the page sleeps again after it.
+Usage: test_host.py WEB_FOLDER. Exit code 0 when all pass, 77 when the page is not built."""
 import io
 import json
 import math
 import os
 import sys
+import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -279,6 +281,39 @@ def taps(page):
     check(abs(turned - 25) < 1e-6, "5 taps as Chromium's input, no pause: θ turned by 25° (%.4f°)" % turned)
 
 
+def recording(page, downloads):
+    """F9 starts the browser's MediaRecorder on the canvas (the status line's red sign and clock), the page
+    draws while it records, F9 stops: one WebM download named after the scene, and the page sleeps again."""
+    page.call("Module.canvas.focus()")
+    settled(page)
+    before = page.call(FRAMES)
+    ActionChains(page.driver).key_down(Keys.F9).pause(0.1).key_up(Keys.F9).perform()
+    sign = wait_for(page, lambda: shown_frame(page)["widgets"], lambda w: "###recording_sign" in w, 5)
+    check("###recording_sign" in sign, "F9 starts recording: the status line shows its sign")
+    time.sleep(2.0)
+    drawn = page.call(FRAMES) - before
+    check(drawn >= 30, "  ... and the page draws while it records (%d frames in 2 s)" % drawn)
+    shown = shown_frame(page)
+    check(shown["recording"] == 1 and shown["recording_seconds"] >= 1.5,
+          "  ... and its clock moves (%.1f s)" % shown["recording_seconds"])
+    ActionChains(page.driver).key_down(Keys.F9).pause(0.1).key_up(Keys.F9).perform()
+    video = os.path.join(downloads, "raycam-demo-3d-recording.webm")
+    arrived = wait_for(page, lambda: os.path.exists(video) and os.path.getsize(video) > 0, True, 10)
+    check(arrived, "F9 again stops: the video is a download named after the scene (%s)" % os.listdir(downloads))
+    if arrived:
+        time.sleep(0.5)  # the browser finishes writing it
+        with open(video, "rb") as stream:
+            head = stream.read(4)
+        size = os.path.getsize(video)
+        check(head == b"\x1a\x45\xdf\xa3" and size > 2000,
+              "  ... a WebM (Matroska's EBML header, %d bytes)" % size)
+    message = page.call("return Module.ccall('raycam_status_message', 'string', [], [])")
+    check("raycam-demo-3d-recording.webm" in message and "save" in message,
+          "  ... and the message says what the browser was asked to save (%r)" % message)
+    check(wait_for(page, lambda: shown_frame(page)["recording"], 0, 5) == 0, "  ... and the recording is over")
+    idle(page, "after a recording", 5, 6)
+
+
 page = Page(web_folder, width=1280, height=800)
 try:
     page.open()
@@ -291,6 +326,16 @@ try:
 finally:
     page.close()
 ratio_two(*ratio_one)
+with tempfile.TemporaryDirectory(prefix="raycam-recording-") as downloads:
+    page = Page(web_folder, width=1024, height=768, downloads=downloads)
+    try:
+        page.open()
+        page.driver.execute_cdp_cmd("Performance.enable", {})
+        time.sleep(1.0)
+        recording(page, downloads)
+        check(errors_in(page.console()) == [], "no error in the console while recording")
+    finally:
+        page.close()
 
 print("%d failure(s)" % len(failures))
 sys.exit(1 if failures else 0)
