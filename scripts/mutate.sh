@@ -375,6 +375,7 @@ mutant live-frame-due-one-late src/video/live_recording.cpp 's/last + 1 - writte
 mutant record-key-not-bound src/app/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9)/if (false)/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant recording-lost-at-exit src/app/glfw_host.cpp 's/^  host.save_recording();/  (void)0;/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant page-sleeps-while-recording src/web/web_host.cpp 's/if (has_work(state, panels) || state.recording) {/if (has_work(state, panels)) {/' "raycam_web_page" "^web: the page's host"
+mutant record-only-takes-the-wrong-view src/cli/record_command.cpp 's/options.only == ShownPart::image      ? layout.image/options.only == ShownPart::image      ? layout.overhead/' "raycam-cli raycam_video_tests" "^video: ?record: --only"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -27,10 +27,14 @@
 namespace raycam::cli {
 
 namespace {
+// --only: one view of the window instead of the whole window.
+enum class ShownPart { window, image, overhead, observer };
+
 struct RecordOptions {
   session::AppOptions app;
   flags::PathFlags path;
   std::string out_path;
+  ShownPart only = ShownPart::window;
   double seconds = 4.0;
   bool seconds_given = false;
   int fps = 30;
@@ -118,9 +122,47 @@ class EncodingThread {
   std::thread thread_;  // last: starts once the rest is ready
 };
 
+// The pixels of the window a --only view takes: its rectangle in the first frame's layout (the layout holds
+// still along a path: the window's size does not change), each side rounded down to even (H.264 and VP9).
+struct Crop {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+Crop crop_of(const RecordOptions& options, const ui::FrameLayout& layout) {
+  if (options.only == ShownPart::window) return {0, 0, options.app.width, options.app.height};
+  const ui::Rect& r = options.only == ShownPart::image      ? layout.image
+                      : options.only == ShownPart::overhead ? layout.overhead
+                                                            : layout.observer;
+  Crop crop{int(std::ceil(r.x)), int(std::ceil(r.y)), int(std::floor(r.x + r.w)), int(std::floor(r.y + r.h))};
+  crop.x = std::clamp(crop.x, 0, options.app.width);
+  crop.y = std::clamp(crop.y, 0, options.app.height);
+  crop.width = std::clamp(crop.width, crop.x, options.app.width) - crop.x;
+  crop.height = std::clamp(crop.height, crop.y, options.app.height) - crop.y;
+  crop.width -= crop.width % 2;
+  crop.height -= crop.height % 2;
+  if (crop.width < 16 || crop.height < 16)
+    throw std::invalid_argument(flags::bad_value_message(
+        "--only", "a view the window shows at 16 × 16 pixels or more (a larger --width/--height, or a smaller --font-scale)",
+        std::to_string(crop.width) + "x" + std::to_string(crop.height) + " pixels"));
+  return crop;
+}
+
+gl::RgbaImage cropped(gl::RgbaImage image, const Crop& crop) {
+  if (crop.x == 0 && crop.y == 0 && crop.width == image.width && crop.height == image.height) return image;
+  gl::RgbaImage part;
+  part.width = crop.width;
+  part.height = crop.height;
+  part.pixels.resize(std::size_t(crop.width) * crop.height * 4);
+  for (int y = 0; y < crop.height; ++y)
+    std::copy_n(image.at(crop.x, crop.y + y), std::size_t(crop.width) * 4, part.pixels.begin() + std::ptrdiff_t(4) * y * crop.width);
+  return part;
+}
+
 void check_output(const RecordOptions& options, video::VideoFormat format) {
   for (const auto& [flag, side] : {std::pair{"--width", options.app.width}, std::pair{"--height", options.app.height}})
-    if (const std::string rule = video::side_rule(format, side); !rule.empty())
+    if (options.only != ShownPart::window) {
+      // A view's size is rounded down to even, whatever the window's.
+    } else if (const std::string rule = video::side_rule(format, side); !rule.empty())
       throw std::invalid_argument(flags::bad_value_message(flag, rule + " for " + video::format_name(format),
                                                            std::to_string(side)));
   namespace fs = std::filesystem;
@@ -142,23 +184,26 @@ int run_record(const RecordOptions& options) {
   const int frames = frame_count(path.seconds(), options.fps);
   if (frames > 100000)
     throw std::invalid_argument(flags::bad_value_message("--seconds", "at most 100000 frames in all", std::to_string(frames) + " frames"));
+  if (options.only == ShownPart::observer && session::dimension(state) == 2)
+    throw std::invalid_argument(flags::bad_value_message("--only", "image or overhead for a 2D camera (the observer is 3D's)", "observer"));
   if (!options.app.overhead_view) hold_overhead_view(state, path, frames, options.fps);
   session::apply_pose(state, path.at(0.0));
 
-  // Opened before the first frame, so that an unwritable place fails at once.
-  video::VideoWriter writer(options.out_path, *format, {options.app.width, options.app.height, options.fps});
   headless::HeadlessRenderer renderer(options.app.width, options.app.height);
   renderer.panels() = ui::panel_state_for(options.app, state);
+  // The first frame settles ImGui's layout as `shot` does (and gives a --only view's rectangle).
+  renderer.render_settled(state, 2);
+  const Crop crop = crop_of(options, renderer.layout());
+  // Opened before the frames are rendered, so that an unwritable place fails at once.
+  video::VideoWriter writer(options.out_path, *format, {crop.width, crop.height, options.fps});
   const auto start = std::chrono::steady_clock::now();
   double render_s = 0.0;
   EncodingThread encoding(writer);
   for (int k = 0; k < frames; ++k) {
     session::apply_pose(state, path.at(double(k) / options.fps));
     const auto render_start = std::chrono::steady_clock::now();
-    // The first frame settles ImGui's layout as `shot` does; then one frame each, as the window draws.
-    if (k == 0) renderer.render_settled(state, 2);
-    renderer.run_frame(state);
-    gl::RgbaImage image = renderer.read_back();
+    renderer.run_frame(state);  // one frame each, as the window draws
+    gl::RgbaImage image = cropped(renderer.read_back(), crop);
     render_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - render_start).count();
     encoding.push(std::move(image));
   }
@@ -166,7 +211,7 @@ int run_record(const RecordOptions& options) {
   writer.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("wrote %s (%s, %d frames of %dx%d at %d fps, %.2f s of video) in %.1f s: %.1f frames/s\n",
-              options.out_path.c_str(), video::format_name(*format), frames, options.app.width, options.app.height,
+              options.out_path.c_str(), video::format_name(*format), frames, crop.width, crop.height,
               options.fps, double(frames) / options.fps, seconds, frames / seconds);
   std::printf("per frame: %.1f ms rendering (the encoder works meanwhile, on its own thread)\n", 1e3 * render_s / frames);
   std::printf("overhead view held at --overhead-view %s,%s,%s,%s\n", flags::short_number(state.overhead_low.x).c_str(),
@@ -206,6 +251,11 @@ void add_record_command(CLI::App& cli, int& exit_code) {
                                     });
   flags::add_checked_option<int>(*video, "--fps", "N", "frames per second (default 30)", flags::integer_in(1, 120),
                                  [options](int n) { options->fps = n; });
+  flags::add_checked_option<int>(*video, "--only", "VIEW",
+                                 "one view instead of the whole window, at its size in the window (each side "
+                                 "rounded down to even): image (the colour bar or picture), overhead, observer (3D)",
+                                 flags::one_of({"image", "overhead", "observer"}),
+                                 [options](int part) { options->only = ShownPart(part + 1); });
   record->callback([options, &exit_code] { exit_code = run_record(*options); });
 }
 

@@ -3,12 +3,14 @@
 // those frames within a PSNR bound, and libavformat reads the asked frame count, size and rate.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <glm/gtc/matrix_access.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -205,6 +207,40 @@ TEST_CASE("record: a lossless MKV (FFV1) decodes back to the PNG frames pixel fo
   }
   // And the frames move: a video of one frame repeated would pass the comparison above only if the PNGs did too.
   CHECK(test::compare(video.frames[0], video.frames[10], 0, rows, 240).differing > 100);
+}
+
+TEST_CASE("record: --only gives one view, the very pixels it has in the whole window's frame", "[record]") {
+  const test::ScratchDir dir("record-only");
+  const std::vector<std::string> path{"record", "--sweep", "theta=0:60", "--seconds", "0.2", "--fps", "10"};
+  REQUIRE(run(joined(joined(path, kWindow), {"--out", dir.path("whole") + "/"})) == 0);
+  std::map<std::string, std::pair<int, int>> places;  // where each view was found in frame 0
+  for (const char* view : {"image", "overhead", "observer"}) {
+    INFO(view);
+    REQUIRE(run(joined(joined(path, kWindow), {"--only", view, "--out", dir.path(view) + "/"})) == 0);
+    for (int k : {0, 2}) {
+      const gl::RgbaImage whole = frame_png(dir.path("whole"), k), part = frame_png(dir.path(view), k);
+      REQUIRE(part.width >= 16);
+      CHECK(part.width % 2 == 0);
+      CHECK(part.height % 2 == 0);
+      CHECK(part.width < whole.width);
+      // Found in the whole frame at some place, pixel for pixel (searched, not computed from the layout).
+      bool found = false;
+      for (int y0 = 0; y0 + part.height <= whole.height && !found; ++y0)
+        for (int x0 = 0; x0 + part.width <= whole.width && !found; ++x0) {
+          bool same = true;
+          for (int y = 0; y < part.height && same; ++y)
+            same = std::equal(part.at(0, y), part.at(0, y) + 4 * part.width, whole.at(x0, y0 + y));
+          if (same && k == 0) places[view] = {x0, y0};
+          found = same;
+        }
+      CHECK(found);
+      // The image is the 3D camera's square picture, exactly (its rectangle, sides rounded down to even).
+      if (std::string(view) == "image") CHECK(std::abs(part.width - part.height) <= 2);
+    }
+  }
+  // Three views, three places: the image beside the overhead view, the observer below them.
+  CHECK(places["image"].first < places["overhead"].first);
+  CHECK(places["observer"].second > places["overhead"].second + 20);
 }
 
 TEST_CASE("record: a construction factor part way turns, scales and moves by that part", "[record]") {
