@@ -81,4 +81,34 @@ DecodedVideo decode_video(const std::string& path) {
   return video;
 }
 
+gl::RgbaImage through_yuv420(const gl::RgbaImage& image) {
+  const int w = image.width, h = image.height;
+  AVFrame* yuv = av_frame_alloc();
+  yuv->format = AV_PIX_FMT_YUV420P;
+  yuv->width = w;
+  yuv->height = h;
+  if (!yuv || av_frame_get_buffer(yuv, 0) < 0) throw std::runtime_error("out of memory");
+  const int* bt709 = sws_getCoefficients(SWS_CS_ITU709);
+  SwsContext* to_yuv = sws_getContext(w, h, AV_PIX_FMT_RGBA, w, h, AV_PIX_FMT_YUV420P, SWS_BILINEAR | SWS_ACCURATE_RND,
+                                      nullptr, nullptr, nullptr);
+  sws_setColorspaceDetails(to_yuv, bt709, 1, bt709, 0, 0, 1 << 16, 1 << 16);
+  const std::uint8_t* in_planes[1] = {image.pixels.data()};
+  const int in_strides[1] = {4 * w};
+  sws_scale(to_yuv, in_planes, in_strides, 0, h, yuv->data, yuv->linesize);
+  SwsContext* to_rgba = sws_getContext(w, h, AV_PIX_FMT_YUV420P, w, h, AV_PIX_FMT_RGBA, SWS_BILINEAR | SWS_ACCURATE_RND,
+                                       nullptr, nullptr, nullptr);
+  sws_setColorspaceDetails(to_rgba, bt709, 0, bt709, 1, 0, 1 << 16, 1 << 16);
+  gl::RgbaImage back;
+  back.width = w;
+  back.height = h;
+  back.pixels.resize(std::size_t(w) * h * 4);
+  std::uint8_t* out_planes[1] = {back.pixels.data()};
+  const int out_strides[1] = {4 * w};
+  sws_scale(to_rgba, yuv->data, yuv->linesize, 0, h, out_planes, out_strides);
+  sws_freeContext(to_yuv);
+  sws_freeContext(to_rgba);
+  av_frame_free(&yuv);
+  return back;
+}
+
 }  // namespace raycam::test

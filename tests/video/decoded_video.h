@@ -22,4 +22,9 @@ struct DecodedVideo {
 // Throws std::runtime_error when the file cannot be opened or decoded.
 DecodedVideo decode_video(const std::string& path);
 
+// `image` as a perfect 4:2:0 codec would give it back: to BT.709 limited-range yuv420p and back to RGBA
+// with swscale (one colour sample per 2×2 pixels). What is left between this and a decoded frame is the
+// codec's own loss; what is between this and `image` is the format's (browsers play only 4:2:0).
+gl::RgbaImage through_yuv420(const gl::RgbaImage& image);
+
 }  // namespace raycam::test
