@@ -130,6 +130,8 @@ struct Crop {
 
 Crop crop_of(const RecordOptions& options, const ui::FrameLayout& layout) {
   if (options.only == ShownPart::window) return {0, 0, options.app.width, options.app.height};
+  if (options.only == ShownPart::observer && layout.observer.w <= 0)  // a 2D window has none
+    throw std::invalid_argument(flags::bad_value_message("--only", "image or overhead for a 2D camera (the observer is 3D's)", "observer"));
   const ui::Rect& r = options.only == ShownPart::image      ? layout.image
                       : options.only == ShownPart::overhead ? layout.overhead
                                                             : layout.observer;
@@ -184,8 +186,6 @@ int run_record(const RecordOptions& options) {
   const int frames = frame_count(path.seconds(), options.fps);
   if (frames > 100000)
     throw std::invalid_argument(flags::bad_value_message("--seconds", "at most 100000 frames in all", std::to_string(frames) + " frames"));
-  if (options.only == ShownPart::observer && session::dimension(state) == 2)
-    throw std::invalid_argument(flags::bad_value_message("--only", "image or overhead for a 2D camera (the observer is 3D's)", "observer"));
   if (!options.app.overhead_view) hold_overhead_view(state, path, frames, options.fps);
   session::apply_pose(state, path.at(0.0));
 

@@ -31,7 +31,7 @@ int frames_said(const std::string& log, const std::string& name) {
 }
 }  // namespace
 
-TEST_CASE("window: F9 records the window while a user drags, F9 stops; quitting saves a recording under way",
+TEST_CASE("window: F9 records the window while a user drags, F9 stops, and quitting saves a recording under way",
           "[window][xvfb]") {
   const test::ScratchDir dir("window-recording");
   // In the scratch folder (recordings go to the working folder): F9, a drag in the overhead view, F9; then
