@@ -318,6 +318,7 @@ const std::vector<Translation>& translation_table() {
       {" (drawn with the fast caster)", " (dessiné avec le lanceur rapide)"},
       {"Dismiss###dismiss_message", "Fermer###dismiss_message"},
       {"REC %d:%02d (F9 stops)###recording_sign", "ENR %d:%02d (F9 l'arrête)###recording_sign"},
+      {"REC %d:%02d###recording_sign", "ENR %d:%02d###recording_sign"},
       {"Panel (P)###show_panel", "Panneau (P)###show_panel"},
       {"Hide the panel (P)###hide_panel", "Cacher le panneau (P)###hide_panel"},
       {"P", "P"},

@@ -863,8 +863,11 @@ void recording_sign(AppState& state, const PanelState& panels) {
   const int seconds = int(state.recording_seconds);
   ImGui::PushStyleColor(ImGuiCol_Button, theme.error);
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
-  if (ImGui::SmallButton(trf(state.language, "REC %d:%02d (F9 stops)###recording_sign", seconds / 60, seconds % 60).c_str()))
-    state.requests.ask(HostRequestKind::toggle_recording);
+  std::string label = trf(state.language, "REC %d:%02d (F9 stops)###recording_sign", seconds / 60, seconds % 60);
+  // At lecture sizes the sign alone leaves the line its room for the message or the times.
+  if (ImGui::CalcTextSize(label.c_str(), nullptr, true).x > 0.3f * ImGui::GetContentRegionAvail().x)
+    label = trf(state.language, "REC %d:%02d###recording_sign", seconds / 60, seconds % 60);
+  if (ImGui::SmallButton(label.c_str())) state.requests.ask(HostRequestKind::toggle_recording);
   ImGui::PopStyleColor(2);
   record_item_rect(panels, "###recording_sign");
   ImGui::SameLine();
