@@ -286,15 +286,18 @@ def recording(page, downloads):
     draws while it records, F9 stops: one WebM download named after the scene, and the page sleeps again."""
     page.call("Module.canvas.focus()")
     settled(page)
-    before = page.call(FRAMES)
     ActionChains(page.driver).key_down(Keys.F9).pause(0.1).key_up(Keys.F9).perform()
     sign = wait_for(page, lambda: shown_frame(page)["widgets"], lambda w: "###recording_sign" in w, 5)
     check("###recording_sign" in sign, "F9 starts recording: the status line shows its sign")
-    time.sleep(2.0)
+    # Past the start message's 5 s (a confirmation keeps any page drawing while it shows), the page still
+    # draws: the stream and the clock move with nothing touched.
+    time.sleep(6.0)
+    before = page.call(FRAMES)
+    time.sleep(1.0)
     drawn = page.call(FRAMES) - before
-    check(drawn >= 30, "  ... and the page draws while it records (%d frames in 2 s)" % drawn)
+    check(drawn >= 15, "  ... and the page draws while it records, untouched (%d frames in 1 s)" % drawn)
     shown = shown_frame(page)
-    check(shown["recording"] == 1 and shown["recording_seconds"] >= 1.5,
+    check(shown["recording"] == 1 and shown["recording_seconds"] >= 6.5,
           "  ... and its clock moves (%.1f s)" % shown["recording_seconds"])
     ActionChains(page.driver).key_down(Keys.F9).pause(0.1).key_up(Keys.F9).perform()
     video = os.path.join(downloads, "raycam-demo-3d-recording.webm")
