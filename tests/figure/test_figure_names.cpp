@@ -3,7 +3,9 @@
 // nearer to its own object than to any other; a name that has no such place hangs on a leader from a free
 // place, ending in a dot on its object, crossing no other object. Checked on the pure layout (no pixels) for
 // the demo scenes (scenes/classic2d.json, classic3d.json) with their cameras, the docs' example and seeded
-// random cameras, at sizes from 60 × 45 mm to 200 × 150 mm, in English and French.
+// random cameras, at sizes from 60 × 45 mm to 200 × 150 mm, in English and French. A name with no place in
+// the drawing goes to a key beside it; with no room for the key, the page is refused and a bigger one of the
+// same shape names them all. Both writers draw the leaders' dots and the key.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -12,10 +14,14 @@
 #include <random>
 #include <sstream>
 
+#include "../scratch_dir.h"
 #include "construction_figure.h"
+#include "figure_files.h"
 #include "figure_layout.h"
+#include "figure_test_support.h"
 #include "math_text.h"
 #include "raycam/demo_names.h"
+#include "tikz_file.h"
 
 using namespace raycam;
 using namespace raycam::figure;
@@ -270,4 +276,46 @@ TEST_CASE("every name by its own object: on no other object, nearest its own, or
               "figures refused\n", bad_count, bad_figures, figures, counts.by_object, counts.on_leader, counts.keyed,
               counts.refused);
   CHECK(bad_count == 0);
+}
+
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+// The same layout serves cairo and TikZ: a figure with leaders and a key draws a dot per leader in TikZ and
+// the key's names as words in the PDF.
+TEST_CASE("both writers draw the names' leaders with their dots and the key", "[figure][names]") {
+  const test::ScratchDir scratch("figure-names");
+  int leaders = 0, keys = 0;
+  for (const Case& c : cases()) {
+    const int placed = int(c.figure.frames.size()) - 1;
+    const PageFrame page = lay_out_frame(c.figure, placed, c.output);
+    if (!page.names_fit) continue;
+    std::size_t dots = 0;
+    for (const PlacedText& label : page.labels) dots += label.dot;
+    if (dots == 0 && page.key.empty()) continue;
+    if ((dots > 0 && leaders >= 3) || (!page.key.empty() && keys >= 3)) continue;
+    leaders += dots > 0;
+    keys += !page.key.empty();
+    INFO(c.what);
+    const std::string tikz = tikz_document(c.figure, {placed}, c.output);
+    CHECK(occurrences(tikz, "\\filldraw[name dot]") == dots);
+    CHECK(occurrences(tikz, "\\draw[name leader]") == dots);
+    FigureOutput pdf = c.output;
+    pdf.format = Format::pdf;
+    write_figure(c.figure, {placed}, pdf, scratch.path("names.pdf"));
+    const std::string words = figure_tests::run_output("pdftotext '" + scratch.path("names.pdf") + "' -");
+    for (const KeyEntry& entry : page.key) {
+      CHECK(occurrences(tikz, "{" + latex_of(entry.text.markup) + "}") >= 1);
+      CHECK(words.find(entry.text.markup) != std::string::npos);
+    }
+  }
+  CHECK(leaders == 3);
+  CHECK(keys == 3);
 }
