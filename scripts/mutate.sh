@@ -236,6 +236,10 @@ mutant figure-inset-always src/figure/figure_layout.cpp 's/^  if (!cut \&\& !sma
 mutant figure-inset-under-labels src/figure/figure_layout.cpp 's/^    if (page_.inset.shown()) cost += /    if (false) cost += /' "$FIGURE" "^figure:"
 mutant figure-inset-zoom-off-camera src/figure/figure_layout.cpp 's/^  const glm::dvec2 a = to(view.lo), b = to(view.hi), c/  const glm::dvec2 a = to(scene.lo), b = to(scene.lo), c/' "$FIGURE" "^figure:"
 mutant figure-inset-main-scale src/figure/figure_layout.cpp 's/^  inset.to_inset.scale = std::min(inner.width() \/ extent.x, inner.height() \/ extent.y);/  inset.to_inset.scale = page.to_page.scale;/' "$FIGURE" "^figure:"
+# A name by its own object (issue 48): nearer to another object, its leader without a dot, no refusal.
+mutant figure-name-nearer-another src/figure/figure_layout.cpp 's/^          nearest = j == own || box_to_disc(b, page_.discs\[j\]) >= mine + kNameMargin \* font_;/          nearest = true;/' "$FIGURE" "^figure: ?every name by its own object"
+mutant figure-name-leader-without-dot src/figure/tikz_file.cpp 's/^        t += "\\\\filldraw\[name dot\] "/        if (false) t += "\\\\filldraw[name dot] "/' "$FIGURE" "^figure: ?both writers draw the names"
+mutant figure-names-never-refused src/cli/figure_command.cpp 's/^  if (!figure::names_fit(drawn, frames, output)) {/  if (false) {/' "$FIGURE" "cli rejects: figure a page with no room for the names"
 mutant figure-inset-not-in-tikz src/figure/tikz_file.cpp 's/^  t += inset_commands(page.inset, at);/  (void)0;/' "$FIGURE" "^figure:"
 mutant figure-inset-tikz-scope-open src/figure/tikz_file.cpp 's/^  return t + "\\\\end{scope}\\n";/  return t;/' "$FIGURE" "^figure:"
 mutant figure-inset-not-painted src/figure/figure_files.cpp 's/^  draw_inset(cr, page);/  (void)0;/' "$FIGURE" "^figure:"

@@ -174,10 +174,12 @@ int run_figure(FigureOptions options) {
     const double per_unit = options.page_in_px ? 0.75 : 72.0 / 25.4;  // points per px, per mm
     const char* unit = options.page_in_px ? "px" : "mm";
     const figure::PageSize least = figure::smallest_page_for_names(
-        drawn, frames, output, (options.page_in_px ? kMaxPx : kMaxMm) * per_unit);
+        drawn, frames, output, per_unit, (options.page_in_px ? kMaxPx : kMaxMm) * per_unit);
     auto size = [&](const figure::PageSize& page) {
-      return std::to_string(int(std::ceil(page.width_pt / per_unit - 1e-6))) + "x" +
-             std::to_string(int(std::ceil(page.height_pt / per_unit - 1e-6))) + unit;
+      char text[64];
+      std::snprintf(text, sizeof text, "%gx%g%s", std::round(10.0 * page.width_pt / per_unit) / 10.0,
+                    std::round(10.0 * page.height_pt / per_unit) / 10.0, unit);
+      return std::string(text);
     };
     char font[32];
     std::snprintf(font, sizeof font, "%g", output.font_size_pt);

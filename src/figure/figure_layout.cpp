@@ -316,6 +316,8 @@ struct Request {
   bool bold;
 };
 
+bool same(const Box& a, const Box& b) { return a.left == b.left && a.top == b.top && a.right == b.right && a.bottom == b.bottom; }
+
 bool is_solid(Stroke s) { return s == Stroke::camera || s == Stroke::arrow || s == Stroke::tick; }
 
 double box_to_point(const Box& b, glm::dvec2 p) { return glm::length(p - nearest_point(b, p)); }
@@ -367,13 +369,19 @@ class Placer {
         const double ax = 0.5 * (1.0 - kDirections[d].x), ay = 0.5 * (1.0 + kDirections[d].y);
         const double h = e.above + e.below;
         const Box b{p.x - ax * e.width, p.y - ay * h, p.x - ax * e.width + e.width, p.y - ay * h + h};
-        const double cost = cost_of(b) + 3.0 * font_ * font_ * ring + 0.05 * d;
+        double cost = cost_of(b) + 3.0 * font_ * font_ * ring + 0.05 * d;
+        if (ring > 0) cost += crossing_names(request.anchor, nearest_point(b, request.anchor));
         if (cost < best_cost) {
           best_cost = cost;
           best = PlacedText{request.markup, {b.left, b.top + e.above}, font_, request.bold, b, ring > 0, request.anchor};
         }
       }
-    if (best.leader) add_leader(request.anchor, nearest_point(best.box, request.anchor));
+    if (best.leader) {
+      const std::pair<glm::dvec2, glm::dvec2> leader{request.anchor, nearest_point(best.box, request.anchor)};
+      lines_.push_back(leader);
+      solid_.push_back(leader);
+      leaders_.push_back(leader);
+    }
     page_.labels.push_back(best);
   }
 
@@ -458,17 +466,39 @@ class Placer {
       }
     if (!std::isfinite(best_cost)) return false;
     add_leader(best.anchor, nearest_point(best.box, best.anchor));
-    page_.labels.push_back(best);
+    add(best);
     return true;
   }
 
-  void add(const PlacedText& name) { page_.labels.push_back(name); }
+  // Whether the name of disc `own` still lies on nothing, its leader crossing nothing; if not, it is taken
+  // away (its leader too), to be placed again.
+  bool still_free(const std::string& markup, std::size_t own) {
+    std::size_t k = 0;
+    while (k < page_.labels.size() && page_.labels[k].markup != markup) ++k;
+    if (k == page_.labels.size()) return true;
+    const PlacedText name = page_.labels[k];
+    page_.labels.erase(page_.labels.begin() + std::ptrdiff_t(k));
+    names_.erase(std::find_if(names_.begin(), names_.end(), [&](const Box& b) { return same(b, name.box); }));
+    const std::pair<glm::dvec2, glm::dvec2> leader{name.anchor, nearest_point(name.box, name.anchor)};
+    if (name.leader)
+      for (auto* lines : {&lines_, &solid_, &leaders_, &name_leaders_})
+        lines->erase(std::find(lines->begin(), lines->end(), leader));
+    if (free_for_name(name.box, own, name.leader) && (!name.leader || clear_leader(leader.first, leader.second, own))) {
+      if (name.leader) add_leader(leader.first, leader.second);
+      add(name);
+      return true;
+    }
+    return false;
+  }
+
+  void add(const PlacedText& name) {
+    page_.labels.push_back(name);
+    names_.push_back(name.box);
+  }
 
  private:
-  void add_leader(glm::dvec2 a, glm::dvec2 b) {
-    lines_.push_back({a, b});
-    solid_.push_back({a, b});
-    leaders_.push_back({a, b});
+  void add_leader(glm::dvec2 a, glm::dvec2 b) {  // a name's
+    for (auto* lines : {&lines_, &solid_, &leaders_, &name_leaders_}) lines->push_back({a, b});
   }
 
   // Nothing but rays and construction lines under a name's box: inside the drawing, off the inset, the other
@@ -487,20 +517,29 @@ class Placer {
     return true;
   }
 
-  // A leader a reader can follow: over no other object, label or leader.
+  // A leader a reader can follow: over no other object, label, leader, cross or camera line.
   bool clear_leader(glm::dvec2 dot, glm::dvec2 end, std::size_t own) const {
     for (std::size_t j = 0; j < page_.discs.size(); ++j)
       if (j != own && segment_to_point(dot, end, page_.discs[j].centre) < page_.discs[j].radius + 1.0) return false;
     for (const PlacedText& other : page_.labels)
       if (length_inside(dot, end, grown(other.box, 1.0)) > 0.0) return false;
-    for (const auto& [a, b] : leaders_)
+    for (const auto& [a, b] : solid_)  // the leaders, the camera, the ticks, the crosses
       if (segments_cross(dot, end, a, b)) return false;
     return true;
+  }
+
+  // A label's leader over a name or across a leader: a reader would follow the wrong one.
+  double crossing_names(glm::dvec2 a, glm::dvec2 b) const {
+    double cost = 0.0;
+    for (const Box& name : names_) cost += length_inside(a, b, grown(name, 1.0)) > 0.0 ? 1e6 : 0.0;
+    for (const auto& [c, d] : name_leaders_) cost += segments_cross(a, b, c, d) ? 1e6 : 0.0;
+    return cost;
   }
 
   double cost_of(const Box& box) const {
     const Box halo = grown(box, 0.8);
     double cost = 0.0;
+    for (const auto& [a, b] : name_leaders_) cost += 1e4 * length_inside(a, b, halo);  // never hidden
     // A clearance of a third of the font size: LaTeX's fonts (TikZ) set a label a little wider than DejaVu.
     for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 0.3 * font_), box);
     for (const auto& [a, b] : lines_) cost += 4.0 * font_ * length_inside(a, b, halo);
@@ -518,39 +557,33 @@ class Placer {
   double font_;
   std::vector<std::pair<glm::dvec2, glm::dvec2>> lines_;    // everything drawn: rays cost, the rest forbids
   std::vector<std::pair<glm::dvec2, glm::dvec2>> solid_;    // the camera, the ticks, the crosses, the leaders
-  std::vector<std::pair<glm::dvec2, glm::dvec2>> leaders_;
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> leaders_;       // every label's
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> name_leaders_;  // the names'
+  std::vector<Box> names_;  // the objects' names placed in the drawing
+};
+
+struct Name {
+  std::size_t object, disc;
+  std::string markup;
 };
 
 // The objects' names, the most hemmed in first: by the object; then, for those with no such place, on a
 // leader; the objects left over are returned (for the key).
-std::vector<std::size_t> place_names(const Frame& frame, const std::vector<int>& drawn, const std::vector<bool>& keyed,
-                                     Placer& placer, const PageFrame& page) {
-  struct Name {
-    std::size_t object, disc;
-    std::string markup;
-    std::size_t places;
-  };
-  std::vector<Name> names;
-  for (std::size_t i = 0; i < frame.objects.size(); ++i) {
-    if (frame.objects[i].name.empty() || drawn[i] < 0 || keyed[i]) continue;
-    const PageDisc& disc = page.discs[std::size_t(drawn[i])];
-    if (box_to_point(page.area, disc.centre) >= disc.radius) continue;  // only in the 20 pt kept around the area
-    const std::string markup = escape_markup(frame.objects[i].name);
-    names.push_back({i, std::size_t(drawn[i]), markup, placer.places_by(markup, std::size_t(drawn[i])).size()});
-  }
-  std::stable_sort(names.begin(), names.end(), [](const Name& a, const Name& b) { return a.places < b.places; });
+std::vector<std::size_t> place_names(const std::vector<Name>& names, Placer& placer) {
+  std::vector<std::pair<std::size_t, const Name*>> order;
+  for (const Name& name : names) order.push_back({placer.places_by(name.markup, name.disc).size(), &name});
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<const Name*> away;
-  for (const Name& name : names) {
-    const std::vector<PlacedText> places = placer.places_by(name.markup, name.disc);
+  for (const auto& [count, name] : order) {
+    const std::vector<PlacedText> places = placer.places_by(name->markup, name->disc);
     if (places.empty())
-      away.push_back(&name);
+      away.push_back(name);
     else
       placer.add(places.front());
   }
   std::vector<std::size_t> left;
   for (const Name* name : away)
     if (!placer.place_on_leader(name->markup, name->disc)) left.push_back(name->object);
-  std::sort(left.begin(), left.end());
   return left;
 }
 
@@ -558,14 +591,32 @@ std::vector<std::size_t> place_names(const Frame& frame, const std::vector<int>&
 std::vector<std::size_t> place_labels(const Frame& frame, PageFrame& page, double font, const std::vector<int>& drawn,
                                       const std::vector<bool>& keyed) {
   Placer placer(page, font);
-  std::vector<Request> requests;
   for (const Marker& m : frame.markers)  // the points first: they matter most
-    if (!m.label.empty()) requests.push_back({m.label, page.to_page(m.at), true});
-  for (const Label& l : frame.labels) requests.push_back({l.text, page.to_page(l.at), false});
-  for (const Request& r : requests)
-    if (inside(page.area, r.anchor)) placer.place(r);
-  if (frame.objects_faded || frame.objects.size() > kObjectNamesUpTo) return {};
-  return place_names(frame, drawn, keyed, placer, page);
+    if (!m.label.empty() && inside(page.area, page.to_page(m.at))) placer.place({m.label, page.to_page(m.at), true});
+  // Then the names, which have the fewest places (by their own object), before the free labels.
+  std::vector<Name> names;
+  if (!frame.objects_faded && frame.objects.size() <= kObjectNamesUpTo)
+    for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+      if (frame.objects[i].name.empty() || drawn[i] < 0 || keyed[i]) continue;
+      const PageDisc& disc = page.discs[std::size_t(drawn[i])];
+      if (box_to_point(page.area, disc.centre) >= disc.radius) continue;  // only in the 20 pt kept around the area
+      names.push_back({i, std::size_t(drawn[i]), escape_markup(frame.objects[i].name)});
+    }
+  std::vector<std::size_t> left = place_names(names, placer);
+  for (const Label& l : frame.labels)
+    if (inside(page.area, page.to_page(l.at))) placer.place({l.text, page.to_page(l.at), false});
+  // A free label that found no other place than over a name: the name moves, around the free labels.
+  for (const Name& name : names) {
+    if (std::find(left.begin(), left.end(), name.object) != left.end()) continue;
+    if (placer.still_free(name.markup, name.disc)) continue;
+    const std::vector<PlacedText> places = placer.places_by(name.markup, name.disc);
+    if (!places.empty())
+      placer.add(places.front());
+    else if (!placer.place_on_leader(name.markup, name.disc))
+      left.push_back(name.object);
+  }
+  std::sort(left.begin(), left.end());
+  return left;
 }
 
 // ---- the matrix -----------------------------------------------------------------------------------------
@@ -730,13 +781,14 @@ bool names_fit(const Figure& figure, const std::vector<int>& frames, const Figur
 }
 
 PageSize smallest_page_for_names(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
-                                 double largest_width_pt) {
+                                 double unit_pt, double largest_width_pt) {
   const double ratio = output.page.height_pt / output.page.width_pt;
-  const double step = 0.01 * output.page.width_pt;  // 1 % at a time
   FigureOutput bigger = output;
-  for (double width = output.page.width_pt; width <= largest_width_pt; width += step) {
-    bigger.page.width_pt = width;
-    bigger.page.height_pt = ratio * width;
+  // Whole units (the size the user types), 1 % at a time beyond a hundred.
+  for (double units = std::floor(output.page.width_pt / unit_pt + 1e-9) + 1.0; units * unit_pt <= largest_width_pt;
+       units += std::max(1.0, std::floor(0.01 * units))) {
+    bigger.page.width_pt = units * unit_pt;
+    bigger.page.height_pt = std::ceil(units * ratio - 1e-9) * unit_pt;
     if (room_for_drawing_pt(figure, bigger) >= kLeastDrawingShare * bigger.page.height_pt &&
         names_fit(figure, frames, bigger))
       return bigger.page;

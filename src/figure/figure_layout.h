@@ -147,10 +147,11 @@ double room_for_drawing_pt(const Figure& figure, const FigureOutput& output);
 
 // Whether every frame of `frames` names all its objects in view (by the object, on a leader or in the key).
 bool names_fit(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output);
-// The smallest page of the same proportions, at least `output`'s, on which the names fit and the drawing has
-// its room (room_for_drawing_pt); the page itself when nothing fits up to `largest_width_pt`.
+// The smallest page bigger than `output`'s, of the same proportions, in whole `unit_pt` (a mm, a px), on which
+// the names fit and the drawing has its room (room_for_drawing_pt); the page itself when none up to
+// `largest_width_pt` does.
 PageSize smallest_page_for_names(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
-                                 double largest_width_pt);
+                                 double unit_pt, double largest_width_pt);
 
 // The width and the font's height (ascent, descent: a PDF reader's word box) above and below the baseline of a markup string set at `size` points.
 struct TextExtent {

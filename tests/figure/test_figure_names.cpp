@@ -166,7 +166,7 @@ void bad_names(const Case& c, Counts& counts, std::vector<std::string>& bad) {
     ++counts.refused;
     const std::vector<int> placed{int(c.figure.frames.size()) - 1};
     FigureOutput bigger = c.output;
-    bigger.page = smallest_page_for_names(c.figure, placed, c.output, 2000.0 * 72.0 / 25.4);
+    bigger.page = smallest_page_for_names(c.figure, placed, c.output, 72.0 / 25.4, 2000.0 * 72.0 / 25.4);
     if (!(bigger.page.width_pt > c.output.page.width_pt) || !names_fit(c.figure, placed, bigger))
       bad.push_back(c.what + ": refused, and no bigger page found");
     else
