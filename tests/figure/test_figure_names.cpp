@@ -140,6 +140,27 @@ std::vector<Case> cases() {
                          construction_figure_3d(scene3, Camera3D(64, 48, orbit), {language})});
     }
   }
+  // Scenes of their own: five to eight objects of every size around the target, some overlapping.
+  std::mt19937 random(4848);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const char* kNames[] = {"red", "green", "blue", "yellow", "cyan", "magenta", "orange", "grey"};
+  for (int i = 0; i < 4; ++i) {
+    const int count = 5 + int(4.0 * unit(random));
+    Orbit2D orbit2;
+    orbit2.theta = glm::two_pi<double>() * unit(random);
+    Scene2D scene2;
+    for (int k = 0; k < count; ++k)
+      scene2.circles.push_back({{8.0 * unit(random) - 4.0, 8.0 * unit(random) - 4.0}, 0.1 + 0.9 * unit(random),
+                                Rgb8{std::uint8_t(40 * k), 120, std::uint8_t(255 - 30 * k)}, kNames[k]});
+    figures.push_back({"2D scene " + std::to_string(i), construction_figure_2d(scene2, Camera2D(128, orbit2), {})});
+    Orbit3D orbit3;
+    orbit3.theta = glm::two_pi<double>() * unit(random);
+    Scene3D scene3;
+    for (int k = 0; k < count; ++k)
+      scene3.spheres.push_back({{6.0 * unit(random) - 3.0, 6.0 * unit(random) - 3.0, 6.0 * unit(random) - 3.0},
+                                0.1 + 0.9 * unit(random), Rgb8{std::uint8_t(40 * k), 120, std::uint8_t(255 - 30 * k)}, kNames[k]});
+    figures.push_back({"3D scene " + std::to_string(i), construction_figure_3d(scene3, Camera3D(64, 48, orbit3), {})});
+  }
   std::vector<Case> all;
   for (const auto& [what, figure] : figures)
     for (const auto& size : kSizes) {
