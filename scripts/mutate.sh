@@ -223,7 +223,7 @@ mutant figure-tikz-short-arrow-over-pc src/figure/math_text.cpp 's/(char_count(r
 mutant figure-huge-disc-as-circle src/figure/figure_layout.cpp 's/^  constexpr double kHugeRadius = 1e4; /  constexpr double kHugeRadius = 1e300; /' "$FIGURE" "^figure:"
 mutant figure-export-five-rays src/session/figure_export.cpp 's/^  const figure::FigureOptions options{state.language, content.rays};/  const figure::FigureOptions options{state.language, 5};/' "$SESSION" "^session:.*Export figure"
 mutant figure-export-matrix-always src/session/figure_export.cpp 's/^  e.output.matrix = content.matrix;/  e.output.matrix = true;/' "$SESSION" "^session:.*Export figure"
-mutant figure-labels-over-objects src/figure/figure_layout.cpp 's/^constexpr double kOverObjectWeight = 20.0; /constexpr double kOverObjectWeight = 1.0; /' "$FIGURE" "^figure:"
+mutant figure-labels-over-objects src/figure/figure_layout.cpp 's/^constexpr double kOverObjectWeight = 150.0;/constexpr double kOverObjectWeight = 1.0;/' "$FIGURE" "^figure:"
 mutant figure-docs-slide-too-wide docs/figures.md 's/--pages --size 105x72mm --out cadres.tex/--pages --size 110x72mm --out cadres.tex/' "$FIGURE" "^figure: the docs"
 mutant figure-export-stale-wrote src/ui/panels.cpp 's/^    if (state.message_source == MessageSource::construction) state.message.clear();/    (void)0;/' "$UI" "^ui: ?Export figure"
 mutant figure-far-origin-unnamed src/figure/construction_figure.cpp 's/m.point == Point::target || m.point == Point::origin || m.point == Point::eye/m.point == Point::target || m.point == Point::eye/' "$FIGURE" "^figure:"
@@ -237,7 +237,7 @@ mutant figure-inset-under-labels src/figure/figure_layout.cpp 's/^    if (page_.
 mutant figure-inset-zoom-off-camera src/figure/figure_layout.cpp 's/^  const glm::dvec2 a = to(view.lo), b = to(view.hi), c/  const glm::dvec2 a = to(scene.lo), b = to(scene.lo), c/' "$FIGURE" "^figure:"
 mutant figure-inset-main-scale src/figure/figure_layout.cpp 's/^  inset.to_inset.scale = std::min(inner.width() \/ extent.x, inner.height() \/ extent.y);/  inset.to_inset.scale = page.to_page.scale;/' "$FIGURE" "^figure:"
 # A name by its own object (issue 48): nearer to another object, its leader without a dot, no refusal.
-mutant figure-name-nearer-another src/figure/figure_layout.cpp 's/^          nearest = j == own || box_to_disc(b, page_.discs\[j\]) >= mine + kNameMargin \* font_;/          nearest = true;/' "$FIGURE" "^figure: ?every name by its own object"
+mutant figure-name-nearer-another src/figure/figure_layout.cpp 's/^          nearest = j == own || box_to_disc(b, page_.discs\[j\]) >= std::max(mine + kNameMargin \* font_, 2.0 \* mine);/          nearest = true;/' "$FIGURE" "^figure: ?every name by its own object"
 mutant figure-name-leader-without-dot src/figure/tikz_file.cpp 's/^        t += "\\\\filldraw\[name dot\] "/        if (false) t += "\\\\filldraw[name dot] "/' "$FIGURE" "^figure: ?both writers draw the names"
 mutant figure-names-never-refused src/cli/figure_command.cpp 's/^  if (!figure::names_fit(drawn, frames, output)) {/  if (false) {/' "$FIGURE" "cli rejects: figure a page with no room for the names"
 mutant figure-inset-not-in-tikz src/figure/tikz_file.cpp 's/^  t += inset_commands(page.inset, at);/  (void)0;/' "$FIGURE" "^figure:"

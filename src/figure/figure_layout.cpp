@@ -21,11 +21,13 @@ constexpr double kCaptionSpacing = 1.45;    // a caption's lines: room for the a
 constexpr double kTitleScale = 1.3;         // the title's size, in font sizes
 constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar; keep every k-th
 constexpr double kTickHalfLength = 2.5;     // pt
-constexpr double kOverObjectWeight = 20.0;  // a label over an object costs more than one over a ray
+// A label over an object costs more than one over a ray; enough that the free labels, placed after the
+// names, go round the objects rather than over them.
+constexpr double kOverObjectWeight = 150.0;
 constexpr std::size_t kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (all objects drawn)
 // An object's name, in font sizes: its gaps to its own rim, the farthest it sits from it without a leader,
-// how much nearer than any other object its own must be (an eye does not weigh a point either way), and its
-// clearance to other objects and to the crosses, ticks and the camera.
+// how much nearer than any other object its own must be (an eye does not weigh a point either way; and at
+// most half as far), and its clearance to other objects and to the crosses, ticks and the camera.
 constexpr double kNameGaps[] = {0.15, 0.45};
 constexpr double kNameReach = 0.6;
 constexpr double kNameMargin = 0.3;
@@ -416,7 +418,7 @@ class Placer {
         if (mine > kNameReach * font_) continue;
         bool nearest = true;
         for (std::size_t j = 0; j < page_.discs.size() && nearest; ++j)
-          nearest = j == own || box_to_disc(b, page_.discs[j]) >= mine + kNameMargin * font_;
+          nearest = j == own || box_to_disc(b, page_.discs[j]) >= std::max(mine + kNameMargin * font_, 2.0 * mine);
         if (!nearest) continue;
         double cost = font_ * std::abs(turn) / glm::pi<double>() + 2.0 * font_ * g;
         const Box halo = grown(b, 0.8);
