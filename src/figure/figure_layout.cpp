@@ -318,7 +318,9 @@ struct Request {
   bool bold;
 };
 
-bool same(const Box& a, const Box& b) { return a.left == b.left && a.top == b.top && a.right == b.right && a.bottom == b.bottom; }
+bool same(const Box& a, const Box& b) {
+  return a.left == b.left && a.top == b.top && a.right == b.right && a.bottom == b.bottom;
+}
 
 bool is_solid(Stroke s) { return s == Stroke::camera || s == Stroke::arrow || s == Stroke::tick; }
 
@@ -410,7 +412,8 @@ class Placer {
         for (int push = 0; push < 4; ++push) {  // off the rim, along dir
           const double short_by = want - box_to_point(b, disc.centre);
           if (short_by <= 1e-9) break;
-          b = {b.left + short_by * dir.x, b.top + short_by * dir.y, b.right + short_by * dir.x, b.bottom + short_by * dir.y};
+          const glm::dvec2 by = short_by * dir;
+          b = {b.left + by.x, b.top + by.y, b.right + by.x, b.bottom + by.y};
         }
         if (box_to_point(b, disc.centre) < disc.radius + 0.5 * kNameGaps[0] * font_) continue;
         if (!free_for_name(b, own, false)) continue;
@@ -475,8 +478,12 @@ class Placer {
   // Whether the name of disc `own` still lies on nothing, its leader crossing nothing; if not, it is taken
   // away (its leader too), to be placed again.
   bool still_free(const std::string& markup, std::size_t own) {
+    const PageDisc& disc = page_.discs[own];
+    auto is_the_name = [&](const PlacedText& label) {  // its anchor on its disc: two objects may share a name
+      return label.markup == markup && glm::length(label.anchor - disc.centre) <= disc.radius + 1e-9;
+    };
     std::size_t k = 0;
-    while (k < page_.labels.size() && page_.labels[k].markup != markup) ++k;
+    while (k < page_.labels.size() && !is_the_name(page_.labels[k])) ++k;
     if (k == page_.labels.size()) return true;
     const PlacedText name = page_.labels[k];
     page_.labels.erase(page_.labels.begin() + std::ptrdiff_t(k));
@@ -601,7 +608,7 @@ std::vector<std::size_t> place_labels(const Frame& frame, PageFrame& page, doubl
     for (std::size_t i = 0; i < frame.objects.size(); ++i) {
       if (frame.objects[i].name.empty() || drawn[i] < 0 || keyed[i]) continue;
       const PageDisc& disc = page.discs[std::size_t(drawn[i])];
-      if (box_to_point(page.area, disc.centre) >= disc.radius) continue;  // only in the 20 pt kept around the area
+      if (box_to_point(page.area, disc.centre) >= disc.radius) continue;  // in the margin kept, out of view
       names.push_back({i, std::size_t(drawn[i]), escape_markup(frame.objects[i].name)});
     }
   std::vector<std::size_t> left = place_names(names, placer);
@@ -747,7 +754,8 @@ PageFrame drawing_with_key(const Frame& frame, const Box& area, double font) {
       entry.swatch_radius = swatch;
       const double x = narrowed.right + 0.5 * font;
       entry.swatch = {x + swatch, baseline - 0.35 * font};
-      entry.text = text_at(escape_markup(frame.objects[i].name), {x + 2.0 * swatch + 0.4 * font, baseline}, font, false);
+      const glm::dvec2 at(x + 2.0 * swatch + 0.4 * font, baseline);
+      entry.text = text_at(escape_markup(frame.objects[i].name), at, font, false);
       page.key.push_back(entry);
       baseline += line;
     }
@@ -778,7 +786,8 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
 
 bool names_fit(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output) {
   for (int index : frames)  // only the placed frames name their objects
-    if (!figure.frames[std::size_t(index)].objects_faded && !lay_out_frame(figure, index, output).names_fit) return false;
+    if (!figure.frames[std::size_t(index)].objects_faded && !lay_out_frame(figure, index, output).names_fit)
+      return false;
   return true;
 }
 

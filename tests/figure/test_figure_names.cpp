@@ -158,7 +158,8 @@ std::vector<Case> cases() {
     Scene3D scene3;
     for (int k = 0; k < count; ++k)
       scene3.spheres.push_back({{6.0 * unit(random) - 3.0, 6.0 * unit(random) - 3.0, 6.0 * unit(random) - 3.0},
-                                0.1 + 0.9 * unit(random), Rgb8{std::uint8_t(40 * k), 120, std::uint8_t(255 - 30 * k)}, kNames[k]});
+                                0.1 + 0.9 * unit(random), Rgb8{std::uint8_t(40 * k), 120, std::uint8_t(255 - 30 * k)},
+                                kNames[k]});
     figures.push_back({"3D scene " + std::to_string(i), construction_figure_3d(scene3, Camera3D(64, 48, orbit3), {})});
   }
   std::vector<Case> all;
@@ -175,11 +176,12 @@ std::vector<Case> cases() {
 
 constexpr double kReach = 1.0;  // font sizes: a name without a leader lies within this of its own object
 
-// What is wrong with the names of the case's placed frame (one line per bad name; empty: all good).
 struct Counts {
   int by_object = 0, on_leader = 0, keyed = 0, refused = 0;
 };
 
+// What is wrong with the names of the case's placed frame, one line per bad name added to `bad`; a refused
+// page is checked again at the size the refusal offers.
 void bad_names(const Case& c, Counts& counts, std::vector<std::string>& bad) {
   const Frame& frame = c.figure.frames.back();
   const PageFrame page = lay_out_frame(c.figure, int(c.figure.frames.size()) - 1, c.output);
