@@ -169,6 +169,27 @@ int run_figure(FigureOptions options) {
                   figure::kLeastDrawingShare * output.page.height_pt, std::max(room, 0.0), output.font_size_pt);
     throw std::invalid_argument(text);
   }
+  // Names that find no place by their object, on a leader or in the key: the smallest page that names them.
+  if (!figure::names_fit(drawn, frames, output)) {
+    const double per_unit = options.page_in_px ? 0.75 : 72.0 / 25.4;  // points per px, per mm
+    const char* unit = options.page_in_px ? "px" : "mm";
+    const figure::PageSize least = figure::smallest_page_for_names(
+        drawn, frames, output, per_unit, (options.page_in_px ? kMaxPx : kMaxMm) * per_unit);
+    auto size = [&](const figure::PageSize& page) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%gx%g%s", std::round(10.0 * page.width_pt / per_unit) / 10.0,
+                    std::round(10.0 * page.height_pt / per_unit) / 10.0, unit);
+      return std::string(text);
+    };
+    char font[32];
+    std::snprintf(font, sizeof font, "%g", output.font_size_pt);
+    const std::string works = least.width_pt > output.page.width_pt
+                                  ? "the smallest that works is " + size(least)
+                                  : std::string("no size of this shape works");
+    throw std::invalid_argument("--size: expected a page with room for every object's name (by its object, on a "
+                                "leader or in a key), got " + size(output.page) + " at --font-size " + font +
+                                ": " + works + ", or a smaller --font-size");
+  }
   const figure::WrittenFigure written = figure::write_figure(drawn, frames, output, options.out_path);
   for (std::size_t i = 0; i < written.files.size(); ++i)
     std::printf("wrote %s\n", written.files[i].c_str());

@@ -205,13 +205,38 @@ void draw_inset(cairo_t* cr, const PageFrame& page) {
 void draw_labels(cairo_t* cr, const PageFrame& page) {
   for (const PlacedText& label : page.labels)
     if (label.leader) {
-      cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-      cairo_set_line_width(cr, 0.4);
+      // A name's leader darker and thicker, so that an eye follows it to the dot on its object.
+      const double grey = label.dot ? 0.1 : 0.3;
+      cairo_set_source_rgb(cr, grey, grey, grey);
+      cairo_set_line_width(cr, label.dot ? kNameLeaderWidth : 0.4);
       line(cr, label.anchor, glm::dvec2(std::clamp(label.anchor.x, label.box.left, label.box.right),
                                         std::clamp(label.anchor.y, label.box.top, label.box.bottom)));
       cairo_stroke(cr);
+      if (label.dot) {  // white-ringed, to show on any colour
+        cairo_new_path(cr);
+        cairo_arc(cr, label.anchor.x, label.anchor.y, kNameDotRadius, 0.0, 2.0 * M_PI);
+        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+        cairo_fill_preserve(cr);
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_set_line_width(cr, 0.4);
+        cairo_stroke(cr);
+      }
     }
   for (const PlacedText& label : page.labels) draw_text(cr, label.markup, label.at, label.size, label.bold, true);
+}
+
+// The names that found no place in the drawing: a swatch of the object's colour and its name, beside it.
+void draw_key(cairo_t* cr, const PageFrame& page) {
+  for (const KeyEntry& entry : page.key) {
+    cairo_new_path(cr);
+    cairo_arc(cr, entry.swatch.x, entry.swatch.y, entry.swatch_radius, 0.0, 2.0 * M_PI);
+    cairo_set_source_rgba(cr, entry.colour.r / 255.0, entry.colour.g / 255.0, entry.colour.b / 255.0, 0.8);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, 0.5);
+    cairo_stroke(cr);
+    draw_text(cr, entry.text.markup, entry.text.at, entry.text.size, false, false);
+  }
 }
 
 void draw_matrix(cairo_t* cr, const PageFrame& page) {
@@ -253,6 +278,7 @@ int paint_frame(cairo_t* cr, const Figure& figure, int index, const FigureOutput
   draw_inset(cr, page);
   draw_labels(cr, page);
   cairo_restore(cr);
+  draw_key(cr, page);
   draw_matrix(cr, page);
   return int(page.discs.size());
 }

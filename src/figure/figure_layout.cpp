@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <limits>
 #include <memory>
 
@@ -20,8 +21,18 @@ constexpr double kCaptionSpacing = 1.45;    // a caption's lines: room for the a
 constexpr double kTitleScale = 1.3;         // the title's size, in font sizes
 constexpr double kMinTickGap = 2.0;         // pt: closer ticks merge into a bar; keep every k-th
 constexpr double kTickHalfLength = 2.5;     // pt
-constexpr double kOverObjectWeight = 20.0;  // a label over an object costs more than one over a ray
+// A label over an object costs more than one over a ray; enough that the free labels, placed after the
+// names, go round the objects rather than over them.
+constexpr double kOverObjectWeight = 150.0;
 constexpr std::size_t kObjectNamesUpTo = 40;  // beyond, names would cover the drawing (all objects drawn)
+// An object's name, in font sizes: its gaps to its own rim, the farthest it sits from it without a leader,
+// how much nearer than any other object its own must be (an eye does not weigh a point either way; and at
+// most half as far), and its clearance to other objects and to the crosses, ticks and the camera.
+constexpr double kNameGaps[] = {0.15, 0.45};
+constexpr double kNameReach = 0.6;
+constexpr double kNameMargin = 0.3;
+constexpr double kNameClearance = 0.25;
+constexpr int kLeaderGrid = 90;  // free places tried for a leader's name, per side of the drawing at most
 
 // ---- geometry --------------------------------------------------------------------------------------------
 
@@ -195,7 +206,9 @@ void add_segments(const Frame& frame, const PageTransform& to_page, PageFrame& p
 
 // The objects that reach the drawing area (the others would only weigh on the file and overflow TeX's
 // dimensions); a disc too big for the page's numbers becomes the polygon of its visible part.
-void add_discs(const Frame& frame, PageFrame& page) {
+// Returns, per object of the frame, its index in page.discs (-1: not drawn).
+std::vector<int> add_discs(const Frame& frame, PageFrame& page) {
+  std::vector<int> drawn(frame.objects.size(), -1);
   constexpr double kHugeRadius = 1e4;  // pt: beyond, the outline is a polygon
   const Box kept = grown(page.area, 20.0);
   const glm::dvec2 middle(0.5 * (kept.left + kept.right), 0.5 * (kept.top + kept.bottom));
@@ -219,8 +232,10 @@ void add_discs(const Frame& frame, PageFrame& page) {
       d.outline.push_back(d.outline.back() - 4.0 * half_diagonal * towards);
       d.outline.insert(d.outline.begin(), d.outline.front() - 4.0 * half_diagonal * towards);
     }
+    drawn[i] = int(page.discs.size());
     page.discs.push_back(std::move(d));
   }
+  return drawn;
 }
 
 // ---- the inset -----------------------------------------------------------------------------------------
@@ -303,13 +318,43 @@ struct Request {
   bool bold;
 };
 
+bool same(const Box& a, const Box& b) {
+  return a.left == b.left && a.top == b.top && a.right == b.right && a.bottom == b.bottom;
+}
+
+bool is_solid(Stroke s) { return s == Stroke::camera || s == Stroke::arrow || s == Stroke::tick; }
+
+double box_to_point(const Box& b, glm::dvec2 p) { return glm::length(p - nearest_point(b, p)); }
+
+// The gap between a box and a disc (0 when they meet).
+double box_to_disc(const Box& b, const PageDisc& d) { return std::max(0.0, box_to_point(b, d.centre) - d.radius); }
+
+double segment_to_point(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+  const glm::dvec2 d = b - a;
+  const double t = glm::dot(d, d) > 0.0 ? std::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0, 1.0) : 0.0;
+  return glm::length(a + t * d - p);
+}
+
+bool segments_cross(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, glm::dvec2 d) {
+  auto side = [](glm::dvec2 o, glm::dvec2 p, glm::dvec2 q) {
+    const glm::dvec2 u = p - o, v = q - o;
+    return u.x * v.y - u.y * v.x;
+  };
+  return side(a, b, c) * side(a, b, d) <= 0.0 && side(c, d, a) * side(c, d, b) <= 0.0;
+}
+
 class Placer {
  public:
   Placer(PageFrame& page, double font) : page_(page), font_(font) {
-    for (const Segment& s : page.segments) lines_.push_back({s.from, s.to});
+    for (const Segment& s : page.segments) {
+      lines_.push_back({s.from, s.to});
+      if (is_solid(s.stroke)) solid_.push_back({s.from, s.to});
+    }
     for (const PageMarker& m : page.markers) {  // the crosses
-      lines_.push_back({m.at - glm::dvec2(page.arm, 0.0), m.at + glm::dvec2(page.arm, 0.0)});
-      lines_.push_back({m.at - glm::dvec2(0.0, page.arm), m.at + glm::dvec2(0.0, page.arm)});
+      for (const glm::dvec2 arm : {glm::dvec2(page.arm, 0.0), glm::dvec2(0.0, page.arm)}) {
+        lines_.push_back({m.at - arm, m.at + arm});
+        solid_.push_back({m.at - arm, m.at + arm});
+      }
     }
   }
 
@@ -328,20 +373,182 @@ class Placer {
         const double ax = 0.5 * (1.0 - kDirections[d].x), ay = 0.5 * (1.0 + kDirections[d].y);
         const double h = e.above + e.below;
         const Box b{p.x - ax * e.width, p.y - ay * h, p.x - ax * e.width + e.width, p.y - ay * h + h};
-        const double cost = cost_of(b) + 3.0 * font_ * font_ * ring + 0.05 * d;
+        double cost = cost_of(b) + 3.0 * font_ * font_ * ring + 0.05 * d;
+        if (ring > 0) cost += crossing_names(request.anchor, nearest_point(b, request.anchor));
         if (cost < best_cost) {
           best_cost = cost;
           best = PlacedText{request.markup, {b.left, b.top + e.above}, font_, request.bold, b, ring > 0, request.anchor};
         }
       }
-    if (best.leader) lines_.push_back({request.anchor, nearest_point(best.box, request.anchor)});
+    if (best.leader) {
+      const std::pair<glm::dvec2, glm::dvec2> leader{request.anchor, nearest_point(best.box, request.anchor)};
+      lines_.push_back(leader);
+      solid_.push_back(leader);
+      leaders_.push_back(leader);
+    }
     page_.labels.push_back(best);
   }
 
+  // The places by disc `own` where its name lies on nothing else and nearer to it than to any other object,
+  // best first (cheapest: the fewest rays crossed, the upper right).
+  std::vector<PlacedText> places_by(const std::string& markup, std::size_t own) const {
+    const TextExtent e = measure_text(markup, font_, false);
+    const PageDisc& disc = page_.discs[own];
+    std::vector<std::pair<double, PlacedText>> found;
+    constexpr int kAngles = 24;
+    for (int g = 0; g < 2; ++g)
+      for (int k = 0; k < kAngles; ++k) {
+        // From the upper right (−45° on the page, y down) both ways round.
+        const double turn = (k % 2 ? -1.0 : 1.0) * ((k + 1) / 2) * glm::two_pi<double>() / kAngles;
+        const double angle = -0.25 * glm::pi<double>() + turn;
+        const glm::dvec2 dir(std::cos(angle), std::sin(angle));
+        const double want = disc.radius + kNameGaps[g] * font_;
+        const glm::dvec2 q = disc.centre + want * dir;
+        // The box on the far side of q, its nearest part towards the disc.
+        const double fx = 0.5 * (1.0 - std::clamp(1.4142 * dir.x, -1.0, 1.0));
+        const double fy = 0.5 * (1.0 - std::clamp(1.4142 * dir.y, -1.0, 1.0));
+        const double h = e.above + e.below;
+        Box b{q.x - fx * e.width, q.y - fy * h, q.x - fx * e.width + e.width, q.y - fy * h + h};
+        for (int push = 0; push < 4; ++push) {  // off the rim, along dir
+          const double short_by = want - box_to_point(b, disc.centre);
+          if (short_by <= 1e-9) break;
+          const glm::dvec2 by = short_by * dir;
+          b = {b.left + by.x, b.top + by.y, b.right + by.x, b.bottom + by.y};
+        }
+        if (box_to_point(b, disc.centre) < disc.radius + 0.5 * kNameGaps[0] * font_) continue;
+        if (!free_for_name(b, own, false)) continue;
+        const double mine = box_to_disc(b, disc);
+        if (mine > kNameReach * font_) continue;
+        bool nearest = true;
+        for (std::size_t j = 0; j < page_.discs.size() && nearest; ++j)
+          nearest = j == own || box_to_disc(b, page_.discs[j]) >= std::max(mine + kNameMargin * font_, 2.0 * mine);
+        if (!nearest) continue;
+        double cost = font_ * std::abs(turn) / glm::pi<double>() + 2.0 * font_ * g;
+        const Box halo = grown(b, 0.8);
+        for (const auto& [a, c] : lines_) cost += 4.0 * length_inside(a, c, halo);
+        found.push_back({cost, PlacedText{markup, {b.left, b.top + e.above}, font_, false, b, false, disc.centre}});
+      }
+    std::stable_sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<PlacedText> places;
+    for (auto& f : found) places.push_back(std::move(f.second));
+    return places;
+  }
+
+  // A free place anywhere in the drawing with a leader to a dot on disc `own` that crosses no other object,
+  // label or leader: the shortest leader, the fewest lines crossed. False when there is none.
+  bool place_on_leader(const std::string& markup, std::size_t own) {
+    const TextExtent e = measure_text(markup, font_, false);
+    const PageDisc& disc = page_.discs[own];
+    const Box& area = page_.area;
+    const double w = e.width, h = e.above + e.below;
+    const Box inner = grown(area, -1.0);
+    const double step_x = std::max(0.5 * font_, (area.width() - w) / kLeaderGrid);
+    const double step_y = std::max(0.5 * font_, (area.height() - h) / kLeaderGrid);
+    double best_cost = std::numeric_limits<double>::infinity();
+    PlacedText best;
+    for (double top = area.top; top + h <= area.bottom; top += step_y)
+      for (double left = area.left; left + w <= area.right; left += step_x) {
+        const Box b{left, top, left + w, top + h};
+        const glm::dvec2 towards = nearest_point(b, disc.centre) - disc.centre;
+        const double far = glm::length(towards);
+        if (far <= 0.0) continue;
+        // The dot just inside the rim facing the box (at the centre of a small disc), in view.
+        const double in = std::max(0.0, disc.radius - std::max(1.5, 0.25 * disc.radius));
+        const glm::dvec2 dot = disc.centre + std::min(in, far) * towards / far;
+        if (!inside(inner, dot)) continue;
+        const glm::dvec2 end = nearest_point(b, dot);
+        const double length = glm::length(end - dot);
+        if (length >= best_cost) continue;  // the cost is at least the leader's length
+        if (!free_for_name(b, own, true) || !clear_leader(dot, end, own)) continue;
+        double cost = length;
+        for (const auto& [a, c] : lines_) cost += segments_cross(dot, end, a, c) ? 2.0 * font_ : 0.0;
+        const Box halo = grown(b, 0.8);
+        for (const auto& [a, c] : lines_) cost += 4.0 * length_inside(a, c, halo);
+        if (cost < best_cost) {
+          best_cost = cost;
+          best = PlacedText{markup, {b.left, b.top + e.above}, font_, false, b, true, dot, true};
+        }
+      }
+    if (!std::isfinite(best_cost)) return false;
+    add_leader(best.anchor, nearest_point(best.box, best.anchor));
+    add(best);
+    return true;
+  }
+
+  // Whether the name of disc `own` still lies on nothing, its leader crossing nothing; if not, it is taken
+  // away (its leader too), to be placed again.
+  bool still_free(const std::string& markup, std::size_t own) {
+    const PageDisc& disc = page_.discs[own];
+    auto is_the_name = [&](const PlacedText& label) {  // its anchor on its disc: two objects may share a name
+      return label.markup == markup && glm::length(label.anchor - disc.centre) <= disc.radius + 1e-9;
+    };
+    std::size_t k = 0;
+    while (k < page_.labels.size() && !is_the_name(page_.labels[k])) ++k;
+    if (k == page_.labels.size()) return true;
+    const PlacedText name = page_.labels[k];
+    page_.labels.erase(page_.labels.begin() + std::ptrdiff_t(k));
+    names_.erase(std::find_if(names_.begin(), names_.end(), [&](const Box& b) { return same(b, name.box); }));
+    const std::pair<glm::dvec2, glm::dvec2> leader{name.anchor, nearest_point(name.box, name.anchor)};
+    if (name.leader)
+      for (auto* lines : {&lines_, &solid_, &leaders_, &name_leaders_})
+        lines->erase(std::find(lines->begin(), lines->end(), leader));
+    if (free_for_name(name.box, own, name.leader) && (!name.leader || clear_leader(leader.first, leader.second, own))) {
+      if (name.leader) add_leader(leader.first, leader.second);
+      add(name);
+      return true;
+    }
+    return false;
+  }
+
+  void add(const PlacedText& name) {
+    page_.labels.push_back(name);
+    names_.push_back(name.box);
+  }
+
  private:
+  void add_leader(glm::dvec2 a, glm::dvec2 b) {  // a name's
+    for (auto* lines : {&lines_, &solid_, &leaders_, &name_leaders_}) lines->push_back({a, b});
+  }
+
+  // Nothing but rays and construction lines under a name's box: inside the drawing, off the inset, the other
+  // labels, the other objects (and its own, `own_too`), the camera, the crosses and the leaders.
+  bool free_for_name(const Box& box, std::size_t own, bool own_too) const {
+    const Box& area = page_.area;
+    if (box.left < area.left || box.right > area.right || box.top < area.top || box.bottom > area.bottom) return false;
+    if (page_.inset.shown() && overlap_area(grown(page_.inset.box, 0.3 * font_), box) > 0.0) return false;
+    for (const PlacedText& other : page_.labels)
+      if (overlap_area(grown(other.box, 0.3 * font_), box) > 0.0) return false;
+    for (std::size_t j = 0; j < page_.discs.size(); ++j)
+      if ((j != own || own_too) && box_to_disc(box, page_.discs[j]) < kNameClearance * font_) return false;
+    const Box halo = grown(box, 0.8);
+    for (const auto& [a, b] : solid_)
+      if (length_inside(a, b, halo) > 0.0) return false;
+    return true;
+  }
+
+  // A leader a reader can follow: over no other object, label, leader, cross or camera line.
+  bool clear_leader(glm::dvec2 dot, glm::dvec2 end, std::size_t own) const {
+    for (std::size_t j = 0; j < page_.discs.size(); ++j)
+      if (j != own && segment_to_point(dot, end, page_.discs[j].centre) < page_.discs[j].radius + 1.0) return false;
+    for (const PlacedText& other : page_.labels)
+      if (length_inside(dot, end, grown(other.box, 1.0)) > 0.0) return false;
+    for (const auto& [a, b] : solid_)  // the leaders, the camera, the ticks, the crosses
+      if (segments_cross(dot, end, a, b)) return false;
+    return true;
+  }
+
+  // A label's leader over a name or across a leader: a reader would follow the wrong one.
+  double crossing_names(glm::dvec2 a, glm::dvec2 b) const {
+    double cost = 0.0;
+    for (const Box& name : names_) cost += length_inside(a, b, grown(name, 1.0)) > 0.0 ? 1e6 : 0.0;
+    for (const auto& [c, d] : name_leaders_) cost += segments_cross(a, b, c, d) ? 1e6 : 0.0;
+    return cost;
+  }
+
   double cost_of(const Box& box) const {
     const Box halo = grown(box, 0.8);
     double cost = 0.0;
+    for (const auto& [a, b] : name_leaders_) cost += 1e4 * length_inside(a, b, halo);  // never hidden
     // A clearance of a third of the font size: LaTeX's fonts (TikZ) set a label a little wider than DejaVu.
     for (const PlacedText& other : page_.labels) cost += 1000.0 * overlap_area(grown(other.box, 0.3 * font_), box);
     for (const auto& [a, b] : lines_) cost += 4.0 * font_ * length_inside(a, b, halo);
@@ -357,25 +564,68 @@ class Placer {
 
   PageFrame& page_;
   double font_;
-  std::vector<std::pair<glm::dvec2, glm::dvec2>> lines_;
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> lines_;    // everything drawn: rays cost, the rest forbids
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> solid_;    // the camera, the ticks, the crosses, the leaders
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> leaders_;       // every label's
+  std::vector<std::pair<glm::dvec2, glm::dvec2>> name_leaders_;  // the names'
+  std::vector<Box> names_;  // the objects' names placed in the drawing
 };
 
+struct Name {
+  std::size_t object, disc;
+  std::string markup;
+};
 
-void place_labels(const Frame& frame, PageFrame& page, double font) {
+// The objects' names, the most hemmed in first: by the object; then, for those with no such place, on a
+// leader; the objects left over are returned (for the key).
+std::vector<std::size_t> place_names(const std::vector<Name>& names, Placer& placer) {
+  std::vector<std::pair<std::size_t, const Name*>> order;
+  for (const Name& name : names) order.push_back({placer.places_by(name.markup, name.disc).size(), &name});
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const Name*> away;
+  for (const auto& [count, name] : order) {
+    const std::vector<PlacedText> places = placer.places_by(name->markup, name->disc);
+    if (places.empty())
+      away.push_back(name);
+    else
+      placer.add(places.front());
+  }
+  std::vector<std::size_t> left;
+  for (const Name* name : away)
+    if (!placer.place_on_leader(name->markup, name->disc)) left.push_back(name->object);
+  return left;
+}
+
+// Places the labels; returns the objects whose names found no place in the drawing.
+std::vector<std::size_t> place_labels(const Frame& frame, PageFrame& page, double font, const std::vector<int>& drawn,
+                                      const std::vector<bool>& keyed) {
   Placer placer(page, font);
-  std::vector<Request> requests;
   for (const Marker& m : frame.markers)  // the points first: they matter most
-    if (!m.label.empty()) requests.push_back({m.label, page.to_page(m.at), true});
-  for (const Label& l : frame.labels) requests.push_back({l.text, page.to_page(l.at), false});
+    if (!m.label.empty() && inside(page.area, page.to_page(m.at))) placer.place({m.label, page.to_page(m.at), true});
+  // Then the names, which have the fewest places (by their own object), before the free labels.
+  std::vector<Name> names;
   if (!frame.objects_faded && frame.objects.size() <= kObjectNamesUpTo)
-    for (const Disc& disc : frame.objects) {
-      if (disc.name.empty()) continue;
-      // An object's name is anchored at its rim towards the upper right, where the disc leaves room.
-      const glm::dvec2 rim = page.to_page(disc.centre) + 0.7071 * page.to_page.scale * disc.radius * glm::dvec2(1.0, -1.0);
-      requests.push_back({escape_markup(disc.name), rim, false});
+    for (std::size_t i = 0; i < frame.objects.size(); ++i) {
+      if (frame.objects[i].name.empty() || drawn[i] < 0 || keyed[i]) continue;
+      const PageDisc& disc = page.discs[std::size_t(drawn[i])];
+      if (box_to_point(page.area, disc.centre) >= disc.radius) continue;  // in the margin kept, out of view
+      names.push_back({i, std::size_t(drawn[i]), escape_markup(frame.objects[i].name)});
     }
-  for (const Request& r : requests)
-    if (inside(page.area, r.anchor)) placer.place(r);
+  std::vector<std::size_t> left = place_names(names, placer);
+  for (const Label& l : frame.labels)
+    if (inside(page.area, page.to_page(l.at))) placer.place({l.text, page.to_page(l.at), false});
+  // A free label that found no other place than over a name: the name moves, around the free labels.
+  for (const Name& name : names) {
+    if (std::find(left.begin(), left.end(), name.object) != left.end()) continue;
+    if (placer.still_free(name.markup, name.disc)) continue;
+    const std::vector<PlacedText> places = placer.places_by(name.markup, name.disc);
+    if (!places.empty())
+      placer.add(places.front());
+    else if (!placer.place_on_leader(name.markup, name.disc))
+      left.push_back(name.object);
+  }
+  std::sort(left.begin(), left.end());
+  return left;
 }
 
 // ---- the matrix -----------------------------------------------------------------------------------------
@@ -447,22 +697,78 @@ double room_for_drawing_pt(const Figure& figure, const FigureOutput& output) {
   return bands_of(figure, output).room;
 }
 
-PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& output) {
-  const Frame& frame = figure.frames[std::size_t(index)];
-  const Bands bands = bands_of(figure, output);
+namespace {
+
+// The drawing of a frame in `area`: its objects, lines, points, inset and labels, the names of the objects
+// `keyed` left out; `left` gets the objects whose names found no place.
+PageFrame drawing_of(const Frame& frame, const Box& area, double font, const std::vector<bool>& keyed,
+                     std::vector<std::size_t>& left) {
   PageFrame page;
-  page.area = bands.area;
-  page.font_size = bands.font;
-  page.arm = 0.35 * bands.font;
-  page.to_page = transform_of(frame, bands.area);
+  page.area = area;
+  page.font_size = font;
+  page.arm = 0.35 * font;
+  page.to_page = transform_of(frame, area);
   page.objects_faded = frame.objects_faded;
-  add_discs(frame, page);
+  const std::vector<int> drawn = add_discs(frame, page);
   add_segments(frame, page.to_page, page);
   const Box kept = grown(page.area, 20.0);
   for (const Marker& m : frame.markers)  // a point far out of view is left out (its label too)
     if (inside(kept, page.to_page(m.at))) page.markers.push_back({m.point, page.to_page(m.at)});
   add_inset(frame, page);
-  place_labels(frame, page, bands.font);
+  left = place_labels(frame, page, font, drawn, keyed);
+  return page;
+}
+
+// The names that found no place in the drawing go to a key in a column at the drawing's right, which the
+// drawing gives up; the layout is made again until every name is in the drawing or in the key.
+PageFrame drawing_with_key(const Frame& frame, const Box& area, double font) {
+  std::vector<bool> keyed(frame.objects.size(), false);
+  std::vector<std::size_t> left;
+  PageFrame page = drawing_of(frame, area, font, keyed, left);
+  while (!left.empty()) {
+    for (std::size_t i : left) keyed[i] = true;
+    const double swatch = 0.35 * font;
+    double widest = 0.0, line = kLineSpacing * font;
+    std::vector<std::size_t> entries;
+    for (std::size_t i = 0; i < frame.objects.size(); ++i)
+      if (keyed[i]) {
+        entries.push_back(i);
+        const TextExtent e = measure_text(escape_markup(frame.objects[i].name), font);
+        widest = std::max(widest, e.width);
+        line = std::max(line, e.above + e.below + 0.1 * font);  // the font's whole height: no two entries touch
+      }
+    const double width = 0.5 * font + 2.0 * swatch + 0.4 * font + widest;
+    Box narrowed = area;
+    narrowed.right -= width;
+    // A drawing narrowed below half, or a key taller than the drawing: no room for the names.
+    const bool room = narrowed.width() >= 0.5 * area.width() && entries.size() * line <= area.height();
+    if (!room) {
+      page.names_fit = false;
+      return page;
+    }
+    page = drawing_of(frame, narrowed, font, keyed, left);
+    double baseline = area.top + font;  // below the top by about the font's ascent
+    for (std::size_t i : entries) {
+      KeyEntry entry;
+      entry.colour = frame.objects[i].colour;
+      entry.swatch_radius = swatch;
+      const double x = narrowed.right + 0.5 * font;
+      entry.swatch = {x + swatch, baseline - 0.35 * font};
+      const glm::dvec2 at(x + 2.0 * swatch + 0.4 * font, baseline);
+      entry.text = text_at(escape_markup(frame.objects[i].name), at, font, false);
+      page.key.push_back(entry);
+      baseline += line;
+    }
+  }
+  return page;
+}
+
+}  // namespace
+
+PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& output) {
+  const Frame& frame = figure.frames[std::size_t(index)];
+  const Bands bands = bands_of(figure, output);
+  PageFrame page = drawing_with_key(frame, bands.area, bands.font);
 
   if (output.title)
     page.title = (text_at(frame.title, {bands.margin, bands.margin + kTitleScale * bands.font},
@@ -476,6 +782,29 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
   }
   if (output.matrix) lay_out_matrix(frame, bands, figure.language, page);
   return page;
+}
+
+bool names_fit(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output) {
+  for (int index : frames)  // only the placed frames name their objects
+    if (!figure.frames[std::size_t(index)].objects_faded && !lay_out_frame(figure, index, output).names_fit)
+      return false;
+  return true;
+}
+
+PageSize smallest_page_for_names(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
+                                 double unit_pt, double largest_width_pt) {
+  const double ratio = output.page.height_pt / output.page.width_pt;
+  FigureOutput bigger = output;
+  // Whole units (the size the user types), 1 % at a time beyond a hundred.
+  for (double units = std::floor(output.page.width_pt / unit_pt + 1e-9) + 1.0; units * unit_pt <= largest_width_pt;
+       units += std::max(1.0, std::floor(0.01 * units))) {
+    bigger.page.width_pt = units * unit_pt;
+    bigger.page.height_pt = std::ceil(units * ratio - 1e-9) * unit_pt;
+    if (room_for_drawing_pt(figure, bigger) >= kLeastDrawingShare * bigger.page.height_pt &&
+        names_fit(figure, frames, bigger))
+      return bigger.page;
+  }
+  return output.page;
 }
 
 }  // namespace raycam::figure

@@ -1,8 +1,10 @@
 // A frame laid out on its page, in page points (y down), before any drawing: the bands (title, caption,
 // drawing area, matrix), the plane's primitives moved to the page, the pixel ticks thinned to 2 pt apart, and
 // every label placed where it hits no other label, arrow, ray, tick, cross or disc (a greedy choice among
-// positions around its anchor, farther with a leader line when nothing near is free). The cairo painter and
-// the TikZ writer both draw this, so every format has the same layout.
+// positions around its anchor, farther with a leader line when nothing near is free). An object's name sits
+// by its own object, on no other and nearer to its own than to any other; else on a leader from a free place
+// to a dot on the object; else in a key beside the drawing (place_names). The cairo painter and the TikZ
+// writer both draw this, so every format has the same layout.
 #pragma once
 
 #include <string>
@@ -62,6 +64,19 @@ struct PlacedText {
   Box box;                  // the font's extent (ascent to descent, the arrows over vectors, the scripts)
   bool leader = false;      // a thin line from `anchor` to the box: placed away from its point
   glm::dvec2 anchor{0.0};   // the point the label names
+  bool dot = false;         // an object's name on a leader: a darker line ending in a dot on the object
+};
+
+inline constexpr double kNameLeaderWidth = 0.7;  // pt: a name's leader, and the dot it ends in
+inline constexpr double kNameDotRadius = 1.4;
+
+// An object's name that found no place by its object nor on a leader: a swatch of its colour and the name,
+// in a column beside the drawing.
+struct KeyEntry {
+  PlacedText text;
+  glm::dvec2 swatch{0.0};
+  double swatch_radius = 0.0;
+  Rgb8 colour;
 };
 
 struct PageDisc {
@@ -116,6 +131,8 @@ struct PageFrame {
   double font_size = 9.0;
   double arm = 3.0;  // a cross's half length
   PageInset inset;
+  std::vector<KeyEntry> key;  // empty: every name is in the drawing
+  bool names_fit = true;      // false: even the key has no room (raycam-cli figure refuses the page)
 };
 
 // The page layout of frame `index` of `figure`. The bands are the same for every frame of the figure, so
@@ -127,6 +144,14 @@ PageFrame lay_out_frame(const Figure& figure, int index, const FigureOutput& out
 // over it (raycam-cli figure refuses such a page).
 inline constexpr double kLeastDrawingShare = 0.2;
 double room_for_drawing_pt(const Figure& figure, const FigureOutput& output);
+
+// Whether every frame of `frames` names all its objects in view (by the object, on a leader or in the key).
+bool names_fit(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output);
+// The smallest page bigger than `output`'s, of the same proportions, in whole `unit_pt` (a mm, a px), on which
+// the names fit and the drawing has its room (room_for_drawing_pt); the page itself when none up to
+// `largest_width_pt` does.
+PageSize smallest_page_for_names(const Figure& figure, const std::vector<int>& frames, const FigureOutput& output,
+                                 double unit_pt, double largest_width_pt);
 
 // The width and the font's height (ascent, descent: a PDF reader's word box) above and below the baseline of a markup string set at `size` points.
 struct TextExtent {

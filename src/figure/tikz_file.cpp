@@ -49,7 +49,8 @@ const char* style_of(Stroke stroke) {
 }
 
 // The styles, the same strokes as cairo's drawing (figure_files.cpp).
-const char* const kStyles =
+std::string styles() {
+  return std::string(
     "  camera/.style={line width=1.2pt},\n"
     "  tick/.style={line width=0.5pt},\n"
     "  vector/.style={line width=0.8pt, -{Stealth[length=5pt]}},\n"
@@ -58,9 +59,12 @@ const char* const kStyles =
     "  ray/.style={line width=0.6pt, color={rgb,255:red,204;green,77;blue,13}},\n"
     "  cross/.style={line width=0.8pt},\n"
     "  leader/.style={line width=0.4pt, darkgray},\n"
+    "  name leader/.style={line width=") + number(kNameLeaderWidth) + "pt, black!90},\n"
+    "  name dot/.style={fill=black!90, draw=white, line width=0.4pt},\n"
     "  point label/.style={anchor=base west, inner sep=0pt, outer sep=0pt, fill=white, fill opacity=0.8, "
     "text opacity=1},\n"
     "  plain text/.style={anchor=base west, inner sep=0pt, outer sep=0pt},\n";
+}
 
 std::string colour(const Rgb8& c) {
   return "{rgb,255:red," + std::to_string(c.r) + ";green," + std::to_string(c.g) + ";blue," + std::to_string(c.b) + "}";
@@ -126,13 +130,20 @@ std::string frame_commands(const Figure& figure, int index, const FigureOutput& 
   }
   t += inset_commands(page.inset, at);
   for (const PlacedText& label : page.labels)
-    if (label.leader)
-      t += "\\draw[leader] " + at(label.anchor) + " -- " +
+    if (label.leader) {
+      t += "\\draw[" + std::string(label.dot ? "name leader" : "leader") + "] " + at(label.anchor) + " -- " +
            at({std::clamp(label.anchor.x, label.box.left, label.box.right),
                std::clamp(label.anchor.y, label.box.top, label.box.bottom)}) + ";\n";
+      if (label.dot)
+        t += "\\filldraw[name dot] " + at(label.anchor) + " circle[radius=" + number(kNameDotRadius) + "pt];\n";
+    }
   for (const PlacedText& label : page.labels)
     t += "\\node[point label, " + font(label.size, label.bold) + "] at " + at(label.at) + " {" + latex_of(label.markup) + "};\n";
   t += "\\end{scope}\n";
+  for (const KeyEntry& entry : page.key)  // the names that found no place in the drawing, beside it
+    t += "\\filldraw[line width=0.5pt, fill=" + colour(entry.colour) + ", fill opacity=0.8] " + at(entry.swatch) +
+         " circle[radius=" + number(entry.swatch_radius) + "pt];\n\\node[plain text, " + font(entry.text.size) + "] at " +
+         at(entry.text.at) + " {" + latex_of(entry.text.markup) + "};\n";
   if (!page.cells.empty()) {  // the matrix: pmatrix (amsmath), centred on the rows' band
     std::string rows;
     const int n = frame.matrix_size;
@@ -151,7 +162,7 @@ std::string frame_commands(const Figure& figure, int index, const FigureOutput& 
 }
 
 std::string picture(const std::string& body, const FigureOutput& output) {
-  return "\\begin{tikzpicture}[scale=1,\n" + std::string(kStyles) + "]\n\\useasboundingbox (0,0) rectangle " +
+  return "\\begin{tikzpicture}[scale=1,\n" + styles() + "]\n\\useasboundingbox (0,0) rectangle " +
          Coordinates{0.0}({output.page.width_pt, -output.page.height_pt}) + ";\n" + body + "\\end{tikzpicture}\n";
 }
 
