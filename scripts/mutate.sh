@@ -369,6 +369,17 @@ mutant disc-order-skips-a-shared-majority src/ui/overhead_view.cpp 's/^    if (n
 mutant battery-asks-two-res-by-default src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    (void)two_res;/' "$CHECK" "^check: ?(the default battery asks one|a program that reads res as one number)"
 mutant two-res-flag-ignored src/check/battery.cpp 's/^    if (!two_res) file.camera.res_rows.reset();$/    file.camera.res_rows.reset();/' "$CHECK" "^check: ?(the flag --two-res|with --two-res)"
 mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", two_res, other.two_res)/differs("two_res", two_res, two_res)/' "$CHECK" "$SHARDS"
+# --- #48 docs that stay true: figures made by one script, long work shows progress ---
+# The committed figures are what scripts/docs_figures.sh makes from the scenes as they are: a scene edited
+# without the figures remade fails the docs test.
+mutant docs-figures-scene-edited scenes/classic2d.json 's/"theta": 70/"theta": 75/' "raycam-cli" "^docs: the figures in docs/figures/"
+PROGRESS="^(check: ?progress|cli: bench (speed|accuracy) (shows|--quiet|--benchmark_filter))"
+mutant progress-share-counts-the-step-starting src/check/progress_line.cpp 's/std::to_string(done \* 100 \/ total)/std::to_string((done + 1) * 100 \/ total)/' "$CHECK" "$PROGRESS"
+mutant progress-in-place-in-a-log src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(true)/' "$CHECK" "$PROGRESS"
+mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) return;$/  (void)quiet_;/' "$CHECK" "$PROGRESS"
+mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name);/if (line_) line_->start(current_ = name);/' "raycam-cli" "$PROGRESS"
+mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return names_.size();/return names_.size();/' "raycam-cli" "$PROGRESS"
+mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size();/std::size_t steps = 0;/' "raycam-cli" "$PROGRESS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
