@@ -10,20 +10,23 @@
 
 namespace raycam::check {
 
-std::string progress_text(const std::string& command, std::size_t done, std::size_t total, const std::string& what,
+std::string progress_text(const std::string& command, const Progress& progress, const std::string& what,
                           double elapsed_seconds) {
-  std::string text = command + ": " + std::to_string(done + 1);
-  if (total > 0) text += "/" + std::to_string(total);
+  const bool known = progress.steps > 0 && progress.work > 0;
+  std::string text = command + ": " + std::to_string(progress.step + 1);
+  if (known) text += "/" + std::to_string(progress.steps);
   if (!what.empty()) text += " (" + what + ")";
-  if (total == 0) return text;
-  text += ", " + std::to_string(done * 100 / total) + " %";
-  const std::string left = time_left(Language::en, done, total, elapsed_seconds);
+  if (!known) return text;
+  // Work past the total (a count that was off) never reads as more than 100 %.
+  const std::size_t done = std::min(progress.done, progress.work);
+  text += ", " + std::to_string(done * 100 / progress.work) + " %";
+  const std::string left = time_left(Language::en, done, progress.work, elapsed_seconds);
   return left.empty() ? text : text + ", " + left;
 }
 
-ProgressLine::ProgressLine(std::string command, std::size_t total, bool quiet, std::FILE* out)
+ProgressLine::ProgressLine(std::string command, std::size_t steps, bool quiet, std::FILE* out, std::size_t work)
     : command_(std::move(command)),
-      total_(total),
+      progress_{0, steps, 0, work > 0 ? work : steps},
       quiet_(quiet),
       terminal_(isatty(fileno(out)) != 0),
       out_(out),
@@ -47,22 +50,24 @@ void ProgressLine::show(const std::string& line) {
   std::fflush(out_);
 }
 
-void ProgressLine::start(const std::string& what) {
+void ProgressLine::start(const std::string& what, std::size_t work) {
   if (quiet_) return;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
-  // A step past the total (a count that was off) is still shown, never as more than 100 %.
-  const std::size_t total = started_ < total_ ? total_ : 0;
-  std::string text = progress_text(command_, started_, total, what, elapsed);
+  // A step past the total (a count that was off) is still shown, without a total.
+  Progress now = progress_;
+  if (now.step >= now.steps) now.steps = 0;
+  std::string text = progress_text(command_, now, what, elapsed);
   // On a terminal, within its width (a line that wraps cannot be rewritten from its start): `what` loses
   // its beginning first, so the count and the time left stay.
   const std::size_t width = terminal_ ? terminal_width(out_) : 0;
   if (width > 1 && text.size() > width - 1) {
     const std::size_t over = text.size() - (width - 1) + 3;
-    text = progress_text(command_, started_, total, over < what.size() ? "..." + what.substr(over) : "", elapsed);
+    text = progress_text(command_, now, over < what.size() ? "..." + what.substr(over) : "", elapsed);
     text.resize(std::min(text.size(), width - 1));
   }
   show(text);
-  ++started_;
+  ++progress_.step;
+  progress_.done += work;
 }
 
 void ProgressLine::clear() {
@@ -76,7 +81,7 @@ void ProgressLine::finish() {
   if (quiet_) return;
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
   char line[160];
-  std::snprintf(line, sizeof line, "%s: %zu steps in %.0f s", command_.c_str(), started_, elapsed);
+  std::snprintf(line, sizeof line, "%s: %zu steps in %.0f s", command_.c_str(), progress_.step, elapsed);
   show(line);
   if (terminal_) std::fprintf(out_, "\n");
   shown_width_ = 0;
