@@ -380,7 +380,7 @@ mutant progress-in-place-in-a-log src/check/progress_line.cpp 's/terminal_(isatt
 mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) return;$/  (void)quiet_;/' "$CHECK" "$PROGRESS"
 mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name);/if (line_) line_->start(current_ = name);/' "raycam-cli" "$PROGRESS"
 mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return names_.size();/return names_.size();/' "raycam-cli" "$PROGRESS"
-mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size();/std::size_t steps = 0;/' "raycam-cli" "$PROGRESS"
+mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
