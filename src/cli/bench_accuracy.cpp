@@ -119,6 +119,8 @@ struct StandardScene {
   Orbit2D orbit2d;
   Orbit3D orbit3d;
   int size = 0;
+  // For the progress line's estimate: pixels cast, and the reference's samples a pixel (2D: the exact bar).
+  std::size_t pixels = 0, reference_samples = 1;
   CoverageImage reference;
 };
 
@@ -152,11 +154,11 @@ void with_camera(const StandardScene& s, Placement placement, Function&& functio
 }
 
 // The exact reference: 2D, the exact bar (analytic footprints); 3D, long double, stable, camera-relative.
-CoverageImage reference_image(const Camera2D& camera, const Scene2D& scene, bool) {
+CoverageImage reference_image(const Camera2D& camera, const Scene2D& scene, std::size_t) {
   return exact_bar_image(exact_bar(camera, scene), scene);
 }
-CoverageImage reference_image(const Camera3D& camera, const Scene3D& scene, bool quick) {
-  return reference_cast(camera, scene, ReferenceOptions{Scalar::extended, IntersectFormula::stable, quick ? 256 : 1024, true});
+CoverageImage reference_image(const Camera3D& camera, const Scene3D& scene, std::size_t samples) {
+  return reference_cast(camera, scene, ReferenceOptions{Scalar::extended, IntersectFormula::stable, int(samples), true});
 }
 
 std::vector<StandardScene> standard_scenes(bool quick) {
@@ -166,6 +168,7 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   StandardScene s;
   s.dimension = 2;
   s.size = size2d;
+  s.pixels = std::size_t(size2d);
   s.name = "2d-classic";
   s.scene2d = cluster_2d({0, 0});
   s.orbit2d = Orbit2D{{0, 0}, 6.0, glm::half_pi<double>(), 1.5};
@@ -180,6 +183,8 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   StandardScene t;
   t.dimension = 3;
   t.size = size3d;
+  t.pixels = std::size_t(size3d) * std::size_t(size3d);
+  t.reference_samples = quick ? 256 : 1024;
   t.name = "3d-classic";
   t.scene3d = cluster_3d({0, 0, 0});
   t.orbit3d = Orbit3D{{0, 0, 0}, 8.0, 0.5, 1.0, 2.0};
@@ -194,9 +199,9 @@ std::vector<StandardScene> standard_scenes(bool quick) {
   return scenes;
 }
 
-void compute_reference(StandardScene& scene, bool quick) {
+void compute_reference(StandardScene& scene) {
   with_camera(scene, Placement::orbit, [&](const auto& camera, const auto& objects) {
-    scene.reference = reference_image(camera, objects, quick);
+    scene.reference = reference_image(camera, objects, scene.reference_samples);
   });
 }
 
@@ -343,14 +348,11 @@ Point measure(const BenchOptions& o, const StandardScene& s, const Setting& sett
 // counts three (3d-classic at 96², 64 samples: 122 ms against 41 ms in double, 29 ms in float). The 3D
 // references (1024 samples a pixel, once) are the first seconds of a run; counted alike, their pace
 // promised minutes to a 20 s sweep.
-std::size_t pixels_of(const StandardScene& s) { return std::size_t(s.size) * std::size_t(s.dimension == 3 ? s.size : 1); }
-std::size_t reference_work(const StandardScene& s, bool quick) {
-  return pixels_of(s) * (s.dimension == 2 ? 1 : quick ? 256 : 1024) * 3;  // 2D: the exact bar, in long double
-}
+std::size_t reference_work(const StandardScene& s) { return s.pixels * s.reference_samples * 3; }  // long double
 std::size_t setting_work(const BenchOptions& o, const StandardScene& s, const Setting& setting) {
   const bool knobs = setting.timed == Timed::knobs;
   const bool extended = setting.timed == Timed::exact || (knobs && setting.scalar == Scalar::extended);
-  return pixels_of(s) * std::size_t(knobs ? setting.spp : 1) * (extended ? 3 : 1) * std::size_t(o.repeats);
+  return s.pixels * std::size_t(knobs ? setting.spp : 1) * (extended ? 3 : 1) * std::size_t(o.repeats);
 }
 
 // Every scene's reference, then every setting timed on every scene, each announced as it starts.
@@ -360,13 +362,13 @@ std::vector<Point> sweep(const BenchOptions& o, std::vector<StandardScene>& scen
   for (const StandardScene& s : scenes) {
     settings.push_back(settings_of(o, s));
     steps += settings.back().size();
-    work += reference_work(s, o.quick);
+    work += reference_work(s);
     for (const Setting& setting : settings.back()) work += setting_work(o, s, setting);
   }
   check::ProgressLine progress("bench accuracy", steps, o.quiet, stderr, work);
   for (StandardScene& s : scenes) {
-    progress.start(s.name + " reference", reference_work(s, o.quick));
-    compute_reference(s, o.quick);
+    progress.start(s.name + " reference", reference_work(s));
+    compute_reference(s);
   }
   std::vector<Point> points;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
