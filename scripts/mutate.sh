@@ -373,10 +373,12 @@ mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", tw
 # The committed figures are what scripts/docs_figures.sh makes from the scenes as they are: a scene edited
 # without the figures remade fails the docs test.
 mutant docs-figures-scene-edited scenes/classic2d.json 's/"theta": 70/"theta": 75/' "raycam-cli" "^docs: the figures in docs/figures/"
-PROGRESS="^(check: ?progress|cli: bench (speed|accuracy) (shows|--quiet|--benchmark_filter))"
+PROGRESS="^(check: ?progress|cli: bench (speed|accuracy)('s progress| shows| --quiet| --benchmark_filter))"
 mutant progress-share-of-steps-not-work src/check/progress_line.cpp 's/std::to_string(done \* 100 \/ progress.work)/std::to_string(progress.step * 100 \/ progress.steps)/' "$CHECK" "$PROGRESS"
 mutant bench-accuracy-steps-unweighed src/cli/bench_accuracy.cpp 's/check::ProgressLine progress("bench accuracy", steps, o.quiet, stderr, work);/check::ProgressLine progress("bench accuracy", steps, o.quiet);/' "raycam-cli" "$PROGRESS"
 mutant progress-in-place-in-a-log src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(true)/' "$CHECK" "$PROGRESS"
+mutant progress-a-line-a-step-on-a-terminal src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(false)/' "$CHECK" "$PROGRESS"
+mutant progress-wider-than-the-terminal src/check/progress_line.cpp 's/if (width > 1 \&\& text.size() > width - 1) {/if (false) {/' "$CHECK" "$PROGRESS"
 mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) return;$/  (void)quiet_;/' "$CHECK" "$PROGRESS"
 mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name);/if (line_) line_->start(current_ = name);/' "raycam-cli" "$PROGRESS"
 mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return names_.size();/return names_.size();/' "raycam-cli" "$PROGRESS"
