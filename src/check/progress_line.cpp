@@ -78,7 +78,7 @@ void ProgressLine::clear() {
 }
 
 void ProgressLine::finish() {
-  if (quiet_) return;
+  if (quiet_ || progress_.step == 0) return;  // nothing ran (--benchmark_list_tests): nothing to close
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count();
   char line[160];
   std::snprintf(line, sizeof line, "%s: %zu steps in %.0f s", command_.c_str(), progress_.step, elapsed);

@@ -31,7 +31,7 @@ class ProgressLine {
   void start(const std::string& what, std::size_t work = 1);
   // Wipes the line on a terminal, before other output to the same terminal (the next start draws it again).
   void clear();
-  // Every step has ended: the last word, "COMMAND: N steps in T s", on its own line.
+  // Every step has ended: the last word, "COMMAND: N steps in T s", on its own line (none if no step ran).
   void finish();
 
  private:
