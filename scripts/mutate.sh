@@ -380,6 +380,20 @@ mutant record-key-not-bound src/app/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9
 mutant recording-lost-at-exit src/app/glfw_host.cpp 's/^  host.save_recording();/  (void)0;/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant page-sleeps-while-recording src/web/web_host.cpp 's/if (has_work(state, panels) || state.recording) {/if (has_work(state, panels)) {/' "raycam_web_page" "^web: the page's host"
 mutant record-only-takes-the-wrong-view src/cli/record_command.cpp 's/options.only == ShownPart::image      ? layout.image/options.only == ShownPart::image      ? layout.overhead/' "raycam-cli raycam_video_tests" "^video: ?record: --only"
+# --- #48 docs that stay true: figures made by one script, long work shows progress ---
+# The committed figures are what scripts/docs_figures.sh makes from the scenes as they are: a scene edited
+# without the figures remade fails the docs test.
+mutant docs-figures-scene-edited scenes/classic2d.json 's/"theta": 70/"theta": 75/' "raycam-cli" "^docs: the figures in docs/figures/"
+PROGRESS="^(check: ?progress|cli: bench (speed|accuracy)('s progress| shows| --quiet| --benchmark_filter))"
+mutant progress-share-of-steps-not-work src/check/progress_line.cpp 's/std::to_string(done \* 100 \/ progress.work)/std::to_string(progress.step * 100 \/ progress.steps)/' "$CHECK" "$PROGRESS"
+mutant bench-accuracy-steps-unweighed src/cli/bench_accuracy.cpp 's/check::ProgressLine progress("bench accuracy", steps, o.quiet, stderr, work);/check::ProgressLine progress("bench accuracy", steps, o.quiet);/' "raycam-cli" "$PROGRESS"
+mutant progress-in-place-in-a-log src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(true)/' "$CHECK" "$PROGRESS"
+mutant progress-a-line-a-step-on-a-terminal src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(false)/' "$CHECK" "$PROGRESS"
+mutant progress-wider-than-the-terminal src/check/progress_line.cpp 's/if (width > 1 \&\& text.size() > width - 1) {/if (false) {/' "$CHECK" "$PROGRESS"
+mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) return;$/  (void)quiet_;/' "$CHECK" "$PROGRESS"
+mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name, work);/if (line_) line_->start(current_ = name, work);/' "raycam-cli" "$PROGRESS"
+mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
+mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

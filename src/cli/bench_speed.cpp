@@ -23,6 +23,7 @@
 #include <optional>
 #include <utility>
 #include <random>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -32,6 +33,7 @@
 #include "commands.h"
 #include "flag_values.h"
 #include "process_memory.h"
+#include "progress_line.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
@@ -67,6 +69,7 @@ struct SpeedOptions {
   std::string csv_path, scene_path;
   std::optional<std::vector<int>> scene_size;  // --size, else the scene file's
   std::vector<std::string> benchmark_flags;  // --benchmark_* passed through to Google Benchmark
+  bool quiet = false;                        // no progress on stderr
 };
 
 // The command line on CLI11 with the shared flag rules (one message format); the `--benchmark_*` flags are
@@ -120,6 +123,8 @@ std::optional<int> parse_options(const Args& args, SpeedOptions& o) {
   flags::add_checked_option<std::string>(app, "--scene", "FILE",
                                          "time a scene file's camera preset instead, at --size",
                                          flags::file_name(), [&o](std::string path) { o.scene_path = std::move(path); });
+  app.add_flag("--quiet", o.quiet, "no progress on stderr (by default each benchmark is announced as it starts, "
+               "with the time left)");
   flags::add_checked_option<std::vector<int>>(
       app, "--size", "N|WxH", "with --scene: the image size, as render takes it (default: the file's, else 256)",
       flags::size_rule(), [&o](std::vector<int> size) { o.scene_size = std::move(size); });
@@ -294,18 +299,6 @@ struct Result {
   double median_ms = 0, stddev_ms = 0, mrays = 0, tests_per_pixel = 0, box_tests_per_pixel = 0;
 };
 
-struct Run {
-  SpeedOptions options;
-  SceneGrid grid;
-  std::vector<std::unique_ptr<Case>> cases;  // stable addresses: the benchmarks point at them
-  std::map<std::string, Result> results;     // by benchmark name
-};
-
-std::string case_name(const Case& c) {
-  return "speed/" + c.family + "/K:" + std::to_string(c.count) + "/side:" + std::to_string(c.side) +
-         "/threads:" + std::to_string(c.threads) + "/" + c.variant.name;
-}
-
 benchmark::internal::Benchmark* configure(benchmark::internal::Benchmark* b, const SpeedOptions& o) {
   return b->Repetitions(o.repeats)
       ->ReportAggregatesOnly(true)
@@ -313,6 +306,82 @@ benchmark::internal::Benchmark* configure(benchmark::internal::Benchmark* b, con
       ->MeasureProcessCPUTime()  // and the CPU time of every thread, steadier on a shared machine
       ->Unit(benchmark::kMillisecond)
       ->MinTime(o.min_seconds);
+}
+
+// The benchmarks in the order they run, each announced on stderr as it starts (check::ProgressLine: in
+// place on a terminal, a line each in a log, nothing with --quiet), with the time left at the pace so far.
+class Steps {
+ public:
+  // Registers `body` as benchmark `name`, configured as every variant; `work` is its share of the estimate.
+  benchmark::internal::Benchmark* add(const std::string& name, std::function<void(benchmark::State&)> body,
+                                      const SpeedOptions& o, std::size_t work = kWorkPerBenchmark) {
+    steps_.push_back({name, work});
+    return configure(benchmark::RegisterBenchmark(name.c_str(),
+                                                  [this, name, body, work](benchmark::State& state) {
+                                                    // Called for each trial and repetition: a new name is a new step.
+                                                    if (line_ && name != current_) line_->start(current_ = name, work);
+                                                    body(state);
+                                                  }),
+                     o);
+  }
+  // A grid case's work: a benchmark takes its minimum time whatever K, and its fixtures (the reference ids,
+  // the sampled plain loop) grow with K. One run of 103 benchmarks (K = 1, 10⁴, 10⁵ at 256² and 1024², two
+  // threads, 3 repetitions): 0.45 s a benchmark at K = 1, 0.62–0.72 s at 10⁴, 0.81–0.88 s at 10⁵; counted
+  // alike, the first estimate said 44 s of a 67 s run.
+  static std::size_t work_at(int count) {
+    return kWorkPerBenchmark + std::size_t(std::lround(2.0 * std::log10(std::max(count, 1))));
+  }
+  // Before the run: the line, its totals those of the benchmarks --benchmark_filter keeps.
+  void begin(const SpeedOptions& o) {
+    std::size_t steps = 0, work = 0;
+    for (const Step& step : steps_)
+      if (kept_by_filter(step.name, o.benchmark_flags)) {
+        ++steps;
+        work += step.work;
+      }
+    line_ = std::make_unique<check::ProgressLine>("bench speed", unknown_filter_ ? 0 : steps, o.quiet, stderr, work);
+  }
+  check::ProgressLine* line() const { return line_.get(); }
+
+ private:
+  static constexpr std::size_t kWorkPerBenchmark = 10;
+  struct Step {
+    std::string name;
+    std::size_t work;
+  };
+  // Google Benchmark's own rule: the last filter, "" or "all" for every benchmark, a leading '-' negates. A
+  // pattern std::regex does not read as Google Benchmark does leaves the total unknown.
+  bool kept_by_filter(const std::string& name, const std::vector<std::string>& benchmark_flags) {
+    const std::string flag = "--benchmark_filter=";
+    std::string filter;
+    for (const std::string& f : benchmark_flags)
+      if (f.rfind(flag, 0) == 0) filter = f.substr(flag.size());
+    if (filter.empty() || filter == "all") return true;
+    const bool negated = filter[0] == '-';
+    try {
+      return std::regex_search(name, std::regex(negated ? filter.substr(1) : filter, std::regex::extended)) != negated;
+    } catch (const std::regex_error&) {
+      unknown_filter_ = true;
+      return false;
+    }
+  }
+  std::vector<Step> steps_;
+  bool unknown_filter_ = false;
+  std::unique_ptr<check::ProgressLine> line_;
+  std::string current_;
+};
+
+struct Run {
+  SpeedOptions options;
+  SceneGrid grid;
+  std::vector<std::unique_ptr<Case>> cases;  // stable addresses: the benchmarks point at them
+  std::map<std::string, Result> results;     // by benchmark name
+  Steps steps;
+};
+
+std::string case_name(const Case& c) {
+  return "speed/" + c.family + "/K:" + std::to_string(c.count) + "/side:" + std::to_string(c.side) +
+         "/threads:" + std::to_string(c.threads) + "/" + c.variant.name;
 }
 
 void run_case(benchmark::State& state, Run& run, Case& c) {
@@ -375,8 +444,8 @@ void register_case(Run& run, const Case& c) {
     if (case_name(*existing) == name) return;  // the cube's rows of the families' table are the grid's
   run.cases.push_back(std::make_unique<Case>(c));
   Case* kept = run.cases.back().get();
-  configure(benchmark::RegisterBenchmark(name.c_str(), [&run, kept](benchmark::State& state) { run_case(state, run, *kept); }),
-            run.options);
+  run.steps.add(name, [&run, kept](benchmark::State& state) { run_case(state, run, *kept); }, run.options,
+                Steps::work_at(c.count));
 }
 
 void register_grid(Run& run) {
@@ -406,32 +475,31 @@ void register_extras(Run& run) {
   const SpeedOptions& o = run.options;
   const int threads = o.threads.back();
   for (int side : {128, 256, 512, 1024, 2048})
-    configure(benchmark::RegisterBenchmark(("scaling/side:" + std::to_string(side)).c_str(),
-                                           [&run, side, threads](benchmark::State& state) {
-                                             const PackedScene3D& scene = run.grid.scene("cube", 1000).packed;
-                                             const Camera3D camera = bench_camera(side, side);
-                                             ColourMap map;
-                                             CastOptions options;
-                                             options.threads = threads;
-                                             for (auto _ : state)
-                                               cast_primary_rays(camera, scene, map, options);
-                                           }),
-              o);
+    run.steps.add("scaling/side:" + std::to_string(side),
+                  [&run, side, threads](benchmark::State& state) {
+                    const PackedScene3D& scene = run.grid.scene("cube", 1000).packed;
+                    const Camera3D camera = bench_camera(side, side);
+                    ColourMap map;
+                    CastOptions options;
+                    options.threads = threads;
+                    for (auto _ : state) cast_primary_rays(camera, scene, map, options);
+                  },
+                  o);
   for (int n = 16; n <= 4096; n *= 4)
     for (const char* method : {"plain", "automatic"})
-      configure(benchmark::RegisterBenchmark(("bar2d/n:" + std::to_string(n) + "/" + method).c_str(),
-                                             [n, method](benchmark::State& state) {
-                                               static const Scene2D scene = demo_scene_2d();
-                                               const Camera2D camera(n);
-                                               ColourMap map;
-                                               CastOptions options;
-                                               options.method = cast_method_named(method).value();
-                                               CastStats stats;
-                                               for (auto _ : state)
-                                                 cast_primary_rays(camera, scene, map, options, &stats);
-                                               state.counters["tests"] = double(stats.intersection_tests);
-                                             }),
-                o)
+      run.steps
+          .add("bar2d/n:" + std::to_string(n) + "/" + method,
+               [n, method](benchmark::State& state) {
+                 static const Scene2D scene = demo_scene_2d();
+                 const Camera2D camera(n);
+                 ColourMap map;
+                 CastOptions options;
+                 options.method = cast_method_named(method).value();
+                 CastStats stats;
+                 for (auto _ : state) cast_primary_rays(camera, scene, map, options, &stats);
+                 state.counters["tests"] = double(stats.intersection_tests);
+               },
+               o)
           ->Unit(benchmark::kMicrosecond);
 }
 
@@ -440,9 +508,11 @@ void register_extras(Run& run) {
 // Benchmark's console table as usual, and the medians kept for raycam's own tables.
 class KeepingReporter : public benchmark::ConsoleReporter {
  public:
-  explicit KeepingReporter(std::map<std::string, Result>& results)
-      : ConsoleReporter(OO_Tabular), results_(results) {}  // counters as columns, no colour codes
+  KeepingReporter(std::map<std::string, Result>& results, const Steps& steps)
+      : ConsoleReporter(OO_Tabular), results_(results), steps_(steps) {}  // counters as columns, no colour codes
   void ReportRuns(const std::vector<benchmark::BenchmarkReporter::Run>& runs) override {
+    // The table's row on a line of its own when stdout and stderr share a terminal.
+    if (check::ProgressLine* line = steps_.line()) line->clear();
     for (const auto& r : runs) {
       // One repetition gives no aggregates: its run is the median (--repeats 1 used to report 0 ms).
       const bool single = r.run_type == benchmark::BenchmarkReporter::Run::RT_Iteration && r.repetitions <= 1;
@@ -463,10 +533,12 @@ class KeepingReporter : public benchmark::ConsoleReporter {
       }
     }
     ConsoleReporter::ReportRuns(runs);
+    GetOutputStream().flush();
   }
 
  private:
   std::map<std::string, Result>& results_;
+  const Steps& steps_;
 };
 
 const Result* find(const Run& run, const std::string& family, int count, int side, int threads, const std::string& variant) {
@@ -632,26 +704,28 @@ int run_scene(const SpeedOptions& o) {
   session::pack_scene(view, packed);
   std::map<std::string, Result> results;
   CastStats stats;
+  Steps steps;
   for (const char* method : {"automatic", kDoubleCulling, "plain"}) {
     if (std::string(method) == "plain" && !plain_affordable) continue;
-    configure(benchmark::RegisterBenchmark(
-                  (std::string("scene/") + method).c_str(),
-                  [&, method](benchmark::State& state) {
-                    ColourMap map;
-                    CastOptions options;
-                    options.method = cast_method_named(method).value_or(CastMethod::automatic);
-                    options.float_culling = method != std::string(kDoubleCulling);
-                    options.threads = threads;
-                    for (auto _ : state) session::cast_view(view, packed, map, options, &stats);
-                    state.counters["Mrays/s"] =
-                        benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
-                  }),
+    steps.add(std::string("scene/") + method,
+              [&, method](benchmark::State& state) {
+                ColourMap map;
+                CastOptions options;
+                options.method = cast_method_named(method).value_or(CastMethod::automatic);
+                options.float_culling = method != std::string(kDoubleCulling);
+                options.threads = threads;
+                for (auto _ : state) session::cast_view(view, packed, map, options, &stats);
+                state.counters["Mrays/s"] =
+                    benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+              },
               o);
   }
   initialise_benchmark(o);
-  KeepingReporter reporter(results);
+  steps.begin(o);
+  KeepingReporter reporter(results, steps);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::ClearRegisteredBenchmarks();
+  steps.line()->finish();
   const Result& fast = results["scene/automatic"];
   std::printf("%s: %dD, %.0f pixels, %d threads: automatic %.3f ms median (%.1f Mrays/s)",
               o.scene_path.c_str(), session::dimension_of(view), pixels, threads, fast.median_ms, fast.mrays);
@@ -703,9 +777,11 @@ int run_bench_speed(const Args& args) {
   register_grid(run);
   if (run.options.extras) register_extras(run);
   initialise_benchmark(run.options);
-  KeepingReporter reporter(run.results);
+  run.steps.begin(run.options);
+  KeepingReporter reporter(run.results, run.steps);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::ClearRegisteredBenchmarks();
+  run.steps.line()->finish();
   print_summary(run);
   print_families(run);
   if (run.options.extras) print_extras(run);
