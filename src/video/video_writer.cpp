@@ -309,7 +309,13 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, const Vide
   // by mkstemp/mkdtemp so that two recordings never share it.
   std::string base = path;
   while (base.size() > 1 && base.back() == '/') base.pop_back();
-  if (format == VideoFormat::png_pattern) base = (fs::path(path).parent_path() / ".raycam-frames").string();
+  if (format == VideoFormat::png_pattern) {
+    // A pattern's folder is made as a FOLDER/ output is (frames/f%03d.png: "frames" may not exist yet).
+    const fs::path folder = fs::path(path).parent_path();
+    std::error_code ignored;
+    if (!folder.empty()) fs::create_directories(folder, ignored);
+    base = (folder / ".raycam-frames").string();
+  }
   std::vector<char> name(base.begin(), base.end());
   const std::string suffix = ".tmp-XXXXXX";
   name.insert(name.end(), suffix.begin(), suffix.end());
@@ -318,7 +324,7 @@ VideoWriter::VideoWriter(const std::string& path, VideoFormat format, const Vide
   const mode_t mask = umask(0);
   umask(mask);
   if (s.is_png()) {
-    if (!mkdtemp(name.data())) throw std::runtime_error("cannot write in the folder of " + path + ": " + std::strerror(errno));
+    if (!mkdtemp(name.data())) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
     s.temporary = name.data();
     chmod(s.temporary.c_str(), 0777 & ~mask);
     return;

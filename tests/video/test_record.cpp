@@ -249,6 +249,16 @@ TEST_CASE("record: --only gives one view, the very pixels it has in the whole wi
   CHECK(places["observer"].second > places["overhead"].second + 20);
 }
 
+TEST_CASE("record: a pattern's folder is made, as a FOLDER/ output's is", "[record]") {
+  const test::ScratchDir dir("record-pattern");
+  REQUIRE(run(joined({"record", "--sweep", "theta=0:10", "--seconds", "0.1", "--fps", "10", "--out",
+                      dir.path("made") + "/f%03d.png"},
+                     kWindow)) == 0);
+  CHECK(std::filesystem::exists(dir.path("made") + "/f000.png"));
+  CHECK(std::filesystem::exists(dir.path("made") + "/f001.png"));
+  CHECK_FALSE(std::filesystem::exists(dir.path("made") + "/f002.png"));
+}
+
 TEST_CASE("record: a construction factor part way turns, scales and moves by that part", "[record]") {
   const Placement3D p = placement_matrix(Orbit3D{{1, 2, 3}, 8.0, glm::radians(30.0), glm::radians(60.0), 2.0});
   for (int step = 1; step <= kConstructionSteps3D; ++step) {

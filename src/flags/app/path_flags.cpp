@@ -43,7 +43,7 @@ CLI::Option_group* add_path_options(CLI::App& command, PathFlags& path) {
       ->check(checked(sweep));
   add_checked_option<std::string>(*group, "--path", "FILE",
                                   "key cameras with durations, JSON: {\"keys\": [{\"theta\": 0}, {\"theta\": 90, "
-                                  "\"seconds\": 2}]} (docs/cli.md)",
+                                  "\"seconds\": 2}]} (docs/record.md)",
                                   file_name(), [&path](std::string file) { path.key_file = file; });
   group->add_flag_callback(
       "--construction", [&path] { path.construction = true; },
