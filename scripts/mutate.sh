@@ -394,6 +394,7 @@ mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) retu
 mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name, work);/if (line_) line_->start(current_ = name, work);/' "raycam-cli" "$PROGRESS"
 mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
 mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
+mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

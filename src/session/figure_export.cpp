@@ -1,5 +1,6 @@
 #include "figure_export.h"
 
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -46,6 +47,16 @@ Export prepare(const Lesson& state, const FigureContent& content, const std::str
 std::vector<std::string> export_construction_figure(const Lesson& lesson, const FigureContent& content,
                                                     const std::string& path, bool all_steps) {
   const Export e = prepare(lesson, content, path, all_steps);
+  // Names that find no place by their object, on a leader or in the key: refused, as raycam-cli figure
+  // refuses them, with the size that names them all (a figure without some names would pass for complete).
+  if (!figure::names_fit(e.drawn, e.frames, e.output)) {
+    constexpr double kPointsPerMm = 72.0 / 25.4;
+    const figure::PageSize least = figure::smallest_page_for_names(e.drawn, e.frames, e.output, kPointsPerMm, 1000.0 * kPointsPerMm);
+    const auto mm = [](double pt) { return int(std::lround(pt / kPointsPerMm)); };
+    throw std::runtime_error(trf(lesson.language,
+                                 "not every object's name fits on the figure's %d × %d mm page: raycam-cli figure --size %dx%dmm names them all",
+                                 mm(e.output.page.width_pt), mm(e.output.page.height_pt), mm(least.width_pt), mm(least.height_pt)));
+  }
   return figure::write_figure(e.drawn, e.frames, e.output, e.path).files;
 }
 

@@ -273,6 +273,8 @@ const std::vector<Translation>& translation_table() {
       {"raycam-screenshot", "raycam-capture"},
       {"Export figure…", "Exporter la figure…"},
       {"Export every step", "Exporter toutes les étapes"},
+      {"not every object's name fits on the figure's %d × %d mm page: raycam-cli figure --size %dx%dmm names them all",
+       "les noms des objets ne tiennent pas tous sur la page de la figure (%d × %d mm) : raycam-cli figure --size %dx%dmm les place tous"},
       {"The step shown or every step, as raycam-cli figure draws them (docs/figures.md).",
        "L'étape affichée ou toutes les étapes, comme les dessine raycam-cli figure (docs/figures.md)."},
       {"%s: expected a name ending in .svg, .pdf, .png or .tex", "%s : nom attendu en .svg, .pdf, .png ou .tex"},

@@ -153,3 +153,39 @@ TEST_CASE("Export figure names the demo's objects in the window's language", "[u
     CHECK(english.find(en) != std::string::npos);
   }
 }
+
+TEST_CASE("Export figure refuses a page its objects' names do not fit, with the size that names them all", "[ui][figure]") {
+  // Forty small discs with long names in a clump: no place by the discs, no leader, and a key taller than the
+  // 160 × 120 mm page. raycam-cli figure refuses the page; the window's export did write it, names missing.
+  const test::ScratchDir scratch("figure-names-refused");
+  std::string objects;
+  for (int i = 0; i < 40; ++i) {
+    char object[256];
+    std::snprintf(object, sizeof object,
+                  "%s{\"type\": \"circle\", \"center\": [%.3f, %.3f], \"radius\": 0.05, \"color\": [%d, 90, 120], "
+                  "\"name\": \"un objet au nom vraiment très long numéro %d\"}",
+                  i ? ", " : "", -0.5 + 0.025 * (i % 40), -0.5 + 0.61 * ((i * 7) % 13) / 13.0, 6 * i, i);
+    objects += object;
+  }
+  const std::string scene = scratch.path("crowd.json");
+  std::ofstream(scene) << "{\"dimension\": 2, \"background\": [0, 0, 0], \"objects\": [" << objects
+                       << "], \"camera\": {\"target\": [0, 0], \"d\": 6, \"theta\": 70, \"df\": 1.5, \"size\": 64}}";
+  session::AppState state = test::state_for({"--scene", scene});
+  state.construction_step = -1;
+  try {
+    session::export_construction_figure(state, {}, scratch.path("crowd.tex"), false);
+    FAIL("exported a figure whose names do not fit");
+  } catch (const std::runtime_error& error) {
+    const std::string message = error.what();
+    INFO(message);
+    CHECK(message.find("160 × 120 mm") != std::string::npos);
+    int width = 0, height = 0;
+    REQUIRE(std::sscanf(message.c_str() + message.find("--size ") + 7, "%dx%dmm", &width, &height) == 2);
+    CHECK(width > 160);
+    CHECK(height > 120);
+  }
+  CHECK_FALSE(std::filesystem::exists(scratch.path("crowd.tex")));
+  // The classic scene's names fit: its export is written.
+  session::AppState classic = test::state_for({"--view", "2d"});
+  CHECK(session::export_construction_figure(classic, {}, scratch.path("classic.tex"), false).size() == 1);
+}
