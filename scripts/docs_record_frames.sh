@@ -13,6 +13,7 @@ strip() {
   name=$1 frames=$2
   shift 2
   "$cli" record --fps 10 --out "$work/$name/" "$@" > /dev/null
+  # shellcheck disable=SC2086  # the frame numbers, one argument each
   /usr/bin/python3 - "$work/$name" "$out/record_$name.png" $frames <<'PY'
 import sys
 from PIL import Image

@@ -23,11 +23,13 @@ export NODE_PATH="${NODE_PATH:-/usr/share/nodejs}"
 mkdir -p build-web
 [ -f build-web/CMakeCache.txt ] || emcmake cmake -S . -B build-web -DCMAKE_BUILD_TYPE=Release
 cmake --build build-web -j"${WEB_JOBS:-2}" --target "$target"
+# Its size as built, the figure docs/web.md gives.
+single_mb=$(awk -v b="$(stat -c %s build-web/raycam.html)" 'BEGIN { printf "%.1f MB", b / 1e6 }')
 if [ "$target" = raycam_web_single ]; then
-  echo "web.sh: the single-file page is build-web/raycam.html (opens from a file:// URL, no server)"
+  echo "web.sh: the single-file page is build-web/raycam.html, $single_mb (opens from a file:// URL, no server)"
   exit 0
 fi
-echo "web.sh: the page is build-web/index.html (+ index.js, index.wasm, index.data); build-web/raycam.html in one file"
+echo "web.sh: the page is build-web/index.html (+ index.js, index.wasm, index.data); build-web/raycam.html in one file, $single_mb"
 [ "$build_only" = 1 ] && exit 0
 echo "web.sh: serving on http://localhost:8000 (Ctrl+C stops)"
 cd build-web && exec python3 -m http.server 8000
