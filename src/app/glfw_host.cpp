@@ -131,9 +131,12 @@ void GlfwHost::frame_drawn(session::AppState& state) {
     stop_recording();
     return;
   }
+  const double now = recording_seconds();
+  state.recording_seconds = now;
+  // Drawn between two video frames (a drag draws at the screen's rate): nothing to read back.
+  if (!recording_->frame_due(now)) return;
   const gl::RgbaImage frame = read_back();
-  recording_->add(frame.pixels.data(), frame.width, frame.height, recording_seconds());
-  state.recording_seconds = recording_seconds();
+  recording_->add(frame.pixels.data(), frame.width, frame.height, now);
 }
 
 int run_window(const session::AppOptions& options, const ScriptedRun& run, session::AppState& state) {

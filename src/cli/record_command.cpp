@@ -161,10 +161,9 @@ gl::RgbaImage cropped(gl::RgbaImage image, const Crop& crop) {
 }
 
 void check_output(const RecordOptions& options, video::VideoFormat format) {
+  // The window's sides go to the video as they are; a --only view's are rounded down to even (crop_of).
   for (const auto& [flag, side] : {std::pair{"--width", options.app.width}, std::pair{"--height", options.app.height}})
-    if (options.only != ShownPart::window) {
-      // A view's size is rounded down to even, whatever the window's.
-    } else if (const std::string rule = video::side_rule(format, side); !rule.empty())
+    if (const std::string rule = video::side_rule(format, side); options.only == ShownPart::window && !rule.empty())
       throw std::invalid_argument(flags::bad_value_message(flag, rule + " for " + video::format_name(format),
                                                            std::to_string(side)));
   namespace fs = std::filesystem;

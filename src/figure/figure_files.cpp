@@ -58,6 +58,12 @@ void line(cairo_t* cr, glm::dvec2 a, glm::dvec2 b) {
 
 // Markup text (math_text.h) with its baseline's left end at `at`: scripts smaller and shifted, an arrow over
 // a vector. With `halo`, a white outline first, so that the text stays readable over lines.
+// An object's fill wherever it is shown (the drawing, the inset, the key's swatch): its colour, the lines
+// under it showing through.
+void set_object_fill(cairo_t* cr, const Rgb8& colour) {
+  cairo_set_source_rgba(cr, colour.r / 255.0, colour.g / 255.0, colour.b / 255.0, 0.8);
+}
+
 void draw_text(cairo_t* cr, const std::string& markup, glm::dvec2 at, double size, bool bold, bool halo) {
   for (int pass = halo ? 0 : 1; pass < 2; ++pass) {
     double x = at.x;
@@ -145,7 +151,7 @@ void draw_discs(cairo_t* cr, const PageFrame& page) {
     if (page.objects_faded)
       cairo_set_source_rgba(cr, 0.5, 0.5, 0.5, 0.12);
     else
-      cairo_set_source_rgba(cr, disc.colour.r / 255.0, disc.colour.g / 255.0, disc.colour.b / 255.0, 0.8);
+      set_object_fill(cr, disc.colour);
     cairo_fill_preserve(cr);
     cairo_set_source_rgba(cr, 0, 0, 0, page.objects_faded ? 0.3 : 1.0);
     cairo_set_line_width(cr, 0.5);
@@ -181,7 +187,7 @@ void draw_inset(cairo_t* cr, const PageFrame& page) {
   for (const PageDisc& disc : inset.discs) {
     cairo_new_path(cr);
     cairo_arc(cr, disc.centre.x, disc.centre.y, disc.radius, 0.0, 2.0 * M_PI);
-    cairo_set_source_rgba(cr, disc.colour.r / 255.0, disc.colour.g / 255.0, disc.colour.b / 255.0, 0.8);
+    set_object_fill(cr, disc.colour);
     cairo_fill(cr);
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
@@ -230,7 +236,7 @@ void draw_key(cairo_t* cr, const PageFrame& page) {
   for (const KeyEntry& entry : page.key) {
     cairo_new_path(cr);
     cairo_arc(cr, entry.swatch.x, entry.swatch.y, entry.swatch_radius, 0.0, 2.0 * M_PI);
-    cairo_set_source_rgba(cr, entry.colour.r / 255.0, entry.colour.g / 255.0, entry.colour.b / 255.0, 0.8);
+    set_object_fill(cr, entry.colour);
     cairo_fill_preserve(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, 0.5);
