@@ -34,8 +34,8 @@ figure --scene "$classic2d" --lang fr --format tikz --pages --size 105x72mm --ou
 # The montages the docs show: each frame 100 × 75 mm at 120 dpi, (a) … (d) two to a row, steps 0 … 5 three.
 for lang in fr en; do
   figure --scene "$classic2d" --lang "$lang" --format png --size 100x75mm --dpi 120 --out "$frames/2d-$lang.png"
-  python3 "$root/scripts/png_pixels.py" join 2 "$out/classic2d-$lang.png" "$frames/2d-$lang"-[a-d].png
+  /usr/bin/python3 "$root/scripts/montage.py" --columns 2 "$out/classic2d-$lang.png" "$frames/2d-$lang"-[a-d].png
   figure --scene "$classic3d" --lang "$lang" --format png --size 100x75mm --dpi 120 --out "$frames/3d-$lang.png"
-  python3 "$root/scripts/png_pixels.py" join 3 "$out/classic3d-$lang.png" "$frames/3d-$lang"-[0-5].png
+  /usr/bin/python3 "$root/scripts/montage.py" --columns 3 "$out/classic3d-$lang.png" "$frames/3d-$lang"-[0-5].png
 done
 echo "docs_figures.sh: wrote the figures into $out"

@@ -1,6 +1,6 @@
 #!/bin/sh
 # The frames docs/record.md shows: three recordings made with raycam-cli record (an orbit, the 2D and the 3D
-# construction of M_d), each as a strip of four of its frames scaled to a quarter (PIL, python3-pil).
+# construction of M_d), each as a strip of four of its frames scaled to a quarter (scripts/montage.py).
 # Usage: scripts/docs_record_frames.sh [RAYCAM_CLI] [OUT_FOLDER]   (defaults: build/raycam-cli, docs/)
 set -eu
 cli=${1:-build/raycam-cli}
@@ -13,18 +13,9 @@ strip() {
   name=$1 frames=$2
   shift 2
   "$cli" record --fps 10 --out "$work/$name/" "$@" > /dev/null
-  # shellcheck disable=SC2086  # the frame numbers, one argument each
-  /usr/bin/python3 - "$work/$name" "$out/record_$name.png" $frames <<'PY'
-import sys
-from PIL import Image
-folder, target, frames = sys.argv[1], sys.argv[2], [int(k) for k in sys.argv[3:]]
-shots = [Image.open("%s/frame_%05d.png" % (folder, k)).convert("RGB") for k in frames]
-w, h, gap = shots[0].width // 4, shots[0].height // 4, 6
-sheet = Image.new("RGB", (len(shots) * w + (len(shots) - 1) * gap, h), (255, 255, 255))
-for i, shot in enumerate(shots):
-    sheet.paste(shot.resize((w, h), Image.LANCZOS), (i * (w + gap), 0))
-sheet.save(target, optimize=True)
-PY
+  set --
+  for k in $frames; do set -- "$@" "$(printf '%s/%s/frame_%05d.png' "$work" "$name" "$k")"; done
+  /usr/bin/python3 "$(dirname "$0")/montage.py" --scale 0.25 --gap 6 "$out/record_$name.png" "$@"
   echo "wrote $out/record_$name.png"
 }
 strip orbit "0 10 20 30" --sweep theta=0:360 --seconds 3

@@ -17,7 +17,7 @@ packages=(
   parallel                                   # `check`: the large course recipe's test (GNU parallel, 3 shards)
   qemu-user                                  # tests: the vector loops' SSE2 and AVX2 copies (tests/core)
   clang-14 libclang-rt-14-dev                # fuzzing and sanitizers
-  emscripten chromium chromium-driver python3-selenium python3-pil  # the web page (scripts/web.sh) and its browser tests (PIL reads its screenshots)
+  emscripten chromium chromium-driver python3-selenium python3-pil  # the web page (scripts/web.sh) and its browser tests (PIL reads its screenshots); the docs' montages (scripts/montage.py)
 )
 missing=()
 for package in "${packages[@]}"; do

@@ -1,11 +1,11 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The example figures in docs/figures/ are what scripts/docs_figures.sh makes now from the scenes they name.
 
     check_docs_figures.py REPOSITORY RAYCAM_CLI
 
 Runs the script into a temporary folder and compares every file with the committed one: the same names; SVG
 and TikZ byte for byte (both are deterministic: two runs give the same bytes); PDF byte for byte but for
-cairo's /CreationDate, the time of the run; PNG by decoded pixels (scripts/png_pixels.py), as another zlib may
+cairo's /CreationDate, the time of the run; PNG by decoded pixels (Debian's python3-pil), as another zlib may
 compress the same pixels differently. A stale figure fails, named, with the command that remakes them.
 
 Fonts: the text is DejaVu Sans through fontconfig, rasterised by cairo and FreeType (PNG) and written as glyph
@@ -20,6 +20,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
+from PIL import Image
 
 SKIP = 77
 
@@ -38,11 +40,14 @@ def without_creation_date(data):
     return re.sub(rb"/CreationDate \(D:[0-9]{14}[^)]*\)", lambda m: b"?" * len(m.group(0)), data)
 
 
-def difference(committed, made, png_pixels):
+def difference(committed, made):
     """What differs between two files of one name, or "" when they are the same figure."""
     if committed.endswith(".png"):
-        differing = png_pixels.differing_pixels(png_pixels.read(committed), png_pixels.read(made))
-        return "" if differing == 0 else ("another size" if differing is None else "%d pixels differ" % differing)
+        old, new = Image.open(committed).convert("RGBA"), Image.open(made).convert("RGBA")
+        if old.size != new.size:
+            return "another size"
+        differing = sum(a != b for a, b in zip(old.getdata(), new.getdata()))
+        return "" if differing == 0 else "%d pixels differ" % differing
     with open(committed, "rb") as a, open(made, "rb") as b:
         old, new = a.read(), b.read()
     if committed.endswith(".pdf"):
@@ -54,10 +59,6 @@ def main(repository, cli):
     if not uses_dejavu():
         print("check_docs_figures: skipped: fontconfig gives no DejaVu Sans (fonts-dejavu-core), the figures' font")
         return SKIP
-    sys.dont_write_bytecode = True  # no __pycache__ left in the source tree
-    sys.path.insert(0, os.path.join(repository, "scripts"))
-    import png_pixels
-
     committed_dir = os.path.join(repository, "docs", "figures")
     made_dir = tempfile.mkdtemp(prefix="raycam-docs-figures-")
     try:
@@ -71,7 +72,7 @@ def main(repository, cli):
         problems = ["%s: committed, but the script does not make it" % name for name in sorted(committed - made)]
         problems += ["%s: made by the script, but not committed" % name for name in sorted(made - committed)]
         for name in sorted(committed & made):
-            what = difference(os.path.join(committed_dir, name), os.path.join(made_dir, name), png_pixels)
+            what = difference(os.path.join(committed_dir, name), os.path.join(made_dir, name))
             if what:
                 problems.append("%s: stale (%s)" % (name, what))
         for problem in problems:
