@@ -5,6 +5,7 @@
 #   scripts/mutate.sh                 every mutant
 #   scripts/mutate.sh NAME...         only these (names as printed by --list)
 #   scripts/mutate.sh --list
+#   scripts/mutate.sh --check [NAME...]   which mutants still apply (nothing built; seconds)
 # Environment: MUTATE_DIR (scratch, default /tmp/raycam-mutate), JOBS (default 2).
 # Exit status: 0 when every mutant was caught; 1 when one was missed or did not apply (the code it edits moved).
 set -u
@@ -122,7 +123,7 @@ mutant font-rebuild-keeps-buffer-sizes src/ui/fonts.cpp 's/^  restart_renderer_b
 mutant window-bigger-than-the-screen src/app/glfw_host.cpp 's/  if (area_width > 0 && area_height > 0) {/  if (false) {/' "raycam raycam_app_tests" "^app: ?the window fits"
 mutant font-scale-slider-left-out-of-view src/ui/panels.cpp 's/^  if (scale_changed) panels.font_scale_scroll_frames = 2;/  if (scale_changed) panels.font_scale_scroll_frames = 0;/' "raycam_render_tests" "^render: ?lecture mode: after a change"
 mutant target-fields-cut src/ui/panels.cpp 's/  if (label_width <= avail \* 0.45f \&\& avail - label_width >= widget_min_width) {/  if (label_width <= avail * 0.45f) {/; s/  if (ImGui::GetContentRegionAvail().x >= needed)/  if (true)/' "raycam_render_tests" "^render: ?lecture mode: at 1"
-mutant idle-loop-polls src/app/glfw_host.cpp 's/^    glfwWaitEventsTimeout(kIdleWaitSeconds);/    glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
+mutant idle-loop-polls src/app/glfw_host.cpp 's/^    glfwWaitEventsTimeout(std::max(wait, 0.001));/    glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"
 mutant show-me-object-centred src/session/mistake_lessons.cpp 's/  const Vector screen_centre = nearest->centre + view \* depth - side \* r;/  const Vector screen_centre = nearest->centre + view * depth;/' "$SESSION" "^session:"
@@ -162,7 +163,7 @@ mutant shard-exit-1-when-a-student-fails src/cli/check_command.cpp 's/    if (re
 mutant merge-key-ignores-quotes src/check/csv_merge.cpp "s/    if (record\[i\] == '\"') quoted = !quoted;/    if (false) quoted = !quoted;/" "$CHECK" "$SHARDS"
 mutant merge-ignores-the-seed src/check/batch_record.cpp 's/differs("seed", seed, other.seed)/differs("seed", seed, seed)/' "$CHECK" "$SHARDS"
 mutant merge-allows-overlaps src/check/csv_merge.cpp 's/} else if (const auto seen = file_of_key.find(key); seen != file_of_key.end()) {/} else if (const auto seen = file_of_key.find(key); false \&\& seen != file_of_key.end()) {/' "$CHECK" "$SHARDS"
-mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/      missing.push_back(student + " (" +/      (void)(student + " (" +/' "$CHECK" "$SHARDS"
+mutant merge-forgets-missing-students src/check/csv_merge.cpp 's/      missing.push_back(escaped_control(student) + " (" +/      (void)(escaped_control(student) + " (" +/' "$CHECK" "$SHARDS"
 mutant gradescope-status-pass-fail src/check/lms_grades.cpp 's/{"status", passed ? "passed" : "failed"}/{"status", passed ? "pass" : "fail"}/' "$CHECK" "$SHARDS"
 mutant grade-out-of-100-whatever-the-scale src/check/lms_grades.cpp 's/  return n ? scale \* report.passed() \/ double(n) : 0.0;/  return n ? 100.0 * report.passed() \/ double(n) : 0.0;/' "$CHECK" "$SHARDS"
 mutant autograder-ignores-the-points examples/gradescope/run_autograder 's/ --scale "\$scale"//' "$CHECK" "$SHARDS"
@@ -199,7 +200,7 @@ mutant limits-fallback-runs-anyway src/cli/check_command.cpp 's/  if (flags.requ
 # --- one view model, one language, one mistake row, two resolutions, docs that cannot go stale (issue 33) ---
 STRUCTURE="raycam_core"  # the structure checks are scripts: any built target will do
 mutant doc-names-a-moved-test docs/app.md 's#`tests/session/test_files.cpp`#`tests/ui/test_files.cpp`#' "$STRUCTURE" "^structure: the README"
-mutant architecture-row-misses-a-link docs/architecture.md 's/the figure export | core, io, check, figure |/the figure export | core, io, check |/' "$STRUCTURE" "^structure: docs/architecture"
+mutant architecture-row-misses-a-link docs/architecture.md 's/(`camera_path.h`) | core, io, check, figure |/(`camera_path.h`) | core, io, check |/' "$STRUCTURE" "^structure: docs/architecture"
 mutant preset-takes-one-res src/io/view_setup.cpp 's/  if (preset.res) camera.set_res(\*preset.res, preset.res_rows.value_or(\*preset.res));/  if (preset.res) camera.set_res(*preset.res);/' "raycam_flags_tests" "^flags: ?.*(nbc|resolution)"
 mutant window-drops-the-rows-res src/session/app_state.cpp 's/        set_res_of(camera, state.res, state.res_rows);/        set_res_of(camera, state.res, std::nullopt);/' "raycam_session_tests" "^session: ?the window's two resolutions"
 mutant preview-squares-two-res src/session/app_state.cpp 's/std::max(\*state.res_rows \* factor, least)/std::max(state.res * factor, least)/' "raycam_session_tests" "^session: ?the window's two resolutions"
@@ -341,7 +342,7 @@ mutant bad-start-scene-empties-box src/ui/panel_state.cpp '/^  if (panels.path_i
 mutant stale-check-run-kept src/session/camera_check.cpp '/^  if (shared_->running) shared_->cancel_running = true;  \/\/ and stops one still running$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant case-cancel-not-passed src/check/case_verdict.cpp '/^    limits.cancel = source.cancel;$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant run-ignores-cancel src/check/student_process.cpp 's/^  auto cancelled = \[\&\] { return limits.cancel \&\& limits.cancel->load(); };/  auto cancelled = [] { return false; };/' "raycam_session_tests" "^session: ?a newer check stops a run"
-mutant colour-map-message-relative src/ui/panels.cpp 's/shown_file_name(state.host, whole).c_str()/shown_file_name(state.host, export_path).c_str()/' "raycam_render_tests" "^render: ?Export colour map names the file"
+mutant colour-map-message-relative src/ui/panel_state.cpp 's/shown_file_name(state.host, whole).c_str()/shown_file_name(state.host, asked).c_str()/' "raycam_render_tests" "^render: ?Export colour map names the file"
 # --- #34 page speed: the float culling pass (item 8) ---
 FLOAT_TESTS="^core: ?(the float pass|casts with and without the float pass)"
 # A growth of one float rounding: the float centre's error alone then drops spheres. (Rows mapped upside
@@ -386,20 +387,54 @@ mutant record-only-takes-the-wrong-view src/cli/record_command.cpp 's/options.on
 mutant docs-figures-scene-edited scenes/classic2d.json 's/"theta": 70/"theta": 75/' "raycam-cli" "^docs: the figures in docs/figures/"
 PROGRESS="^(check: ?progress|cli: bench (speed|accuracy)('s progress| shows| --quiet| --benchmark_filter))"
 mutant progress-share-of-steps-not-work src/check/progress_line.cpp 's/std::to_string(done \* 100 \/ progress.work)/std::to_string(progress.step * 100 \/ progress.steps)/' "$CHECK" "$PROGRESS"
-mutant bench-accuracy-steps-unweighed src/cli/bench_accuracy.cpp 's/check::ProgressLine progress("bench accuracy", steps, o.quiet, stderr, work);/check::ProgressLine progress("bench accuracy", steps, o.quiet);/' "raycam-cli" "$PROGRESS"
+mutant bench-accuracy-steps-unweighed src/bench/bench_accuracy.cpp 's/check::ProgressLine progress("bench accuracy", steps, o.quiet, stderr, work);/check::ProgressLine progress("bench accuracy", steps, o.quiet);/' "raycam-cli" "$PROGRESS"
 mutant progress-in-place-in-a-log src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(true)/' "$CHECK" "$PROGRESS"
 mutant progress-a-line-a-step-on-a-terminal src/check/progress_line.cpp 's/terminal_(isatty(fileno(out)) != 0)/terminal_(false)/' "$CHECK" "$PROGRESS"
 mutant progress-wider-than-the-terminal src/check/progress_line.cpp 's/if (width > 1 \&\& text.size() > width - 1) {/if (false) {/' "$CHECK" "$PROGRESS"
 mutant progress-ignores-quiet src/check/progress_line.cpp 's/^  if (quiet_) return;$/  (void)quiet_;/' "$CHECK" "$PROGRESS"
-mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name, work);/if (line_) line_->start(current_ = name, work);/' "raycam-cli" "$PROGRESS"
-mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
-mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
+mutant bench-speed-a-step-per-call src/bench/bench_speed.cpp 's/if (line_ \&\& name != current_) line_->start(current_ = name, work);/if (line_) line_->start(current_ = name, work);/' "raycam-cli" "$PROGRESS"
+mutant bench-speed-total-ignores-the-filter src/bench/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
+mutant bench-accuracy-references-uncounted src/bench/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
   printf '%s\n' "${names[@]}"
   exit 0
+fi
+# --check [NAME...]: does each mutant still apply to the tree as it is (its file there, its edit changing it)?
+# Nothing is built: seconds for every mutant, so a refactor that moved the code a mutant edits is found at
+# once (the structure test runs it) instead of at the next mutation run.
+if [ "${1:-}" = "--check" ]; then
+  shift
+  stale=0 checked=0
+  scratch_file=$(mktemp)
+  trap 'rm -f "$scratch_file"' EXIT
+  for i in "${!names[@]}"; do
+    if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qxF "${names[$i]}"; then continue; fi
+    checked=$((checked + 1))
+    file=${files[$i]}
+    if [ ! -f "$ROOT/$file" ]; then
+      printf '%-40s %s\n' "${names[$i]}" "does not apply: $file is gone"
+      stale=$((stale + 1))
+      continue
+    fi
+    cp "$ROOT/$file" "$scratch_file"
+    if ! sed -i -e "${edits[$i]}" "$scratch_file" 2> /dev/null; then
+      printf '%-40s %s\n' "${names[$i]}" "does not apply: its sed script is malformed"
+      stale=$((stale + 1))
+    elif cmp -s "$ROOT/$file" "$scratch_file"; then
+      printf '%-40s %s\n' "${names[$i]}" "does not apply: the code it edits in $file moved"
+      stale=$((stale + 1))
+    fi
+  done
+  if [ $# -gt 0 ] && [ $checked -ne $# ]; then
+    echo "mutate.sh --check: $(( $# - checked )) of the names given are not mutants (see --list)" >&2
+    exit 2
+  fi
+  echo "mutate.sh --check: $((checked - stale)) of $checked mutants apply to the tree"
+  [ $stale -eq 0 ]
+  exit
 fi
 selected=("$@")
 wanted() {

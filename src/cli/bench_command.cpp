@@ -2,6 +2,9 @@
 #include <cstdio>
 
 #include "commands.h"
+#ifdef RAYCAM_HAVE_BENCH
+#include "bench_commands.h"
+#endif
 
 namespace raycam::cli {
 
@@ -20,13 +23,13 @@ void add_bench_command(CLI::App& cli, int& exit_code) {
   });
 #else
   bench->require_subcommand(1);
-  add_bench_accuracy_command(*bench, exit_code);
+  bench::add_bench_accuracy_command(*bench, exit_code);
   // `bench speed` keeps its own parser (docs/speed.md): it gets every argument after its name, --help too.
   CLI::App* speed = bench->add_subcommand(
       "speed", "raycam's casters against Embree 3 (docs/speed.md; bench speed --help)");
   speed->prefix_command();
   speed->set_help_flag();
-  speed->callback([speed, &exit_code] { exit_code = run_bench_speed(speed->remaining()); });
+  speed->callback([speed, &exit_code] { exit_code = bench::run_bench_speed(speed->remaining()); });
 #endif
 }
 

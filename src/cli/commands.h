@@ -26,14 +26,11 @@ void add_render_command(CLI::App& cli, int& exit_code);
 void add_figure_command(CLI::App& cli, int& exit_code);  // the construction of M_d as figures (cairo)
 void add_shot_command(CLI::App& cli, int& exit_code);  // only in builds with RAYCAM_BUILD_APP (needs OSMesa)
 void add_record_command(CLI::App& cli, int& exit_code);  // the same frames along a camera path, as a video
-// `bench accuracy` (bench_accuracy.cpp) and `bench speed` (bench_speed.cpp) under `bench`.
+// `bench accuracy` and `bench speed` (src/bench, bench_commands.h) under `bench`.
 void add_bench_command(CLI::App& cli, int& exit_code);
-void add_bench_accuracy_command(CLI::App& bench, int& exit_code);
-// `bench speed` parses its own arguments: everything after `bench speed` (its --help included).
 // `check` (check_command.cpp, on the raycam_check library) parses its own arguments with CLI11.
 void add_check_command(CLI::App& cli, int& exit_code);  // passes its arguments to run_check
 int run_check(const Args& args);
 int run_check_merge(const Args& args);  // `check merge` (check_merge_command.cpp)
-int run_bench_speed(const Args& args);
 
 }  // namespace raycam::cli

@@ -18,7 +18,7 @@
 #include "commands.h"
 #include "flag_values.h"
 #include "headless_renderer.h"
-#include "process_memory.h"
+#include "raycam/process_memory.h"
 
 namespace raycam::cli {
 
@@ -53,7 +53,7 @@ int soak(session::AppState& state, headless::HeadlessRenderer& renderer, int fra
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> times, cpu_times;
   renderer.render_settled(state);
-  const long rss_start = resident_kb("VmRSS:");
+  const long rss_start = testkit::resident_kb("VmRSS:");
   int bad_frames = 0;
   for (int frame = 0; frame < frames; ++frame) {
     // A student dragging sliders: small random steps, sometimes a jump, sometimes a mode or res change.
@@ -74,7 +74,7 @@ int soak(session::AppState& state, headless::HeadlessRenderer& renderer, int fra
     cpu_times.push_back(process_cpu_ms() - cpu_start);
     if (!colour_map_is_consistent(state)) ++bad_frames;
   }
-  const long rss_end = resident_kb("VmRSS:"), peak = resident_kb("VmHWM:");
+  const long rss_end = testkit::resident_kb("VmRSS:"), peak = testkit::resident_kb("VmHWM:");
   std::sort(times.begin(), times.end());
   std::sort(cpu_times.begin(), cpu_times.end());
   const auto at = [&](double q) { return times[std::min(times.size() - 1, std::size_t(q * double(times.size())))]; };

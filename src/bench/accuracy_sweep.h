@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace raycam::cli {
+namespace raycam::bench {
 
 // The stress sweep: every stress case × {float, double} × {naive, stable} × {world, camera-relative}.
 // Writes one CSV row per case and configuration, prints a markdown table (group → worst id error) to stdout.
@@ -14,4 +14,4 @@ int run_stress_table(bool long_sweep, const std::string& csv_path);
 // The handout's arccos route against atan2, near ±1 and near the poles: prints a markdown table.
 void run_angle_table(const std::string& csv_path);
 
-}  // namespace raycam::cli
+}  // namespace raycam::bench

@@ -30,9 +30,9 @@
 #include <tuple>
 #include <vector>
 
-#include "commands.h"
+#include "bench_commands.h"
 #include "flag_values.h"
-#include "process_memory.h"
+#include "raycam/process_memory.h"
 #include "progress_line.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
@@ -46,7 +46,7 @@
 #include "embree_caster.h"
 #endif
 
-namespace raycam::cli {
+namespace raycam::bench {
 
 namespace {
 // ---- options
@@ -785,7 +785,7 @@ int run_bench_speed(const Args& args) {
   print_summary(run);
   print_families(run);
   if (run.options.extras) print_extras(run);
-  std::printf("\nPeak resident memory of this run: %.1f MB\n", double(resident_kb("VmHWM:")) / 1024.0);
+  std::printf("\nPeak resident memory of this run: %.1f MB\n", double(testkit::resident_kb("VmHWM:")) / 1024.0);
   write_csv(run);
   long long differing = 0, checked = 0;
   for (const auto& c : run.cases) {
@@ -801,4 +801,4 @@ int run_bench_speed(const Args& args) {
   return 0;
 }
 
-}  // namespace raycam::cli
+}  // namespace raycam::bench

@@ -12,7 +12,7 @@
 #include "raycam/camera3d.h"
 #include "raycam/stress_cases.h"
 
-namespace raycam::cli {
+namespace raycam::bench {
 
 namespace {
 
@@ -164,4 +164,4 @@ void run_angle_table(const std::string& csv_path) {
   std::printf("\n(csv: %s)\n", csv_path.c_str());
 }
 
-}  // namespace raycam::cli
+}  // namespace raycam::bench

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "accuracy_sweep.h"
-#include "commands.h"
+#include "bench_commands.h"
 #include "flag_values.h"
 #include "progress_line.h"
 #include "raycam/exact_bar.h"
@@ -23,7 +23,7 @@
 #include "raycam/reference_caster.h"
 #include "raycam/standard_scenes.h"
 
-namespace raycam::cli {
+namespace raycam::bench {
 
 namespace {
 
@@ -432,4 +432,4 @@ void add_bench_accuracy_command(CLI::App& bench, int& exit_code) {
   accuracy->callback([options, &exit_code] { exit_code = run_bench_accuracy(*options); });
 }
 
-}  // namespace raycam::cli
+}  // namespace raycam::bench

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <string>
 
-namespace raycam::cli {
+namespace raycam::testkit {
 
 // A field such as "VmRSS:" (resident now) or "VmHWM:" (peak resident), in kB; -1 when it cannot be read.
 inline long resident_kb(const char* field) {
@@ -15,4 +15,4 @@ inline long resident_kb(const char* field) {
   return -1;
 }
 
-}  // namespace raycam::cli
+}  // namespace raycam::testkit
