@@ -264,7 +264,7 @@ WEB_HOST_TEST="^web: the page's host"
 mutant page-canvas-not-resized src/web/web_host.cpp 's/new ResizeObserver(fit)/new ResizeObserver(function() {})/g' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-pixel-ratio-ignored src/web/web_host.cpp 's/const ratio = window.devicePixelRatio || 1;/const ratio = 1;/' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-idle-loop-spins src/web/web_host.cpp 's/^  emscripten_pause_main_loop();/  (void)0;/' "web:raycam_web" "$WEB_HOST_TEST"
-mutant page-key-taps-unqueued src/app/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS, modifier)/true/' "web:raycam_web" "$WEB_HOST_TEST"
+mutant page-key-taps-unqueued src/glfw_host/glfw_host_base.cpp 's/host.keys_.arrive(key, action == GLFW_PRESS, modifier)/true/' "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-f-keys-to-the-browser src/web/web_host.cpp "s/event.key === 'F11' || event.key === 'F12') event.preventDefault();/event.key === 'F11') event.preventDefault();/" "web:raycam_web" "$WEB_HOST_TEST"
 mutant page-fullscreen-ignored src/web/web_host.cpp 's/toggle_fullscreen)) toggle_fullscreen();/toggle_fullscreen)) {}/' "web:raycam_web" "$WEB_HOST_TEST"
 # --- #35 lecture words ---
@@ -377,7 +377,7 @@ mutant merge-ignores-two-res src/check/batch_record.cpp 's/differs("two_res", tw
 # --- #47 recording: the lossless format is lossless; the window records on F9 and saves at exit ---
 mutant lossless-video-through-yuv src/video/video_writer.cpp 's/AV_PIX_FMT_BGR0/AV_PIX_FMT_YUV444P/g' "raycam_video_tests" "^video: ?record: a lossless MKV"
 mutant live-frame-due-one-late src/video/live_recording.cpp 's/last + 1 - written/last - written/' "raycam_video_tests" "^video: ?live recording"
-mutant record-key-not-bound src/app/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9)/if (false)/' "raycam raycam_window_video_tests" "^video: ?window: F9"
+mutant record-key-not-bound src/glfw_host/glfw_host_base.cpp 's/if (key == GLFW_KEY_F9)/if (false)/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant recording-lost-at-exit src/app/glfw_host.cpp 's/^  host.save_recording();/  (void)0;/' "raycam raycam_window_video_tests" "^video: ?window: F9"
 mutant page-sleeps-while-recording src/web/web_host.cpp 's/if (has_work(state, panels) || state.recording) {/if (has_work(state, panels)) {/' "raycam_web_page" "^web: the page's host"
 mutant record-only-takes-the-wrong-view src/cli/record_command.cpp 's/options.only == ShownPart::image      ? layout.image/options.only == ShownPart::image      ? layout.overhead/' "raycam-cli raycam_video_tests" "^video: ?record: --only"

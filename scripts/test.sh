@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test command (README; docs/testing.md): installs the dependencies, builds from scratch in build/, runs CTest
+# The test command (README; docs/testing.md): installs the dependencies, builds in build/ (what changed; from nothing when build/ is new), runs CTest
 # (every entry, the `slow` ones under qemu too), then checks that the tests wrote nothing into the checkout.
 set -euo pipefail
 cd "$(dirname "$0")/.."

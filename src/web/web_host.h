@@ -1,4 +1,4 @@
-// The browser page as a FrameHost (the shared GLFW host, src/app/glfw_host_base.h): emscripten's GLFW on a
+// The browser page as a FrameHost (the shared GLFW host, src/glfw_host/glfw_host_base.h): emscripten's GLFW on a
 // WebGL 2 canvas; the page overrides only its loop and its file routes. The browser
 // owns the loop: each animation frame calls tick(), which draws only while something changed (an event,
 // then a few settle frames, or the state's pending work) and otherwise pauses the loop until the next event,

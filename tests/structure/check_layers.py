@@ -18,7 +18,7 @@ LAYERS = [
     ["raycam_app_flags"],
     ["raycam_gl"],
     ["raycam_ui"],
-    ["raycam_headless", "raycam_bench"],  # raycam_bench: `raycam-cli bench`'s two benchmarks
+    ["raycam_headless", "raycam_bench", "raycam_glfw_host"],  # raycam_bench: `raycam-cli bench`'s two benchmarks
     ["raycam", "raycam-cli", "raycam_web_objects"],  # raycam_web_objects: the page's code, emscripten only
     ["raycam_web", "raycam_web_single"],  # the page linked twice: index.html and the one-file raycam.html
 ]
