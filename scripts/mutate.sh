@@ -396,6 +396,12 @@ mutant bench-speed-a-step-per-call src/bench/bench_speed.cpp 's/if (line_ \&\& n
 mutant bench-speed-total-ignores-the-filter src/bench/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
 mutant bench-accuracy-references-uncounted src/bench/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
+# --- #46 a seam for objects ---
+mutant fast-caster-ignores-planes src/core/ray_caster.cpp 's/ \&\& scene.shapes.empty()) {/) {/' "$CORE" "^core: ?(a scene with planes|spheres alone keep)"
+mutant plane-ids-not-after-spheres src/core/ray_caster.cpp 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t < hit.t) hit = Hit{int(k), t};/' "$CORE" "^core: ?a scene with planes"
+mutant plane-seen-behind-the-eye src/core/ray_caster.cpp 's/return t >= 0.0 || (any_sign \&\& std::isfinite(t)) ? t : kNoHit<double>;/return std::isfinite(t) ? t : kNoHit<double>;/' "$CORE" "^core: ?a plane and a sphere at the same distance"
+mutant plane-ties-to-higher-id src/core/ray_caster.cpp 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t <= hit.t) hit = Hit{first_id + int(k), t};/' "$CORE" "^core: ?a plane and a sphere at the same distance"
+mutant plane-zero-normal-accepted src/core/scene.cpp 's/if (plane.normal == glm::dvec3(0.0))/if (false)/' "$CORE" "^core: ?a plane's point and normal are checked"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

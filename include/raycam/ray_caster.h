@@ -65,6 +65,8 @@ struct CastStats {
 
 Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectFormula formula);
 Hit nearest_hit(const std::vector<Sphere>& spheres, const Ray3D& ray, IntersectFormula formula);
+// Every object of a 3D scene, whatever its kind (spheres, then the other kinds: Shape3D): the plain loop's hit.
+Hit nearest_hit(const Scene3D& scene, const Ray3D& ray, IntersectFormula formula);
 
 // 2D: a 1-row map of n columns in image order (column 0 = the eye's left = pixel k = n-1).
 ColourMap cast_primary_rays(const Camera2D& camera, const Scene2D& scene, const CastOptions& options = {},

@@ -1,11 +1,14 @@
-// Scenes: flat-coloured circles (2D) and spheres (3D), as in the handout's exercise 2.
-// Coordinates are world units; colours are 8-bit sRGB triples. An object's id is its index in the vector.
+// Scenes: flat-coloured circles (2D) and spheres (3D), as in the handout's exercise 2 ("pour l'instant, de
+// simples cercles"), and in 3D the seam for other kinds of object (Shape3D, below).
+// Coordinates are world units; colours are 8-bit sRGB triples. An object's id is its index in the vector; in
+// 3D, the spheres come first and the other kinds after them (ids spheres.size(), spheres.size() + 1, …).
 #pragma once
 
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace raycam {
@@ -32,6 +35,22 @@ struct Sphere {
   std::string name;
 };
 
+// A plane: the points p with dot(p - point, normal) = 0, one flat colour on both sides; `normal` need not be
+// of unit length. The second kind of 3D object, there so that the seam between kinds stays open and tested:
+// the fast casters know spheres only, and a scene holding any other kind is cast by the plain loop, with the
+// same nearest-hit rule (t ≥ 0, ties to the lower id). docs/architecture.md, "Adding a kind of object",
+// lists what else a kind touches.
+struct Plane {
+  glm::dvec3 point{0.0};
+  glm::dvec3 normal{0.0, 0.0, 1.0};
+  Rgb8 colour{255, 255, 255};
+  std::string name;
+};
+
+// The kinds of 3D object besides spheres, tagged (as pbrt-v4's Shape): one alternative per kind. Spheres
+// keep a vector of their own (the fast casters' packed columns are built from it).
+using Shape3D = std::variant<Plane>;
+
 struct Scene2D {
   Rgb8 background = kDefaultBackground;
   std::vector<Circle> circles;
@@ -40,6 +59,7 @@ struct Scene2D {
 struct Scene3D {
   Rgb8 background = kDefaultBackground;
   std::vector<Sphere> spheres;
+  std::vector<Shape3D> shapes;  // ids spheres.size() onwards; cast by the plain loop (ray_caster.h)
 };
 
 // The scene's objects (circles or spheres), in id order: what code written once for both dimensions calls.
@@ -90,11 +110,12 @@ struct PackedScene3D {
   std::vector<Rgb8> colour;
   Rgb8 background = kDefaultBackground;
   SphereClusters clusters;
+  std::vector<Shape3D> shapes;  // the scene's other kinds, as they are: any one makes the cast the plain loop
 
   PackedScene3D() = default;
   explicit PackedScene3D(const Scene3D& scene) { pack(scene); }
   void pack(const Scene3D& scene);  // reuses the columns' memory
-  int size() const { return int(radius.size()); }
+  int size() const { return int(radius.size()); }  // the spheres (ids 0 … size() - 1)
   glm::dvec3 centre(int i) const { return {x[std::size_t(i)], y[std::size_t(i)], z[std::size_t(i)]}; }
 };
 

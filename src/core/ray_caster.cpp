@@ -1,6 +1,8 @@
 #include "raycam/ray_caster.h"
 
+#include <cmath>
 #include <utility>
+#include <variant>
 
 #include "footprint_caster.h"
 
@@ -29,6 +31,29 @@ auto object_in(const std::vector<Object>& objects) {
 auto object_in(const PackedScene3D& scene) {
   return [&scene](int i) { return std::make_pair(scene.centre(i), scene.radius[std::size_t(i)]); };
 }
+
+// A ray and a plane: t = (point - origin)·normal / (direction·normal). A ray along the plane (0 below) never
+// hits it, as a ray that grazes nothing; t < 0 is behind the eye, refused as for spheres unless any_sign.
+double plane_hit_t(const Plane& plane, const Ray3D& ray, bool any_sign) {
+  const double along = glm::dot(ray.direction, plane.normal);
+  if (along == 0.0) return kNoHit<double>;
+  const double t = glm::dot(plane.point - ray.origin, plane.normal) / along;
+  return t >= 0.0 || (any_sign && std::isfinite(t)) ? t : kNoHit<double>;
+}
+
+// The other kinds after the spheres, by the same rule: strictly nearer wins, so a tie keeps the lower id
+// (every sphere's id is lower than every shape's). `first_id` is the spheres' count.
+Hit nearer_shape(Hit hit, const std::vector<Shape3D>& shapes, int first_id, const Ray3D& ray, bool any_sign) {
+  for (std::size_t k = 0; k < shapes.size(); ++k) {
+    const double t = std::visit([&](const Plane& plane) { return plane_hit_t(plane, ray, any_sign); }, shapes[k]);
+    if (t < hit.t) hit = Hit{first_id + int(k), t};
+  }
+  return hit;
+}
+
+Rgb8 colour_of(const Shape3D& shape) {
+  return std::visit([](const Plane& plane) { return plane.colour; }, shape);
+}
 }  // namespace
 
 Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectFormula formula) {
@@ -37,6 +62,10 @@ Hit nearest_hit(const std::vector<Circle>& circles, const Ray2D& ray, IntersectF
 
 Hit nearest_hit(const std::vector<Sphere>& spheres, const Ray3D& ray, IntersectFormula formula) {
   return nearest_of(int(spheres.size()), object_in(spheres), ray, formula);
+}
+
+Hit nearest_hit(const Scene3D& scene, const Ray3D& ray, IntersectFormula formula) {
+  return nearer_shape(nearest_hit(scene.spheres, ray, formula), scene.shapes, int(scene.spheres.size()), ray, false);
 }
 
 namespace {
@@ -70,19 +99,24 @@ void cast_primary_rays(const Camera3D& camera, const PackedScene3D& scene, Colou
                        const CastOptions& options, CastStats* stats) {
   out.resize(camera.columns(), camera.rows());
   CastStats work;
-  if (options.method != CastMethod::plain && !plain_only(camera.mistakes())) {
+  // The fast casters know spheres only: a scene with another kind of object is the plain loop's.
+  if (options.method != CastMethod::plain && !plain_only(camera.mistakes()) && scene.shapes.empty()) {
     detail::cast_accelerated(camera, scene, out, options, work);
   } else {
+    const bool any_sign = camera.mistakes().no_t_min;
     for (int row = 0; row < camera.rows(); ++row)
       for (int column = 0; column < camera.columns(); ++column) {
-        const Hit hit = nearest_of(scene.size(), object_in(scene), camera.primary_ray(row, column),
-                                   options.formula, camera.mistakes().no_t_min);
+        const Ray3D ray = camera.primary_ray(row, column);
+        const Hit hit = nearer_shape(nearest_of(scene.size(), object_in(scene), ray, options.formula, any_sign),
+                                     scene.shapes, scene.size(), ray, any_sign);
         const std::size_t index = out.index(row, column);
         out.ids[index] = hit.id;
-        out.colours[index] = hit.id < 0 ? scene.background : scene.colour[std::size_t(hit.id)];
+        out.colours[index] = hit.id < 0                ? scene.background
+                             : hit.id < scene.size()   ? scene.colour[std::size_t(hit.id)]
+                                                       : colour_of(scene.shapes[std::size_t(hit.id - scene.size())]);
       }
     const long long rays = static_cast<long long>(camera.rows()) * camera.columns();
-    work = CastStats{rays, rays * static_cast<long long>(scene.size()), 0, 0, 1};
+    work = CastStats{rays, rays * static_cast<long long>(scene.size() + int(scene.shapes.size())), 0, 0, 1};
   }
   if (stats) *stats = work;
 }

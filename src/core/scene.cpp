@@ -56,10 +56,28 @@ void PackedScene3D::pack(const Scene3D& scene) {
   }
   background = scene.background;
   clusters.build(x, y, z, radius);
+  shapes = scene.shapes;
 }
 
 void validate(const Scene2D& scene) { validate_objects(scene.circles); }
-void validate(const Scene3D& scene) { validate_objects(scene.spheres); }
+void validate(const Scene3D& scene) {
+  require_object_count(scene.spheres.size() + scene.shapes.size());
+  validate_objects(scene.spheres);
+  for (std::size_t k = 0; k < scene.shapes.size(); ++k) {
+    const std::size_t id = scene.spheres.size() + k;
+    std::visit(
+        [id](const Plane& plane) {
+          for (int axis = 0; axis < 3; ++axis) {
+            detail::require_coordinate(plane.point[axis], object_field(id, ("point[" + std::to_string(axis) + "]").c_str()));
+            detail::require_coordinate(plane.normal[axis], object_field(id, ("normal[" + std::to_string(axis) + "]").c_str()));
+          }
+          // A zero normal is no plane: every point or none would lie on it.
+          if (plane.normal == glm::dvec3(0.0))
+            throw std::invalid_argument(object_field(id, "normal") + ": must not be (0, 0, 0) (a plane's normal)");
+        },
+        scene.shapes[k]);
+  }
+}
 
 // The demo scenes are scenes/classic2d.json and classic3d.json, compiled in at build time
 // (embed_demo_scenes.cmake): one definition, and the file a student opens is the built-in scene. In 3D, a

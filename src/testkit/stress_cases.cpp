@@ -204,7 +204,8 @@ std::vector<StressCase3D> stress_cases_3d(bool long_sweep) {
     odd.add("equal depth", "crossing pair", Orbit3D{origin, 8.0, 0.0, glm::half_pi<double>(), 2.0},
             Scene3D{kDefaultBackground,
                     {Sphere{{0, -0.5, 0}, 1.5, Rgb8{0, 0, 255}, ""},
-                     Sphere{{0, 0.5, 0}, 1.5, Rgb8{0, 255, 255}, ""}}});
+                     Sphere{{0, 0.5, 0}, 1.5, Rgb8{0, 255, 255}, ""}},
+                    {}});
     for (auto& c : odd.cases) b.cases.push_back(std::move(c));
   }
   return b.cases;
