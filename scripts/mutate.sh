@@ -25,7 +25,26 @@ fi
 
 names=() files=() edits=() targets=() tests=()
 # mutant NAME FILE SED-SCRIPT TARGETS CTEST-REGEX   (a target web:NAME is built in the web page's build)
+# FILE may be FILE@FUNCTION: the edit then applies only inside that function's definition (from the line at
+# column 0 that names it followed by "(" to the next "}" at column 0), so the same text elsewhere in the file
+# is never touched and a mutant names the code it means; --check says when the function is gone.
 mutant() { names+=("$1"); files+=("$2"); edits+=("$3"); targets+=("$4"); tests+=("$5"); }
+
+# apply_edit PATH EDIT FUNCTION: sed EDIT on PATH in place, within FUNCTION when one is given. Returns 3 when
+# the function is not found, sed's status otherwise.
+apply_edit() {
+  local path=$1 edit=$2 function=$3 first last
+  if [ -z "$function" ]; then
+    sed -i -e "$edit" "$path"
+    return
+  fi
+  first=$(grep -nE "^[A-Za-z_].*[^A-Za-z0-9_:]${function}\(" "$path" | grep -v ';$' | head -1 | cut -d: -f1)
+  [ -n "$first" ] || return 3
+  # A one-line definition ends on its own line; a longer one at the next "}" at column 0.
+  last=$(awk -v from="$first" 'NR == from && /}$/ { print NR; exit } NR > from && /^}/ { print NR; exit }' "$path")
+  [ -n "$last" ] || return 3
+  sed -i -e "${first},${last}{" -e "$edit" -e "}" "$path"
+}
 
 CORE="raycam_core_tests"
 CORE_TESTS="^core:"
@@ -398,10 +417,11 @@ mutant bench-accuracy-references-uncounted src/bench/bench_accuracy.cpp 's/std::
 mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
 # --- #46 a seam for objects ---
 mutant fast-caster-ignores-planes src/core/ray_caster.cpp 's/ \&\& scene.shapes.empty()) {/) {/' "$CORE" "^core: ?(a scene with planes|spheres alone keep)"
-mutant plane-ids-not-after-spheres src/core/ray_caster.cpp 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t < hit.t) hit = Hit{int(k), t};/' "$CORE" "^core: ?a scene with planes"
-mutant plane-seen-behind-the-eye src/core/ray_caster.cpp 's/return t >= 0.0 || (any_sign \&\& std::isfinite(t)) ? t : kNoHit<double>;/return std::isfinite(t) ? t : kNoHit<double>;/' "$CORE" "^core: ?a plane and a sphere at the same distance"
-mutant plane-ties-to-higher-id src/core/ray_caster.cpp 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t <= hit.t) hit = Hit{first_id + int(k), t};/' "$CORE" "^core: ?a plane and a sphere at the same distance"
+mutant plane-ids-not-after-spheres src/core/ray_caster.cpp@nearer_shape 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t < hit.t) hit = Hit{int(k), t};/' "$CORE" "^core: ?a scene with planes"
+mutant plane-seen-behind-the-eye src/core/ray_caster.cpp@plane_hit_t 's/return t >= 0.0 || (any_sign \&\& std::isfinite(t)) ? t : kNoHit<double>;/return std::isfinite(t) ? t : kNoHit<double>;/' "$CORE" "^core: ?a plane and a sphere at the same distance"
+mutant plane-ties-to-higher-id src/core/ray_caster.cpp@nearer_shape 's/if (t < hit.t) hit = Hit{first_id + int(k), t};/if (t <= hit.t) hit = Hit{first_id + int(k), t};/' "$CORE" "^core: ?a plane and a sphere at the same distance"
 mutant plane-zero-normal-accepted src/core/scene.cpp 's/if (plane.normal == glm::dvec3(0.0))/if (false)/' "$CORE" "^core: ?a plane's point and normal are checked"
+mutant scene-file-drops-planes src/io/scene_file.cpp@scene_to_json 's/^    require_file_kinds(scene);$/    (void)0;/' "$CORE" "^core: ?a scene file never drops a plane"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then
@@ -419,14 +439,20 @@ if [ "${1:-}" = "--check" ]; then
   for i in "${!names[@]}"; do
     if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qxF "${names[$i]}"; then continue; fi
     checked=$((checked + 1))
-    file=${files[$i]}
+    file=${files[$i]%@*} function=
+    [ "$file" = "${files[$i]}" ] || function=${files[$i]#*@}
     if [ ! -f "$ROOT/$file" ]; then
       printf '%-40s %s\n' "${names[$i]}" "does not apply: $file is gone"
       stale=$((stale + 1))
       continue
     fi
     cp "$ROOT/$file" "$scratch_file"
-    if ! sed -i -e "${edits[$i]}" "$scratch_file" 2> /dev/null; then
+    apply_edit "$scratch_file" "${edits[$i]}" "$function" 2> /dev/null
+    applied=$?
+    if [ $applied -eq 3 ]; then
+      printf '%-40s %s\n' "${names[$i]}" "does not apply: $function() is gone from $file"
+      stale=$((stale + 1))
+    elif [ $applied -ne 0 ]; then
       printf '%-40s %s\n' "${names[$i]}" "does not apply: its sed script is malformed"
       stale=$((stale + 1))
     elif cmp -s "$ROOT/$file" "$scratch_file"; then
@@ -485,7 +511,8 @@ build_targets() {
 }
 report=()
 for i in "${!names[@]}"; do
-  name=${names[$i]} file=${files[$i]}
+  name=${names[$i]} file=${files[$i]%@*} function=
+  [ "$file" = "${files[$i]}" ] || function=${files[$i]#*@}
   wanted "$name" || continue
   missing=""
   for target in ${targets[$i]}; do
@@ -503,7 +530,7 @@ for i in "${!names[@]}"; do
     continue
   fi
   cp "$ROOT/$file" "$TREE/$file"  # pristine
-  sed -i -e "${edits[$i]}" "$TREE/$file"
+  apply_edit "$TREE/$file" "${edits[$i]}" "$function"
   if cmp -s "$ROOT/$file" "$TREE/$file"; then
     result="NOT APPLIED (the code it edits moved: update the mutant)"
     broken=$((broken + 1))
