@@ -476,12 +476,21 @@ wanted() {
   return 1
 }
 
-# A scratch copy of the working tree as it is (tracked and new files, build directories left out).
+# A scratch copy of the working tree as it is (tracked and new files, build directories left out). The files
+# arrive in a folder of their own; the tree takes those whose content changed, with a fresh time (tar keeps the
+# checkout's: a file edited after an earlier run copied it, but before that run built it, looked older than
+# its object, and the mutants then ran against the earlier copy), and drops those the checkout no longer has.
 mkdir -p "$TREE"
-find "$TREE" -mindepth 1 -maxdepth 1 ! -name build ! -name build-web -exec rm -rf {} +
+incoming=$SCRATCH/incoming
+rm -rf "$incoming" && mkdir -p "$incoming"
 (cd "$ROOT" && git ls-files -co --exclude-standard -z | grep -zv '^build/' |
-   tar --null --ignore-failed-read -T - -cf - 2>/dev/null) | tar -xf - -C "$TREE" ||
+   tar --null --ignore-failed-read -T - -cf - 2>/dev/null) | tar -xf - -C "$incoming" ||
   { echo "mutate.sh: copying the tree failed" >&2; exit 2; }
+(cd "$incoming" && find . -type f -print0) | while IFS= read -r -d '' f; do
+  cmp -s "$incoming/$f" "$TREE/$f" || { mkdir -p "$(dirname "$TREE/$f")" && cp "$incoming/$f" "$TREE/$f"; }
+done
+(cd "$TREE" && find . \( -path ./build -o -path ./build-web \) -prune -o -type f -print0) |
+  while IFS= read -r -d '' f; do [ -e "$incoming/$f" ] || rm -f "$TREE/$f"; done
 cmake -S "$TREE" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DRAYCAM_WEB_DIR="$WEB_BUILD" "${launcher[@]}" \
   > "$SCRATCH/configure.log" 2>&1 ||
   { echo "mutate.sh: configure failed, see $SCRATCH/configure.log" >&2; exit 2; }
