@@ -111,7 +111,7 @@ TEST_CASE("a scene with planes: every method gives the nearest hit of this file'
   CHECK(planes_seen > 1000);  // the planes are really seen, not all behind the camera
 }
 
-TEST_CASE("a plane and a sphere at the same distance: the lower id (the sphere) wins; a plane behind the eye "
+TEST_CASE("a plane and a sphere at the same distance: the lower id (the sphere) wins, and a plane behind the eye "
           "is not seen",
           "[caster][kinds]") {
   Camera3D camera(9, 9);
@@ -131,7 +131,7 @@ TEST_CASE("a plane and a sphere at the same distance: the lower id (the sphere) 
   CHECK(nearest_hit(scene, camera.primary_ray(4, 4), IntersectFormula::stable).id == 0);
 }
 
-TEST_CASE("spheres alone keep the fast caster; one plane makes the cast the plain loop", "[caster][kinds]") {
+TEST_CASE("spheres alone keep the fast caster, and one plane makes the cast the plain loop", "[caster][kinds]") {
   test::Random random(7);
   Scene3D scene = spheres_and_planes(random, 50, 0);
   Camera3D camera(64, 64);
