@@ -63,6 +63,12 @@ bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
 }
 
+// A double-click on the title bar of the window just begun (Begin's last item) makes its view fill the views'
+// area, or gives the others back.
+void maximise_on_double_click(Display& display, ShownView view) {
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) toggle_maximised(display, view);
+}
+
 // Is the mouse over this window's drawing area? ImGui decided the hovered window at NewFrame from last
 // frame's windows; the area is last frame's too. So the input pass needs no window of its own this frame.
 bool view_hovered(const char* window_id, const Rect& area) {
@@ -199,6 +205,17 @@ Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, in
       observer_area_ = {right_x, top_h, right_w, body_h - top_h};
     }
   }
+  // A maximised view (1, 2, 3 or a double-click on its title) takes the whole views' area, the others are
+  // not drawn; the observer only where there is one.
+  layout.views = {right_x, 0, right_w, body_h};
+  Rect* maximised = display.maximised == ShownView::image      ? &image_area_
+                    : display.maximised == ShownView::overhead ? &overhead_area_
+                    : display.maximised == ShownView::observer && has_observer(state.view) ? &observer_area_
+                                                                                           : nullptr;
+  if (maximised) {
+    image_area_ = overhead_area_ = observer_area_ = {};
+    *maximised = layout.views;
+  }
   return {right_x, body_h, right_w, status_height};
 }
 
@@ -292,9 +309,9 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     uploaded_disc_version_ = state.scene_version;
     uploaded_disc_dimension_ = dimension(state);
   }
-  image_window(state, image_area_, layout);
-  overhead_window(state, overhead_area_, layout);
-  if (has_observer(state.view)) observer_window(state, observer_area_, layout);
+  if (image_area_.w > 0) image_window(state, image_area_, layout);
+  if (overhead_area_.w > 0) overhead_window(state, overhead_area_, layout);
+  if (has_observer(state.view) && observer_area_.w > 0) observer_window(state, observer_area_, layout);
   shown_.placement = panels_.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
@@ -354,6 +371,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   ImGui::PopStyleColor(header_colours);
   layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
   layout.image_title = header.title;
+  maximise_on_double_click(state, ShownView::image);
   // Begin()'s last item is the title bar: what the line left out, whole, under the mouse.
   if (!header.tooltip.empty() && ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
@@ -390,7 +408,9 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                                                                 : tr(state.language, "Overhead view: looking down the z axis###overhead"),
                                             tr(state.language, "Overhead view###overhead"), tr(state.language, "Overhead###overhead")},
                                            area.w);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  maximise_on_double_click(state, ShownView::overhead);
+  if (open) {
     // A short view (under the image, panel hidden, at 3×) gives the button's row to the drawing: F fits it.
     const bool short_view = ImGui::GetContentRegionAvail().y < 5 * ImGui::GetFrameHeightWithSpacing();
     const char* fit = tr(state.language, "Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
@@ -431,7 +451,9 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
                     fitting_title(tr(state.language, "Observer: the camera among the spheres###observer"),
                                   tr(state.language, "Observer###observer"), area.w),
                     area.w);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  maximise_on_double_click(state, ShownView::observer);
+  if (open) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);

@@ -962,6 +962,7 @@ void help_overlay(Display& shown, Language language) {
         {tr_later("Tab"), tr_later("2D / 3D")},
         {tr_later("F"), tr_later("fit the overhead view to the scene and the camera")},
         {tr_later("P"), tr_later("hide / show the panel: the views take its room")},
+        {tr_later("1 / 2 / 3"), tr_later("the image / overhead / observer view fills the views' room; again: back (or double-click its title)")},
         {tr_later("Esc"), tr_later("leave a text field; else unpin the inspected pixel")},
         {tr_later("mouse drag"), tr_later("orbit the camera (overhead: around the target)")},
         {tr_later("wheel"), tr_later("d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom")},
@@ -1032,6 +1033,9 @@ void handle_shortcuts(AppState& state) {
     if (c == '[' || c == ']') state.construction_step = step == steps ? -1 : step;
     if (c == 'f' || c == 'F') state.overhead_fit_pending = true;
     if (c == 'p' || c == 'P') state.panel_hidden = !state.panel_hidden;
+    if (c == '1') toggle_maximised(state, ShownView::image);
+    if (c == '2') toggle_maximised(state, ShownView::overhead);
+    if (c == '3') toggle_maximised(state, ShownView::observer);
   }
   if (changed) state.cameras_dirty = true;
 }

@@ -481,3 +481,72 @@ TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least
       CHECK(renderer.layout().overhead.h >= 0.15f * float(screen.height));  // and the overhead view a usable height
     }
 }
+
+namespace {
+const char* const kViewWindows[] = {"###image", "###overhead", "###observer"};
+
+// Equal to within ImGui's rounding of a window to whole pixels.
+bool rect_equals(const ui::Rect& a, const ui::Rect& b) {
+  return std::abs(a.x - b.x) < 1.0f && std::abs(a.y - b.y) < 1.0f && std::abs(a.w - b.w) < 1.0f &&
+         std::abs(a.h - b.h) < 1.0f;
+}
+}  // namespace
+
+// In a lecture any one view can be shown as big as the views' room allows and then put back: its key (1 image,
+// 2 overhead, 3 observer) or a double-click on its title bar makes its window the whole views' area, the others
+// go; the same again gives every view its rectangle of before. 2D has no observer: 3 changes nothing there.
+TEST_CASE("a view's key or a double-click on its title makes it fill the views' room, and back",
+          "[render][lecture][layout][views]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 3.0f})
+      for (const char* view : {"2d", "3d"})
+        for (const bool hidden : {false, true})
+          for (const bool double_click : {false, true}) {
+            session::AppState state = lecture_state(view, "fr");
+            state.font_scale = scale;
+            state.panel_hidden = hidden;
+            headless::HeadlessRenderer renderer(screen.width, screen.height);
+            renderer.render_settled(state, 3);
+            std::vector<ui::Rect> before;
+            for (const char* name : kViewWindows) before.push_back(window_rect(name));
+            const ui::Rect views = renderer.layout().views;
+            for (int index = 0; index < 3; ++index) {
+              INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view
+                                << (hidden ? ", panel hidden" : "") << (double_click ? ", double-click" : ", key")
+                                << ": view " << kViewWindows[index]);
+              const bool exists = before[std::size_t(index)].w > 0;
+              auto toggle = [&] {
+                if (double_click) {
+                  if (!exists) return;
+                  const ui::Rect title = window_rect(kViewWindows[index]);
+                  renderer.move_mouse(title.x + 0.5f * title.w, title.y + 0.5f * ImGui::GetFrameHeight());
+                  renderer.run_frame(state);
+                  for (const bool down : {true, false, true, false}) {
+                    renderer.set_mouse_button(0, down);
+                    renderer.run_frame(state);
+                  }
+                  renderer.move_mouse(-FLT_MAX, -FLT_MAX);
+                  for (int frame = 0; frame < 24; ++frame) renderer.run_frame(state);  // the next click, no double
+                } else {
+                  renderer.type_text(std::to_string(index + 1).c_str());
+                }
+                renderer.render_settled(state, 3);
+              };
+              toggle();
+              for (int other = 0; other < 3; ++other) {
+                const ui::Rect r = window_rect(kViewWindows[other]);
+                INFO("then " << kViewWindows[other] << " at " << r.x << "," << r.y << " " << r.w << "x" << r.h
+                             << ", the views' room " << views.x << "," << views.y << " " << views.w << "x" << views.h);
+                if (!exists) CHECK(rect_equals(r, before[std::size_t(other)]));  // 3 in 2D: nothing moves
+                else if (other == index) CHECK(rect_equals(r, views));
+                else CHECK(r.w == 0.0f);  // not drawn
+              }
+              toggle();
+              for (int other = 0; other < 3; ++other)
+                CHECK(rect_equals(window_rect(kViewWindows[other]), before[std::size_t(other)]));
+              ++checked;
+            }
+          }
+  CHECK(checked == 2 * 2 * 2 * 2 * 2 * 3);
+}
