@@ -22,7 +22,10 @@
 #include <tuple>
 #include <vector>
 
+#include <functional>
+
 #include "app_flags.h"
+#include "construction_view.h"
 #include "app_options.h"
 #include "check_panel.h"
 #include "frame_host.h"
@@ -549,4 +552,130 @@ TEST_CASE("a view's key or a double-click on its title makes it fill the views' 
             }
           }
   CHECK(checked == 2 * 2 * 2 * 2 * 2 * 3);
+}
+
+namespace {
+// A mark on screen a label must leave in sight: a point of a camera's drawing, the target, a disc.
+struct Mark {
+  ImVec2 centre;
+  float radius;
+  std::string what;
+};
+
+void mark_line(std::vector<Mark>& marks, ImVec2 a, ImVec2 b, const std::string& what) {
+  const int steps = std::max(1, int(std::hypot(b.x - a.x, b.y - a.y) / 2.0f));
+  for (int i = 0; i <= steps; ++i)
+    marks.push_back({{a.x + (b.x - a.x) * i / steps, a.y + (b.y - a.y) * i / steps}, 1.5f, what});
+}
+
+// What the overhead view draws that its labels must not cover, computed from the state: each camera's screen
+// and eye (the final one; the construction's, its axes too, in 3D), the target's cross, and in 2D every disc.
+std::vector<Mark> overhead_content(const session::AppState& state, const ui::OverheadMapping& m) {
+  std::vector<Mark> marks;
+  auto to_screen = [&](auto p) { return m.to_screen(glm::dvec2(p.x, p.y)); };
+  auto camera = [&](const auto& world_from_camera, const std::string& what) {
+    const auto corners = screen_corners_of(world_from_camera);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      if (corners.size() > 2 || i == 0)
+        mark_line(marks, to_screen(corners[i]), to_screen(corners[(i + 1) % corners.size()]), what + "'s screen");
+    marks.push_back({to_screen(eye_of(world_from_camera)), 5.0f, what + "'s eye"});
+  };
+  const bool constructing = state.construction_step >= 0;
+  std::visit(session::overloaded{[&](const session::View2D& view) {
+                          camera(view.camera.world_from_camera(), "the camera");
+                          if (constructing)
+                            camera(session::construction_pose(view.camera.placement(), state.construction_step, 1.0),
+                                   "the construction's camera");
+                          for (const Circle& c : view.scene.circles)
+                            marks.push_back({to_screen(c.centre), float(c.radius) * m.scale, "a disc"});
+                        },
+                        [&](const session::View3D& view) {
+                          camera(view.camera.world_from_camera(), "the camera");
+                          if (!constructing) return;
+                          const glm::dmat4 pose =
+                              session::construction_pose(view.camera.placement(), state.construction_step, 1.0);
+                          camera(pose, "the construction's camera");
+                          for (const session::ConstructionSegment& s : session::construction_camera(pose, 1.5))
+                            if (s.part != session::ConstructionPart::field_edge)
+                              mark_line(marks, to_screen(s.from), to_screen(s.to), "the construction camera's axes");
+                        }},
+             state.view);
+  marks.push_back({to_screen(session::active_target_xy(state)), 7.0f, "the target"});
+  return marks;
+}
+
+bool rect_meets_mark(const ui::WidgetRect& r, const Mark& mark) {
+  const float x = std::clamp(mark.centre.x, r.x0, r.x1), y = std::clamp(mark.centre.y, r.y0, r.y1);
+  return std::hypot(x - mark.centre.x, y - mark.centre.y) < mark.radius;
+}
+bool rects_meet(const ui::WidgetRect& a, const ui::WidgetRect& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+}  // namespace
+
+// The overhead view's labels never lie on what they label (QA at 3×: the 3D side view's box over the canonical
+// camera, the target and the "x" axis name; in 2D "k = 0" over the "y"): the side view with its title, the
+// eye's height, "k = 0" and "column 0" cover no camera, no target, no axis name and in 2D no disc, over the
+// construction's steps, every show-me and random cameras, at 1× to 3× on a projector and a laptop.
+TEST_CASE("the overhead view's labels cover no camera, target, disc or axis name", "[render][lecture][layout]") {
+  std::srand(3);
+  auto uniform = [](double low, double high) { return low + (high - low) * double(std::rand()) / RAND_MAX; };
+  int checked = 0, side_views = 0, k_labels = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        const bool is_2d = std::string(view) == "2d";
+        std::vector<std::function<void(session::AppState&)>> cases;
+        for (int step = 0; step < (is_2d ? 3 : 5); ++step)
+          cases.push_back([step](session::AppState& s) { s.construction_step = step; });
+        for (const session::MistakeLesson& lesson : session::mistake_lessons())
+          cases.push_back([&lesson](session::AppState& s) { session::show_mistake(s, lesson); });
+        for (int trial = 0; trial < 4; ++trial) {
+          const double theta = uniform(-3.1, 3.1), phi = uniform(0.2, 2.9), d = uniform(3.0, 20.0);
+          const int step = trial % 2 ? int(uniform(0.0, is_2d ? 2.99 : 4.99)) : -1;
+          cases.push_back([=](session::AppState& s) {
+            session::active_orbit(s).theta = theta;
+            session::active_orbit(s).d = d;
+            if (auto* v = std::get_if<session::View3D>(&s.view)) v->orbit.phi = phi;
+            s.construction_step = step;
+            s.cameras_dirty = true;
+          });
+        }
+        int index = 0;
+        for (const auto& set_up : cases) {
+          session::AppState state = lecture_state(view, "fr");
+          state.font_scale = scale;
+          set_up(state);
+          if (dimension(state) != (is_2d ? 2 : 3)) continue;  // a show-me that goes to the other dimension
+          ui::WidgetRects rects;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.panels().widget_rects = &rects;
+          renderer.render_settled(state, 3);
+          const std::vector<Mark> marks = overhead_content(state, renderer.layout().overhead_mapping);
+          for (const char* label : {"###label_side_view", "###label_eye_height", "###label_k0", "###label_column0"}) {
+            if (!rects.count(label)) continue;
+            const ui::WidgetRect r = rects.at(label);
+            side_views += std::string(label) == "###label_side_view";
+            k_labels += std::string(label) == "###label_k0";
+            INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ", case " << index
+                              << " (step " << state.construction_step << "): " << label << " at " << r.x0 << ","
+                              << r.y0 << " - " << r.x1 << "," << r.y1);
+            for (const Mark& mark : marks) {
+              if (!is_2d && mark.what == "a disc") continue;
+              INFO("over " << mark.what << " at " << mark.centre.x << "," << mark.centre.y);
+              CHECK_FALSE(rect_meets_mark(r, mark));
+            }
+            for (const char* name : {"###axis_x", "###axis_y"})
+              if (rects.count(name)) {
+                INFO("over the axis name " << name);
+                CHECK_FALSE(rects_meet(r, rects.at(name)));
+              }
+          }
+          ++checked;
+          ++index;
+        }
+      }
+  CHECK(checked > 100);
+  CHECK(side_views > 40);  // the 3D steps drew their side view
+  CHECK(k_labels > 40);    // and the 2D screen its ends' labels
 }
