@@ -229,6 +229,9 @@ void FrameRenderer::view_input(AppState& state) {
   if (!io.MouseDown[ImGuiMouseButton_Left]) left_drag_ = Drag::none;
   if (!io.MouseDown[ImGuiMouseButton_Right]) right_drag_observer_ = false;
   orbit_with_mouse(state, over_overhead, left_drag_ == Drag::overhead, true, &last_.overhead_mapping);
+  // Over the image the wheel zooms it as it does the camera in the other views: d (shift: d_f, the field of
+  // view); it did nothing there. A click there pins a pixel (hover_image), a drag does nothing.
+  orbit_with_mouse(state, view_hovered("###image", last_.image), false, false, nullptr);
   if (!has_observer(state.view)) return;
   orbit_with_mouse(state, over_observer, left_drag_ == Drag::observer, false, nullptr, &observer_view_);
   if (right_drag_observer_ && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
@@ -269,7 +272,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   const bool panel_open = panel_shown && begin_fixed_window("raycam###panel", layout.panel);
   if (panel_open) {
     camera_section(state, panels_);
-    mistakes_section(state);
+    mistakes_section(state, panels_);
     caster_section(state, panels_);
     files_section(state, panels_);
     lecture_section(state, panels_);
@@ -396,7 +399,17 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     if (const auto pixel = active_pixel(state, state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
-      ImGui::GetWindowDrawList()->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
+      // The pixel's outline, and around it a frame as big as the font at least (a 3D pixel is a few screen
+      // pixels: its outline alone was 4 px at 3×, lost from the back row), drawn as thick as the font.
+      const float thickness = std::max(2.0f, 0.1f * ImGui::GetFontSize());
+      const float side = std::max({cw, ch, ImGui::GetFontSize()});
+      const ImVec2 middle{a.x + 0.5f * cw, a.y + 0.5f * ch};
+      const ImVec2 m0{middle.x - 0.5f * side - thickness, middle.y - 0.5f * side - thickness},
+          m1{middle.x + 0.5f * side + thickness, middle.y + 0.5f * side + thickness};
+      ImDrawList* draw = ImGui::GetWindowDrawList();
+      draw->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
+      draw->AddRect(m0, m1, kInspectedRayColour, 0, 0, thickness);
+      if (panels_.widget_rects) (*panels_.widget_rects)["###pinned_marker"] = {m0.x, m0.y, m1.x, m1.y};
     }
   }
   ImGui::End();

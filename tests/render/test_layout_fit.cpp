@@ -679,3 +679,86 @@ TEST_CASE("the overhead view's labels cover no camera, target, disc or axis name
   CHECK(side_views > 40);  // the 3D steps drew their side view
   CHECK(k_labels > 40);    // and the 2D screen its ends' labels
 }
+
+// Where to look after a show-me is read next to what the instructor just pressed: the orange "Look:" line
+// right under the show-me button (after the explanation, it was two screens below at 3×), at 1× to 3×, on
+// a projector and a laptop, for every show-me.
+TEST_CASE("after a show-me, what to look at is right under its button", "[render][lecture][layout]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const session::MistakeLesson& lesson : session::mistake_lessons()) {
+        if (!lesson.show_me) continue;
+        session::AppState state = lecture_state("3d", "fr");
+        state.font_scale = scale;
+        session::show_mistake(state, lesson);
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.run_frame(state);
+        open_every_section();
+        renderer.render_settled(state, 3);
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, show me: " << lesson.id);
+        const std::string button = std::string("###show_me/") + lesson.id;
+        REQUIRE(rects.count(button) == 1);
+        REQUIRE(rects.count("###look_at") == 1);
+        const float gap = rects.at("###look_at").y0 - rects.at(button).y1;
+        INFO("the line starts " << gap << " px under the button");
+        CHECK(gap >= 0.0f);
+        CHECK(gap <= ImGui::GetFrameHeightWithSpacing());  // the button's row is a checkbox's: at most a line
+        ++checked;
+      }
+  CHECK(checked >= 2 * 3 * 5);
+}
+
+// The construction's M_d table is read at the panel's font at every scale (a 4×4 at 3× was drawn at about
+// half of it to fit the panel's width: its last column now goes under the others instead).
+TEST_CASE("M_d's table is drawn at the panel's font at 1x to 3x", "[render][lecture][layout]") {
+  int checked = 0;
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        session::AppState state = lecture_state(view, "fr");
+        state.font_scale = scale;
+        state.construction_step = 2;
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.run_frame(state);
+        open_every_section();
+        renderer.render_settled(state, 3);
+        REQUIRE(rects.count("###matrix/M") == 1);
+        const ui::WidgetRect& table = rects.at("###matrix/M");
+        const float font = table.x1 - table.x0;  // the hook's font size
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ": the table's font "
+                          << font << " px, the panel's " << ImGui::GetFontSize() << " px");
+        CHECK(font >= ImGui::GetFontSize() - 0.5f);
+        const std::string cut = everything_cut(renderer.layout());
+        INFO(cut);
+        CHECK(cut.empty());
+        ++checked;
+      }
+  CHECK(checked == 18);
+}
+
+// The pinned pixel is marked as big as the font at least, drawn as thick as a tenth of it: a 3D pixel is a few
+// screen pixels wide (its outline alone was 4 px at 3×).
+TEST_CASE("the pinned pixel's marker is scaled with the font", "[render][lecture][layout]") {
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        session::AppState state = lecture_state(view, "fr");  // --inspect 3,0: a pinned pixel
+        state.font_scale = scale;
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.render_settled(state, 3);
+        REQUIRE(rects.count("###pinned_marker") == 1);
+        const ui::WidgetRect& marker = rects.at("###pinned_marker");
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ": marker "
+                          << marker.x1 - marker.x0 << "x" << marker.y1 - marker.y0 << " px, font "
+                          << ImGui::GetFontSize());
+        CHECK(marker.x1 - marker.x0 >= ImGui::GetFontSize());
+        CHECK(marker.y1 - marker.y0 >= ImGui::GetFontSize());
+      }
+}
