@@ -337,7 +337,8 @@ TEST_CASE("a verdict arriving while the mouse is over the panel waits for it to 
   renderer.panels().widget_rects = nullptr;
   const auto in_sight = std::find_if(rects.begin(), rects.end(), [&](const auto& entry) {
     const ui::WidgetRect& r = entry.second;
-    return r.x0 > panel->InnerClipRect.Min.x && r.y0 > panel->InnerClipRect.Min.y + 10 &&
+    return r.x0 > panel->InnerClipRect.Min.x && r.x1 < panel->InnerClipRect.Max.x &&  // in the panel, not a view's label
+           r.y0 > panel->InnerClipRect.Min.y + 10 &&
            r.y1 < panel->InnerClipRect.Max.y - 10 && r.x1 - r.x0 > 20;
   });
   REQUIRE(in_sight != rects.end());
@@ -463,10 +464,12 @@ float observer_ground_height(const ui::FrameLayout& layout, const Sphere& ground
 TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least 15% of the window's height",
           "[render][lecture][layout][views]") {
   for (const Screen screen : {kScreens[0], kScreens[1]})
-    for (const bool hidden : {false, true}) {
+    for (const int mode : {0, 1, 2}) {  // the panel shown, hidden, shown with the observer maximised (3)
+      const bool hidden = mode == 1;
       session::AppState state = lecture_state("3d", "fr");
       state.font_scale = 3.0f;
       state.panel_hidden = hidden;
+      if (mode == 2) state.maximised = session::ShownView::observer;
       headless::HeadlessRenderer renderer(screen.width, screen.height);
       renderer.render_settled(state, 3);
       const auto& spheres = view3d(state).scene.spheres;
@@ -474,12 +477,14 @@ TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least
                                               [](const Sphere& a, const Sphere& b) { return a.radius < b.radius; });
       const float height = observer_ground_height(renderer.layout(), ground);
       const ui::Rect& view = renderer.layout().observer;
-      WARN(screen.width << "x" << screen.height << " at 3x, panel " << (hidden ? "hidden" : "shown") << ": observer "
+      WARN(screen.width << "x" << screen.height << " at 3x, panel " << (hidden ? "hidden" : "shown")
+                        << (mode == 2 ? ", observer maximised" : "") << ": observer "
                         << view.w << "x" << view.h << " px, ground " << height << " px = "
                         << 100.0f * height / float(screen.height) << "% of the window's height; overhead "
                         << renderer.layout().overhead.w << "x" << renderer.layout().overhead.h << " px");
-      if (!hidden) continue;
+      if (mode == 0) continue;
       CHECK(height >= 0.15f * float(screen.height));
+      if (mode == 2) continue;
       CHECK(renderer.layout().image.h >= 0.5f * float(screen.height));  // the image keeps half the window
       CHECK(renderer.layout().overhead.h >= 0.15f * float(screen.height));  // and the overhead view a usable height
     }
