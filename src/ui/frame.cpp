@@ -400,7 +400,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
       // The pixel's outline, and around it a frame as big as the font at least (a 3D pixel is a few screen
-      // pixels: its outline alone was 4 px at 3×, lost from the back row), drawn as thick as the font.
+      // pixels: its outline alone was 4 px at 3×, lost from the back row), a tenth of the font thick.
       const float thickness = std::max(2.0f, 0.1f * ImGui::GetFontSize());
       const float side = std::max({cw, ch, ImGui::GetFontSize()});
       const ImVec2 middle{a.x + 0.5f * cw, a.y + 0.5f * ch};

@@ -182,9 +182,9 @@ void explain(const char* text) {
 
 // Columns [first, first + count) of an N×N matrix as a grid of its own, right-aligned, in the panel's font
 // times `scale`, every cell exactly as wide as computed here (an ImGui table sizes its columns from an earlier
-// frame's text, wider at another scale); `stretch`: the columns share the panel's width. Returns the grid's
-// rectangle on screen. Past the panel's width (only at the smallest scale) it scrolls sideways in its own
-// strip.
+// frame's text, wider at another scale); `stretch`: the columns share the panel's width. Returns where the
+// grid starts on screen (x, y), its font size (z) and its height (w). Past the panel's width (only at the
+// smallest scale) it scrolls sideways in its own strip.
 template <int N, class Matrix>
 ImVec4 matrix_grid(const char* id, const Matrix& m, int first, int count, int decimals, float scale, bool stretch) {
   const ImGuiStyle& style = ImGui::GetStyle();
