@@ -212,6 +212,10 @@ SaveAsOutcome save_preset_as(AppState& state, const std::string& path, bool over
   return save_preset(state, path) ? SaveAsOutcome::saved : SaveAsOutcome::failed;
 }
 
+void toggle_maximised(Display& display, ShownView view) {
+  display.maximised = display.maximised == view ? ShownView::all : view;
+}
+
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text) {
   messages.message = std::move(text);
   messages.message_is_error = is_error;

@@ -36,6 +36,10 @@ struct ObserverOrbit {
   float zoom = 1.0f;
 };
 
+// A view made to fill the views' area (keys 1, 2, 3 or a double-click on its title bar; the same again gives
+// the others back). The observer exists in 3D only: maximised in 2D, the views keep their places.
+enum class ShownView { all, image, overhead, observer };
+
 // Where a message came from: it is shown in that panel section (or above the status line when the section
 // is closed).
 enum class MessageSource { general, camera, files, caster, construction };
@@ -95,6 +99,7 @@ struct Display {
   bool high_contrast = false;
   bool show_help = false;
   bool panel_hidden = false;  // P: the views take the panel's width (its button is in the status line then)
+  ShownView maximised = ShownView::all;
   ObserverOrbit observer;
   // The overhead view's world rectangle (x, y). Fitted to the scene and the camera when a scene is loaded,
   // the camera reset or "fit" asked for (button, F key), not every frame: fixed objects hold still while the
@@ -130,6 +135,9 @@ struct HostLink {
 
 // The session's whole state. The panels' own widget state is not in it: the frame keeps it (ui/panel_state.h).
 struct AppState : Lesson, CastCache, Display, Messages, HostLink {};
+
+// Makes `view` fill the views' area, or, when it already does, gives the other views back.
+void toggle_maximised(Display& display, ShownView view);
 
 // Sets the one message on screen (replacing any other).
 void set_message(Messages& messages, MessageSource source, bool is_error, std::string text);

@@ -425,6 +425,14 @@ const std::vector<Translation>& translation_table() {
       {"no sandbox: bubblewrap is not available here",
        "pas de bac à sable : bubblewrap n'est pas disponible ici"},
       {"no classic mistake reproduces this image", "aucune erreur classique ne reproduit cette image"},
+      // The views in a lecture hall: a view fills their room, where to look after a show-me, the status line.
+      {"1 / 2 / 3", "1 / 2 / 3"},
+      {"frame %.0f · cast %.1f ms", "affichage %.0f · rayons %.1f ms"},
+      {"%.0f ms · %.1f ms", "%.0f ms · %.1f ms"},
+      {"column %d:", "colonne %d :"},
+      {"columns %d to %d:", "colonnes %d à %d :"},
+      {"the image / overhead / observer view fills the views' room; again: back (or double-click its title)",
+       "la vue image / de dessus / de l'observateur prend toute la place des vues ; à nouveau : retour (ou double-clic sur son titre)"},
       // The verdicts' names (pass, fail, crash...) are the check command's words: check_texts.cpp.
   };
   return table;

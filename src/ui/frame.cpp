@@ -63,6 +63,12 @@ bool begin_fixed_window(const char* title, const Rect& r, ImGuiWindowFlags extra
   return ImGui::Begin(title, nullptr, kFixedWindow | extra);
 }
 
+// A double-click on the title bar of the window just begun (Begin's last item) makes its view fill the views'
+// area, or gives the others back.
+void maximise_on_double_click(Display& display, ShownView view) {
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) toggle_maximised(display, view);
+}
+
 // Is the mouse over this window's drawing area? ImGui decided the hovered window at NewFrame from last
 // frame's windows; the area is last frame's too. So the input pass needs no window of its own this frame.
 bool view_hovered(const char* window_id, const Rect& area) {
@@ -199,6 +205,17 @@ Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, in
       observer_area_ = {right_x, top_h, right_w, body_h - top_h};
     }
   }
+  // A maximised view (1, 2, 3 or a double-click on its title) takes the whole views' area, the others are
+  // not drawn; the observer only where there is one.
+  layout.views = {right_x, 0, right_w, body_h};
+  Rect* maximised = display.maximised == ShownView::image      ? &image_area_
+                    : display.maximised == ShownView::overhead ? &overhead_area_
+                    : display.maximised == ShownView::observer && has_observer(state.view) ? &observer_area_
+                                                                                           : nullptr;
+  if (maximised) {
+    image_area_ = overhead_area_ = observer_area_ = {};
+    *maximised = layout.views;
+  }
   return {right_x, body_h, right_w, status_height};
 }
 
@@ -212,6 +229,9 @@ void FrameRenderer::view_input(AppState& state) {
   if (!io.MouseDown[ImGuiMouseButton_Left]) left_drag_ = Drag::none;
   if (!io.MouseDown[ImGuiMouseButton_Right]) right_drag_observer_ = false;
   orbit_with_mouse(state, over_overhead, left_drag_ == Drag::overhead, true, &last_.overhead_mapping);
+  // Over the image the wheel zooms it as it does the camera in the other views: d (shift: d_f, the field of
+  // view); it did nothing there. A click there pins a pixel (hover_image), a drag does nothing.
+  orbit_with_mouse(state, view_hovered("###image", last_.image), false, false, nullptr);
   if (!has_observer(state.view)) return;
   orbit_with_mouse(state, over_observer, left_drag_ == Drag::observer, false, nullptr, &observer_view_);
   if (right_drag_observer_ && ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
@@ -252,7 +272,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   const bool panel_open = panel_shown && begin_fixed_window("raycam###panel", layout.panel);
   if (panel_open) {
     camera_section(state, panels_);
-    mistakes_section(state);
+    mistakes_section(state, panels_);
     caster_section(state, panels_);
     files_section(state, panels_);
     lecture_section(state, panels_);
@@ -292,9 +312,9 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
     uploaded_disc_version_ = state.scene_version;
     uploaded_disc_dimension_ = dimension(state);
   }
-  image_window(state, image_area_, layout);
-  overhead_window(state, overhead_area_, layout);
-  if (has_observer(state.view)) observer_window(state, observer_area_, layout);
+  if (image_area_.w > 0) image_window(state, image_area_, layout);
+  if (overhead_area_.w > 0) overhead_window(state, overhead_area_, layout);
+  if (has_observer(state.view) && observer_area_.w > 0) observer_window(state, observer_area_, layout);
   shown_.placement = panels_.shown_matrix;
   shown_.map_version = state.map_version;
   layout.shown = shown_;
@@ -354,6 +374,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   ImGui::PopStyleColor(header_colours);
   layout.image_header = {area.x, area.y, area.w, ImGui::GetFrameHeight()};
   layout.image_title = header.title;
+  maximise_on_double_click(state, ShownView::image);
   // Begin()'s last item is the title bar: what the line left out, whole, under the mouse.
   if (!header.tooltip.empty() && ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
@@ -378,7 +399,17 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
     if (const auto pixel = active_pixel(state, state)) {  // outline the inspected pixel
       const float cw = (high.x - low.x) / state.map.width, ch = (high.y - low.y) / state.map.height;
       const ImVec2 a{low.x + pixel->column * cw, low.y + pixel->row * ch};
-      ImGui::GetWindowDrawList()->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
+      // The pixel's outline, and around it a frame as big as the font at least (a 3D pixel is a few screen
+      // pixels: its outline alone was 4 px at 3×, lost from the back row), a tenth of the font thick.
+      const float thickness = std::max(2.0f, 0.1f * ImGui::GetFontSize());
+      const float side = std::max({cw, ch, ImGui::GetFontSize()});
+      const ImVec2 middle{a.x + 0.5f * cw, a.y + 0.5f * ch};
+      const ImVec2 m0{middle.x - 0.5f * side - thickness, middle.y - 0.5f * side - thickness},
+          m1{middle.x + 0.5f * side + thickness, middle.y + 0.5f * side + thickness};
+      ImDrawList* draw = ImGui::GetWindowDrawList();
+      draw->AddRect({a.x - 1, a.y - 1}, {a.x + cw + 1, a.y + ch + 1}, kInspectedRayColour, 0, 0, 2.0f);
+      draw->AddRect(m0, m1, kInspectedRayColour, 0, 0, thickness);
+      if (panels_.widget_rects) (*panels_.widget_rects)["###pinned_marker"] = {m0.x, m0.y, m1.x, m1.y};
     }
   }
   ImGui::End();
@@ -390,7 +421,9 @@ void FrameRenderer::overhead_window(AppState& state, const Rect& area, FrameLayo
                                                                 : tr(state.language, "Overhead view: looking down the z axis###overhead"),
                                             tr(state.language, "Overhead view###overhead"), tr(state.language, "Overhead###overhead")},
                                            area.w);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  maximise_on_double_click(state, ShownView::overhead);
+  if (open) {
     // A short view (under the image, panel hidden, at 3×) gives the button's row to the drawing: F fits it.
     const bool short_view = ImGui::GetContentRegionAvail().y < 5 * ImGui::GetFrameHeightWithSpacing();
     const char* fit = tr(state.language, "Fit view (F)");  // shorter where the view is narrow (1024 px at 3×)
@@ -431,7 +464,9 @@ void FrameRenderer::observer_window(AppState& state, const Rect& area, FrameLayo
                     fitting_title(tr(state.language, "Observer: the camera among the spheres###observer"),
                                   tr(state.language, "Observer###observer"), area.w),
                     area.w);
-  if (begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar)) {
+  const bool open = begin_fixed_window(title.c_str(), area, ImGuiWindowFlags_NoScrollbar);
+  maximise_on_double_click(state, ShownView::observer);
+  if (open) {
     const ImVec2 top_left = ImGui::GetCursorScreenPos(), size = ImGui::GetContentRegionAvail();
     if (size.x > 4 && size.y > 4) {
       ImGui::InvisibleButton("##observer_input", size);

@@ -35,6 +35,7 @@ struct ShownValues {
 // Where things were drawn this frame: tests sample the screenshot there.
 struct FrameLayout {
   Rect panel;
+  Rect views;     // the room the views share (all of it for a maximised one)
   Rect image;     // the colour bar or texture, exactly
   Rect image_header;  // the image window's title bar (names a classic mistake that is on)
   std::string image_title;  // what that title bar says (ImGui keeps a window's first name, not the shown one)

@@ -24,6 +24,8 @@ namespace {
 constexpr int kMaxFanRays = 160;       // rays drawn in the fan; more would be a grey smear
 constexpr int kMaxFanLines = 48;       // up to this many, each ray is a line; more are drawn as beams
 constexpr int kLabelRings = 7;         // a screen end's label is at most 4 px + 3 lines from it
+constexpr double kConstructionAxisLength = 1.5;     // the 3D construction camera's axes, world units
+constexpr std::size_t kDiscsAvoidedUpTo = 4096;     // the side view looks for a corner off the discs up to this many
 
 ImU32 colour_of(Rgb8 c, int alpha = 255) { return IM_COL32(c.r, c.g, c.b, alpha); }
 glm::dvec2 xy(glm::dvec3 p) { return {p.x, p.y}; }  // seen from above
@@ -114,7 +116,8 @@ using PlacedLabels = std::vector<std::pair<ImVec2, ImVec2>>;  // top-left, size:
 // The axes through the world origin, each named inside the view at its end, whole at any font size: "x" left
 // of the right edge, "y" under the top edge (a name is left out when its axis is out of the view). The names'
 // rectangles go into `placed`, for the labels placed after them.
-void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVec2 clip_max, PlacedLabels& placed) {
+void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVec2 clip_max, PlacedLabels& placed,
+               WidgetRects* label_rects) {
   const ImU32 axis = IM_COL32(255, 255, 255, 40), name = IM_COL32(255, 255, 255, 90);
   draw->AddLine({clip_min.x, m.origin.y}, {clip_max.x, m.origin.y}, axis);
   draw->AddLine({m.origin.x, clip_min.y}, {m.origin.x, clip_max.y}, axis);
@@ -123,11 +126,13 @@ void draw_axes(ImDrawList* draw, const OverheadMapping& m, ImVec2 clip_min, ImVe
     const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5), std::max(clip_min.y + 2, m.origin.y - x_size.y - 1)};
     draw->AddText(at, name, "x");
     placed.push_back({at, x_size});
+    if (label_rects) (*label_rects)["###axis_x"] = {at.x, at.y, at.x + x_size.x, at.y + x_size.y};
   }
   if (m.origin.x >= clip_min.x && m.origin.x <= clip_max.x) {  // right of its axis, left of the right edge
     const ImVec2 at{std::min(m.origin.x + 4, clip_max.x - y_size.x - 2), clip_min.y + 2};
     draw->AddText(at, name, "y");
     placed.push_back({at, y_size});
+    if (label_rects) (*label_rects)["###axis_y"] = {at.x, at.y, at.x + y_size.x, at.y + y_size.y};
   }
 }
 
@@ -144,6 +149,7 @@ bool overlaps_any(ImVec2 at, ImVec2 size, const PlacedLabels& placed) {
 // font, the largest size to use.
 constexpr float kMinLabelScale = 0.5f;
 constexpr float kInsetFontScale = 0.7f;  // the side view's lines above it: smaller, to hide less of the view
+constexpr float kMinTitleWidth = 160.0f;  // those lines' width at least (a small frame: they go past it)
 struct FittedLabel {
   std::string text;  // with '\n' where it is broken
   float font_size;
@@ -169,6 +175,16 @@ FittedLabel fit_label(const std::string& text, float width, float largest = 1.0f
   return {two, size, measure(two, size)};
 }
 
+// A line on screen as the small discs along it that a label must not cover (one every few pixels).
+void mark_segment(std::vector<ScreenDisc>& marks, ImVec2 a, ImVec2 b, float radius = 3.0f) {
+  const float length = std::hypot(b.x - a.x, b.y - a.y);
+  const int steps = std::min(400, int(std::ceil(length / radius)));
+  for (int i = 0; i <= steps; ++i) {
+    const float f = steps ? float(i) / float(steps) : 0.0f;
+    marks.push_back({{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)}, radius});
+  }
+}
+
 // The camera (screen, eye, field-of-view edges) through a matrix: the final M_d or a construction step.
 template <class Matrix>
 void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world_from_camera, ImU32 colour,
@@ -191,8 +207,9 @@ void draw_camera(ImDrawList* draw, const OverheadMapping& m, const Matrix& world
 // The 3D construction's intermediate camera seen from above (construction_view.h). Axes that point straight
 // up or down (the view before R_y tilts it) shrink to a point: marked ⊗ (into the ground) or ⊙ (out of it).
 void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm::dmat4& world_from_camera,
-                          const PlacedLabels& placed, Language language) {
-  constexpr double kAxisLength = 1.5;
+                          const PlacedLabels& placed, const std::vector<ScreenDisc>& avoid,
+                          const std::vector<ScreenDisc>& discs, Language language, WidgetRects* label_rects) {
+  constexpr double kAxisLength = kConstructionAxisLength;
   auto colour = [](ConstructionPart part) {
     const glm::vec4 c = construction_colour(part);
     return IM_COL32(int(c.r * 255), int(c.g * 255), int(c.b * 255), int(c.a * 255));
@@ -225,27 +242,93 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
       }
     }
   }
-  // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in the
-  // corner shows it, and the tilt, at a fixed scale. The eye's height is written beside the eye where it
-  // fits whole there, off the axes' names; else (narrow views at lecture sizes) under the side view's title,
-  // which goes inside its frame where it fits there, else on lines of its own above it, as wide as the view.
+  // From above, H (the eye pushed back along z) only shows in numbers: a side view (x right, z up) in a
+  // corner shows it, and the tilt, at a fixed scale. The eye's height is written beside the eye where a spot
+  // off the cameras, the target and the axes' names is near it; else (narrow views at lecture sizes) under
+  // the side view's title, which goes inside its frame where it fits there, else on lines of its own above
+  // it, as wide as the view.
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   const glm::dvec3 eye = eye_of(world_from_camera);
   const ImVec2 at = m.to_screen(xy(eye));
   draw->AddCircleFilled(at, 5.0f, kConstructionColour);
   const std::string height = trf(language, "eye E: z = %.2f", eye.z);
-  const ImVec2 height_size = ImGui::CalcTextSize(height.c_str()), height_at{at.x + 8, at.y - 18};
-  const bool beside_eye = height_at.x >= clip_min.x && height_at.y >= clip_min.y &&
-                          height_at.x + height_size.x <= clip_max.x && height_at.y + height_size.y <= clip_max.y &&
-                          !overlaps_any(height_at, height_size, placed);
+  const ImVec2 height_size = ImGui::CalcTextSize(height.c_str());
+  std::vector<LabelBox> taken;
+  for (const auto& [q, size] : placed) taken.push_back({q, size});
+  const std::optional<ImVec2> height_spot =
+      label_beside(at, {1.0, -1.0}, height_size, clip_min, clip_max, taken, avoid, kLabelRings);
+  const bool beside_eye = height_spot.has_value();
+  const ImVec2 height_at = height_spot.value_or(ImVec2{});
+  if (beside_eye) taken.push_back({height_at, height_size});
 
-  const float side = std::min(170.0f, 0.4f * std::min(clip_max.x - clip_min.x, clip_max.y - clip_min.y));
-  const ImVec2 low{clip_min.x + 6, clip_max.y - side - 6}, high{clip_min.x + 6 + side, clip_max.y - 6};
+  // The side view with its title: in the first corner (bottom-left, bottom-right, top-left, top-right) or
+  // edge's middle, at full size, then smaller, that covers no camera, no target, no axis name and not the eye's label, and of
+  // those the first that covers no disc either (from above, a ground's disc may cover the whole view).
   const std::string side_title = beside_eye ? tr(language, "side view: x →, z ↑") : std::string(tr(language, "side view: x →, z ↑")) + "\n" + height;
-  const bool title_inside = ImGui::CalcTextSize(side_title.c_str()).x <= side - 8;
-  const FittedLabel title =
-      fit_label(side_title, title_inside ? side - 8 : clip_max.x - clip_min.x - 20, title_inside ? 1.0f : kInsetFontScale);
-  const ImVec2 title_at = title_inside ? ImVec2{low.x + 4, low.y + 2} : ImVec2{low.x + 4, low.y - title.size.y - 4};
+  struct SideBox {
+    ImVec2 low, high, title_at;
+    FittedLabel title;
+    bool title_inside;
+    LabelBox whole() const {
+      const ImVec2 top{std::min(low.x, title_at.x - 2), std::min(low.y, title_at.y - 1)};
+      return {top, {std::max(high.x, title_at.x + title.size.x + 2) - top.x, high.y - top.y}};
+    }
+  };
+  const float largest_side = std::min(170.0f, 0.4f * std::min(clip_max.x - clip_min.x, clip_max.y - clip_min.y));
+  // Spots along the view's edges: the four corners, then the middles of the edges. fx, fy: 0 left / top,
+  // 1 right / bottom.
+  static constexpr std::pair<float, float> kSpots[] = {{0, 1}, {1, 1}, {0, 0}, {1, 0}, {0.5f, 1}, {0.5f, 0}, {0, 0.5f}, {1, 0.5f}};
+  auto side_box = [&](float side, int spot) {
+    SideBox box;
+    const auto [fx, fy] = kSpots[spot];
+    const bool right = fx > 0.75f;
+    box.title_inside = ImGui::CalcTextSize(side_title.c_str()).x <= side - 8;
+    // Above the frame: as wide as the frame (smaller, on two lines), so that the pair takes one corner.
+    box.title = fit_label(side_title, box.title_inside ? side - 8 : std::max(side, kMinTitleWidth),
+                          box.title_inside ? 1.0f : kInsetFontScale);
+    const float above = box.title_inside ? 0.0f : box.title.size.y + 4;  // the title's lines over the frame
+    const float x = clip_min.x + 6 + fx * (clip_max.x - clip_min.x - 12 - side);
+    const float y = clip_min.y + 6 + above + fy * (clip_max.y - clip_min.y - 12 - above - side);
+    box.low = {x, y};
+    box.high = {x + side, y + side};
+    const float title_x = std::clamp(box.title_inside || !right ? x + 4 : x + side - 4 - box.title.size.x,
+                                     clip_min.x + 4, std::max(clip_min.x + 4, clip_max.x - 4 - box.title.size.x));
+    box.title_at = box.title_inside ? ImVec2{x + 4, y + 2} : ImVec2{title_x, y - box.title.size.y - 4};
+    return box;
+  };
+  auto meets = [](const LabelBox& box, const std::vector<ScreenDisc>& marks) {
+    return std::any_of(marks.begin(), marks.end(), [&](const ScreenDisc& d) { return box_meets_disc(box, d); });
+  };
+  auto covers_label = [&](const LabelBox& box) {
+    return std::any_of(taken.begin(), taken.end(), [&](const LabelBox& q) {
+      return box.at.x < q.at.x + q.size.x && q.at.x < box.at.x + box.size.x && box.at.y < q.at.y + q.size.y &&
+             q.at.y < box.at.y + box.size.y;
+    });
+  };
+  std::optional<SideBox> chosen, clear_of_marks;
+  for (const float part : {1.0f, 0.8f, 0.6f, 0.45f}) {
+    for (int spot = 0; spot < int(std::size(kSpots)) && !chosen; ++spot) {
+      const SideBox box = side_box(part * largest_side, spot);
+      const LabelBox whole = box.whole();
+      if (whole.at.y < clip_min.y || covers_label(whole) || meets(whole, avoid)) continue;
+      if (!clear_of_marks) clear_of_marks = box;
+      if (!meets(whole, discs)) chosen = box;
+    }
+    if (chosen) break;
+  }
+  // Nowhere clear (a view smaller than the camera's drawing): the bottom-left corner at full size.
+  const SideBox box = chosen ? *chosen : clear_of_marks ? *clear_of_marks : side_box(largest_side, 0);
+  const ImVec2 low = box.low, high = box.high, title_at = box.title_at;
+  const float side = high.x - low.x;
+  const bool title_inside = box.title_inside;
+  const FittedLabel& title = box.title;
+  if (label_rects) {
+    const LabelBox whole = box.whole();
+    (*label_rects)["###label_side_view"] = {whole.at.x, whole.at.y, whole.at.x + whole.size.x, whole.at.y + whole.size.y};
+    if (beside_eye)
+      (*label_rects)["###label_eye_height"] = {height_at.x, height_at.y, height_at.x + height_size.x,
+                                               height_at.y + height_size.y};
+  }
   draw->AddRectFilled(low, high, IM_COL32(15, 15, 22, 230));
   draw->AddRect(low, high, IM_COL32(170, 175, 190, 255));
   // Above the frame the lines lie over the construction (discs, the camera): a dark backing keeps them readable.
@@ -278,13 +361,43 @@ void draw_construction_3d(ImDrawList* draw, const OverheadMapping& m, const glm:
   draw->PopClipRect();
 }
 
+// What the view's labels must leave in sight, as small discs on screen: the camera (its screen and eye), the
+// target, and during the construction the intermediate camera (its screen, eye and axes).
+std::vector<ScreenDisc> content_marks(const OverheadMapping& m, const Lesson& state) {
+  std::vector<ScreenDisc> marks;
+  auto outline = [&](const auto& world_from_camera) {
+    glm::dvec2 eye;
+    const std::vector<glm::dvec2> corners = camera_outline(world_from_camera, &eye);
+    for (std::size_t i = 0; i + (corners.size() == 2 ? 1 : 0) < corners.size(); ++i)
+      mark_segment(marks, m.to_screen(corners[i]), m.to_screen(corners[(i + 1) % corners.size()]));
+    marks.push_back({m.to_screen(eye), 7.0f});
+  };
+  std::visit([&](const auto& view) { outline(view.camera.world_from_camera()); }, state.view);
+  marks.push_back({m.to_screen(active_target_xy(state)), 9.0f});
+  if (shows_construction(state))
+    std::visit(overloaded{[&](const View2D& view) {
+                            outline(construction_pose(view.camera.placement(), state.construction_step,
+                                                      state.construction_fraction));
+                          },
+                          [&](const View3D& view) {
+                            const glm::dmat4 pose = construction_pose(view.camera.placement(), state.construction_step,
+                                                                      state.construction_fraction);
+                            for (const ConstructionSegment& segment : construction_camera(pose, kConstructionAxisLength))
+                              if (segment.part != ConstructionPart::field_edge)
+                                mark_segment(marks, m.to_screen(xy(segment.from)), m.to_screen(xy(segment.to)));
+                            marks.push_back({m.to_screen(xy(eye_of(pose))), 9.0f});
+                          }},
+               state.view);
+  return marks;
+}
+
 // The 2D screen segment's landmarks: pixel k = 0 (the handout's first pixel, at canonical x near -1: the
 // eye's right) and the other end, the eye's left, where the colour bar's column 0 is; and, when the pixels
 // are few enough to tell apart, their edges as ticks (the rays leave from the centres between them, or from
 // the ticks under the "pixel edges" mistake). Each label sits beside its own end, whatever the font's size:
 // its long text where it fits, else its short one, off the discs, the markers and the other label.
 void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Lesson& state, const Camera2D& camera,
-                         WidgetRects* label_rects) {
+                         const PlacedLabels& names, const std::vector<ScreenDisc>& marks, WidgetRects* label_rects) {
   const glm::dmat3& world_from_camera = camera.world_from_camera();
   auto at = [&](double x) { return m.to_screen(transform_point(world_from_camera, glm::dvec2(x, 0.0))); };
   const int n = camera.pixel_count();
@@ -303,13 +416,12 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Lesso
   const ImVec2 first = at(camera.canonical_pixel(0).x);
   draw->AddCircleFilled(first, 5.0f, kFirstPixelColour);
 
-  // What a label must not cover: every disc, the eye, the target and both ends' markers.
-  std::vector<ScreenDisc> avoid;
+  // What a label must not cover: every disc, the cameras, the target, both ends' markers and the axes' names.
+  std::vector<ScreenDisc> avoid = marks;
   for (const gl::Disc& disc : overhead_discs(state)) avoid.push_back({m.to_screen(disc.centre), float(disc.radius) * m.scale});
-  avoid.push_back({m.to_screen(camera.eye()), 6.0f});
-  avoid.push_back({m.to_screen(active_target_xy(state)), 8.0f});
   avoid.push_back({first, 6.0f});
   std::vector<LabelBox> placed;
+  for (const auto& [q, size] : names) placed.push_back({q, size});
   auto label = [&](ImVec2 end, glm::dvec2 outward, const char* long_text, const char* short_text, const char* id) {
     // The long text only right at the end (far from it, it would read as the other end's); else the short.
     const char* text = long_text;
@@ -320,6 +432,9 @@ void mark_screen_segment(ImDrawList* draw, const OverheadMapping& m, const Lesso
       spot = label_beside(end, outward, ImGui::CalcTextSize(short_text), draw->GetClipRectMin(),
                           draw->GetClipRectMax(), placed, avoid, kLabelRings);
     }
+    if (!spot)  // farther out, rather than on a disc: the line to its end says whose it is
+      spot = label_beside(end, outward, ImGui::CalcTextSize(short_text), draw->GetClipRectMin(),
+                          draw->GetClipRectMax(), placed, avoid, 4 * kLabelRings);
     const ImVec2 size = ImGui::CalcTextSize(text);
     // Nowhere free (a view smaller than the text): beyond the end, kept inside the view and off the other.
     const ImVec2 top_left =
@@ -502,7 +617,7 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const Lesson& sta
   const ImVec2 clip_min = draw->GetClipRectMin(), clip_max = draw->GetClipRectMax();
   draw->AddRectFilled(clip_min, clip_max, colour_of(std::visit([](const auto& view) { return view.scene.background; }, state.view)));
   PlacedLabels placed;  // the labels drawn so far: the next ones go beside them
-  draw_axes(draw, m, clip_min, clip_max, placed);
+  draw_axes(draw, m, clip_min, clip_max, placed, label_rects);
   const double far_length = 3.0 * camera_reach(state);
 
   // One texel per framebuffer pixel (a HiDPI window has more of them than UI pixels).
@@ -523,16 +638,24 @@ void draw_overhead(ImDrawList* draw, const OverheadMapping& m, const Lesson& sta
   }, state.view);
   // The handout's frames: the canonical camera after the first `step` factors (a: none … d: all).
   const int step = state.construction_step;
+  const std::vector<ScreenDisc> marks = content_marks(m, state);
   std::visit(overloaded{[&](const View2D& view) {
-                          mark_screen_segment(draw, m, state, view.camera, label_rects);
+                          mark_screen_segment(draw, m, state, view.camera, placed, marks, label_rects);
                           if (!final_camera)
                             draw_camera(draw, m, construction_pose(view.camera.placement(), step, state.construction_fraction),
                                         kConstructionColour, far_length * 0.3, true);
                         },
                         [&](const View3D& view) {  // a frame of axes: the 3D steps turn it
-                          if (!final_camera)
+                          if (!final_camera) {
+                            // The discs a corner's side view would rather not cover (up to a few thousand: the
+                            // check is per frame).
+                            std::vector<ScreenDisc> discs;
+                            if (view.scene.spheres.size() <= kDiscsAvoidedUpTo)
+                              for (const Sphere& sphere : view.scene.spheres)
+                                discs.push_back({m.to_screen(xy(sphere.centre)), float(sphere.radius) * m.scale});
                             draw_construction_3d(draw, m, construction_pose(view.camera.placement(), step, state.construction_fraction), placed,
-                                                 state.language);
+                                                 marks, discs, state.language, label_rects);
+                          }
                         }},
              state.view);
   const glm::dvec2 target = active_target_xy(state);

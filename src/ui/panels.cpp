@@ -180,55 +180,88 @@ void explain(const char* text) {
   ImGui::PopStyleColor();
 }
 
-// Right-aligned, with three decimals where the panel has room for every column. Where it has not (lecture
-// sizes), two decimals, then the table alone in a smaller font (down to kMinTableFontScale of the panel's),
-// so that every column shows whole, the translation column the lesson ends on included; only past that
-// does the table scroll sideways in its own strip. Drawn as a grid of its own, every cell exactly as wide
-// as computed here (an ImGui table sizes its columns from an earlier frame's text, wider at another scale).
+// Columns [first, first + count) of an N×N matrix as a grid of its own, right-aligned, in the panel's font
+// times `scale`, every cell exactly as wide as computed here (an ImGui table sizes its columns from an earlier
+// frame's text, wider at another scale); `stretch`: the columns share the panel's width. Returns where the
+// grid starts on screen (x, y), its font size (z) and its height (w). Past the panel's width (only at the
+// smallest scale) it scrolls sideways in its own strip.
+template <int N, class Matrix>
+ImVec4 matrix_grid(const char* id, const Matrix& m, int first, int count, int decimals, float scale, bool stretch) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float avail = ImGui::GetContentRegionAvail().x - 1;  // the right border
+  const float padding = style.CellPadding.x;
+  double widest = 0;
+  for (int row = 0; row < N; ++row)
+    for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
+  const float font_size = ImGui::GetFontSize() * scale;
+  ImVec2 cell{ImGui::CalcTextSize(text).x * scale + 2 * padding, font_size + 2 * style.CellPadding.y};
+  const ImVec2 size{count * cell.x + 1, N * cell.y + 1};
+  const bool fits = size.x <= avail + 1;
+  if (fits && stretch) cell.x = std::floor(avail / count);  // no empty strip at the right
+  if (!fits) ImGui::BeginChild(id, {0, size.y + style.ScrollbarSize}, false, ImGuiWindowFlags_HorizontalScrollbar);
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float width = count * cell.x;
+  ImGui::Dummy({width + 1, size.y});  // the grid's place in the layout
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 inner = ImGui::GetColorU32(ImGuiCol_TableBorderLight), outer = ImGui::GetColorU32(ImGuiCol_TableBorderStrong);
+  for (int i = 1; i <= count; ++i)
+    draw->AddLine({at.x + i * cell.x, at.y}, {at.x + i * cell.x, at.y + N * cell.y}, inner);
+  for (int i = 1; i < N; ++i) draw->AddLine({at.x, at.y + i * cell.y}, {at.x + width, at.y + i * cell.y}, inner);
+  draw->AddRect(at, {at.x + width, at.y + N * cell.y + 1}, outer);
+  for (int row = 0; row < N; ++row)
+    for (int i = 0; i < count; ++i) {
+      const int column = first + i;
+      std::snprintf(text, sizeof text, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
+      const float text_w = ImGui::CalcTextSize(text).x * scale;  // GLM is column-major: m[column][row]
+      draw->AddText(ImGui::GetFont(), font_size,
+                    {at.x + (i + 1) * cell.x - padding - text_w, at.y + row * cell.y + style.CellPadding.y},
+                    ImGui::GetColorU32(ImGuiCol_Text), text);
+    }
+  if (!fits) ImGui::EndChild();
+  return {at.x, at.y, font_size, size.y};
+}
+
+// A matrix in the panel's font, with three decimals where the panel has room for every column, else two.
+// Where its N columns do not fit side by side (a 4×4 at lecture sizes: the table was drawn at about half the
+// panel's font), as many as fit go in a grid and the others in grids under it, each named by its columns,
+// all in the panel's font; only where not even one column fits is the table drawn in a smaller font (down
+// to kMinTableFontScale of the panel's). `panels`: the tests' hook, the font size drawn.
 constexpr float kMinTableFontScale = 0.55f;
 template <int N, class Matrix>
-void matrix_table(const char* id, const Matrix& m) {
+void matrix_table(Language language, const char* id, const Matrix& m, const PanelState* panels = nullptr) {
   const ImGuiStyle& style = ImGui::GetStyle();
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
   char text[64];
   const float avail = ImGui::GetContentRegionAvail().x - 1;  // the right border
-  auto text_width = [&](int decimals) {  // the widest value's, the sign included
+  auto column_width = [&](int decimals) {  // the widest value's, the sign included, with its padding
     std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
-    return ImGui::CalcTextSize(text).x;
+    return ImGui::CalcTextSize(text).x + 2 * style.CellPadding.x;
   };
-  const float padding = style.CellPadding.x;
-  const int decimals = N * (text_width(3) + 2 * padding) <= avail ? 3 : 2;
-  const float scale =
-      std::clamp((avail / N - 2 * padding) / text_width(decimals), kMinTableFontScale, 1.0f);
-  const float font_size = ImGui::GetFontSize() * scale;
-  ImVec2 cell{text_width(decimals) * scale + 2 * padding, font_size + 2 * style.CellPadding.y};
-  const ImVec2 size{N * cell.x + 1, N * cell.y + 1};
-  const bool fits = size.x <= avail + 1;
-  if (fits) cell.x = std::floor(avail / N);  // the columns share the panel's width (no empty strip at the right)
-  if (!fits) ImGui::BeginChild(id, {0, size.y + style.ScrollbarSize}, false, ImGuiWindowFlags_HorizontalScrollbar);
-  const ImVec2 at = ImGui::GetCursorScreenPos();
-  const float width = fits ? N * cell.x : size.x;
-  ImGui::Dummy({width, size.y});  // the grid's place in the layout
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  const ImU32 inner = ImGui::GetColorU32(ImGuiCol_TableBorderLight), outer = ImGui::GetColorU32(ImGuiCol_TableBorderStrong);
-  for (int i = 1; i <= N; ++i) {
-    draw->AddLine({at.x + i * cell.x, at.y}, {at.x + i * cell.x, at.y + N * cell.y}, inner);
-    if (i < N) draw->AddLine({at.x, at.y + i * cell.y}, {at.x + width, at.y + i * cell.y}, inner);
-  }
-  draw->AddRect(at, {at.x + width, at.y + N * cell.y + 1}, outer);
-  for (int row = 0; row < N; ++row)
-    for (int column = 0; column < N; ++column) {
-      std::snprintf(text, sizeof text, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
-      const float width = ImGui::CalcTextSize(text).x * scale;  // GLM is column-major: m[column][row]
-      draw->AddText(ImGui::GetFont(), font_size,
-                    {at.x + (column + 1) * cell.x - padding - width, at.y + row * cell.y + style.CellPadding.y},
-                    ImGui::GetColorU32(ImGuiCol_Text), text);
+  const int decimals = N * column_width(3) <= avail ? 3 : 2;
+  ImVec4 drawn;
+  // How many columns fit side by side at the panel's font.
+  const int per_grid = std::min(N, int(avail / column_width(decimals)));
+  if (per_grid >= 1) {
+    drawn = matrix_grid<N>(id, m, 0, per_grid, decimals, 1.0f, true);
+    for (int first = per_grid; first < N; first += per_grid) {  // the others under it, named
+      const int count = std::min(per_grid, N - first);
+      ImGui::TextDisabled("%s", count == 1 ? trf(language, "column %d:", first + 1).c_str()
+                                           : trf(language, "columns %d to %d:", first + 1, first + count).c_str());
+      matrix_grid<N>((std::string(id) + "_" + std::to_string(first)).c_str(), m, first, count, decimals, 1.0f, true);
     }
-  if (!fits) ImGui::EndChild();
+  } else {
+    const float scale =
+        std::clamp((avail / N - 2 * style.CellPadding.x) / (column_width(decimals) - 2 * style.CellPadding.x),
+                   kMinTableFontScale, 1.0f);
+    drawn = matrix_grid<N>(id, m, 0, N, decimals, scale, true);
+  }
+  if (panels && panels->widget_rects)
+    (*panels->widget_rects)[std::string("###matrix/") + id] = {drawn.x, drawn.y, drawn.x + drawn.z, drawn.y + drawn.w};
 }
-
 
 // The one "… already exists. Replace it?" of every export (Save as, Export colour map, Export figure): the
 // files found when the user clicked (looked for once, not at every frame), Replace and Cancel under it, and
@@ -373,15 +406,15 @@ namespace {
 void placement_tables(AppState& state, PanelState& panels, const View2D& view, int step, int steps) {
   const Placement2D& p = view.camera.placement();
   ImGui::TextWrapped("%s", trf(state.language, "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
-  if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>(state.language, "H", p.scale); ImGui::TreePop(); }
   if (ImGui::TreeNode("R(α)")) {
-    matrix_table<3>("R", p.rotation);
+    matrix_table<3>(state.language, "R", p.rotation);
     ImGui::TreePop();
   }
-  if (ImGui::TreeNode("T(OP)")) { matrix_table<3>("T", p.translation); ImGui::TreePop(); }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<3>(state.language, "T", p.translation); ImGui::TreePop(); }
   wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
   panels.shown_matrix = glm::dmat4(construction_step(p, step));
-  matrix_table<3>("M", construction_step(p, step));
+  matrix_table<3>(state.language, "M", construction_step(p, step), &panels);
 }
 void placement_tables(AppState& state, PanelState& panels, const View3D& view, int step, int steps) {
   if (step < steps)  // the last step is the placed camera itself, drawn as always (nothing in orange)
@@ -398,23 +431,23 @@ void placement_tables(AppState& state, PanelState& panels, const View3D& view, i
   }
   const Placement3D& p = view.camera.placement();
   ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
-  if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>("H", p.scale); ImGui::TreePop(); }
+  if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>(state.language, "H", p.scale); ImGui::TreePop(); }
   if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
-    matrix_table<4>("Roll", p.roll);
+    matrix_table<4>(state.language, "Roll", p.roll);
     ImGui::TreePop();
   }
   if (ImGui::TreeNode("Ry(φ)")) {
-    matrix_table<4>("Ry", p.polar);
+    matrix_table<4>(state.language, "Ry", p.polar);
     ImGui::TreePop();
   }
   if (ImGui::TreeNode("Rz(θ)")) {
-    matrix_table<4>("Rz", p.azimuth);
+    matrix_table<4>(state.language, "Rz", p.azimuth);
     ImGui::TreePop();
   }
-  if (ImGui::TreeNode("T(OP)")) { matrix_table<4>("T", p.translation); ImGui::TreePop(); }
+  if (ImGui::TreeNode("T(OP)")) { matrix_table<4>(state.language, "T", p.translation); ImGui::TreePop(); }
   wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
   panels.shown_matrix = construction_step(p, step);
-  matrix_table<4>("M", construction_step(p, step));
+  matrix_table<4>(state.language, "M", construction_step(p, step), &panels);
 }
 }  // namespace
 
@@ -583,11 +616,11 @@ void arccos_error_line(const AppState& state) {
 }
 }  // namespace
 
-void mistakes_section(AppState& state) {
+void mistakes_section(AppState& state, const PanelState& panels) {
   const bool any = !mistakes_on(state).empty();
   if (!section(tr(state.language, "Classic mistakes###mistakes"), tr(state.language, "Mistakes###mistakes"), any ? ImGuiTreeNodeFlags_DefaultOpen : 0))
     return;
-  bool changed = false;
+  bool changed = false, look_at_shown = false;
   for (const MistakeLesson& lesson : mistake_lessons()) {
     if (!mistake_applies(state, lesson)) continue;
     ImGui::PushID(lesson.id);
@@ -595,18 +628,24 @@ void mistakes_section(AppState& state) {
     if (lesson.show_me) {
       same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "show me")).x + 2 * ImGui::GetStyle().FramePadding.x);
       if (ImGui::SmallButton(tr(state.language, "show me"))) show_mistake(state, lesson);
+      record_item_rect(panels, std::string("###show_me/") + lesson.id);
     }
-    if (!mistake_is_on(state, lesson) && state.mistake_look_at == lesson.look_at) state.mistake_look_at.clear();
-    explain(mistake_text(state, state, lesson).c_str());
-    if (!state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at)
-    {
+    // What to look at, right under the button that changed it (after the explanation it was two screens
+    // below at 3×), while that mistake is on (two mistakes share one show-me: the one on says it).
+    const bool looking = !state.mistake_look_at.empty() && state.mistake_look_at == lesson.look_at &&
+                         mistake_is_on(state, lesson);
+    look_at_shown |= looking;
+    if (looking) {
       ImGui::PushStyleColor(ImGuiCol_Text, current_theme().look_at);  // wrapped: not cut at the panel's edge
       ImGui::TextWrapped("%s", trf(state.language, "Look: %s", tr(state.language, lesson.look_at)).c_str());
       ImGui::PopStyleColor();
+      record_item_rect(panels, "###look_at");
     }
+    explain(mistake_text(state, state, lesson).c_str());
     if (!lesson.info) arccos_error_line(state);
     ImGui::PopID();
   }
+  if (!look_at_shown) state.mistake_look_at.clear();  // its mistake was turned off
   if (changed) state.cameras_dirty = true;
 }
 
@@ -892,25 +931,24 @@ void status_line(AppState& state, const PanelState& panels) {
     const auto width_of = [](const char* label) {
       return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
     };
-    if (ImGui::CalcTextSize(trf(state.language, "cast %.2f ms", state.cast_ms).c_str()).x + spacing + width_of(open_label) > room)
+    if (ImGui::CalcTextSize(trf(state.language, "%.0f ms · %.1f ms", state.frame_ms, state.cast_ms).c_str()).x + spacing +
+            width_of(open_label) > room)
       open_label = tr(state.language, "Open…###open_scene_file");
     open_width = width_of(open_label);
     room -= open_width + spacing;
   }
-  // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
   const char* caster = tr(state.language, uses_reference_caster(state) ? tr_later("reference caster")
                                                        : cast_method_name(state.cast_options.method));
-  std::string line = trf(state.language, "frame %.1f ms · cast %.2f ms (%s)", state.frame_ms, state.cast_ms, caster);
-  if (state.refine_pending) line += std::string(" · ") + tr(state.language, "coarse preview while dragging");
-  // Shorter and shorter until it fits (1024 px at 3×: the cast time alone).
-  for (const std::string& shorter : {trf(state.language, "frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms),
-                                     trf(state.language, "cast %.2f ms", state.cast_ms)})
-    if (ImGui::CalcTextSize(line.c_str()).x > room) line = shorter;
+  const std::string line = status_timing_line(state.language, state.frame_ms, state.cast_ms, caster, state.refine_pending, room);
   ImGui::TextUnformatted(line.c_str());
   record_item_rect(panels, "###status_text");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
+    // Wrapped within the window (at 3× on 1024 px its lines ran past the right edge); the times first, named.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 0.6f * ImGui::GetIO().DisplaySize.x);
+    ImGui::TextUnformatted(trf(state.language, "frame %.1f ms · cast %.2f ms", state.frame_ms, state.cast_ms).c_str());
     status_counters(state);
+    ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
   }
   if (picker) {
@@ -920,6 +958,20 @@ void status_line(AppState& state, const PanelState& panels) {
     record_item_rect(panels, "###open_scene_file");
     ImGui::PopStyleVar();
   }
+}
+
+std::string status_timing_line(Language language, double frame_ms, double cast_ms, const char* caster, bool coarse,
+                               float room) {
+  // Short enough for 1280 px at 3× font; the work counters are in the tooltip.
+  std::string line = trf(language, "frame %.1f ms · cast %.2f ms (%s)", frame_ms, cast_ms, caster);
+  if (coarse) line += std::string(" · ") + tr(language, "coarse preview while dragging");
+  // Shorter and shorter until it fits; the frame time stays in the shortest too (1024 px at 3× showed the
+  // cast's time alone, nothing of what the window costs).
+  for (const std::string& shorter : {trf(language, "frame %.1f ms · cast %.2f ms", frame_ms, cast_ms),
+                                     trf(language, "frame %.0f · cast %.1f ms", frame_ms, cast_ms),
+                                     trf(language, "%.0f ms · %.1f ms", frame_ms, cast_ms)})
+    if (ImGui::CalcTextSize(line.c_str()).x > room) line = shorter;
+  return line;
 }
 
 void status_counters(const AppState& state) {
@@ -962,6 +1014,7 @@ void help_overlay(Display& shown, Language language) {
         {tr_later("Tab"), tr_later("2D / 3D")},
         {tr_later("F"), tr_later("fit the overhead view to the scene and the camera")},
         {tr_later("P"), tr_later("hide / show the panel: the views take its room")},
+        {tr_later("1 / 2 / 3"), tr_later("the image / overhead / observer view fills the views' room; again: back (or double-click its title)")},
         {tr_later("Esc"), tr_later("leave a text field; else unpin the inspected pixel")},
         {tr_later("mouse drag"), tr_later("orbit the camera (overhead: around the target)")},
         {tr_later("wheel"), tr_later("d;  shift+wheel: d_f;  ctrl+wheel (observer): zoom")},
@@ -1032,6 +1085,9 @@ void handle_shortcuts(AppState& state) {
     if (c == '[' || c == ']') state.construction_step = step == steps ? -1 : step;
     if (c == 'f' || c == 'F') state.overhead_fit_pending = true;
     if (c == 'p' || c == 'P') state.panel_hidden = !state.panel_hidden;
+    if (c == '1') toggle_maximised(state, ShownView::image);
+    if (c == '2') toggle_maximised(state, ShownView::overhead);
+    if (c == '3') toggle_maximised(state, ShownView::observer);
   }
   if (changed) state.cameras_dirty = true;
 }

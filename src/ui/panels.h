@@ -26,11 +26,15 @@ bool section(const char* full, const char* brief, int flags = 0);
 void camera_section(session::AppState& state, const PanelState& panels);
 void construction_section(session::AppState& state, PanelState& panels);
 void inspector_section(const session::AppState& state);
-void mistakes_section(session::AppState& state);
+void mistakes_section(session::AppState& state, const PanelState& panels);
 void caster_section(session::AppState& state, const PanelState& panels);
 void files_section(session::AppState& state, PanelState& panels);
 void lecture_section(session::AppState& state, PanelState& panels);
 void status_line(session::AppState& state, const PanelState& panels);
+// The status line's times in at most `room` pixels of the current font: the frame's and the cast's always
+// (shorter forms where the long ones do not fit), the caster and a coarse preview where they fit.
+std::string status_timing_line(Language language, double frame_ms, double cast_ms, const char* caster, bool coarse,
+                               float room);
 // The work counters (rays, pixels skipped, tests, culled): the status line's tooltip.
 void status_counters(const session::AppState& state);
 // In a panel section: shows the message here if it came from `source` (wrapped, red for errors, with a

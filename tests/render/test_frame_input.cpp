@@ -489,3 +489,62 @@ TEST_CASE("Export colour map asks before replacing a file: Cancel keeps it, Repl
   CHECK_FALSE(state.message_is_error);
   CHECK(state.message.find(path) != std::string::npos);
 }
+
+// The wheel over the image zooms it as the camera does in the other views: d closer (shift: d_f larger, the
+// field narrower), and the image of that very frame is the core's for the new camera (it did nothing there).
+TEST_CASE("the wheel over the image moves the camera closer, shift+wheel lengthens d_f", "[render][input]") {
+  session::AppState state = state_for({"--size", "64x64"});
+  headless::HeadlessRenderer renderer(1280, 720);
+  renderer.render_settled(state);
+  const ui::Rect image = renderer.layout().image;
+  renderer.move_mouse(image.x + image.w / 2, image.y + image.h / 2);
+  renderer.run_frame(state);
+  const double d = view3d(state).orbit.d, df = view3d(state).orbit.df;
+  renderer.scroll(1.0f);
+  renderer.run_frame(state);
+  CHECK(view3d(state).orbit.d == Approx(d * 0.9));
+  CHECK(view3d(state).orbit.df == Approx(df));
+  check_frame_agrees_with_core(renderer, state);
+  ImGui::GetIO().KeyShift = true;
+  renderer.scroll(1.0f);
+  renderer.run_frame(state);
+  ImGui::GetIO().KeyShift = false;
+  CHECK(view3d(state).orbit.df == Approx(df * 1.1));
+  check_frame_agrees_with_core(renderer, state);
+}
+
+// The status line gives the frame's time as well as the cast's at every lecture size (at 3× on 1024 px it
+// kept the cast's alone), never wider than its room; its tooltip wraps inside the window (it ran past the
+// right edge at 1024 px).
+TEST_CASE("the status line shows the frame time at 3x and its tooltip stays in the window", "[render][lecture]") {
+  for (const auto& [width, height] : {std::pair{1024, 768}, std::pair{1280, 800}})
+    for (const char* language : {"fr", "en"})
+      for (const float scale : {1.0f, 2.0f, 3.0f}) {
+        session::AppState state = state_for({"--lang", language});
+        state.font_scale = scale;
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(width, height);
+        renderer.panels().widget_rects = &rects;
+        renderer.render_settled(state);
+        const float room = renderer.layout().status.w - 2 * ImGui::GetStyle().WindowPadding.x;
+        const std::string line = ui::status_timing_line(state.language, 16.7, 0.42, "stable", false, room);
+        INFO(width << "x" << height << " at " << scale << "x, " << language << ": '" << line << "' in " << room << " px");
+        CHECK((line.find("17") != std::string::npos || line.find("16.7") != std::string::npos));
+        CHECK(line.find("0.4") != std::string::npos);
+        CHECK(ImGui::CalcTextSize(line.c_str()).x <= room);
+        // The tooltip, under the mouse on the line.
+        REQUIRE(rects.count("###status_text") == 1);
+        const ui::WidgetRect& text = rects.at("###status_text");
+        renderer.move_mouse(text.x0 + 5, (text.y0 + text.y1) / 2);
+        renderer.render_settled(state, 40);  // past the hover delay
+        const ImGuiWindow* tooltip = nullptr;
+        for (ImGuiWindow* window : GImGui->Windows)
+          if (window->WasActive && (window->Flags & ImGuiWindowFlags_Tooltip)) tooltip = window;
+        REQUIRE(tooltip);
+        INFO("tooltip at " << tooltip->Pos.x << "," << tooltip->Pos.y << " " << tooltip->Size.x << "x" << tooltip->Size.y);
+        CHECK(tooltip->Pos.x >= 0.0f);
+        CHECK(tooltip->Pos.x + tooltip->Size.x <= float(width));
+        CHECK(tooltip->Pos.y >= 0.0f);
+        CHECK(tooltip->Pos.y + tooltip->Size.y <= float(height));
+      }
+}

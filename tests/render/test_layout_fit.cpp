@@ -22,7 +22,10 @@
 #include <tuple>
 #include <vector>
 
+#include <functional>
+
 #include "app_flags.h"
+#include "construction_view.h"
 #include "app_options.h"
 #include "check_panel.h"
 #include "frame_host.h"
@@ -334,7 +337,8 @@ TEST_CASE("a verdict arriving while the mouse is over the panel waits for it to 
   renderer.panels().widget_rects = nullptr;
   const auto in_sight = std::find_if(rects.begin(), rects.end(), [&](const auto& entry) {
     const ui::WidgetRect& r = entry.second;
-    return r.x0 > panel->InnerClipRect.Min.x && r.y0 > panel->InnerClipRect.Min.y + 10 &&
+    return r.x0 > panel->InnerClipRect.Min.x && r.x1 < panel->InnerClipRect.Max.x &&  // in the panel, not a view's label
+           r.y0 > panel->InnerClipRect.Min.y + 10 &&
            r.y1 < panel->InnerClipRect.Max.y - 10 && r.x1 - r.x0 > 20;
   });
   REQUIRE(in_sight != rects.end());
@@ -460,10 +464,12 @@ float observer_ground_height(const ui::FrameLayout& layout, const Sphere& ground
 TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least 15% of the window's height",
           "[render][lecture][layout][views]") {
   for (const Screen screen : {kScreens[0], kScreens[1]})
-    for (const bool hidden : {false, true}) {
+    for (const int mode : {0, 1, 2}) {  // the panel shown, hidden, shown with the observer maximised (3)
+      const bool hidden = mode == 1;
       session::AppState state = lecture_state("3d", "fr");
       state.font_scale = 3.0f;
       state.panel_hidden = hidden;
+      if (mode == 2) state.maximised = session::ShownView::observer;
       headless::HeadlessRenderer renderer(screen.width, screen.height);
       renderer.render_settled(state, 3);
       const auto& spheres = view3d(state).scene.spheres;
@@ -471,13 +477,293 @@ TEST_CASE("at 3x with the panel hidden, the observer's ground sphere is at least
                                               [](const Sphere& a, const Sphere& b) { return a.radius < b.radius; });
       const float height = observer_ground_height(renderer.layout(), ground);
       const ui::Rect& view = renderer.layout().observer;
-      WARN(screen.width << "x" << screen.height << " at 3x, panel " << (hidden ? "hidden" : "shown") << ": observer "
+      WARN(screen.width << "x" << screen.height << " at 3x, panel " << (hidden ? "hidden" : "shown")
+                        << (mode == 2 ? ", observer maximised" : "") << ": observer "
                         << view.w << "x" << view.h << " px, ground " << height << " px = "
                         << 100.0f * height / float(screen.height) << "% of the window's height; overhead "
                         << renderer.layout().overhead.w << "x" << renderer.layout().overhead.h << " px");
-      if (!hidden) continue;
+      if (mode == 0) continue;
       CHECK(height >= 0.15f * float(screen.height));
+      if (mode == 2) continue;
       CHECK(renderer.layout().image.h >= 0.5f * float(screen.height));  // the image keeps half the window
       CHECK(renderer.layout().overhead.h >= 0.15f * float(screen.height));  // and the overhead view a usable height
     }
+}
+
+namespace {
+const char* const kViewWindows[] = {"###image", "###overhead", "###observer"};
+
+// Equal to within ImGui's rounding of a window to whole pixels.
+bool rect_equals(const ui::Rect& a, const ui::Rect& b) {
+  return std::abs(a.x - b.x) < 1.0f && std::abs(a.y - b.y) < 1.0f && std::abs(a.w - b.w) < 1.0f &&
+         std::abs(a.h - b.h) < 1.0f;
+}
+}  // namespace
+
+// In a lecture any one view can be shown as big as the views' room allows and then put back: its key (1 image,
+// 2 overhead, 3 observer) or a double-click on its title bar makes its window the whole views' area, the others
+// go; the same again gives every view its rectangle of before. 2D has no observer: 3 changes nothing there.
+TEST_CASE("a view's key or a double-click on its title makes it fill the views' room, and back",
+          "[render][lecture][layout][views]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 3.0f})
+      for (const char* view : {"2d", "3d"})
+        for (const bool hidden : {false, true})
+          for (const bool double_click : {false, true}) {
+            session::AppState state = lecture_state(view, "fr");
+            state.font_scale = scale;
+            state.panel_hidden = hidden;
+            headless::HeadlessRenderer renderer(screen.width, screen.height);
+            renderer.render_settled(state, 3);
+            std::vector<ui::Rect> before;
+            for (const char* name : kViewWindows) before.push_back(window_rect(name));
+            const ui::Rect views = renderer.layout().views;
+            for (int index = 0; index < 3; ++index) {
+              INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view
+                                << (hidden ? ", panel hidden" : "") << (double_click ? ", double-click" : ", key")
+                                << ": view " << kViewWindows[index]);
+              const bool exists = before[std::size_t(index)].w > 0;
+              auto toggle = [&] {
+                if (double_click) {
+                  if (!exists) return;
+                  const ui::Rect title = window_rect(kViewWindows[index]);
+                  renderer.move_mouse(title.x + 0.5f * title.w, title.y + 0.5f * ImGui::GetFrameHeight());
+                  renderer.run_frame(state);
+                  for (const bool down : {true, false, true, false}) {
+                    renderer.set_mouse_button(0, down);
+                    renderer.run_frame(state);
+                  }
+                  renderer.move_mouse(-FLT_MAX, -FLT_MAX);
+                  for (int frame = 0; frame < 24; ++frame) renderer.run_frame(state);  // the next click, no double
+                } else {
+                  renderer.type_text(std::to_string(index + 1).c_str());
+                }
+                renderer.render_settled(state, 3);
+              };
+              toggle();
+              for (int other = 0; other < 3; ++other) {
+                const ui::Rect r = window_rect(kViewWindows[other]);
+                INFO("then " << kViewWindows[other] << " at " << r.x << "," << r.y << " " << r.w << "x" << r.h
+                             << ", the views' room " << views.x << "," << views.y << " " << views.w << "x" << views.h);
+                if (!exists) CHECK(rect_equals(r, before[std::size_t(other)]));  // 3 in 2D: nothing moves
+                else if (other == index) CHECK(rect_equals(r, views));
+                else CHECK(r.w == 0.0f);  // not drawn
+              }
+              toggle();
+              for (int other = 0; other < 3; ++other)
+                CHECK(rect_equals(window_rect(kViewWindows[other]), before[std::size_t(other)]));
+              ++checked;
+            }
+          }
+  CHECK(checked == 2 * 2 * 2 * 2 * 2 * 3);
+}
+
+namespace {
+// A mark on screen a label must leave in sight: a point of a camera's drawing, the target, a disc.
+struct Mark {
+  ImVec2 centre;
+  float radius;
+  std::string what;
+};
+
+void mark_line(std::vector<Mark>& marks, ImVec2 a, ImVec2 b, const std::string& what) {
+  const int steps = std::max(1, int(std::hypot(b.x - a.x, b.y - a.y) / 2.0f));
+  for (int i = 0; i <= steps; ++i)
+    marks.push_back({{a.x + (b.x - a.x) * i / steps, a.y + (b.y - a.y) * i / steps}, 1.5f, what});
+}
+
+// What the overhead view draws that its labels must not cover, computed from the state: each camera's screen
+// and eye (the final one; the construction's, its axes too, in 3D), the target's cross, and in 2D every disc.
+std::vector<Mark> overhead_content(const session::AppState& state, const ui::OverheadMapping& m) {
+  std::vector<Mark> marks;
+  auto to_screen = [&](auto p) { return m.to_screen(glm::dvec2(p.x, p.y)); };
+  auto camera = [&](const auto& world_from_camera, const std::string& what) {
+    const auto corners = screen_corners_of(world_from_camera);
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      if (corners.size() > 2 || i == 0)
+        mark_line(marks, to_screen(corners[i]), to_screen(corners[(i + 1) % corners.size()]), what + "'s screen");
+    marks.push_back({to_screen(eye_of(world_from_camera)), 5.0f, what + "'s eye"});
+  };
+  const bool constructing = state.construction_step >= 0;
+  std::visit(session::overloaded{[&](const session::View2D& view) {
+                          camera(view.camera.world_from_camera(), "the camera");
+                          if (constructing)
+                            camera(session::construction_pose(view.camera.placement(), state.construction_step, 1.0),
+                                   "the construction's camera");
+                          for (const Circle& c : view.scene.circles)
+                            marks.push_back({to_screen(c.centre), float(c.radius) * m.scale, "a disc"});
+                        },
+                        [&](const session::View3D& view) {
+                          camera(view.camera.world_from_camera(), "the camera");
+                          if (!constructing) return;
+                          const glm::dmat4 pose =
+                              session::construction_pose(view.camera.placement(), state.construction_step, 1.0);
+                          camera(pose, "the construction's camera");
+                          for (const session::ConstructionSegment& s : session::construction_camera(pose, 1.5))
+                            if (s.part != session::ConstructionPart::field_edge)
+                              mark_line(marks, to_screen(s.from), to_screen(s.to), "the construction camera's axes");
+                        }},
+             state.view);
+  marks.push_back({to_screen(session::active_target_xy(state)), 7.0f, "the target"});
+  return marks;
+}
+
+bool rect_meets_mark(const ui::WidgetRect& r, const Mark& mark) {
+  const float x = std::clamp(mark.centre.x, r.x0, r.x1), y = std::clamp(mark.centre.y, r.y0, r.y1);
+  return std::hypot(x - mark.centre.x, y - mark.centre.y) < mark.radius;
+}
+bool rects_meet(const ui::WidgetRect& a, const ui::WidgetRect& b) {
+  return a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1;
+}
+}  // namespace
+
+// The overhead view's labels never lie on what they label (QA at 3×: the 3D side view's box over the canonical
+// camera, the target and the "x" axis name; in 2D "k = 0" over the "y"): the side view with its title, the
+// eye's height, "k = 0" and "column 0" cover no camera, no target, no axis name and in 2D no disc, over the
+// construction's steps, every show-me and random cameras, at 1× to 3× on a projector and a laptop.
+TEST_CASE("the overhead view's labels cover no camera, target, disc or axis name", "[render][lecture][layout]") {
+  std::srand(3);
+  auto uniform = [](double low, double high) { return low + (high - low) * double(std::rand()) / RAND_MAX; };
+  int checked = 0, side_views = 0, k_labels = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        const bool is_2d = std::string(view) == "2d";
+        std::vector<std::function<void(session::AppState&)>> cases;
+        for (int step = 0; step < (is_2d ? 3 : 5); ++step)
+          cases.push_back([step](session::AppState& s) { s.construction_step = step; });
+        for (const session::MistakeLesson& lesson : session::mistake_lessons())
+          cases.push_back([&lesson](session::AppState& s) { session::show_mistake(s, lesson); });
+        for (int trial = 0; trial < 4; ++trial) {
+          const double theta = uniform(-3.1, 3.1), phi = uniform(0.2, 2.9), d = uniform(3.0, 20.0);
+          const int step = trial % 2 ? int(uniform(0.0, is_2d ? 2.99 : 4.99)) : -1;
+          cases.push_back([=](session::AppState& s) {
+            session::active_orbit(s).theta = theta;
+            session::active_orbit(s).d = d;
+            if (auto* v = std::get_if<session::View3D>(&s.view)) v->orbit.phi = phi;
+            s.construction_step = step;
+            s.cameras_dirty = true;
+          });
+        }
+        int index = 0;
+        for (const auto& set_up : cases) {
+          session::AppState state = lecture_state(view, "fr");
+          state.font_scale = scale;
+          set_up(state);
+          if (dimension(state) != (is_2d ? 2 : 3)) continue;  // a show-me that goes to the other dimension
+          ui::WidgetRects rects;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          renderer.panels().widget_rects = &rects;
+          renderer.render_settled(state, 3);
+          const std::vector<Mark> marks = overhead_content(state, renderer.layout().overhead_mapping);
+          for (const char* label : {"###label_side_view", "###label_eye_height", "###label_k0", "###label_column0"}) {
+            if (!rects.count(label)) continue;
+            const ui::WidgetRect r = rects.at(label);
+            side_views += std::string(label) == "###label_side_view";
+            k_labels += std::string(label) == "###label_k0";
+            INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ", case " << index
+                              << " (step " << state.construction_step << "): " << label << " at " << r.x0 << ","
+                              << r.y0 << " - " << r.x1 << "," << r.y1);
+            for (const Mark& mark : marks) {
+              if (!is_2d && mark.what == "a disc") continue;
+              INFO("over " << mark.what << " at " << mark.centre.x << "," << mark.centre.y);
+              CHECK_FALSE(rect_meets_mark(r, mark));
+            }
+            for (const char* name : {"###axis_x", "###axis_y"})
+              if (rects.count(name)) {
+                INFO("over the axis name " << name);
+                CHECK_FALSE(rects_meet(r, rects.at(name)));
+              }
+          }
+          ++checked;
+          ++index;
+        }
+      }
+  CHECK(checked > 100);
+  CHECK(side_views > 40);  // the 3D steps drew their side view
+  CHECK(k_labels > 40);    // and the 2D screen its ends' labels
+}
+
+// Where to look after a show-me is read next to what the instructor just pressed: the orange "Look:" line
+// right under the show-me button (after the explanation, it was two screens below at 3×), at 1× to 3×, on
+// a projector and a laptop, for every show-me.
+TEST_CASE("after a show-me, what to look at is right under its button", "[render][lecture][layout]") {
+  int checked = 0;
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const session::MistakeLesson& lesson : session::mistake_lessons()) {
+        if (!lesson.show_me) continue;
+        session::AppState state = lecture_state("3d", "fr");
+        state.font_scale = scale;
+        session::show_mistake(state, lesson);
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.run_frame(state);
+        open_every_section();
+        renderer.render_settled(state, 3);
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, show me: " << lesson.id);
+        const std::string button = std::string("###show_me/") + lesson.id;
+        REQUIRE(rects.count(button) == 1);
+        REQUIRE(rects.count("###look_at") == 1);
+        const float gap = rects.at("###look_at").y0 - rects.at(button).y1;
+        INFO("the line starts " << gap << " px under the button");
+        CHECK(gap >= 0.0f);
+        CHECK(gap <= ImGui::GetFrameHeightWithSpacing());  // the button's row is a checkbox's: at most a line
+        ++checked;
+      }
+  CHECK(checked >= 2 * 3 * 5);
+}
+
+// The construction's M_d table is read at the panel's font at every scale (a 4×4 at 3× was drawn at about
+// half of it to fit the panel's width: its last column now goes under the others instead).
+TEST_CASE("M_d's table is drawn at the panel's font at 1x to 3x", "[render][lecture][layout]") {
+  int checked = 0;
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        session::AppState state = lecture_state(view, "fr");
+        state.font_scale = scale;
+        state.construction_step = 2;
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.run_frame(state);
+        open_every_section();
+        renderer.render_settled(state, 3);
+        REQUIRE(rects.count("###matrix/M") == 1);
+        const ui::WidgetRect& table = rects.at("###matrix/M");
+        const float font = table.x1 - table.x0;  // the hook's font size
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ": the table's font "
+                          << font << " px, the panel's " << ImGui::GetFontSize() << " px");
+        CHECK(font >= ImGui::GetFontSize() - 0.5f);
+        const std::string cut = everything_cut(renderer.layout());
+        INFO(cut);
+        CHECK(cut.empty());
+        ++checked;
+      }
+  CHECK(checked == 18);
+}
+
+// The pinned pixel is marked as big as the font at least, drawn as thick as a tenth of it: a 3D pixel is a few
+// screen pixels wide (its outline alone was 4 px at 3×).
+TEST_CASE("the pinned pixel's marker is scaled with the font", "[render][lecture][layout]") {
+  for (const Screen screen : {kScreens[0], kScreens[1]})
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* view : {"2d", "3d"}) {
+        session::AppState state = lecture_state(view, "fr");  // --inspect 3,0: a pinned pixel
+        state.font_scale = scale;
+        ui::WidgetRects rects;
+        headless::HeadlessRenderer renderer(screen.width, screen.height);
+        renderer.panels().widget_rects = &rects;
+        renderer.render_settled(state, 3);
+        REQUIRE(rects.count("###pinned_marker") == 1);
+        const ui::WidgetRect& marker = rects.at("###pinned_marker");
+        INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << view << ": marker "
+                          << marker.x1 - marker.x0 << "x" << marker.y1 - marker.y0 << " px, font "
+                          << ImGui::GetFontSize());
+        CHECK(marker.x1 - marker.x0 >= ImGui::GetFontSize());
+        CHECK(marker.y1 - marker.y0 >= ImGui::GetFontSize());
+      }
 }

@@ -6,10 +6,13 @@
 #include <cstdio>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
+#include <cstdlib>
 
 #include "../scratch_dir.h"
 #include "app_state_for.h"
+#include "construction_view.h"
 #include "observer_view.h"
 
 using namespace raycam;
@@ -126,7 +129,13 @@ TEST_CASE("dragging in the observer view moves the camera the way the mouse goes
           session::AppState up = state;  // screen y grows downwards: up is dy < 0
           session::drag_camera_in_observer(up, observer, 0.0, -10.0);
           session::place_cameras(up);
-          CHECK(ndc(observer, view3d(up).camera.screen_centre()).y > before.y);
+          // Up on the screen too, unless the camera moves (almost) along the line of sight: seen from close (the
+          // observer frames its content tightly), a camera coming towards it below the view's middle goes down
+          // the screen even as it rises.
+          const glm::dvec3 up_vector = glm::cross(observer.right, observer.look_at - observer.eye);
+          const glm::dvec3 rising = view3d(up).camera.screen_centre() - view3d(state).camera.screen_centre();
+          if (std::abs(glm::dot(glm::normalize(rising), glm::normalize(up_vector))) >= 0.2)
+            CHECK(ndc(observer, view3d(up).camera.screen_centre()).y > before.y);
           CHECK(view3d(up).camera.screen_centre().z > view3d(state).camera.screen_centre().z);
           // Right: unless the camera moves (almost) along the line of sight, where left and right vanish.
           const glm::dvec3 along_theta{-std::sin(view3d(state).orbit.theta), std::cos(view3d(state).orbit.theta), 0.0};
@@ -136,4 +145,78 @@ TEST_CASE("dragging in the observer view moves the camera the way the mouse goes
           session::place_cameras(right);
           CHECK(ndc(observer, view3d(right).camera.screen_centre()).x > before.x);
         }
+}
+
+namespace {
+// The extent, in normalised device coordinates, of what the observer shows of a ball: points spread over its
+// surface (a point: itself). Whether every one is in front of the observer's near plane goes in `in_front`.
+void extend_ndc(const session::ObserverCamera& observer, glm::dvec3 centre, double radius, glm::dvec2& low,
+                glm::dvec2& high, bool& in_front) {
+  const int rings = radius > 0 ? 24 : 0;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < (rings ? 48 : 1); ++j) {
+      const double polar = rings ? glm::pi<double>() * i / rings : 0.0, azimuth = 2 * glm::pi<double>() * j / 48;
+      const glm::dvec3 p = centre + radius * glm::dvec3(std::sin(polar) * std::cos(azimuth),
+                                                        std::sin(polar) * std::sin(azimuth), std::cos(polar));
+      const glm::dvec4 clip = glm::dmat4(observer.projection) * glm::dmat4(observer.view) * glm::dvec4(p, 1.0);
+      in_front = in_front && clip.w > 0 && clip.z > -clip.w && clip.z < clip.w;
+      const glm::dvec2 at{clip.x / clip.w, clip.y / clip.w};
+      low = glm::min(low, at), high = glm::max(high, at);
+    }
+}
+}  // namespace
+
+// At 3× the observer was a strip where the scene, the camera and the rays took about 110×80 px of it: the
+// observer now frames the camera (eye, screen, its field as far as the target), the target and the objects
+// within d of the target so that together they span at least 80% of the view's width or of its height, and
+// nothing of them is cut, over random cameras, observer directions, view shapes (a strip to a column) and the
+// construction's steps (before T(OP): the intermediate camera at the origin).
+TEST_CASE("the observer frames the camera, the target and the objects near it tightly, none cut", "[ui][views]") {
+  std::srand(49);
+  auto uniform = [](double low, double high) { return low + (high - low) * double(std::rand()) / RAND_MAX; };
+  int checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    session::AppState state = state_for({});
+    Orbit3D& orbit = view3d(state).orbit;
+    orbit.theta = uniform(-glm::pi<double>(), glm::pi<double>());
+    orbit.phi = uniform(0.0, glm::pi<double>());
+    orbit.d = uniform(2.0, 30.0);
+    orbit.df = uniform(0.5, 5.0);
+    if (trial % 3 == 0) orbit.target = view3d(state).scene.spheres[std::size_t(trial) % view3d(state).scene.spheres.size()].centre;
+    state.observer.yaw_deg = float(uniform(-180.0, 180.0));
+    state.observer.pitch_deg = float(uniform(-85.0, 85.0));
+    state.construction_step = trial % 4 == 0 ? int(uniform(0.0, 5.99)) : -1;
+    session::place_cameras(state);
+    const double aspect = uniform(0.4, 8.0);
+    const session::ObserverCamera observer = session::observer_camera(state, state, aspect);
+
+    glm::dvec2 low{1e9}, high{-1e9};
+    bool in_front = true;
+    const Camera3D& camera = view3d(state).camera;
+    if (state.construction_step >= 0 && state.construction_step < 5) {  // the intermediate camera, at the origin
+      const glm::dmat4 m = session::construction_pose(camera.placement(), state.construction_step, 1.0);
+      extend_ndc(observer, eye_of(m), 0.0, low, high, in_front);
+      for (const glm::dvec3& corner : screen_corners_of(m))  // its axes drawn to 1.5 times them (construction_camera)
+        extend_ndc(observer, corner, 0.0, low, high, in_front), extend_ndc(observer, 1.5 * corner, 0.0, low, high, in_front);
+    } else {
+      extend_ndc(observer, camera.eye(), 0.0, low, high, in_front);
+      extend_ndc(observer, orbit.target, 0.0, low, high, in_front);
+      for (const glm::dvec3& corner : camera.screen_corners()) {
+        extend_ndc(observer, corner, 0.0, low, high, in_front);
+        extend_ndc(observer, camera.eye() + glm::normalize(corner - camera.eye()) * orbit.d, 0.0, low, high, in_front);
+      }
+      for (const Sphere& s : view3d(state).scene.spheres)
+        if (glm::length(s.centre - orbit.target) + s.radius <= orbit.d)
+          extend_ndc(observer, s.centre, s.radius, low, high, in_front);
+    }
+    INFO("trial " << trial << ": theta " << orbit.theta << " phi " << orbit.phi << " d " << orbit.d << " df "
+                  << orbit.df << ", observer " << state.observer.yaw_deg << "/" << state.observer.pitch_deg
+                  << ", aspect " << aspect << ", step " << state.construction_step << ": content x " << low.x
+                  << " … " << high.x << ", y " << low.y << " … " << high.y);
+    CHECK(in_front);
+    CHECK((low.x >= -1.0 && low.y >= -1.0 && high.x <= 1.0 && high.y <= 1.0));  // nothing cut
+    CHECK(std::max(high.x - low.x, high.y - low.y) >= 2 * 0.8);                  // the view's room is used
+    ++checked;
+  }
+  CHECK(checked == 400);
 }

@@ -259,7 +259,7 @@ TEST_CASE("the French window shows no English word", "[ui][text]") {
         window->StateStorage.SetInt(window->GetID(id), 1);
       ui::PanelState panels = ui::panel_state_for({}, state);  // as the hosts start it: the export's name in French
       ui::camera_section(state, panels);
-      ui::mistakes_section(state);
+      ui::mistakes_section(state, panels);
       ui::caster_section(state, panels);
       ui::files_section(state, panels);
       ui::lecture_section(state, panels);
