@@ -212,6 +212,9 @@ def files_and_figures(page, downloads, scratch, language):
     widgets = shown_frame(page)["widgets"]
     check("###figure_format" not in widgets and "###figure_path" not in widgets,
           "  ... Export figure: no format choice (TikZ only, without cairo) and no path box")
+    # The colour map's confirmation goes 5 s after it shows, moving the section's buttons up: on a loaded machine
+    # that fell between reading the button's place and the click, which then missed it. Clicked once it went.
+    wait_for_status(page, lambda m: m == "")
     check(click_widget(page, "###figure_export"), "  ... Export figure…")
     tex = os.path.join(downloads, "many3d-figure.tex")
     check(wait_for_file(tex), "  ... a TikZ download named after the scene (%s)" % sorted(os.listdir(downloads)))
