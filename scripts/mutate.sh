@@ -395,6 +395,12 @@ mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& nam
 mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
 mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
+# --- #45 the page: several files as one download, the verdict in sight, wrong pixels found, the graded camera ---
+ZIP="^core: ?zip:"
+mutant zip-crc-wrong-polynomial src/io/zip_archive.cpp 's/0xEDB88320u/0xEDB88321u/' "$CORE" "$ZIP"
+mutant page-download-said-written src/session/shown_files.cpp 's/host.files_are_downloads ? "asked the browser to save %s" : "wrote %s"/"wrote %s"/' "raycam_session_tests" "^session: ?the page says what it asked"
+mutant page-steps-offered-beside-their-archive src/session/shown_files.cpp 's/for (const std::string\& file : files) std::filesystem::remove(file, ignored);/(void)ignored;/' "raycam_session_tests" "^session: ?several files become one zip"
+mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

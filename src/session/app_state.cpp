@@ -192,7 +192,9 @@ bool save_preset(AppState& state, const std::string& path) {
     const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
     set_message(state, MessageSource::files, false,
-                trf(state.language, "saved the camera preset to %s", shown_file_name(state.host, path).c_str()));
+                trf(state.language, state.host.files_are_downloads ? "asked the browser to save the camera preset as %s"
+                                                                   : "saved the camera preset to %s",
+                    shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
     set_message(state, MessageSource::files, true,

@@ -300,6 +300,11 @@ const std::vector<Translation>& translation_table() {
       {"opened %s", "ouvert : %s"},
       {"saved the camera preset to %s", "caméra enregistrée dans %s"},
 
+      // ---- issue 45 (the page): downloads as asked, the verdict's pixels, the graded camera ----
+      {"asked the browser to save %s", "téléchargement de %s demandé au navigateur"},
+      {"asked the browser to save %s (%d figures)", "téléchargement de %s demandé au navigateur (%d figures)"},
+      {"asked the browser to save the camera preset as %s", "téléchargement de la caméra sous %s demandé au navigateur"},
+
       // ---- panels.cpp: lecture mode ----
       {"Lecture mode###lecture", "Mode cours###lecture"},
       {"font scale###font_scale", "taille du texte###font_scale"},

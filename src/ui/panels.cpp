@@ -423,9 +423,16 @@ void placement_tables(AppState& state, PanelState& panels, const View3D& view, i
 void export_figure_now(AppState& state, const PanelState& panels, bool all) {
   try {
     const std::vector<std::string> files = export_construction_figure(state, panels.figure, panels.figure_path, all);
-    std::vector<std::string> shown;  // the page: names alone
-    for (const std::string& file : files) shown.push_back(shown_file_name(state.host, file));
-    set_message(state, MessageSource::construction, false, figure_files_message(state.language, shown));
+    if (state.host.files_are_downloads && files.size() > 1) {  // the page: one download, an archive
+      const std::string archive = as_one_download(files, named_after_scene(state, "-steps.zip"));
+      set_message(state, MessageSource::construction, false,
+                  trf(state.language, "asked the browser to save %s (%d figures)",
+                      shown_file_name(state.host, archive).c_str(), int(files.size())));
+    } else if (state.host.files_are_downloads) {
+      set_message(state, MessageSource::construction, false, written_message(state.host, state.language, files.front()));
+    } else {
+      set_message(state, MessageSource::construction, false, figure_files_message(state.language, files));
+    }
   } catch (const std::exception& error) {
     set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
   }
@@ -456,6 +463,7 @@ void figure_export_row(AppState& state, PanelState& panels) {
   record_item_rect(panels, "###figure_export");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Export every step"))) asked = 2;
+  record_item_rect(panels, "###figure_export_all");
   if (asked != 0) {
     panels.figure_path = with_figure_extension(panels.figure_path, panels.figure_format);
     panels.figure_replace_pending = 0;
