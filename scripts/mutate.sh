@@ -400,6 +400,9 @@ ZIP="^core: ?zip:"
 mutant zip-crc-wrong-polynomial src/io/zip_archive.cpp 's/0xEDB88320u/0xEDB88321u/' "$CORE" "$ZIP"
 mutant page-download-said-written src/session/shown_files.cpp 's/host.files_are_downloads ? "asked the browser to save %s" : "wrote %s"/"wrote %s"/' "raycam_session_tests" "^session: ?the page says what it asked"
 mutant page-steps-offered-beside-their-archive src/session/shown_files.cpp 's/for (const std::string\& file : files) std::filesystem::remove(file, ignored);/(void)ignored;/' "raycam_session_tests" "^session: ?several files become one zip"
+VERDICT_IN_SIGHT="^render: ?after an answer the verdict and its next step"
+mutant verdict-scrolled-without-its-next-step src/ui/check_panel.cpp 's/ImRect(low, {high.x, next_step_bottom})/ImRect(low, high)/' "raycam_render_tests" "$VERDICT_IN_SIGHT"
+mutant page-answer-waits-for-the-mouse src/ui/check_panel.cpp 's/(in_view.asked || (!mouse_on_panel/(false || (!mouse_on_panel/' "raycam_render_tests" "$VERDICT_IN_SIGHT"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 

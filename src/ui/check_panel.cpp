@@ -19,15 +19,21 @@ using namespace session;  // the state the window shows and edits
 // ---- the panel section -----------------------------------------------------------------------------------
 namespace {
 // A verdict that has just arrived is brought into sight: the first one opens the section (a program given on
-// the command line), and each is scrolled into the panel's view once (the last section: below the fold at
-// lecture sizes); the panel is the instructor's to scroll after that. Never while the mouse is over the
-// panel: a panel that moves under the mouse turns the next click into a click on another control (with
-// automatic checks on, every Open brings a verdict); the scroll waits until the mouse leaves it.
+// the command line), and each is scrolled into the panel's view once, its first lines and the next step with
+// it (what the diagnosis says, else the clear button: the last section is below the fold at lecture sizes);
+// the panel is the instructor's to scroll after that. A verdict the student asked for (Check now, the page's
+// answer file: the page grades nothing by itself) is scrolled at once; one that came by itself (automatic
+// checks) never while the mouse is over the panel: a panel that moves under the mouse turns the next click
+// into a click on another control (with automatic checks on, every Open brings a verdict); that scroll waits
+// until the mouse leaves it.
 struct VerdictInView {
   std::weak_ptr<const KeyedVerdict> shown;  // keeps its control block: a new verdict never matches it
   bool any = false;
-  ImVec4 drawn_at{0, 0, 0, 0};  // where the verdict was last drawn
-  bool scroll_pending = false;   // arrived, not yet scrolled into view
+  ImVec4 drawn_at{0, 0, 0, 0};       // where the verdict was last drawn
+  ImVec4 next_step_at{0, 0, 0, 0};   // the verdict down to the next step, as last drawn
+  bool scroll_pending = false;        // arrived, not yet scrolled into view
+  bool asked = false;                 // the student asked for it: scrolled even under the mouse
+  bool check_now_clicked = false;     // Check now was clicked: the next verdict is asked for
   bool arrived(const CheckProgress& progress) const {
     return progress.latest && !progress.running &&
            (shown.owner_before(progress.latest) || progress.latest.owner_before(shown));
@@ -45,8 +51,10 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   const bool arrived = in_view.arrived(progress);
   if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
   if (arrived) {
+    const bool asked = !host.runs_programs || in_view.check_now_clicked;
     in_view = {progress.latest, true};
     in_view.scroll_pending = true;
+    in_view.asked = asked;
   }
   if (!ui::section(tr(language, "Check my camera###check"), tr(language, "Check###check"))) return;
   CheckRequest& request = check.request();
@@ -76,7 +84,7 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
     ImGui::InputText("###check_command", &request.command);
     checkbox(tr(language, "an answer file, not a program###check_is_file"), &request.is_file);
     checkbox(tr(language, "check when the camera changes###check_auto"), &request.automatic);
-    if (button(tr(language, "Check now###check_now"))) request.check_now = true;
+    if (button(tr(language, "Check now###check_now"))) request.check_now = in_view.check_now_clicked = true;
   }
 
   if (progress.running) wrapped_between_words(trf(language, "running… (%.1f s)", now - progress.started_at));
@@ -98,36 +106,42 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
     wrapped_between_words(trf(language, "%s: %s", check::text(language, check::status_name(r.status)),
                               with_file_shown(host, tr_reason(language, r.detail), request.command).c_str()));
   ImGui::EndGroup();
+  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();  // the verdict
   if (host.runs_programs) {
     if (!progress.current) wrapped_between_words(tr(language, "(for the camera before your last change)"));
   } else {
     wrapped_between_words(progress.current ? tr(language, "graded for the camera shown")
                                            : tr(language, "answer for an earlier camera: download the new case"));
   }
-  ImGui::PopStyleColor();
-  // ImGui counts a window as not hovered while one of its controls is held (a click on a box, a slider, a
-  // header): the scroll waits for the mouse itself to be elsewhere, with no button down.
-  const bool mouse_on_panel =
-      ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
-  if (in_view.scroll_pending && !mouse_on_panel && !ImGui::IsAnyMouseDown()) {
-    ImGui::ScrollToItem();  // the least scroll that shows the verdict whole
-    in_view.scroll_pending = false;
-  }
-  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   in_view.drawn_at = {low.x, low.y, high.x, high.y};
+  ImGui::PopStyleColor();
   if (button(tr(language, "Clear the verdict###check_clear"))) {
     check.clear();
     return;
   }
+  float next_step_bottom = ImGui::GetItemRectMax().y;  // the clear button, unless a diagnosis says more
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr(language, "no sandbox: bubblewrap is not available here"));
-  if (v.diagnosed && v.diagnosis.empty())
+  if (v.diagnosed && v.diagnosis.empty()) {
     ImGui::TextWrapped("%s", tr(language, "no classic mistake reproduces this image"));
+    next_step_bottom = ImGui::GetItemRectMax().y;
+  }
   for (const check::Explanation& e : v.diagnosis) {
     ImGui::Bullet();
     // The mistakes' names in the window's language, not their ids ("mirrored + rows from the bottom").
     std::string names;
     for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(m->label[language]);
     wrapped_between_words(trf(language, "%s: %s", names.c_str(), e.text(language).c_str()));
+    if (&e == &v.diagnosis.front()) next_step_bottom = ImGui::GetItemRectMax().y;
+  }
+  in_view.next_step_at = {low.x, low.y, high.x, next_step_bottom};
+  // ImGui counts a window as not hovered while one of its controls is held (a click on a box, a slider, a
+  // header): an automatic verdict's scroll waits for the mouse itself to be elsewhere, with no button down.
+  const bool mouse_on_panel =
+      ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows | ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
+  if (in_view.scroll_pending && (in_view.asked || (!mouse_on_panel && !ImGui::IsAnyMouseDown()))) {
+    // The least scroll that shows the verdict and the next step; the verdict's top first when both do not fit.
+    ImGui::ScrollToRect(ImGui::GetCurrentWindow(), ImRect(low, {high.x, next_step_bottom}));
+    in_view.scroll_pending = in_view.asked = in_view.check_now_clicked = false;
   }
   if (!r.stderr_text.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
@@ -137,6 +151,7 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
 }
 
 ImVec4 drawn_verdict_rect() { return verdict_in_view().drawn_at; }
+ImVec4 drawn_next_step_rect() { return verdict_in_view().next_step_at; }
 
 // ---- the overlay -----------------------------------------------------------------------------------------
 void check_overlay(const CameraCheck& check, const Lesson& state, const CastCache& cast, ImDrawList* list, float x0, float y0,

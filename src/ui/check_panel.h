@@ -14,6 +14,9 @@ namespace raycam::ui {
 void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now, Language language);
 // Where the panel last drew a verdict (x0, y0, x1, y1 in screen pixels), for the tests.
 ImVec4 drawn_verdict_rect();
+// The same rectangle down to the verdict's next step (the first diagnosis line, else the clear button): what
+// an arriving verdict is scrolled to show.
+ImVec4 drawn_next_step_rect();
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict
 // is for the image on screen).
 void check_overlay(const session::CameraCheck& check, const session::Lesson& state, const session::CastCache& cast,

@@ -12,6 +12,9 @@
 
 #include <catch2/catch.hpp>
 #include <cfloat>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -30,6 +33,7 @@
 #include "mistake_lessons.h"
 #include "overhead_view.h"
 #include "panels.h"
+#include "raycam/scene_file.h"
 
 using namespace raycam;
 
@@ -301,6 +305,64 @@ TEST_CASE("the picture keeps its size whatever its header says and the check's v
           CHECK(shown.h == plain.h);
         }
       }
+}
+
+namespace {
+// The panel's view and the verdict down to its next step (check_panel.h): the verdict's top in the view, and
+// the next step too unless the two are taller than the view.
+void check_next_step_in_sight(const char* where) {
+  const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  const ImVec4 shown = ui::drawn_next_step_rect();
+  const ImRect view = panel->InnerClipRect;
+  INFO(where << ": the verdict and its next step at y " << shown.y << " - " << shown.w << ", the panel shows y "
+             << view.Min.y << " - " << view.Max.y);
+  CHECK(shown.w > shown.y);  // drawn
+  CHECK(shown.y >= view.Min.y - 0.5f);
+  CHECK((shown.w <= view.Max.y + 0.5f || shown.w - shown.y > view.GetHeight()));
+}
+}  // namespace
+
+// Issue 45: after an answer, the verdict's first lines and the next step (what the diagnosis says, else the
+// clear button) are in the panel's view at every screen and scale, in both languages: in the page, whose
+// answer file comes back while the mouse still rests on the panel where its button was (QA: at 1024×768 in
+// English the verdict stayed below the fold and "Give the answer file…" cut; at 1280×800 in French the
+// verdict was cut at the bottom), and on the desktop, where the program's verdict arrives by itself.
+TEST_CASE("after an answer the verdict and its next step are in sight, in the page and the window, both languages",
+          "[render][lecture][layout]") {
+  const std::string mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-verdict-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"en", "fr"})
+        for (const bool page : {true, false}) {
+          std::ostringstream where;
+          where << screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", "
+                << (page ? "the page" : "the window");
+          session::AppState state = lecture_state("3d", language);
+          state.font_scale = scale;
+          if (page) state.host = session::kPageHost;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          if (!page) renderer.panels().check_command = mistaken;
+          renderer.run_frame(state);
+          open_every_section();
+          renderer.run_frame(state);
+          if (page) {  // the case out, the student's program run on it, its answer file back
+            const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+            REQUIRE(panel);
+            renderer.move_mouse(panel->InnerClipRect.GetCenter().x, panel->InnerClipRect.GetCenter().y);
+            renderer.run_frame(state);
+            const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+            save_scene_file(renderer.check().case_for_download(state), case_path);
+            REQUIRE(std::system((mistaken + " < " + case_path + " > " + answer).c_str()) == 0);
+            renderer.check().give_answer(answer);
+          }
+          until_verdict(renderer, state);
+          REQUIRE(renderer.check().status() == "fail");
+          check_next_step_in_sight(where.str().c_str());
+        }
+  std::filesystem::remove_all(folder);
 }
 
 // The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought

@@ -199,8 +199,8 @@ def files_and_figures(page, downloads, scratch, language):
     offered = wait_for(page, "return window.raycam_downloads", lambda d: len(d) >= 2, 5)
     check(wait_for_file(first) and offered == ["many3d.json", "many3d.json"],
           "  ... Save as twice: two downloads named after the scene, no question asked (%s)" % offered)
-    check("many3d.json" in message and "?" not in message,
-          "  ... and the message names the download (%r)" % message)
+    check("many3d.json" in message and "?" not in message and message.startswith("asked the browser to save"),
+          "  ... and the message names the download, as asked of the browser (%r)" % message)
     with open(first) if os.path.exists(first) else open(os.devnull) as text:
         saved = text.read()
 
@@ -236,7 +236,37 @@ def files_and_figures(page, downloads, scratch, language):
           % (same, len(theirs)))
     word = "étape" if language == "fr" else "step"
     check(any(word in line for line in ours), "  ... in the page's language (%r)" % word)
+    every_step(page, downloads, language, len(ours))
     return message
+
+
+def every_step(page, downloads, language, figure_lines):
+    """Issue 45 item 1: every step's figure is ONE download, a zip archive that unzip tests and gives back, and
+    the message says what the browser was asked to save (the page cannot know what arrived)."""
+    offered = len(page.call("return window.raycam_downloads"))
+    check(click_widget(page, "###figure_export_all"), "  ... Export every step")
+    archive = os.path.join(downloads, "many3d-steps.zip")
+    check(wait_for_file(archive), "  ... one download, a zip archive (%s)" % sorted(os.listdir(downloads)))
+    time.sleep(0.5)  # anything else the page would offer
+    new = page.call("return window.raycam_downloads")[offered:]
+    check(new == ["many3d-steps.zip"], "  ... and nothing else offered (%s)" % new)
+    names = []
+    if os.path.exists(archive):
+        test = subprocess.run(["unzip", "-t", archive], capture_output=True, text=True)
+        check(test.returncode == 0 and "No errors detected" in test.stdout,
+              "  ... which unzip -t passes (%s)" % test.stdout.strip().splitlines()[-1:])
+        listing = subprocess.run(["unzip", "-Z1", archive], capture_output=True, text=True).stdout.split()
+        names = sorted(listing)
+        out = os.path.join(downloads, "steps-" + language)
+        subprocess.run(["unzip", "-q", "-o", archive, "-d", out])
+        tex = [open(os.path.join(out, n)).read() for n in names if n.endswith(".tex")]
+        check(len(names) >= 2 and len(tex) == len(names) and all("tikzpicture" in t for t in tex),
+              "  ... holding every step's TikZ figure (%s)" % names)
+    message = wait_for_status(page, lambda m: "many3d-steps.zip" in m)
+    asked = ("téléchargement de many3d-steps.zip demandé au navigateur (%d figures)" if language == "fr"
+             else "asked the browser to save many3d-steps.zip (%d figures)") % len(names)
+    check(message == asked and "écrit" not in message and "wrote" not in message,
+          "  ... and the message says what the browser was asked to save (%r)" % message)
 
 
 with tempfile.TemporaryDirectory() as scratch:
@@ -298,7 +328,8 @@ with tempfile.TemporaryDirectory() as scratch:
         french.open("?lang=fr&scene=many3d.json")
         wait_for(french, "return document.title", lambda t: "many3d.json" in t)
         message = files_and_figures(french, french_downloads, scratch, "fr")
-        check(message.startswith("écrit"), "French: the export's message is French (%r)" % message)
+        check(message.startswith("téléchargement de many3d-figure.tex demandé"),
+              "French: the export's message is French, what the browser was asked to save (%r)" % message)
     finally:
         french.close()
 
