@@ -21,6 +21,7 @@ void adopt_view_setup(Lesson& state, Display& display, const ViewSetup& setup) {
   state.view = std::move(views.on_screen);
   state.other_view = std::move(views.other);
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
+  state.opened_version = state.scene_version;
   state.res = std::visit([](const auto& view) { return res_of(view.camera); }, state.view);
   // The rows' res of a non-square 3D preset (the handout's second resolution variable; a 2D setup has none:
   // its file and flags refuse a second res).

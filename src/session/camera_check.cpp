@@ -120,7 +120,7 @@ std::string CameraCheck::camera_key(const Lesson& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
-  key << std::hexfloat << dimension(state) << '|' << state.scene_version << '|' << scene_path(state) << '|'
+  key << std::hexfloat << dimension(state) << '|' << state.opened_version << '|' << scene_path(state) << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
       << p.df.value_or(0) << '|' << p.res.value_or(0) << '|' << p.res_rows.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';

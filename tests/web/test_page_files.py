@@ -158,6 +158,10 @@ def verdict_states(page, downloads, scratch):
           % (frame["check_state"], frame["check_status"]))
     press(page, Keys.TAB)
     wait_for(page, "return document.title", lambda t: "3D" in t)
+    # Issue 45: Tab back to the case's camera brings its verdict back, as the arrow keys do.
+    state = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).check_state",
+                     lambda s: s == "camera-shown")
+    check(state == "camera-shown", "  ... Tab back to the case's camera: graded for the camera shown again (%s)" % state)
     drawn = page.call(FRAMES)
     page.call("Module.ccall('raycam_clear_check', null, [], [])")
     frames_after(page, drawn)
@@ -199,7 +203,8 @@ def files_and_figures(page, downloads, scratch, language):
     offered = wait_for(page, "return window.raycam_downloads", lambda d: len(d) >= 2, 5)
     check(wait_for_file(first) and offered == ["many3d.json", "many3d.json"],
           "  ... Save as twice: two downloads named after the scene, no question asked (%s)" % offered)
-    check("many3d.json" in message and "?" not in message and message.startswith("asked the browser to save"),
+    asked = "téléchargement de la caméra sous many3d.json" if language == "fr" else "asked the browser to save"
+    check("many3d.json" in message and "?" not in message and message.startswith(asked),
           "  ... and the message names the download, as asked of the browser (%r)" % message)
     with open(first) if os.path.exists(first) else open(os.devnull) as text:
         saved = text.read()
@@ -212,6 +217,9 @@ def files_and_figures(page, downloads, scratch, language):
     widgets = shown_frame(page)["widgets"]
     check("###figure_format" not in widgets and "###figure_path" not in widgets,
           "  ... Export figure: no format choice (TikZ only, without cairo) and no path box")
+    # The PNG's message (two lines: "asked the browser to save …") goes at the next click, and the panel under
+    # the pointer moves up between the press and the release: wait for it to go by itself first.
+    wait_for_status(page, lambda m: m == "")
     check(click_widget(page, "###figure_export"), "  ... Export figure…")
     tex = os.path.join(downloads, "many3d-figure.tex")
     check(wait_for_file(tex), "  ... a TikZ download named after the scene (%s)" % sorted(os.listdir(downloads)))
