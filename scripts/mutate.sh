@@ -404,6 +404,9 @@ VERDICT_IN_SIGHT="^render: ?after an answer the verdict and its next step"
 mutant verdict-scrolled-without-its-next-step src/ui/check_panel.cpp 's/ImRect(low, {high.x, next_step_bottom})/ImRect(low, high)/' "raycam_render_tests" "$VERDICT_IN_SIGHT"
 mutant page-answer-waits-for-the-mouse src/ui/check_panel.cpp 's/(in_view.asked || (!mouse_on_panel/(false || (!mouse_on_panel/' "raycam_render_tests" "$VERDICT_IN_SIGHT"
 mutant check-case-keyed-by-tab src/session/camera_check.cpp "s/<< '|' << state.opened_version << '|'/<< '|' << state.scene_version << '|'/" "raycam_session_tests" "^session: ?the page's verdict comes back"
+GRADED="^render: ?with a mistake on, the header says"
+mutant graded-camera-header-red-mistake-beside-a-pass src/ui/frame.cpp 's/const bool mistake_part = !mistakes.empty() \&\& !check.names_mistake;/const bool mistake_part = !mistakes.empty();/' "raycam_render_tests" "$GRADED"
+mutant graded-camera-header-silent src/session/camera_check.cpp 's/  if (!mistakes.empty() \&\& (r.status == check::CaseStatus::pass/  if (false \&\& (r.status == check::CaseStatus::pass/' "raycam_render_tests" "$GRADED"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 

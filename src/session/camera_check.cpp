@@ -252,9 +252,24 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
-CheckHeader check_header(Language language, const CheckProgress& progress) {
+CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes,
+                         bool downloaded_case) {
   if (progress.running || !progress.latest || !progress.current) return {};
   const check::CaseResult& r = progress.latest->verdict.result;
+  if (!mistakes.empty() && (r.status == check::CaseStatus::pass || r.status == check::CaseStatus::fail)) {
+    const char* m = mistakes.c_str();
+    if (r.status == check::CaseStatus::pass)
+      return {{trf(language, downloaded_case ? "CHECK: passed for the downloaded case — the image shown shows the mistake « %s »"
+                                             : "CHECK: passed for your camera — the image shown shows the mistake « %s »", m),
+               trf(language, "✓ case passed — the image shows « %s »", m), tr(language, "✓ case passed")},
+              true, true};
+    return {{trf(language, downloaded_case ? "CHECK: %lld pixels wrong for the downloaded case — the image shown shows the mistake « %s »"
+                                           : "CHECK: %lld pixels wrong for your camera — the image shown shows the mistake « %s »",
+                 r.wrong_pixels, m),
+             trf(language, "✗ case: %lld wrong — the image shows « %s »", r.wrong_pixels, m),
+             trf(language, "✗ case: %lld wrong", r.wrong_pixels)},
+            false, true};
+  }
   if (r.status == check::CaseStatus::pass) return {{tr(language, "CHECK: passed"), tr(language, "✓ passed")}, true};
   if (r.status == check::CaseStatus::fail)
     return {{trf(language, "CHECK: %lld pixels wrong", r.wrong_pixels), trf(language, "✗ %lld pixels wrong", r.wrong_pixels),

@@ -58,11 +58,18 @@ SceneFile camera_case(const Lesson& state);
 // takes the longest that fits, and the last always fits: a verdict is never cut): "CHECK: 27932 pixels
 // wrong", "✗ 27932 pixels wrong", "✗ 27932 wrong" (or the failing status), or "CHECK: passed", "✓ passed";
 // empty while none, or while a run is going (the old verdict is no longer the image's).
+// With a classic mistake on (`mistakes`, its names), the verdict is still the case's camera's (the camera the
+// student set: the case never carries the mistake) while the image shows the mistake: the header says both
+// plainly, "CHECK: passed for the downloaded case — the image shown shows the mistake « mirrored »" (the
+// page's case; on the desktop "for your camera"), and names the mistake itself (`names_mistake`): no pass
+// inside a red "MISTAKE ON" header.
 struct CheckHeader {
   std::vector<std::string> forms;
   bool passed = false;
+  bool names_mistake = false;
 };
-CheckHeader check_header(Language language, const CheckProgress& progress);
+CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes = "",
+                         bool downloaded_case = false);
 
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 

@@ -45,7 +45,8 @@ VerdictInView& verdict_in_view() {
 }
 }  // namespace
 
-void check_section(CameraCheck& check, const HostCapabilities& host, double now, Language language) {
+void check_section(CameraCheck& check, const HostCapabilities& host, double now, Language language,
+                   const std::string& mistakes) {
   const CheckProgress progress = check.progress();
   VerdictInView& in_view = verdict_in_view();
   const bool arrived = in_view.arrived(progress);
@@ -110,8 +111,11 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   if (host.runs_programs) {
     if (!progress.current) wrapped_between_words(tr(language, "(for the camera before your last change)"));
   } else {
-    wrapped_between_words(progress.current ? tr(language, "graded for the camera shown")
-                                           : tr(language, "answer for an earlier camera: download the new case"));
+    wrapped_between_words(!progress.current ? tr(language, "answer for an earlier camera: download the new case")
+                          : mistakes.empty()
+                              ? tr(language, "graded for the camera shown")
+                              : trf(language, "graded for the downloaded case: the image shown shows the mistake « %s »",
+                                    mistakes.c_str()));
   }
   in_view.drawn_at = {low.x, low.y, high.x, high.y};
   ImGui::PopStyleColor();

@@ -11,7 +11,9 @@ struct ImDrawList;
 namespace raycam::ui {
 
 // The panel section: the command, the verdict, the diagnosis, the program's stderr.
-void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now, Language language);
+// `mistakes`: the names of the classic mistakes on (the verdict is the case's camera's, not the image's).
+void check_section(session::CameraCheck& check, const session::HostCapabilities& host, double now, Language language,
+                   const std::string& mistakes = "");
 // Where the panel last drew a verdict (x0, y0, x1, y1 in screen pixels), for the tests.
 ImVec4 drawn_verdict_rect();
 // The same rectangle down to the verdict's next step (the first diagnosis line, else the clear button): what

@@ -365,6 +365,46 @@ TEST_CASE("after an answer the verdict and its next step are in sight, in the pa
   std::filesystem::remove_all(folder);
 }
 
+// Issue 45: with a classic mistake on, the page grades the case's camera (the case never carries the mistake)
+// and the header says so plainly, naming the mistake the image shows: never a pass inside a red "MISTAKE ON"
+// header (QA: "✓ réussie | ERREUR ACTIVE : image en miroir").
+TEST_CASE("with a mistake on, the header says the verdict is the downloaded case's and the image shows the mistake",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-graded-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"})
+    for (const bool right : {true, false}) {
+      session::AppState state = lecture_state("3d", language);
+      state.host = session::kPageHost;
+      headless::HeadlessRenderer renderer(1920, 1080);
+      renderer.run_frame(state);
+      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+      save_scene_file(renderer.check().case_for_download(state), case_path);
+      const std::string program = right ? std::string(EXAMPLE_STUDENT_CPP) : std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+      REQUIRE(std::system((program + " < " + case_path + " > " + answer).c_str()) == 0);
+      session::show_mistake(state, *session::find_lesson("mirrored"));
+      renderer.check().give_answer(answer);
+      until_verdict(renderer, state);
+      const std::string& title = renderer.layout().image_title;
+      INFO(language << (right ? ", the right answer" : ", a mirrored answer") << ": header '" << title << "'");
+      REQUIRE(renderer.check().status() == (right ? "pass" : "fail"));
+      const bool french = std::string(language) == "fr";
+      CHECK(title.find(french ? "ERREUR ACTIVE" : "MISTAKE ON") == std::string::npos);
+      // The header's line as wide as the image (its longest form: in the tooltip, and in the header where wide).
+      CHECK(title.find(french ? "cas" : "case") != std::string::npos);
+      CHECK(title.find(french ? "l'image montre « image en miroir »" : "the image shows « mirrored image »") != std::string::npos);
+      CHECK(title.find(right ? (french ? "réussi" : "passed") : (french ? "faux" : "wrong")) != std::string::npos);
+      const session::CheckHeader header =
+          session::check_header(french ? Language::fr : Language::en, renderer.check().progress(), session::mistakes_on(state), true);
+      CHECK(header.forms.front().find(french ? (right ? "réussie pour le cas téléchargé — l'image affichée montre l'erreur « image en miroir »"
+                                                      : "faux pour le cas téléchargé — l'image affichée montre l'erreur « image en miroir »")
+                                             : (right ? "passed for the downloaded case — the image shown shows the mistake « mirrored image »"
+                                                      : "wrong for the downloaded case — the image shown shows the mistake « mirrored image »")) !=
+            std::string::npos);
+    }
+  std::filesystem::remove_all(folder);
+}
+
 // The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought
 // a verdict that scrolled the panel, and the next click landed on another control): while the mouse is over
 // the panel the verdict waits below the fold; once the mouse leaves, it is scrolled into sight.
