@@ -407,6 +407,9 @@ mutant check-case-keyed-by-tab src/session/camera_check.cpp "s/<< '|' << state.o
 GRADED="^render: ?with a mistake on, the header says"
 mutant graded-camera-header-red-mistake-beside-a-pass src/ui/frame.cpp 's/const bool mistake_part = !mistakes.empty() \&\& !check.names_mistake;/const bool mistake_part = !mistakes.empty();/' "raycam_render_tests" "$GRADED"
 mutant graded-camera-header-silent src/session/camera_check.cpp 's/  if (!mistakes.empty() \&\& (r.status == check::CaseStatus::pass/  if (false \&\& (r.status == check::CaseStatus::pass/' "raycam_render_tests" "$GRADED"
+WRONG_PIXEL="^render: ?a wrong pixel is named"
+mutant wrong-pixel-framed-in-red src/ui/check_panel.cpp 's/IM_COL32(255, 255, 255, 255), 0, 0, thick/IM_COL32(255, 0, 0, 120), 0, 0, thick/' "raycam_render_tests" "$WRONG_PIXEL"
+mutant wrong-pixels-named-column-first src/session/camera_check.cpp 's/{int(i \/ std::size_t(verdict.columns)), int(i % std::size_t(verdict.columns))}/{int(i % std::size_t(verdict.columns)), int(i \/ std::size_t(verdict.columns))}/' "raycam_render_tests" "$WRONG_PIXEL"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 

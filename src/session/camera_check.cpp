@@ -252,6 +252,22 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
+std::vector<WrongPixel> first_wrong_pixels(const check::CaseVerdict& verdict, int count) {
+  std::vector<WrongPixel> found;
+  if (verdict.columns <= 0) return found;
+  for (std::size_t i = 0; i < verdict.wrong.size() && int(found.size()) < count; ++i)
+    if (verdict.wrong[i] != 0) found.push_back({int(i / std::size_t(verdict.columns)), int(i % std::size_t(verdict.columns))});
+  return found;
+}
+
+std::string wrong_pixels_named(const check::CaseVerdict& verdict) {
+  std::string named;
+  for (const WrongPixel& p : first_wrong_pixels(verdict, kNamedWrongPixels))
+    named += (named.empty() ? "(" : ", (") + std::to_string(p.row) + ", " + std::to_string(p.column) + ")";
+  if (verdict.result.wrong_pixels > kNamedWrongPixels) named += ", …";
+  return named;
+}
+
 CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes,
                          bool downloaded_case) {
   if (progress.running || !progress.latest || !progress.current) return {};

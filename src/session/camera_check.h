@@ -71,6 +71,16 @@ struct CheckHeader {
 CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes = "",
                          bool downloaded_case = false);
 
+// The first `count` wrong pixels of a failing verdict in protocol order, as (row, column) of the answer's ids
+// (a 2D answer's one row: (0, k)); the panel names them and the image marks them.
+struct WrongPixel {
+  int row = 0, column = 0;
+};
+std::vector<WrongPixel> first_wrong_pixels(const check::CaseVerdict& verdict, int count);
+inline constexpr int kNamedWrongPixels = 5;
+// "(12, 40), (12, 41)" and "…" after the last when there are more wrong pixels than named.
+std::string wrong_pixels_named(const check::CaseVerdict& verdict);
+
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 
 class CameraCheck {

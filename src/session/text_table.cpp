@@ -316,6 +316,7 @@ const std::vector<Translation>& translation_table() {
        "VÉRIFICATION : %lld pixels faux pour votre caméra — l'image affichée montre l'erreur « %s »"},
       {"✗ case: %lld wrong — the image shows « %s »", "✗ cas : %lld faux — l'image montre « %s »"},
       {"✗ case: %lld wrong", "✗ cas : %lld faux"},
+      {"wrong pixels (row, column), framed on the image: %s", "pixels faux (ligne, colonne), encadrés sur l'image : %s"},
       {"graded for the downloaded case: the image shown shows the mistake « %s »",
        "noté pour le cas téléchargé : l'image affichée montre l'erreur « %s »"},
 

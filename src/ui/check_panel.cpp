@@ -1,7 +1,9 @@
 // Section index: the panel section · the overlay.
 #include "check_panel.h"
 
+#include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <imgui.h>
 #include <imgui_internal.h>  // ImGui::ScrollToItem
 #include <imgui_stdlib.h>
@@ -101,8 +103,11 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   ImGui::BeginGroup();  // one item: the verdict
   if (r.status == check::CaseStatus::pass)
     wrapped_between_words(tr(language, "pass: every pixel agrees"));
-  else if (r.status == check::CaseStatus::fail)
+  else if (r.status == check::CaseStatus::fail) {
     wrapped_between_words(trf(language, "fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
+    // Found on the image by their frames, and in the answer file by their place: row, column of the ids.
+    wrapped_between_words(trf(language, "wrong pixels (row, column), framed on the image: %s", wrong_pixels_named(v).c_str()));
+  }
   else
     wrapped_between_words(trf(language, "%s: %s", check::text(language, check::status_name(r.status)),
                               with_file_shown(host, tr_reason(language, r.detail), request.command).c_str()));
@@ -183,6 +188,18 @@ void check_overlay(const CameraCheck& check, const Lesson& state, const CastCach
       list->AddRectFilled({x0 + column * cw, y0 + row * ch}, {x0 + end * cw, y0 + (row + 1) * ch}, red);
       column = end;
     }
+  // The pixels the verdict names, each in a black and a white frame: one of the two stands out on any colour
+  // (a red tint alone vanished on a red sphere), and a frame at least a few screen pixels wide around a pixel
+  // that is smaller on screen.
+  const float thick = std::max(1.0f, std::round(ImGui::GetFontSize() / 8.0f));
+  for (const WrongPixel& p : first_wrong_pixels(v, kNamedWrongPixels)) {
+    const int column = v.dimension == 2 ? v.columns - 1 - p.column : p.column;
+    const ImVec2 centre{x0 + (column + 0.5f) * cw, y0 + (p.row + 0.5f) * ch};
+    const ImVec2 half{std::max(cw / 2, 2 * thick) + thick, std::max(ch / 2, 2 * thick) + thick};
+    list->AddRect({centre.x - half.x, centre.y - half.y}, {centre.x + half.x, centre.y + half.y}, IM_COL32(255, 255, 255, 255), 0, 0, thick);
+    list->AddRect({centre.x - half.x - thick, centre.y - half.y - thick}, {centre.x + half.x + thick, centre.y + half.y + thick},
+                  IM_COL32(0, 0, 0, 255), 0, 0, thick);
+  }
 }
 
 }  // namespace raycam::ui

@@ -34,6 +34,9 @@
 #include "overhead_view.h"
 #include "panels.h"
 #include "raycam/scene_file.h"
+#include "answer.h"
+#include "case_image.h"
+#include <fstream>
 
 using namespace raycam;
 
@@ -402,6 +405,62 @@ TEST_CASE("with a mistake on, the header says the verdict is the downloaded case
                                                       : "wrong for the downloaded case — the image shown shows the mistake « mirrored image »")) !=
             std::string::npos);
     }
+  std::filesystem::remove_all(folder);
+}
+
+// Issue 45: one wrong pixel can be found: the verdict names it as (row, column) of the answer's ids, and the
+// image frames it in black and white, one of which stands out on whatever lies under it (QA: its red tint
+// vanished on a red sphere). The wrong pixel is put on a sphere, in both languages.
+TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that stand out from it",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-wrong-pixel-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"}) {
+    session::AppState state = lecture_state("3d", language);
+    state.host = session::kPageHost;
+    headless::HeadlessRenderer renderer(1280, 800);
+    renderer.run_frame(state);
+    const check::CaseImage right = check::render_case(renderer.check().case_for_download(state));
+    // A pixel on an object, away from the edges: its id changed to the background's (the corner's).
+    int row = right.rows / 2, column = -1;
+    for (int c = right.columns / 3; c < right.columns && column < 0; ++c)
+      if (right.ids[std::size_t(row * right.columns + c)] != right.ids[0]) column = c + 2;
+    REQUIRE(column > 0);
+    check::Answer answer;
+    answer.rows = right.rows;
+    answer.columns = right.columns;
+    answer.ids = right.ids;
+    answer.ids[std::size_t(row * right.columns + column)] = right.ids[0];
+    const std::string path = folder + "/one-wrong.json";
+    std::ofstream(path) << check::answer_to_json(answer, right.dimension);
+    renderer.check().give_answer(path);
+    until_verdict(renderer, state);
+    REQUIRE(renderer.check().status() == "fail");
+    REQUIRE(renderer.check().wrong_pixels() == 1);
+    // Named: the pixel changed, as the answer's own comparison finds it.
+    const auto verdict = renderer.check().progress().latest;
+    CHECK(session::wrong_pixels_named(verdict->verdict) ==
+          "(" + std::to_string(row) + ", " + std::to_string(column) + ")");
+    // Framed: around the pixel's place on screen, a near-black and a near-white ring, and the pixel itself
+    // neither (a frame of its own colour would not stand out).
+    const gl::RgbaImage shot = renderer.render_settled(state, 3);
+    const ui::Rect image = renderer.layout().image;
+    const float cw = image.w / float(right.columns), ch = image.h / float(right.rows);
+    const int cx = int(image.x + (column + 0.5f) * cw), cy = int(image.y + (row + 0.5f) * ch);
+    bool black = false, white = false;
+    for (int dx = 0; dx < int(cw) + 12; ++dx) {
+      const std::uint8_t* p = shot.at(cx + dx, cy);
+      black = black || (p[0] < 40 && p[1] < 40 && p[2] < 40);
+      white = white || (p[0] > 215 && p[1] > 215 && p[2] > 215);
+    }
+    const std::uint8_t* under = shot.at(cx, cy);
+    const int black_distance = under[0] + under[1] + under[2], white_distance = 3 * 255 - black_distance;
+    INFO(language << ": pixel (" << row << ", " << column << ") at " << cx << "," << cy << " shows " << int(under[0]) << ","
+                  << int(under[1]) << "," << int(under[2]));
+    CHECK(black);
+    CHECK(white);
+    CHECK(std::max(black_distance, white_distance) > 300);  // one of the two frames stands out strongly
+  }
   std::filesystem::remove_all(folder);
 }
 
