@@ -410,6 +410,9 @@ mutant graded-camera-header-silent src/session/camera_check.cpp 's/  if (!mistak
 WRONG_PIXEL="^render: ?a wrong pixel is named"
 mutant wrong-pixel-framed-in-red src/ui/check_panel.cpp 's/IM_COL32(255, 255, 255, 255), 0, 0, thick/IM_COL32(255, 0, 0, 120), 0, 0, thick/' "raycam_render_tests" "$WRONG_PIXEL"
 mutant wrong-pixels-named-column-first src/session/camera_check.cpp 's/{int(i \/ std::size_t(verdict.columns)), int(i % std::size_t(verdict.columns))}/{int(i % std::size_t(verdict.columns)), int(i \/ std::size_t(verdict.columns))}/' "raycam_render_tests" "$WRONG_PIXEL"
+DIAGNOSIS="^render: ?the diagnosis has a heading"
+mutant bad-size-answer-said-no-classic-mistake src/ui/check_panel.cpp 's/ \&\& r.status == check::CaseStatus::fail) {/) {/' "raycam_render_tests" "$DIAGNOSIS"
+mutant diagnosis-without-its-heading src/ui/check_panel.cpp 's/  if (!v.diagnosis.empty()) {  \/\/ the bullets. heading: what they are/  if (false) {/' "raycam_render_tests" "$DIAGNOSIS"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 

@@ -317,6 +317,7 @@ const std::vector<Translation>& translation_table() {
       {"✗ case: %lld wrong — the image shows « %s »", "✗ cas : %lld faux — l'image montre « %s »"},
       {"✗ case: %lld wrong", "✗ cas : %lld faux"},
       {"wrong pixels (row, column), framed on the image: %s", "pixels faux (ligne, colonne), encadrés sur l'image : %s"},
+      {"Classic mistakes that make this same image:", "Erreurs classiques qui donnent cette même image :"},
       {"graded for the downloaded case: the image shown shows the mistake « %s »",
        "noté pour le cas téléchargé : l'image affichée montre l'erreur « %s »"},
 

@@ -36,6 +36,7 @@ struct VerdictInView {
   bool scroll_pending = false;        // arrived, not yet scrolled into view
   bool asked = false;                 // the student asked for it: scrolled even under the mouse
   bool check_now_clicked = false;     // Check now was clicked: the next verdict is asked for
+  std::vector<std::string> lines;     // what the verdict's part of the section said, for the tests
   bool arrived(const CheckProgress& progress) const {
     return progress.latest && !progress.running &&
            (shown.owner_before(progress.latest) || progress.latest.owner_before(shown));
@@ -130,16 +131,24 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   }
   float next_step_bottom = ImGui::GetItemRectMax().y;  // the clear button, unless a diagnosis says more
   if (!v.sandboxed && !request.is_file) wrapped_between_words(tr(language, "no sandbox: bubblewrap is not available here"));
-  if (v.diagnosed && v.diagnosis.empty()) {
-    ImGui::TextWrapped("%s", tr(language, "no classic mistake reproduces this image"));
+  in_view.lines.clear();
+  // Only an image of the right size is an image a classic mistake could make (a bad-size answer is not).
+  if (v.diagnosed && v.diagnosis.empty() && r.status == check::CaseStatus::fail) {
+    in_view.lines.push_back(tr(language, "no classic mistake reproduces this image"));
+    ImGui::TextWrapped("%s", in_view.lines.back().c_str());
     next_step_bottom = ImGui::GetItemRectMax().y;
+  }
+  if (!v.diagnosis.empty()) {  // the bullets' heading: what they are
+    in_view.lines.push_back(tr(language, "Classic mistakes that make this same image:"));
+    wrapped_between_words(in_view.lines.back());
   }
   for (const check::Explanation& e : v.diagnosis) {
     ImGui::Bullet();
     // The mistakes' names in the window's language, not their ids ("mirrored + rows from the bottom").
     std::string names;
     for (const MistakeInfo* m : e.mistakes) names += (names.empty() ? "" : " + ") + std::string(m->label[language]);
-    wrapped_between_words(trf(language, "%s: %s", names.c_str(), e.text(language).c_str()));
+    in_view.lines.push_back(trf(language, "%s: %s", names.c_str(), e.text(language).c_str()));
+    wrapped_between_words(in_view.lines.back());
     if (&e == &v.diagnosis.front()) next_step_bottom = ImGui::GetItemRectMax().y;
   }
   in_view.next_step_at = {low.x, low.y, high.x, next_step_bottom};
@@ -161,6 +170,7 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
 
 ImVec4 drawn_verdict_rect() { return verdict_in_view().drawn_at; }
 ImVec4 drawn_next_step_rect() { return verdict_in_view().next_step_at; }
+std::vector<std::string> drawn_diagnosis_lines() { return verdict_in_view().lines; }
 
 // ---- the overlay -----------------------------------------------------------------------------------------
 void check_overlay(const CameraCheck& check, const Lesson& state, const CastCache& cast, ImDrawList* list, float x0, float y0,

@@ -4,6 +4,9 @@
 
 #include <imgui.h>
 
+#include <string>
+#include <vector>
+
 #include "camera_check.h"
 
 struct ImDrawList;
@@ -19,6 +22,9 @@ ImVec4 drawn_verdict_rect();
 // The same rectangle down to the verdict's next step (the first diagnosis line, else the clear button): what
 // an arriving verdict is scrolled to show.
 ImVec4 drawn_next_step_rect();
+// What the section last said under the verdict about the diagnosis (its heading, its bullets, or that no
+// classic mistake makes the image), for the tests.
+std::vector<std::string> drawn_diagnosis_lines();
 // Translucent red over the wrong pixels of the image drawn in [x0, x1] × [y0, y1] (only while the verdict
 // is for the image on screen).
 void check_overlay(const session::CameraCheck& check, const session::Lesson& state, const session::CastCache& cast,

@@ -464,6 +464,48 @@ TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that st
   std::filesystem::remove_all(folder);
 }
 
+// Issue 45: the diagnosis's bullets have a heading saying what they are, and an answer of the wrong size is not
+// told "no classic mistake reproduces this image" (no image of that size was compared), in both languages.
+TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be no classic mistake",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-diagnosis-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"})
+    for (const bool bad_size : {true, false}) {
+      session::AppState state = lecture_state("3d", language);
+      state.host = session::kPageHost;
+      headless::HeadlessRenderer renderer(1920, 1080);
+      renderer.run_frame(state);
+      open_every_section();
+      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+      save_scene_file(renderer.check().case_for_download(state), case_path);
+      if (bad_size)
+        std::ofstream(answer) << "{\"ids\": [[0, 1, 2], [0, 1, 2]]}\n";
+      else
+        REQUIRE(std::system((std::string(MISTAKEN_STUDENT) + " --mistake mirrored < " + case_path + " > " + answer).c_str()) == 0);
+      renderer.check().give_answer(answer);
+      until_verdict(renderer, state);
+      const std::vector<std::string> lines = ui::drawn_diagnosis_lines();
+      std::string said;
+      for (const std::string& line : lines) said += "\n  " + line;
+      INFO(language << (bad_size ? ", a bad-size answer" : ", a mirrored answer") << " (" << renderer.check().status()
+                    << "), under the verdict:" << said);
+      const bool french = std::string(language) == "fr";
+      const std::string none = french ? "aucune erreur classique" : "no classic mistake";
+      const std::string heading = french ? "Erreurs classiques qui donnent cette même image :" : "Classic mistakes that make this same image:";
+      if (bad_size) {
+        CHECK(renderer.check().status() == "bad-output");
+        CHECK(said.find(none) == std::string::npos);
+      } else {
+        REQUIRE(renderer.check().status() == "fail");
+        REQUIRE(lines.size() >= 2);
+        CHECK(lines[0] == heading);
+        CHECK(lines[1].find(french ? "image en miroir" : "mirrored image") == 0);
+      }
+    }
+  std::filesystem::remove_all(folder);
+}
+
 // The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought
 // a verdict that scrolled the panel, and the next click landed on another control): while the mouse is over
 // the panel the verdict waits below the fold; once the mouse leaves, it is scrolled into sight.
