@@ -129,6 +129,8 @@ struct HostLink {
   // A recording of the window under way (the host records; the panel and the status line show it).
   bool recording = false;
   double recording_seconds = 0.0;
+  // In full screen now (the host says so before each frame): the panel's button then offers to leave it.
+  bool in_fullscreen = false;
 };
 
 // The session's whole state. The panels' own widget state is not in it: the frame keeps it (ui/panel_state.h).

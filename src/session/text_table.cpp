@@ -318,6 +318,7 @@ const std::vector<Translation>& translation_table() {
       {"✗ case: %lld wrong", "✗ cas : %lld faux"},
       {"wrong pixels (row, column), framed on the image: %s", "pixels faux (ligne, colonne), encadrés sur l'image : %s"},
       {"Classic mistakes that make this same image:", "Erreurs classiques qui donnent cette même image :"},
+      {"Leave full screen (F11)", "Quitter le plein écran (F11)"},
       {"graded for the downloaded case: the image shown shows the mistake « %s »",
        "noté pour le cas téléchargé : l'image affichée montre l'erreur « %s »"},
 

@@ -56,7 +56,9 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   if (arrived && !in_view.any) ImGui::SetNextItemOpen(true);
   if (arrived) {
     const bool asked = !host.runs_programs || in_view.check_now_clicked;
-    in_view = {progress.latest, true};
+    in_view = VerdictInView{};
+    in_view.shown = progress.latest;
+    in_view.any = true;
     in_view.scroll_pending = true;
     in_view.asked = asked;
   }

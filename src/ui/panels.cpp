@@ -784,7 +784,7 @@ void lecture_section(AppState& state, PanelState& panels) {
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(state.language, panels, tr(state.language, "Language / Langue###language"), state.language, kLanguages);
-  if (button(tr(state.language, "Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
+  if (button(tr(state.language, fullscreen_label(state)))) state.requests.ask(HostRequestKind::toggle_fullscreen);
   record_item_rect(panels, "###fullscreen");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Help (F1)"))) state.show_help = !state.show_help;
