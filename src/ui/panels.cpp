@@ -7,6 +7,7 @@
 #include <imgui_stdlib.h>    // InputText on a std::string: a path is never cut
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
 #include <cfloat>
 #include <filesystem>
@@ -91,13 +92,28 @@ void record_item_rect(const PanelState& panels, const std::string& id) {
 // The label beside the widget when both fit (the widget keeps at least `widget_min_width`), else on its own
 // line above a full-width widget: a label is never cut, in any language at any font scale. `label` may carry
 // an ImGui "###id" (kept either way).
+// Sliders read as one column (the camera's) have their labels all beside or all above (QA at 2× on 1024×768:
+// θ's short label sat beside its slider while the longer ones sat above theirs): while a LabelGroup lives,
+// its widest label decides for each.
+float g_group_label_width = 0.0f;
+struct LabelGroup {
+  explicit LabelGroup(std::initializer_list<const char*> labels) {
+    for (const char* label : labels)
+      g_group_label_width = std::max(g_group_label_width, ImGui::CalcTextSize(label_parts(label).shown.c_str()).x +
+                                                              ImGui::GetStyle().ItemInnerSpacing.x);
+  }
+  ~LabelGroup() { g_group_label_width = 0.0f; }
+  LabelGroup(const LabelGroup&) = delete;
+  LabelGroup& operator=(const LabelGroup&) = delete;
+};
+
 template <class Widget>
 bool labelled(const PanelState& panels, const char* label, Widget widget, float widget_min_width = 0.0f) {
   const LabelParts parts = label_parts(label);
   const std::string& shown = parts.shown;
   const std::string& id = parts.id;
   const float avail = ImGui::GetContentRegionAvail().x;
-  const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  const float label_width = std::max(g_group_label_width, ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x);
   bool changed = false;
   if (label_width <= avail * 0.45f && avail - label_width >= widget_min_width) {
     ImGui::SetNextItemWidth(avail - label_width);
@@ -311,6 +327,8 @@ void camera_section(AppState& state, const PanelState& panels) {
 
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
+  const LabelGroup column{tr(state.language, "d_f focal distance###df"), tr(state.language, "d distance to C###d"),
+                          tr(state.language, "θ azimuth###theta"), tr(state.language, "φ polar angle###phi")};
   bool changed = slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
                                "%.3f", true);
   changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,

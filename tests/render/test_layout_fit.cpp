@@ -506,6 +506,38 @@ TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be n
   std::filesystem::remove_all(folder);
 }
 
+// Issue 45: the camera's sliders read as one column, their labels all beside them or all above (QA at 2× on
+// 1024×768: θ's label sat beside its slider while the others sat above theirs): the same step from one
+// slider to the next, at every screen and scale, in both languages and both views.
+TEST_CASE("the camera's slider labels are all beside or all above their sliders", "[render][lecture][layout]") {
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"en", "fr"})
+        for (const char* view : {"2d", "3d"}) {
+          session::AppState state = lecture_state(view, language);
+          state.font_scale = scale;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          ui::WidgetRects rects;
+          renderer.panels().widget_rects = &rects;
+          renderer.render_settled(state, 3);
+          renderer.panels().widget_rects = nullptr;
+          std::vector<const char*> ids = {"###df", "###d", "###theta"};
+          if (std::string(view) == "3d") ids.push_back("###phi");
+          std::ostringstream steps;
+          std::vector<float> step;
+          for (std::size_t i = 1; i < ids.size(); ++i) {
+            REQUIRE(rects.count(ids[i]) == 1);
+            step.push_back(rects.at(ids[i]).y0 - rects.at(ids[i - 1]).y0);
+            steps << " " << ids[i - 1] << "→" << ids[i] << " " << step.back();
+          }
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":" << steps.str());
+          // A step of more than one and a half sliders holds a label line above the slider (two where a long
+          // label wraps): all steps of one kind.
+          const float frame = rects.at("###d").y1 - rects.at("###d").y0;
+          for (const float s : step) CHECK((s > 1.5f * frame) == (step.front() > 1.5f * frame));
+        }
+}
+
 // The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought
 // a verdict that scrolled the panel, and the next click landed on another control): while the mouse is over
 // the panel the verdict waits below the fold; once the mouse leaves, it is scrolled into sight.
