@@ -182,14 +182,15 @@ void check_overlay(const CameraCheck& check, const Lesson& state, const CastCach
   const check::CaseVerdict& v = progress.latest->verdict;
   if (v.dimension != dimension(state) || v.columns != cast.map.width || v.rows != cast.map.height) return;
   const float cw = (x1 - x0) / float(v.columns), ch = (y1 - y0) / float(v.rows);
+  // The image's column of the answer's column, and back: a 2D bar shows pixel k = n-1-column (its own inverse).
+  const auto image_column = [&](int c) { return v.dimension == 2 ? v.columns - 1 - c : c; };
   const ImU32 red = IM_COL32(255, 0, 0, 120);  // translucent: the student's mistake stays visible underneath
   // One rectangle per run of wrong pixels along a row: few rectangles even when most of the image is wrong.
   for (int row = 0; row < v.rows; ++row)
     for (int column = 0; column < v.columns;) {
       // The image's column `column`; a 2D bar shows pixel k = n-1-column there.
       auto wrong_at = [&](int c) {
-        const int k = v.dimension == 2 ? v.columns - 1 - c : c;
-        return v.wrong[std::size_t(row) * std::size_t(v.columns) + std::size_t(k)] != 0;
+        return v.wrong[std::size_t(row) * std::size_t(v.columns) + std::size_t(image_column(c))] != 0;
       };
       if (!wrong_at(column)) {
         ++column;
@@ -205,7 +206,7 @@ void check_overlay(const CameraCheck& check, const Lesson& state, const CastCach
   // that is smaller on screen.
   const float thick = std::max(1.0f, std::round(ImGui::GetFontSize() / 8.0f));
   for (const WrongPixel& p : first_wrong_pixels(v, kNamedWrongPixels)) {
-    const int column = v.dimension == 2 ? v.columns - 1 - p.column : p.column;
+    const int column = image_column(p.column);
     const ImVec2 centre{x0 + (column + 0.5f) * cw, y0 + (p.row + 0.5f) * ch};
     const ImVec2 half{std::max(cw / 2, 2 * thick) + thick, std::max(ch / 2, 2 * thick) + thick};
     list->AddRect({centre.x - half.x, centre.y - half.y}, {centre.x + half.x, centre.y + half.y}, IM_COL32(255, 255, 255, 255), 0, 0, thick);
