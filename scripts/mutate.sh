@@ -413,7 +413,7 @@ mutant wrong-pixels-named-column-first src/session/camera_check.cpp 's/{int(i \/
 DIAGNOSIS="^render: ?the diagnosis has a heading"
 mutant bad-size-answer-said-no-classic-mistake src/ui/check_panel.cpp 's/ \&\& r.status == check::CaseStatus::fail) {/) {/' "raycam_render_tests" "$DIAGNOSIS"
 mutant diagnosis-without-its-heading src/ui/check_panel.cpp 's/  if (!v.diagnosis.empty()) {  \/\/ the bullets. heading: what they are/  if (false) {/' "raycam_render_tests" "$DIAGNOSIS"
-mutant slider-labels-each-on-its-own src/ui/panels.cpp 's/  const float label_width = std::max(g_group_label_width, /  const float label_width = std::max(0.0f, /' "raycam_render_tests" "^render: ?the camera's slider labels"
+mutant slider-labels-each-on-its-own src/ui/panels.cpp 's/  const float deciding_width = std::max(g_group_label_width, label_width);/  const float deciding_width = label_width;/' "raycam_render_tests" "^render: ?the camera's slider labels"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 

@@ -94,7 +94,7 @@ void record_item_rect(const PanelState& panels, const std::string& id) {
 // an ImGui "###id" (kept either way).
 // Sliders read as one column (the camera's) have their labels all beside or all above (QA at 2× on 1024×768:
 // θ's short label sat beside its slider while the longer ones sat above theirs): while a LabelGroup lives,
-// its widest label decides for each.
+// its widest label decides for each (each slider then keeps the room its own label leaves).
 float g_group_label_width = 0.0f;
 struct LabelGroup {
   explicit LabelGroup(std::initializer_list<const char*> labels) {
@@ -113,9 +113,10 @@ bool labelled(const PanelState& panels, const char* label, Widget widget, float 
   const std::string& shown = parts.shown;
   const std::string& id = parts.id;
   const float avail = ImGui::GetContentRegionAvail().x;
-  const float label_width = std::max(g_group_label_width, ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x);
+  const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  const float deciding_width = std::max(g_group_label_width, label_width);  // its group's widest
   bool changed = false;
-  if (label_width <= avail * 0.45f && avail - label_width >= widget_min_width) {
+  if (deciding_width <= avail * 0.45f && avail - deciding_width >= widget_min_width) {
     ImGui::SetNextItemWidth(avail - label_width);
     changed = widget((shown + id).c_str());  // the same id as above its widget
   } else {
@@ -327,19 +328,22 @@ void camera_section(AppState& state, const PanelState& panels) {
 
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
-  const LabelGroup column{tr(state.language, "d_f focal distance###df"), tr(state.language, "d distance to C###d"),
-                          tr(state.language, "θ azimuth###theta"), tr(state.language, "φ polar angle###phi")};
-  bool changed = slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
-                               "%.3f", true);
-  changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
-                           "%.2f", true);
-  changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
-  std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
-                        [&](View3D& view) {
-                          changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
-                                                    glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
-                        }},
-             state.view);
+  bool changed = false;
+  {
+    const LabelGroup column{tr(state.language, "d_f focal distance###df"), tr(state.language, "d distance to C###d"),
+                            tr(state.language, "θ azimuth###theta"), tr(state.language, "φ polar angle###phi")};
+    changed |= slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+                             "%.3f", true);
+    changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+                             "%.2f", true);
+    changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
+    std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
+                          [&](View3D& view) {
+                            changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
+                                                      glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+                          }},
+               state.view);
+  }
   const int max_size = active_max_side(state);
   // The handout's one or two resolution variables (two in 3D, "non-square" on).
   if (dimension(state) == 2 || !state.res_rows) {
