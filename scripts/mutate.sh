@@ -414,6 +414,9 @@ DIAGNOSIS="^render: ?the diagnosis has a heading"
 mutant bad-size-answer-said-no-classic-mistake src/ui/check_panel.cpp 's/ \&\& r.status == check::CaseStatus::fail) {/) {/' "raycam_render_tests" "$DIAGNOSIS"
 mutant diagnosis-without-its-heading src/ui/check_panel.cpp 's/  if (!v.diagnosis.empty()) {  \/\/ the bullets. heading: what they are/  if (false) {/' "raycam_render_tests" "$DIAGNOSIS"
 mutant slider-labels-each-on-its-own src/ui/panels.cpp 's/  const float deciding_width = std::max(g_group_label_width, label_width);/  const float deciding_width = label_width;/' "raycam_render_tests" "^render: ?the camera's slider labels"
+mutant page-url-first-error-only src/web/web_main.cpp 's/      errors.push_back(reason.what());/      if (errors.empty()) errors.push_back(reason.what());/' "web:raycam_web" "^web: the page in headless Chromium"
+mutant fullscreen-label-never-changes src/ui/panels.h 's/return link.in_fullscreen ? "Leave full screen (F11)" : "Fullscreen (F11)";/return "Fullscreen (F11)";/' "web:raycam_web" "^web: the page's host"
+mutant page-steps-as-separate-downloads src/ui/panels.cpp 's/if (state.host.files_are_downloads \&\& files.size() > 1) {  \/\/ the page: one download, an archive/if (false) {/' "web:raycam_web" "^web: the page's verdicts"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
 MUTANTS_END=1
 
