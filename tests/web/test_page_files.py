@@ -46,9 +46,26 @@ def status(page):
     return message
 
 
+# Every message a drawn frame showed, recorded by the page itself: a confirmation goes after 5 s, which a
+# loaded machine can let pass between two polls.
+RECORD_MESSAGES = """window.raycam_messages = []; const before = Module.postMainLoop;
+Module.postMainLoop = function() {
+  if (before) before();
+  const m = Module.ccall('raycam_status_message', 'string', [], []);
+  const seen = window.raycam_messages;
+  if (m && seen[seen.length - 1] !== m) seen.push(m);
+};"""
+
+
 def wait_for_status(page, wanted):
+    """The first message shown since the last call that `wanted` accepts (else the status line's now)."""
     deadline = time.time() + 10
     while time.time() < deadline:
+        recorded = page.call("const seen = window.raycam_messages || []; window.raycam_messages = []; return seen;")
+        for message in recorded:
+            messages_seen.append(message)
+            if wanted(message):
+                return message
         message = status(page)
         if wanted(message):
             return message
@@ -172,6 +189,7 @@ def verdict_states(page, downloads, scratch):
 
 def files_and_figures(page, downloads, scratch, language):
     """Items 4 and 5 through the panel's own buttons, on the bundled many3d.json."""
+    page.call(RECORD_MESSAGES)
     check(click_widget(page, "###files"), "%s: the Scene file section opens" % language)
     # A click's release reaches ImGui a frame after its press (the host's event queue): wait for the open section.
     widgets = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).widgets",
