@@ -180,6 +180,7 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
     for (int drawn = 0; !host.should_close() && !state.requests.pending(session::HostRequestKind::quit);) {
       const bool last = run.frames > 0 && drawn + 1 >= run.frames;
       if (last && !run.screenshot.empty()) state.requests.ask(session::HostRequestKind::screenshot, run.screenshot);
+      state.in_fullscreen = glfwGetWindowMonitor(window) != nullptr;  // the panel's button says Leave there
       const ui::FrameResult result = ui::run_frame(host, frame, state);
       if (!result.drawn) continue;
       host.apply_title();

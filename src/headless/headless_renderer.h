@@ -42,6 +42,7 @@ class HeadlessRenderer : public ui::FrameHost {
   // The frame's panel state (its widgets' own, beside the session's AppState): the start-up options' values
   // (ui::panel_state_for), the tests' widget_rects hook.
   ui::PanelState& panels() { return frame_->panels(); }
+  session::CameraCheck& check() { return frame_->check(); }  // the page's route: its case and answer files
   int width() const { return width_; }
   int height() const { return height_; }
 

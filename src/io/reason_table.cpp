@@ -75,6 +75,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
        "{path} : impossible d'écrire une carte des couleurs vide"},
       {"{path}: cannot write PNG (does the directory exist and is it writable?)",
        "{path} : impossible d'écrire le PNG (le dossier existe-t-il, et peut-on y écrire ?)"},
+      {"{path}: cannot write the zip archive", "{path} : impossible d'écrire l'archive zip"},
+      {"{path}: cannot read the file", "{path} : impossible de lire le fichier"},
 
       // ---- the construction figure's files (src/figure), exported from the window ----
       {"{path}: cannot write the figure ({reason})", "{path} : impossible d'écrire la figure ({reason})"},

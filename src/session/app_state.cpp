@@ -21,6 +21,7 @@ void adopt_view_setup(Lesson& state, Display& display, const ViewSetup& setup) {
   state.view = std::move(views.on_screen);
   state.other_view = std::move(views.other);
   ++state.scene_version;  // new objects: what was packed or uploaded from the old ones is stale
+  state.opened_version = state.scene_version;
   state.res = std::visit([](const auto& view) { return res_of(view.camera); }, state.view);
   // The rows' res of a non-square 3D preset (the handout's second resolution variable; a 2D setup has none:
   // its file and flags refuse a second res).
@@ -192,7 +193,9 @@ bool save_preset(AppState& state, const std::string& path) {
     const SceneFile file = scene_file_of(state.view, preset);
     save_scene_file(file, path);
     set_message(state, MessageSource::files, false,
-                trf(state.language, "saved the camera preset to %s", shown_file_name(state.host, path).c_str()));
+                trf(state.language, state.host.files_are_downloads ? "asked the browser to save the camera preset as %s"
+                                                                   : "saved the camera preset to %s",
+                    shown_file_name(state.host, path).c_str()));
     return true;
   } catch (const std::exception& error) {
     set_message(state, MessageSource::files, true,

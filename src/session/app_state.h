@@ -76,6 +76,9 @@ struct Lesson {
   // What changed since the last cast: the cast cache is rebuilt from the model when these say so.
   bool cameras_dirty = true;
   std::uint64_t scene_version = 1;  // bumped when the objects change
+  // Bumped only when a scene is opened, not by Tab's switch of views (which bumps scene_version for the
+  // packed and uploaded copies): the check's case key, so Tab there and back is the same case again.
+  std::uint64_t opened_version = 1;
   std::uint64_t scene_opens = 0;    // scene files opened by open_scene: the panels follow each (the Open box)
 };
 
@@ -131,6 +134,8 @@ struct HostLink {
   // A recording of the window under way (the host records; the panel and the status line show it).
   bool recording = false;
   double recording_seconds = 0.0;
+  // In full screen now (the host says so before each frame): the panel's button then offers to leave it.
+  bool in_fullscreen = false;
 };
 
 // The session's whole state. The panels' own widget state is not in it: the frame keeps it (ui/panel_state.h).

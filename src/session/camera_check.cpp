@@ -120,7 +120,7 @@ std::string CameraCheck::camera_key(const Lesson& state) const {
   // Cheap to build every frame: what the case depends on (the scene by version, the camera by value).
   const CameraPreset p = active_preset(state);
   std::ostringstream key;
-  key << std::hexfloat << dimension(state) << '|' << state.scene_version << '|' << scene_path(state) << '|'
+  key << std::hexfloat << dimension(state) << '|' << state.opened_version << '|' << scene_path(state) << '|'
       << p.d.value_or(0) << '|' << p.theta_deg.value_or(0) << '|' << p.phi_deg.value_or(0) << '|'
       << p.df.value_or(0) << '|' << p.res.value_or(0) << '|' << p.res_rows.value_or(0) << '|';
   for (double t : p.target.value_or(std::vector<double>{})) key << t << ',';
@@ -252,9 +252,40 @@ bool CameraCheck::busy() const {
   return shared_->running || shared_->pending.has_value();
 }
 
-CheckHeader check_header(Language language, const CheckProgress& progress) {
+std::vector<WrongPixel> first_wrong_pixels(const check::CaseVerdict& verdict, int count) {
+  std::vector<WrongPixel> found;
+  if (verdict.columns <= 0) return found;
+  for (std::size_t i = 0; i < verdict.wrong.size() && int(found.size()) < count; ++i)
+    if (verdict.wrong[i] != 0) found.push_back({int(i / std::size_t(verdict.columns)), int(i % std::size_t(verdict.columns))});
+  return found;
+}
+
+std::string wrong_pixels_named(const check::CaseVerdict& verdict) {
+  std::string named;
+  for (const WrongPixel& p : first_wrong_pixels(verdict, kNamedWrongPixels))
+    named += (named.empty() ? "(" : ", (") + std::to_string(p.row) + ", " + std::to_string(p.column) + ")";
+  if (verdict.result.wrong_pixels > kNamedWrongPixels) named += ", …";
+  return named;
+}
+
+CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes,
+                         bool downloaded_case) {
   if (progress.running || !progress.latest || !progress.current) return {};
   const check::CaseResult& r = progress.latest->verdict.result;
+  if (!mistakes.empty() && (r.status == check::CaseStatus::pass || r.status == check::CaseStatus::fail)) {
+    const char* m = mistakes.c_str();
+    if (r.status == check::CaseStatus::pass)
+      return {{trf(language, downloaded_case ? "CHECK: passed for the downloaded case — the image shown shows the mistake « %s »"
+                                             : "CHECK: passed for your camera — the image shown shows the mistake « %s »", m),
+               trf(language, "✓ case passed — the image shows « %s »", m), tr(language, "✓ case passed")},
+              true, true};
+    return {{trf(language, downloaded_case ? "CHECK: %lld pixels wrong for the downloaded case — the image shown shows the mistake « %s »"
+                                           : "CHECK: %lld pixels wrong for your camera — the image shown shows the mistake « %s »",
+                 r.wrong_pixels, m),
+             trf(language, "✗ case: %lld wrong — the image shows « %s »", r.wrong_pixels, m),
+             trf(language, "✗ case: %lld wrong", r.wrong_pixels)},
+            false, true};
+  }
   if (r.status == check::CaseStatus::pass) return {{tr(language, "CHECK: passed"), tr(language, "✓ passed")}, true};
   if (r.status == check::CaseStatus::fail)
     return {{trf(language, "CHECK: %lld pixels wrong", r.wrong_pixels), trf(language, "✗ %lld pixels wrong", r.wrong_pixels),

@@ -58,11 +58,28 @@ SceneFile camera_case(const Lesson& state);
 // takes the longest that fits, and the last always fits: a verdict is never cut): "CHECK: 27932 pixels
 // wrong", "✗ 27932 pixels wrong", "✗ 27932 wrong" (or the failing status), or "CHECK: passed", "✓ passed";
 // empty while none, or while a run is going (the old verdict is no longer the image's).
+// With a classic mistake on (`mistakes`, its names), the verdict is still the case's camera's (the camera the
+// student set: the case never carries the mistake) while the image shows the mistake: the header says both
+// plainly, "CHECK: passed for the downloaded case — the image shown shows the mistake « mirrored »" (the
+// page's case; on the desktop "for your camera"), and names the mistake itself (`names_mistake`): no pass
+// inside a red "MISTAKE ON" header.
 struct CheckHeader {
   std::vector<std::string> forms;
   bool passed = false;
+  bool names_mistake = false;
 };
-CheckHeader check_header(Language language, const CheckProgress& progress);
+CheckHeader check_header(Language language, const CheckProgress& progress, const std::string& mistakes = "",
+                         bool downloaded_case = false);
+
+// The first `count` wrong pixels of a failing verdict in protocol order, as (row, column) of the answer's ids
+// (a 2D answer's one row: (0, k)); the panel names them and the image marks them.
+struct WrongPixel {
+  int row = 0, column = 0;
+};
+std::vector<WrongPixel> first_wrong_pixels(const check::CaseVerdict& verdict, int count);
+inline constexpr int kNamedWrongPixels = 5;
+// "(12, 40), (12, 41)" and "…" after the last when there are more wrong pixels than named.
+std::string wrong_pixels_named(const check::CaseVerdict& verdict);
 
 struct CheckShared;  // the job and the latest verdict, shared with the worker thread
 

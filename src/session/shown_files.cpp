@@ -4,7 +4,11 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
+#include "raycam/zip_archive.h"
 #include "text.h"
 
 namespace raycam::session {
@@ -21,6 +25,27 @@ std::string with_file_shown(const HostCapabilities& host, std::string text, cons
   for (std::size_t at = text.find(path); at != std::string::npos; at = text.find(path, at + shown.size()))
     text.replace(at, path.size(), shown);
   return text;
+}
+
+std::string written_message(const HostCapabilities& host, Language language, const std::string& path) {
+  return ui::trf(language, host.files_are_downloads ? "asked the browser to save %s" : "wrote %s",
+                 shown_file_name(host, path).c_str());
+}
+
+std::string as_one_download(const std::vector<std::string>& files, const std::string& archive_name) {
+  std::vector<ZipEntry> entries;
+  for (const std::string& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream bytes;
+    if (!in || !(bytes << in.rdbuf())) throw std::runtime_error(file + ": cannot read the file");
+    entries.push_back({std::filesystem::path(file).filename().string(), bytes.str()});
+  }
+  const std::filesystem::path folder = files.empty() ? std::filesystem::path(".") : std::filesystem::path(files.front()).parent_path();
+  const std::string archive = (folder / archive_name).string();
+  write_zip(archive, entries);
+  std::error_code ignored;
+  for (const std::string& file : files) std::filesystem::remove(file, ignored);
+  return archive;
 }
 
 std::string named_after_scene(const Lesson& state, const std::string& suffix) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "app_state.h"
 
@@ -14,6 +15,18 @@ std::string shown_file_name(const HostCapabilities& host, const std::string& pat
 
 // `text` (a message, an error's reason) with every `path` in it shown as shown_file_name() shows it.
 std::string with_file_shown(const HostCapabilities& host, std::string text, const std::string& path);
+
+// What a message says of a file just written: "wrote PATH" on the desktop; in the page "asked the browser to
+// save NAME": the page hands the file to the browser, which may ask, or refuse, and never tells the page what
+// arrived.
+std::string written_message(const HostCapabilities& host, Language language, const std::string& path);
+
+// The page's downloads of several files at once (every construction step's figure): a browser asks before a
+// page downloads several files, and drops the later ones while it waits, so in the page they become ONE
+// download, a zip archive (stored, raycam/zip_archive.h) named `archive_name` beside the first file; the
+// files themselves are removed (only the archive is offered). Returns the archive's path. Throws
+// std::runtime_error when a file cannot be read or the archive written.
+std::string as_one_download(const std::vector<std::string>& files, const std::string& archive_name);
 
 // A download's name after the scene on screen: "many3d" + suffix ("many3d.json", "many3d.png"); the demo
 // scene is "raycam-demo-3d".

@@ -292,7 +292,7 @@ FrameLayout FrameRenderer::build(AppState& state, int width, int height) {
   if (panel_open) {
     construction_section(state, panels_);
     inspector_section(state);
-    check_section(check_, state.host, ImGui::GetTime(), state.language);
+    check_section(check_, state.host, ImGui::GetTime(), state.language, mistakes_on(state));
     // A verdict scrolled into view moves the panel at the next frame: the window draws it (an idle window
     // would leave the verdict below the fold until the next event).
     const ImGuiWindow* panel = ImGui::GetCurrentWindow();
@@ -358,12 +358,13 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   // is the check's verdict: where the eye is. One line whatever it says (image_header.h): the picture under
   // it keeps its height, so that turning a mistake on changes the picture, not its size.
   const std::string mistakes = mistakes_on(state);
-  const CheckHeader check = check_header(state.language, check_.progress());
+  const CheckHeader check = check_header(state.language, check_.progress(), mistakes, !state.host.runs_programs);
+  const bool mistake_part = !mistakes.empty() && !check.names_mistake;  // else the verdict names it
   const ImageHeader header =
-      fit_image_header({check.forms, mistakes.empty() ? "" : trf(state.language, "MISTAKE ON: %s", mistakes.c_str()),
-                        tr(state.language, "MISTAKE ON"), {full, brief}},
+      fit_image_header({check.forms, mistake_part ? trf(state.language, "MISTAKE ON: %s", mistakes.c_str()) : "",
+                        mistake_part ? tr(state.language, "MISTAKE ON") : "", {full, brief}},
                        area.w);
-  const bool alarm = !mistakes.empty() || (!check.forms.empty() && !check.passed);
+  const bool alarm = mistake_part || (!check.forms.empty() && !check.passed);
   const int header_colours = alarm || !check.forms.empty() ? 3 : 0;
   if (header_colours) {
     ImGui::PushStyleColor(ImGuiCol_TitleBg, alarm ? kMistakeHeader : kPassHeader);

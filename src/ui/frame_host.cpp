@@ -32,7 +32,7 @@ FrameResult run_frame(FrameHost& host, FrameRenderer& frame, AppState& state) {
     const std::string path = shot->path.empty() ? "raycam-screenshot.png" : shot->path;
     try {
       gl::write_png(host.read_back(), path);
-      set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, path).c_str()));
+      set_message(state, MessageSource::files, false, written_message(state.host, state.language, path));
     } catch (const std::exception& error) {
       set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), path));
       result.screenshot_failed = true;

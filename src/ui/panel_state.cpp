@@ -56,7 +56,7 @@ bool export_colour_map(AppState& state, PanelState& panels, const std::string& p
   }
   try {
     write_png(state.map, asked, 1, image_is_bar(state.view) ? 32 : 1);
-    set_message(state, MessageSource::files, false, trf(state.language, "wrote %s", shown_file_name(state.host, whole).c_str()));
+    set_message(state, MessageSource::files, false, written_message(state.host, state.language, whole));
     return true;
   } catch (const std::exception& error) {
     set_message(state, MessageSource::files, true, with_file_shown(state.host, tr_reason(state.language, error.what()), asked));

@@ -7,6 +7,7 @@
 #include <imgui_stdlib.h>    // InputText on a std::string: a path is never cut
 
 #include <algorithm>
+#include <initializer_list>
 #include <array>
 #include <cfloat>
 #include <filesystem>
@@ -91,6 +92,21 @@ void record_item_rect(const PanelState& panels, const std::string& id) {
 // The label beside the widget when both fit (the widget keeps at least `widget_min_width`), else on its own
 // line above a full-width widget: a label is never cut, in any language at any font scale. `label` may carry
 // an ImGui "###id" (kept either way).
+// Sliders read as one column (the camera's) have their labels all beside or all above (QA at 2× on 1024×768:
+// θ's short label sat beside its slider while the longer ones sat above theirs): while a LabelGroup lives,
+// its widest label decides for each (each slider then keeps the room its own label leaves).
+float g_group_label_width = 0.0f;
+struct LabelGroup {
+  explicit LabelGroup(std::initializer_list<const char*> labels) {
+    for (const char* label : labels)
+      g_group_label_width = std::max(g_group_label_width, ImGui::CalcTextSize(label_parts(label).shown.c_str()).x +
+                                                              ImGui::GetStyle().ItemInnerSpacing.x);
+  }
+  ~LabelGroup() { g_group_label_width = 0.0f; }
+  LabelGroup(const LabelGroup&) = delete;
+  LabelGroup& operator=(const LabelGroup&) = delete;
+};
+
 template <class Widget>
 bool labelled(const PanelState& panels, const char* label, Widget widget, float widget_min_width = 0.0f) {
   const LabelParts parts = label_parts(label);
@@ -98,8 +114,9 @@ bool labelled(const PanelState& panels, const char* label, Widget widget, float 
   const std::string& id = parts.id;
   const float avail = ImGui::GetContentRegionAvail().x;
   const float label_width = ImGui::CalcTextSize(shown.c_str()).x + ImGui::GetStyle().ItemInnerSpacing.x;
+  const float deciding_width = std::max(g_group_label_width, label_width);  // its group's widest
   bool changed = false;
-  if (label_width <= avail * 0.45f && avail - label_width >= widget_min_width) {
+  if (deciding_width <= avail * 0.45f && avail - deciding_width >= widget_min_width) {
     ImGui::SetNextItemWidth(avail - label_width);
     changed = widget((shown + id).c_str());  // the same id as above its widget
   } else {
@@ -344,17 +361,22 @@ void camera_section(AppState& state, const PanelState& panels) {
 
   const SharedOrbit<double> orbit = active_orbit(state);
   double &df = orbit.df, &d = orbit.d, &theta = orbit.theta;
-  bool changed = slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
-                               "%.3f", true);
-  changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
-                           "%.2f", true);
-  changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
-  std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
-                        [&](View3D& view) {
-                          changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
-                                                    glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
-                        }},
-             state.view);
+  bool changed = false;
+  {
+    const LabelGroup column{tr(state.language, "d_f focal distance###df"), tr(state.language, "d distance to C###d"),
+                            tr(state.language, "θ azimuth###theta"), tr(state.language, "φ polar angle###phi")};
+    changed |= slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+                             "%.3f", true);
+    changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+                             "%.2f", true);
+    changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
+    std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
+                          [&](View3D& view) {
+                            changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
+                                                      glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
+                          }},
+               state.view);
+  }
   const int max_size = active_max_side(state);
   // The handout's one or two resolution variables (two in 3D, "non-square" on).
   if (dimension(state) == 2 || !state.res_rows) {
@@ -456,9 +478,16 @@ void placement_tables(AppState& state, PanelState& panels, const View3D& view, i
 void export_figure_now(AppState& state, const PanelState& panels, bool all) {
   try {
     const std::vector<std::string> files = export_construction_figure(state, panels.figure, panels.figure_path, all);
-    std::vector<std::string> shown;  // the page: names alone
-    for (const std::string& file : files) shown.push_back(shown_file_name(state.host, file));
-    set_message(state, MessageSource::construction, false, figure_files_message(state.language, shown));
+    if (state.host.files_are_downloads && files.size() > 1) {  // the page: one download, an archive
+      const std::string archive = as_one_download(files, named_after_scene(state, "-steps.zip"));
+      set_message(state, MessageSource::construction, false,
+                  trf(state.language, "asked the browser to save %s (%d figures)",
+                      shown_file_name(state.host, archive).c_str(), int(files.size())));
+    } else if (state.host.files_are_downloads) {
+      set_message(state, MessageSource::construction, false, written_message(state.host, state.language, files.front()));
+    } else {
+      set_message(state, MessageSource::construction, false, figure_files_message(state.language, files));
+    }
   } catch (const std::exception& error) {
     set_message(state, MessageSource::construction, true, tr_reason(state.language, error.what()));
   }
@@ -489,6 +518,7 @@ void figure_export_row(AppState& state, PanelState& panels) {
   record_item_rect(panels, "###figure_export");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Export every step")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Export every step"))) asked = 2;
+  record_item_rect(panels, "###figure_export_all");
   if (asked != 0) {
     panels.figure_path = with_figure_extension(panels.figure_path, panels.figure_format);
     panels.figure_replace_pending = 0;
@@ -815,7 +845,7 @@ void lecture_section(AppState& state, PanelState& panels) {
   static constexpr std::pair<Language, const char*> kLanguages[] = {{Language::en, tr_later("English")},
                                                                     {Language::fr, tr_later("Français")}};
   choice(state.language, panels, tr(state.language, "Language / Langue###language"), state.language, kLanguages);
-  if (button(tr(state.language, "Fullscreen (F11)"))) state.requests.ask(HostRequestKind::toggle_fullscreen);
+  if (button(tr(state.language, fullscreen_label(state)))) state.requests.ask(HostRequestKind::toggle_fullscreen);
   record_item_rect(panels, "###fullscreen");
   same_line_if_fits(ImGui::CalcTextSize(tr(state.language, "Help (F1)")).x + 2 * ImGui::GetStyle().FramePadding.x);
   if (button(tr(state.language, "Help (F1)"))) state.show_help = !state.show_help;

@@ -21,6 +21,11 @@ bool checkbox(const char* label, bool* value);
 bool button(const char* label);
 // Text wrapped at the panel's edge between words only, never inside a number or a word that fits a line.
 void wrapped_between_words(const std::string& text);
+// The full screen button's label (English, the table's key): "Fullscreen (F11)", or in full screen
+// "Leave full screen (F11)".
+inline const char* fullscreen_label(const session::HostLink& link) {
+  return link.in_fullscreen ? "Leave full screen (F11)" : "Fullscreen (F11)";
+}
 bool section(const char* full, const char* brief, int flags = 0);
 
 void camera_section(session::AppState& state, const PanelState& panels);

@@ -125,10 +125,13 @@ void toggle_fullscreen() {
 
 ui::FrameLayout last_layout;  // the last frame's, for the browser tests (web_main.cpp)
 
+EM_JS(int, page_in_fullscreen, (), { return document.fullscreenElement ? 1 : 0; });
+
 void tick() {
   // A scene opening in steps (scene_loading.h) keeps the frames coming: each step is announced by a frame.
   if (scene_loading_step(*page.state)) page.host->note_event();
   if (!page.host->wants_frame(*page.state, page.frame->panels())) return;  // asleep until an event
+  page.state->in_fullscreen = page_in_fullscreen() != 0;  // the panel's button says Leave there
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
   if (!result.drawn) return;
   page.host->frame_drawn();

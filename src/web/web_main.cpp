@@ -17,6 +17,7 @@
 #include "app_options.h"
 #include "app_state.h"
 #include "flag_values.h"
+#include "panels.h"
 #include "raycam/ray_caster.h"
 #include "raycam/image_files.h"
 #include "raycam/language.h"
@@ -218,6 +219,8 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   const raycam::session::CheckHeader header = raycam::session::check_header(raycam::web::page_state().language, check.progress());
   json += "\"check_header\": \"" + (header.forms.empty() ? std::string() : header.forms.front()) + "\", ";
   add("check_wrong_pixels", double(check.wrong_pixels()));
+  json += std::string("\"fullscreen_button\": \"") +
+          raycam::ui::tr(state.language, raycam::ui::fullscreen_label(state)) + "\", ";
   json += "\"end\": 0}";
   return json.c_str();
 }
@@ -256,13 +259,14 @@ int main() {
   chdir("/home/web_user");  // the app writes relative paths here: web_host.cpp offers them as downloads
   raycam::session::AppOptions options;
   options.demo_on_bad_scene = true;
-  // A bad part of the address is shown in the page, the first one's reason; the other parts still apply.
-  std::string error;
-  const auto apply = [&error](auto&& part) {
+  // Every bad part of the address is shown in the page, each with its reason (a student fixing one would
+  // meet the next only after reloading); the other parts still apply.
+  std::vector<std::string> errors;
+  const auto apply = [&errors](auto&& part) {
     try {
       part();
     } catch (const std::exception& reason) {
-      if (error.empty()) error = reason.what();
+      errors.push_back(reason.what());
     }
   };
   apply([&] {
@@ -296,9 +300,12 @@ int main() {
   // A ?scene= that did not open is named as the student named it (NAME, not the page's /scenes/NAME).
   state.message = raycam::session::with_file_shown(raycam::session::kPageHost, state.message,
                                                    options.view.scene_path.value_or(""));
-  if (!error.empty()) {
-    std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
-    state.message = raycam::ui::tr_reason(state.language, error);
+  if (!errors.empty()) {
+    state.message.clear();
+    for (const std::string& error : errors) {
+      std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
+      state.message += (state.message.empty() ? "" : "; ") + raycam::ui::tr_reason(state.language, error);
+    }
     state.message_is_error = true;
   }
   raycam::web::run_page(state, panels);

@@ -12,6 +12,9 @@
 
 #include <catch2/catch.hpp>
 #include <cfloat>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -33,6 +36,10 @@
 #include "mistake_lessons.h"
 #include "overhead_view.h"
 #include "panels.h"
+#include "raycam/scene_file.h"
+#include "answer.h"
+#include "case_image.h"
+#include <fstream>
 
 using namespace raycam;
 
@@ -304,6 +311,234 @@ TEST_CASE("the picture keeps its size whatever its header says and the check's v
           CHECK(shown.h == plain.h);
         }
       }
+}
+
+namespace {
+// The panel's view and the verdict down to its next step (check_panel.h): the verdict's top in the view, and
+// the next step too unless the two are taller than the view.
+void check_next_step_in_sight(const char* where) {
+  const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+  REQUIRE(panel);
+  const ImVec4 shown = ui::drawn_next_step_rect();
+  const ImRect view = panel->InnerClipRect;
+  INFO(where << ": the verdict and its next step at y " << shown.y << " - " << shown.w << ", the panel shows y "
+             << view.Min.y << " - " << view.Max.y);
+  CHECK(shown.w > shown.y);  // drawn
+  CHECK(shown.y >= view.Min.y - 0.5f);
+  CHECK((shown.w <= view.Max.y + 0.5f || shown.w - shown.y > view.GetHeight()));
+}
+}  // namespace
+
+// Issue 45: after an answer, the verdict's first lines and the next step (what the diagnosis says, else the
+// clear button) are in the panel's view at every screen and scale, in both languages: in the page, whose
+// answer file comes back while the mouse still rests on the panel where its button was (QA: at 1024×768 in
+// English the verdict stayed below the fold and "Give the answer file…" cut; at 1280×800 in French the
+// verdict was cut at the bottom), and on the desktop, where the program's verdict arrives by itself.
+TEST_CASE("after an answer the verdict and its next step are in sight, in the page and the window, both languages",
+          "[render][lecture][layout]") {
+  const std::string mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-verdict-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"en", "fr"})
+        for (const bool page : {true, false}) {
+          std::ostringstream where;
+          where << screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", "
+                << (page ? "the page" : "the window");
+          session::AppState state = lecture_state("3d", language);
+          state.font_scale = scale;
+          if (page) state.host = session::kPageHost;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          if (!page) renderer.panels().check_command = mistaken;
+          renderer.run_frame(state);
+          open_every_section();
+          renderer.run_frame(state);
+          if (page) {  // the case out, the student's program run on it, its answer file back
+            const ImGuiWindow* panel = ImGui::FindWindowByName("raycam###panel");
+            REQUIRE(panel);
+            renderer.move_mouse(panel->InnerClipRect.GetCenter().x, panel->InnerClipRect.GetCenter().y);
+            renderer.run_frame(state);
+            const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+            save_scene_file(renderer.check().case_for_download(state), case_path);
+            REQUIRE(std::system((mistaken + " < " + case_path + " > " + answer).c_str()) == 0);
+            renderer.check().give_answer(answer);
+          }
+          until_verdict(renderer, state);
+          REQUIRE(renderer.check().status() == "fail");
+          check_next_step_in_sight(where.str().c_str());
+        }
+  std::filesystem::remove_all(folder);
+}
+
+// Issue 45: with a classic mistake on, the page grades the case's camera (the case never carries the mistake)
+// and the header says so plainly, naming the mistake the image shows: never a pass inside a red "MISTAKE ON"
+// header (QA: "✓ réussie | ERREUR ACTIVE : image en miroir").
+TEST_CASE("with a mistake on, the header says the verdict is the downloaded case's and the image shows the mistake",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-graded-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"})
+    for (const bool right : {true, false}) {
+      session::AppState state = lecture_state("3d", language);
+      state.host = session::kPageHost;
+      headless::HeadlessRenderer renderer(1920, 1080);
+      renderer.run_frame(state);
+      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+      save_scene_file(renderer.check().case_for_download(state), case_path);
+      const std::string program = right ? std::string(EXAMPLE_STUDENT_CPP) : std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
+      REQUIRE(std::system((program + " < " + case_path + " > " + answer).c_str()) == 0);
+      session::show_mistake(state, *session::find_lesson("mirrored"));
+      renderer.check().give_answer(answer);
+      until_verdict(renderer, state);
+      const std::string& title = renderer.layout().image_title;
+      INFO(language << (right ? ", the right answer" : ", a mirrored answer") << ": header '" << title << "'");
+      REQUIRE(renderer.check().status() == (right ? "pass" : "fail"));
+      const bool french = std::string(language) == "fr";
+      CHECK(title.find(french ? "ERREUR ACTIVE" : "MISTAKE ON") == std::string::npos);
+      // The header's line as wide as the image (its longest form: in the tooltip, and in the header where wide).
+      CHECK(title.find(french ? "cas" : "case") != std::string::npos);
+      CHECK(title.find(french ? "l'image montre « image en miroir »" : "the image shows « mirrored image »") != std::string::npos);
+      CHECK(title.find(right ? (french ? "réussi" : "passed") : (french ? "faux" : "wrong")) != std::string::npos);
+      const session::CheckHeader header =
+          session::check_header(french ? Language::fr : Language::en, renderer.check().progress(), session::mistakes_on(state), true);
+      CHECK(header.forms.front().find(french ? (right ? "réussie pour le cas téléchargé — l'image affichée montre l'erreur « image en miroir »"
+                                                      : "faux pour le cas téléchargé — l'image affichée montre l'erreur « image en miroir »")
+                                             : (right ? "passed for the downloaded case — the image shown shows the mistake « mirrored image »"
+                                                      : "wrong for the downloaded case — the image shown shows the mistake « mirrored image »")) !=
+            std::string::npos);
+    }
+  std::filesystem::remove_all(folder);
+}
+
+// Issue 45: one wrong pixel can be found: the verdict names it as (row, column) of the answer's ids, and the
+// image frames it in black and white, one of which stands out on whatever lies under it (QA: its red tint
+// vanished on a red sphere). The wrong pixel is put on a sphere, in both languages.
+TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that stand out from it",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-wrong-pixel-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"}) {
+    session::AppState state = lecture_state("3d", language);
+    state.host = session::kPageHost;
+    headless::HeadlessRenderer renderer(1280, 800);
+    renderer.run_frame(state);
+    const check::CaseImage right = check::render_case(renderer.check().case_for_download(state));
+    // A pixel on an object, away from the edges: its id changed to the background's (the corner's).
+    int row = right.rows / 2, column = -1;
+    for (int c = right.columns / 3; c < right.columns && column < 0; ++c)
+      if (right.ids[std::size_t(row * right.columns + c)] != right.ids[0]) column = c + 2;
+    REQUIRE(column > 0);
+    check::Answer answer;
+    answer.rows = right.rows;
+    answer.columns = right.columns;
+    answer.ids = right.ids;
+    answer.ids[std::size_t(row * right.columns + column)] = right.ids[0];
+    const std::string path = folder + "/one-wrong.json";
+    std::ofstream(path) << check::answer_to_json(answer, right.dimension);
+    renderer.check().give_answer(path);
+    until_verdict(renderer, state);
+    REQUIRE(renderer.check().status() == "fail");
+    REQUIRE(renderer.check().wrong_pixels() == 1);
+    // Named: the pixel changed, as the answer's own comparison finds it.
+    const auto verdict = renderer.check().progress().latest;
+    CHECK(session::wrong_pixels_named(verdict->verdict) ==
+          "(" + std::to_string(row) + ", " + std::to_string(column) + ")");
+    // Framed: around the pixel's place on screen, a near-black and a near-white ring, and the pixel itself
+    // neither (a frame of its own colour would not stand out).
+    const gl::RgbaImage shot = renderer.render_settled(state, 3);
+    const ui::Rect image = renderer.layout().image;
+    const float cw = image.w / float(right.columns), ch = image.h / float(right.rows);
+    const int cx = int(image.x + (column + 0.5f) * cw), cy = int(image.y + (row + 0.5f) * ch);
+    bool black = false, white = false;
+    for (int dx = 0; dx < int(cw) + 12; ++dx) {
+      const std::uint8_t* p = shot.at(cx + dx, cy);
+      black = black || (p[0] < 40 && p[1] < 40 && p[2] < 40);
+      white = white || (p[0] > 215 && p[1] > 215 && p[2] > 215);
+    }
+    const std::uint8_t* under = shot.at(cx, cy);
+    const int black_distance = under[0] + under[1] + under[2], white_distance = 3 * 255 - black_distance;
+    INFO(language << ": pixel (" << row << ", " << column << ") at " << cx << "," << cy << " shows " << int(under[0]) << ","
+                  << int(under[1]) << "," << int(under[2]));
+    CHECK(black);
+    CHECK(white);
+    CHECK(std::max(black_distance, white_distance) > 300);  // one of the two frames stands out strongly
+  }
+  std::filesystem::remove_all(folder);
+}
+
+// Issue 45: the diagnosis's bullets have a heading saying what they are, and an answer of the wrong size is not
+// told "no classic mistake reproduces this image" (no image of that size was compared), in both languages.
+TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be no classic mistake",
+          "[render][layout][check]") {
+  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-diagnosis-" + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(folder);
+  for (const char* language : {"en", "fr"})
+    for (const bool bad_size : {true, false}) {
+      session::AppState state = lecture_state("3d", language);
+      state.host = session::kPageHost;
+      headless::HeadlessRenderer renderer(1920, 1080);
+      renderer.run_frame(state);
+      open_every_section();
+      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+      save_scene_file(renderer.check().case_for_download(state), case_path);
+      if (bad_size)
+        std::ofstream(answer) << "{\"ids\": [[0, 1, 2], [0, 1, 2]]}\n";
+      else
+        REQUIRE(std::system((std::string(MISTAKEN_STUDENT) + " --mistake mirrored < " + case_path + " > " + answer).c_str()) == 0);
+      renderer.check().give_answer(answer);
+      until_verdict(renderer, state);
+      const std::vector<std::string> lines = ui::drawn_diagnosis_lines();
+      std::string said;
+      for (const std::string& line : lines) said += "\n  " + line;
+      INFO(language << (bad_size ? ", a bad-size answer" : ", a mirrored answer") << " (" << renderer.check().status()
+                    << "), under the verdict:" << said);
+      const bool french = std::string(language) == "fr";
+      const std::string none = french ? "aucune erreur classique" : "no classic mistake";
+      const std::string heading = french ? "Erreurs classiques qui donnent cette même image :" : "Classic mistakes that make this same image:";
+      if (bad_size) {
+        CHECK(renderer.check().status() == "bad-output");
+        CHECK(said.find(none) == std::string::npos);
+      } else {
+        REQUIRE(renderer.check().status() == "fail");
+        REQUIRE(lines.size() >= 2);
+        CHECK(lines[0] == heading);
+        CHECK(lines[1].find(french ? "image en miroir" : "mirrored image") == 0);
+      }
+    }
+  std::filesystem::remove_all(folder);
+}
+
+// Issue 45: the camera's sliders read as one column, their labels all beside them or all above (QA at 2× on
+// 1024×768: θ's label sat beside its slider while the others sat above theirs): the same step from one
+// slider to the next, at every screen and scale, in both languages and both views.
+TEST_CASE("the camera's slider labels are all beside or all above their sliders", "[render][lecture][layout]") {
+  for (const Screen screen : kScreens)
+    for (const float scale : {1.0f, 2.0f, 3.0f})
+      for (const char* language : {"en", "fr"})
+        for (const char* view : {"2d", "3d"}) {
+          session::AppState state = lecture_state(view, language);
+          state.font_scale = scale;
+          headless::HeadlessRenderer renderer(screen.width, screen.height);
+          ui::WidgetRects rects;
+          renderer.panels().widget_rects = &rects;
+          renderer.render_settled(state, 3);
+          renderer.panels().widget_rects = nullptr;
+          std::vector<const char*> ids = {"###df", "###d", "###theta"};
+          if (std::string(view) == "3d") ids.push_back("###phi");
+          std::ostringstream steps;
+          std::vector<float> step;
+          for (std::size_t i = 1; i < ids.size(); ++i) {
+            REQUIRE(rects.count(ids[i]) == 1);
+            step.push_back(rects.at(ids[i]).y0 - rects.at(ids[i - 1]).y0);
+            steps << " " << ids[i - 1] << "→" << ids[i] << " " << step.back();
+          }
+          INFO(screen.width << "x" << screen.height << " at " << scale << "x, " << language << ", " << view << ":" << steps.str());
+          // A step of more than one and a half sliders holds a label line above the slider (two where a long
+          // label wraps): all steps of one kind.
+          const float frame = rects.at("###d").y1 - rects.at("###d").y0;
+          for (const float s : step) CHECK((s > 1.5f * frame) == (step.front() > 1.5f * frame));
+        }
 }
 
 // The verdict's scroll never moves the panel under the mouse (QA: with automatic checks on, every Open brought

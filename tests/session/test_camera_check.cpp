@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <fstream>
+#include <glm/trigonometric.hpp>
 #include <thread>
 
 #include "../scratch_dir.h"
@@ -220,4 +221,36 @@ TEST_CASE("the page never re-grades an answer against a camera it was not made f
       CHECK(check.verdict_state() == VerdictState::for_camera_shown);
     }
   }
+}
+
+// Issue 45: back at the case's camera by any route, the verdict is this image's again (QA: after Tab there
+// and back it stayed "earlier camera", the arrow keys brought it back).
+TEST_CASE("the page's verdict comes back with the case's camera by Tab, keys, typed values or Reset",
+          "[ui][check][host]") {
+  const test::ScratchDir scratch("page-verdict-routes");
+  const std::string answer = scratch.path("answer.json");
+  AppState state = classic_2d();
+  state.host = kPageHost;
+  CameraCheck check;
+  write_right_answer(check.case_for_download(state), answer);
+  check.give_answer(answer);
+  double now = 1.0;
+  check.update(state, state, now);
+  REQUIRE(check.status() == "pass");
+  REQUIRE(check.verdict_state() == VerdictState::for_camera_shown);
+  const double theta = view2d(state).orbit.theta;
+  const auto away_and_back = [&](const char* route, auto&& away, auto&& back) {
+    INFO(route);
+    away(), place_cameras(state), check.update(state, state, now += 0.1);
+    CHECK(check.verdict_state() == VerdictState::for_earlier_camera);
+    back(), place_cameras(state), check.update(state, state, now += 0.1);
+    CHECK(check.verdict_state() == VerdictState::for_camera_shown);
+    CHECK(check.status() == "pass");
+  };
+  away_and_back("Tab there and back", [&] { switch_dimension(state, 3); }, [&] { switch_dimension(state, 2); });
+  away_and_back("an arrow key and back", [&] { view2d(state).orbit.theta += 0.05; }, [&] { view2d(state).orbit.theta = theta; });
+  const double typed_degrees = glm::degrees(theta);
+  away_and_back("θ typed", [&] { view2d(state).orbit.theta = glm::radians(typed_degrees + 10.0); },
+                [&] { view2d(state).orbit.theta = glm::radians(typed_degrees); });
+  away_and_back("Reset camera", [&] { view2d(state).orbit.theta += 0.3; }, [&] { reset_camera(state, state); });
 }

@@ -24,6 +24,8 @@
 #include "check_report.h"
 #include "check_run.h"
 #include "figure_export.h"
+#include "raycam/zip_archive.h"
+#include "shown_files.h"
 #include <unistd.h>
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
@@ -201,6 +203,11 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(thrown_by([&] { write_png(ColourMap(0, 0, Rgb8{}), png); }), {png});
   const std::string unwritable = scratch.path("no-such-folder/map.png");
   add(thrown_by([&] { write_png(ColourMap(2, 2, Rgb8{}), unwritable); }), {unwritable});
+  // The page's one download of several files (shown_files.h): an archive that cannot be written, a file gone.
+  const std::string archive_folder = scratch.path("no-such-folder");
+  add(thrown_by([&] { raycam::write_zip(archive_folder + "/steps.zip", {{"a.tex", "x"}}); }), {archive_folder + "/steps.zip"});
+  const std::string gone = scratch.path("gone.tex");
+  add(thrown_by([&] { session::as_one_download({gone}, "steps.zip"); }), {gone});
 
   // ---- the construction figure, exported from the window ----
   session::AppOptions options;

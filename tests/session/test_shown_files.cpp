@@ -3,7 +3,9 @@
 // replace anything; on the desktop, paths stay whole and Save as still asks.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <stdexcept>
 
 #include "../scratch_dir.h"
 #include "app_options.h"
@@ -54,4 +56,37 @@ TEST_CASE("downloads are named after the scene and never ask to replace", "[file
     CHECK(save_preset_as(state, path, false) == (page ? SaveAsOutcome::saved : SaveAsOutcome::needs_yes));
     CHECK((state.message.find(scratch.dir.string()) != std::string::npos) == !page);
   }
+}
+
+TEST_CASE("the page says what it asked the browser to save, the desktop what it wrote", "[files][host]") {
+  CHECK(written_message(kPageHost, Language::en, "/home/web_user/many3d.png") == "asked the browser to save many3d.png");
+  CHECK(written_message(kPageHost, Language::fr, "/home/web_user/many3d.png") ==
+        "téléchargement de many3d.png demandé au navigateur");
+  CHECK(written_message(kDesktopHost, Language::en, "/home/me/many3d.png") == "wrote /home/me/many3d.png");
+  for (const Language language : {Language::en, Language::fr}) {
+    const std::string page = written_message(kPageHost, language, "a.png");
+    CHECK(page.find("wrote") == std::string::npos);
+    CHECK(page.find("écrit") == std::string::npos);
+  }
+}
+
+TEST_CASE("several files become one zip archive that unzip gives back whole", "[files][host][zip]") {
+  const test::ScratchDir scratch("one-download");
+  std::vector<std::string> files;
+  for (const char* name : {"many3d-figure-a.tex", "many3d-figure-b.tex", "many3d-figure-c.tex"}) {
+    files.push_back(scratch.path(name));
+    std::ofstream(files.back()) << "% the figure " << name << "\n\\begin{tikzpicture}\\end{tikzpicture}\n";
+  }
+  const std::string archive = as_one_download(files, "many3d-steps.zip");
+  CHECK(archive == scratch.path("many3d-steps.zip"));
+  for (const std::string& file : files) CHECK_FALSE(std::filesystem::exists(file));  // only the archive is offered
+  const std::string out = scratch.path("out");
+  REQUIRE(std::system(("unzip -tq " + archive + " >/dev/null && unzip -q " + archive + " -d " + out).c_str()) == 0);
+  for (const char* name : {"many3d-figure-a.tex", "many3d-figure-b.tex", "many3d-figure-c.tex"}) {
+    std::ifstream in(out + "/" + name);
+    std::string first;
+    std::getline(in, first);
+    CHECK(first == std::string("% the figure ") + name);
+  }
+  CHECK_THROWS_AS(as_one_download({scratch.path("missing.tex")}, "x.zip"), std::runtime_error);
 }

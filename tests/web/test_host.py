@@ -230,8 +230,13 @@ def fullscreen_and_keys(page):
         widgets = wait_for(page, lambda: shown_frame(page)["widgets"], lambda w: "###fullscreen" in w, 5)
     check("###fullscreen" in widgets, "the panel has a Full screen button (%s)" % sorted(widgets))
     if "###fullscreen" in widgets:
+        label = shown_frame(page)["fullscreen_button"]
         click(widgets["###fullscreen"])
         check(wait_for(page, fullscreen, True, 5), "  ... which enters full screen")
+        # Issue 45: the button says what it does now.
+        inside = wait_for(page, lambda: shown_frame(page)["fullscreen_button"], "Leave full screen (F11)", 5)
+        check(label == "Fullscreen (F11)" and inside == "Leave full screen (F11)",
+              "  ... and its label changes in full screen (%r, then %r)" % (label, inside))
         page.call("Module.canvas.focus()")
         ActionChains(page.driver).key_down(Keys.F11).pause(0.1).key_up(Keys.F11).perform()
         check(wait_for(page, fullscreen, False, 5) is False, "  ... and F11 leaves it")

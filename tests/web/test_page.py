@@ -454,6 +454,12 @@ with tempfile.TemporaryDirectory() as scratch:
               "démonstration" in french.call("return document.title"),
               "?scale=9: an error naming ?scale and its range, font scale 1, the rest of the address applied (%r)"
               % message)
+        # Issue 45: two bad parts, two errors (a student fixing one would meet the other only after a reload).
+        french.open("?lang=xx&scale=9")
+        message = wait_for(french, "return Module.ccall('raycam_status_message', 'string', [], [])",
+                           lambda m: "?scale" in m)
+        check("?scale" in message and "?lang" in message and "xx" in message,
+              "?lang=xx&scale=9: both errors shown, each naming its part (%r)" % message)
     finally:
         french.close()
 

@@ -46,9 +46,26 @@ def status(page):
     return message
 
 
+# Every message a drawn frame showed, recorded by the page itself: a confirmation goes after 5 s, which a
+# loaded machine can let pass between two polls.
+RECORD_MESSAGES = """window.raycam_messages = []; const before = Module.postMainLoop;
+Module.postMainLoop = function() {
+  if (before) before();
+  const m = Module.ccall('raycam_status_message', 'string', [], []);
+  const seen = window.raycam_messages;
+  if (m && seen[seen.length - 1] !== m) seen.push(m);
+};"""
+
+
 def wait_for_status(page, wanted):
+    """The first message shown since the last call that `wanted` accepts (else the status line's now)."""
     deadline = time.time() + 10
     while time.time() < deadline:
+        recorded = page.call("const seen = window.raycam_messages || []; window.raycam_messages = []; return seen;")
+        for message in recorded:
+            messages_seen.append(message)
+            if wanted(message):
+                return message
         message = status(page)
         if wanted(message):
             return message
@@ -158,6 +175,10 @@ def verdict_states(page, downloads, scratch):
           % (frame["check_state"], frame["check_status"]))
     press(page, Keys.TAB)
     wait_for(page, "return document.title", lambda t: "3D" in t)
+    # Issue 45: Tab back to the case's camera brings its verdict back, as the arrow keys do.
+    state = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).check_state",
+                     lambda s: s == "camera-shown")
+    check(state == "camera-shown", "  ... Tab back to the case's camera: graded for the camera shown again (%s)" % state)
     drawn = page.call(FRAMES)
     page.call("Module.ccall('raycam_clear_check', null, [], [])")
     frames_after(page, drawn)
@@ -168,6 +189,7 @@ def verdict_states(page, downloads, scratch):
 
 def files_and_figures(page, downloads, scratch, language):
     """Items 4 and 5 through the panel's own buttons, on the bundled many3d.json."""
+    page.call(RECORD_MESSAGES)
     check(click_widget(page, "###files"), "%s: the Scene file section opens" % language)
     # A click's release reaches ImGui a frame after its press (the host's event queue): wait for the open section.
     widgets = wait_for(page, "return JSON.parse(Module.ccall('raycam_shown_frame', 'string', [], [])).widgets",
@@ -199,8 +221,9 @@ def files_and_figures(page, downloads, scratch, language):
     offered = wait_for(page, "return window.raycam_downloads", lambda d: len(d) >= 2, 5)
     check(wait_for_file(first) and offered == ["many3d.json", "many3d.json"],
           "  ... Save as twice: two downloads named after the scene, no question asked (%s)" % offered)
-    check("many3d.json" in message and "?" not in message,
-          "  ... and the message names the download (%r)" % message)
+    asked = "téléchargement de la caméra sous many3d.json" if language == "fr" else "asked the browser to save"
+    check("many3d.json" in message and "?" not in message and message.startswith(asked),
+          "  ... and the message names the download, as asked of the browser (%r)" % message)
     with open(first) if os.path.exists(first) else open(os.devnull) as text:
         saved = text.read()
 
@@ -212,8 +235,8 @@ def files_and_figures(page, downloads, scratch, language):
     widgets = shown_frame(page)["widgets"]
     check("###figure_format" not in widgets and "###figure_path" not in widgets,
           "  ... Export figure: no format choice (TikZ only, without cairo) and no path box")
-    # The colour map's confirmation goes 5 s after it shows, moving the section's buttons up: on a loaded machine
-    # that fell between reading the button's place and the click, which then missed it. Clicked once it went.
+    # The PNG's message (two lines: "asked the browser to save …") goes at the next click, and the panel under
+    # the pointer moves up between the press and the release: wait for it to go by itself first.
     wait_for_status(page, lambda m: m == "")
     check(click_widget(page, "###figure_export"), "  ... Export figure…")
     tex = os.path.join(downloads, "many3d-figure.tex")
@@ -239,7 +262,37 @@ def files_and_figures(page, downloads, scratch, language):
           % (same, len(theirs)))
     word = "étape" if language == "fr" else "step"
     check(any(word in line for line in ours), "  ... in the page's language (%r)" % word)
+    every_step(page, downloads, language, len(ours))
     return message
+
+
+def every_step(page, downloads, language, figure_lines):
+    """Issue 45 item 1: every step's figure is ONE download, a zip archive that unzip tests and gives back, and
+    the message says what the browser was asked to save (the page cannot know what arrived)."""
+    offered = len(page.call("return window.raycam_downloads"))
+    check(click_widget(page, "###figure_export_all"), "  ... Export every step")
+    archive = os.path.join(downloads, "many3d-steps.zip")
+    check(wait_for_file(archive), "  ... one download, a zip archive (%s)" % sorted(os.listdir(downloads)))
+    time.sleep(0.5)  # anything else the page would offer
+    new = page.call("return window.raycam_downloads")[offered:]
+    check(new == ["many3d-steps.zip"], "  ... and nothing else offered (%s)" % new)
+    names = []
+    if os.path.exists(archive):
+        test = subprocess.run(["unzip", "-t", archive], capture_output=True, text=True)
+        check(test.returncode == 0 and "No errors detected" in test.stdout,
+              "  ... which unzip -t passes (%s)" % test.stdout.strip().splitlines()[-1:])
+        listing = subprocess.run(["unzip", "-Z1", archive], capture_output=True, text=True).stdout.split()
+        names = sorted(listing)
+        out = os.path.join(downloads, "steps-" + language)
+        subprocess.run(["unzip", "-q", "-o", archive, "-d", out])
+        tex = [open(os.path.join(out, n)).read() for n in names if n.endswith(".tex")]
+        check(len(names) >= 2 and len(tex) == len(names) and all("tikzpicture" in t for t in tex),
+              "  ... holding every step's TikZ figure (%s)" % names)
+    message = wait_for_status(page, lambda m: "many3d-steps.zip" in m)
+    asked = ("téléchargement de many3d-steps.zip demandé au navigateur (%d figures)" if language == "fr"
+             else "asked the browser to save many3d-steps.zip (%d figures)") % len(names)
+    check(message == asked and "écrit" not in message and "wrote" not in message,
+          "  ... and the message says what the browser was asked to save (%r)" % message)
 
 
 with tempfile.TemporaryDirectory() as scratch:
@@ -301,7 +354,8 @@ with tempfile.TemporaryDirectory() as scratch:
         french.open("?lang=fr&scene=many3d.json")
         wait_for(french, "return document.title", lambda t: "many3d.json" in t)
         message = files_and_figures(french, french_downloads, scratch, "fr")
-        check(message.startswith("écrit"), "French: the export's message is French (%r)" % message)
+        check(message.startswith("téléchargement de many3d-figure.tex demandé"),
+              "French: the export's message is French, what the browser was asked to save (%r)" % message)
     finally:
         french.close()
 
