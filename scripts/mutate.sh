@@ -305,14 +305,14 @@ mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr dou
 # the views' drawn labels whole at 3× (tests/render/test_layout_fit.cpp).
 mutant header-line-steals-picture src/ui/frame.cpp 's/^  layout.image_title = header.title;$/&\n  if (!header.tooltip.empty()) ImGui::TextUnformatted("MISTAKE ON");/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^             trf(language, "✗ %lld wrong", r.wrong_pixels)}};$/             }};/' "raycam_render_tests" "^render: ?the picture keeps its size"
-mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^    ImGui::ScrollToItem();.*$/    (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size"
+mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^    ImGui::ScrollToRect(ImGui::GetCurrentWindow(), ImRect(low, {high.x, next_step_bottom}));/    (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size\"
 mutant md-table-scrolls-sideways src/ui/panels.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
 mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5),/const ImVec2 at{clip_max.x - 14,/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant combo-choice-cut src/ui/panels.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
-mutant verdict-scrolls-under-the-mouse src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
+mutant verdict-scrolls-under-the-mouse src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& (in_view.asked || (!mouse_on_panel \&\& !ImGui::IsAnyMouseDown()))) {/  if (in_view.scroll_pending) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse\"
 mutant missing-answer-file-a-crash src/check/check_run.cpp 's/^  if (run.end == RunResult::End::could_not_start) result.status = CaseStatus::bad_output;$/  (void)0;/' "raycam_check_tests" "^check: ?grade_case reads an answer file"
 # --- #33 view model leftovers ---
 mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  preset = merged(preset, flags.camera);$/&\n  const bool is_2d = setup.dimension == 2;\n  if (is_2d \&\& flags.camera.phi_deg) throw std::invalid_argument("--phi: 3D only");\n  if (is_2d \&\& flags.camera.res_rows) throw std::invalid_argument("--res: one in 2D");\n  if (is_2d \&\& preset.size \&\& preset.size->size() != 1) throw std::invalid_argument("--size: N in 2D");\n  if (!is_2d \&\& preset.size \&\& preset.size->empty()) throw std::invalid_argument("--size: WxH in 3D");\n  if (is_2d) setup.camera2d = camera2d_from_preset(preset);/' "raycam_io" "^structure: at most 30 dimension branches"
@@ -354,14 +354,14 @@ mutant covered-count-one-byte-a-word src/core/footprint_caster.cpp 's/covered +=
 # --- QA after the panel move: questions follow the scene on screen ---
 mutant questions-survive-tab src/ui/panel_state.cpp 's/^  const bool switched = panels.dimension_seen != shown_dimension;/  const bool switched = false;/' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
 mutant figure-question-survives-open src/ui/panel_state.cpp '/^  panels.figure_replace_pending = 0;$/d' "raycam_ui_tests" "^ui: ?a Replace question is withdrawn"
-mutant verdict-scrolls-on-a-click src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& !mouse_on_panel \&\& !ImGui::IsAnyMouseDown()) {/  if (in_view.scroll_pending \&\& !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows)) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse"
+mutant verdict-scrolls-on-a-click src/ui/check_panel.cpp 's/^  if (in_view.scroll_pending \&\& (in_view.asked || (!mouse_on_panel \&\& !ImGui::IsAnyMouseDown()))) {/  if (in_view.scroll_pending \&\& (in_view.asked || !ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows))) {/' "raycam_render_tests" "^render: ?a verdict arriving while the mouse\"
 mutant save-question-beside-saved src/ui/panel_state.cpp '/^    if (state.message_source == MessageSource::files) state.message.clear();$/d' "raycam_ui_tests" "^ui: ?Save as from the panel asks"
 mutant bad-start-scene-empties-box src/ui/panel_state.cpp '/^  if (panels.path_input.empty() \&\& options.view.scene_path) panels.path_input = \*options.view.scene_path;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
 # --- QA: a newer check stops a stale run ---
 mutant stale-check-run-kept src/session/camera_check.cpp '/^  if (shared_->running) shared_->cancel_running = true;  \/\/ and stops one still running$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant case-cancel-not-passed src/check/case_verdict.cpp '/^    limits.cancel = source.cancel;$/d' "raycam_session_tests" "^session: ?a newer check stops a run"
 mutant run-ignores-cancel src/check/student_process.cpp 's/^  auto cancelled = \[\&\] { return limits.cancel \&\& limits.cancel->load(); };/  auto cancelled = [] { return false; };/' "raycam_session_tests" "^session: ?a newer check stops a run"
-mutant colour-map-message-relative src/ui/panel_state.cpp 's/shown_file_name(state.host, whole).c_str()/shown_file_name(state.host, asked).c_str()/' "raycam_render_tests" "^render: ?Export colour map names the file"
+mutant colour-map-message-relative src/ui/panel_state.cpp 's/written_message(state.host, state.language, whole)/written_message(state.host, state.language, asked)/' "raycam_render_tests" "^render: ?Export colour map names the file\"
 # --- #34 page speed: the float culling pass (item 8) ---
 FLOAT_TESTS="^core: ?(the float pass|casts with and without the float pass)"
 # A growth of one float rounding: the float centre's error alone then drops spheres. (Rows mapped upside
