@@ -395,6 +395,18 @@ mutant bench-speed-a-step-per-call src/cli/bench_speed.cpp 's/if (line_ \&\& nam
 mutant bench-speed-total-ignores-the-filter src/cli/bench_speed.cpp 's/if (filter.empty() || filter == "all") return true;/return true;/' "raycam-cli" "$PROGRESS"
 mutant bench-accuracy-references-uncounted src/cli/bench_accuracy.cpp 's/std::size_t steps = scenes.size(), work = 0;/std::size_t steps = 0, work = 0;/' "raycam-cli" "$PROGRESS"
 mutant figure-export-writes-names-missing src/session/figure_export.cpp 's/  if (!figure::names_fit(e.drawn, e.frames, e.output)) {/  if (false) {/' "raycam_session_tests" "^session: ?Export figure refuses"
+# --- #45 item 4 / #49 items 5-6: counts, numbers, JSON reasons, notation and maths in the window's language ---
+mutant french-zero-plural src/io/local_format.cpp 's/case Language::fr: return count >= 2 || count <= -2;/case Language::fr: return count != 1;/' "raycam_session_tests" "^session: ?a count picks"
+mutant plural-group-ignored src/io/local_format.cpp 's/out += takes_plural(language, count) ? text.substr/out += true ? text.substr/' "raycam_session_tests" "^session: ?the window.s count texts"
+mutant decimal-point-in-french src/io/local_format.cpp "s/if (c == '.') c = ',';/if (c == '.') c = '.';/" "raycam_session_tests raycam_ui_tests" "^(session: ?one number formatter|ui: ?the French window writes)"
+mutant slider-number-from-imgui src/ui/local_numbers.cpp 's/own_(language != Language::en \&\&/own_(false \&\&/' "raycam_ui_tests" "^ui: ?the French window writes"
+mutant bare-count-in-checker-table src/check/check_texts.cpp 's/"%zu {{rendu|rendus}}"/"%zu rendus"/' "raycam_session_tests" "^session: ?no count text"
+mutant json-library-reason-shown src/io/scene_file.cpp 's/return at + "text after the end of the JSON value";/return at + reason;/' "raycam_session_tests" "^session: ?error reasons: a sample"
+mutant docs-path-in-a-table src/session/text_table.cpp 's/chaque pixel comparé à celui de "/chaque pixel comparé (docs\/check.md) à celui de "/' "raycam_session_tests" "^session: ?no text of the window"
+mutant figure-origin-named-o src/figure/construction_figure.cpp 's/"translation $T(\\\\vec{ΩP})$: $M_d = T·R·H$/"translation $T(\\\\vec{OP})$: $M_d = T·R·H$/' "raycam_session_tests" "^session: ?the window.s construction captions"
+mutant shipped-name-untranslated src/io/demo_names.cpp 's/{"left twin", "jumeau gauche"}, //' "raycam_session_tests" "^session: ?in French no shipped"
+mutant plain-text-maths-in-a-mistake src/core/classic_mistakes.cpp 's/seuls les impacts t ≥ 0 comptent/seuls les impacts t >= 0 comptent/' "raycam_ui_tests" "^ui: ?the mistakes. explanations"
+mutant glyphs-of-the-tables-not-loaded src/ui/fonts.cpp 's/for (const char\* text : shown_table_texts()) builder.AddText(text);/(void)0;/' "raycam_ui_tests" "^ui: ?every character of the window"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

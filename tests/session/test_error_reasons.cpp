@@ -143,6 +143,8 @@ std::vector<Reason> real_reasons(const test::ScratchDir& scratch) {
   add(scene_error("{\"a\": \"\\q\"}"), {"lesson.json"});
   add(scene_error("{\"a\": -x}"), {"lesson.json", "-x"});
   add(scene_error("{\"a\": 1} x"), {"lesson.json"});
+  add(scene_error("{} {}"), {"lesson.json", "{"});
+  add(scene_error("\xEF\xBB{}"), {"lesson.json"});  // a broken byte order mark
   add(scene_error("{\"dimension\": 1e999}"), {"lesson.json", "1e999"});
 
   // ---- io: a scene file's fields ----

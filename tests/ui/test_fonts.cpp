@@ -79,6 +79,6 @@ TEST_CASE("the mistakes' explanations and the window's texts write their maths t
   CHECK_FALSE(std::regex_search(std::string("uₖ = M_d·u⁰ₖ, t ≥ 0, π/180, −1"), plain));
   for (const std::string& text : texts) {
     INFO(text);
-    CHECK_FALSE(std::regex_search(text, plain));
+    CHECK_FALSE(std::regex_search(text.substr(0, text.find("###")), plain));  // an ImGui id is not shown
   }
 }
