@@ -403,7 +403,7 @@ mutant slider-number-from-imgui src/ui/local_numbers.cpp 's/own_(language != Lan
 mutant bare-count-in-checker-table src/check/check_texts.cpp 's/"%zu {{rendu|rendus}}"/"%zu rendus"/' "raycam_session_tests" "^session: ?no count text"
 mutant json-library-reason-shown src/io/scene_file.cpp 's/return at + "text after the end of the JSON value";/return at + reason;/' "raycam_session_tests" "^session: ?error reasons: a sample"
 mutant docs-path-in-a-table src/session/text_table.cpp 's/chaque pixel comparé à celui de "/chaque pixel comparé (docs\/check.md) à celui de "/' "raycam_session_tests" "^session: ?no text of the window"
-mutant figure-origin-named-o src/figure/construction_figure.cpp 's/"translation $T(\\\\vec{ΩP})$: $M_d = T·R·H$/"translation $T(\\\\vec{OP})$: $M_d = T·R·H$/' "raycam_session_tests" "^session: ?the window.s construction captions"
+mutant figure-origin-named-o src/figure/construction_figure.cpp 's/"translation $T(\\\\vec{ΩP})$: $M_d/"translation $T(\\\\vec{OP})$: $M_d/' "raycam_session_tests" "^session: ?the window.s construction captions"
 mutant shipped-name-untranslated src/io/demo_names.cpp 's/{"left twin", "jumeau gauche"}, //' "raycam_session_tests" "^session: ?in French no shipped"
 mutant plain-text-maths-in-a-mistake src/core/classic_mistakes.cpp 's/seuls les impacts t ≥ 0 comptent/seuls les impacts t >= 0 comptent/' "raycam_ui_tests" "^ui: ?the mistakes. explanations"
 mutant glyphs-of-the-tables-not-loaded src/ui/fonts.cpp 's/for (const char\* text : shown_table_texts()) builder.AddText(text);/(void)0;/' "raycam_ui_tests" "^ui: ?every character of the window"
