@@ -281,10 +281,10 @@ const std::vector<Translation>& translation_table() {
       {"Export every step", "Exporter toutes les étapes"},
       {"not every object's name fits on the figure's %d × %d mm page: raycam-cli figure --size %dx%dmm names them all",
        "les noms des objets ne tiennent pas tous sur la page de la figure (%d × %d mm) : raycam-cli figure --size %dx%dmm les place tous"},
-      {"The step shown or every step: the camera, its screen and its rays after each factor of M_d, one figure "
-       "a step, for a handout or slides.",
-       "L'étape affichée ou toutes les étapes : la caméra, son écran et ses rayons après chaque facteur de "
-       "M_d, une figure par étape, pour un polycopié ou des diapositives."},
+      {"The step shown or every step: the camera and its screen after each factor of M_d, one figure a step, "
+       "for a handout or slides.",
+       "L'étape affichée ou toutes les étapes : la caméra et son écran après chaque facteur de M_d, une figure "
+       "par étape, pour un polycopié ou des diapositives."},
       {"%s: expected a name ending in .svg, .pdf, .png or .tex", "%s : nom attendu en .svg, .pdf, .png ou .tex"},
       {"format###figure_format", "format###figure_format"},
       {"rays###figure_rays", "rayons###figure_rays"},

@@ -518,8 +518,8 @@ void figure_export_row(AppState& state, PanelState& panels) {
     if (answer == ReplaceAnswer::replace) export_figure_now(state, panels, all);
   }
   show_message(state, panels, MessageSource::construction);  // right under the buttons, where the eye is
-  explain(tr(state.language, "The step shown or every step: the camera, its screen and its rays after each factor of "
-                           "M_d, one figure a step, for a handout or slides."));
+  explain(tr(state.language, "The step shown or every step: the camera and its screen after each factor of M_d, one "
+                           "figure a step, for a handout or slides."));
 }
 
 void construction_section(AppState& state, PanelState& panels) {
