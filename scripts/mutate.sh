@@ -135,7 +135,7 @@ mutant inspector-row-plus-one src/ui/panels.cpp 's/wrapped_between_words(trf(sta
 mutant checkbox-label-not-wrapped src/ui/panels.cpp 's/  if (box + ImGui::CalcTextSize(label, nullptr, true).x <= ImGui::GetContentRegionAvail().x)/  if (true)/' "raycam_render_tests" "^render: ?at 1x to 3x"
 mutant words-broken-anywhere src/ui/panels.cpp 's/  for (const std::string\& line : lines_between_words(text, width)) {/  for (const std::string\& line : {text}) {/' "raycam_ui_tests" "^ui: ?panel text wraps"
 mutant labels-printed-over-each-other src/ui/overhead_view.cpp 's/    if (!overlaps(p)) return p;/    return p;/' "raycam_render_tests" "^render: ?a label placed beside"
-mutant french-label-left-in-english src/core/classic_mistakes.cpp 's/{"theta and phi swapped", "θ et φ inversés"}/{"theta and phi swapped", "theta et phi inversés"}/' "raycam_ui_tests" "^ui: ?the French window shows no English"
+mutant french-label-left-in-english src/core/classic_mistakes.cpp 's/{"θ and φ swapped", "θ et φ inversés"}/{"θ and φ swapped", "θ and φ swapped"}/' "raycam_ui_tests" "^ui: ?the French window shows no English"
 mutant overhead-never-refits src/ui/frame.cpp 's/      if (state.overhead_fit_pending || !camera_and_target_in_view(state, state, top_left, size)) fit_overhead(state, state);/      if (state.overhead_fit_pending) fit_overhead(state, state);/' "raycam_render_tests" "^render: ?the overhead view holds still"
 mutant message-below-the-fold-counts-as-shown src/ui/panels.cpp 's/^  if (top < inside.Min.y || top + height > inside.Max.y) {/  if (top < inside.Min.y) {/' "raycam_render_tests" "^render: ?a message stays on screen"
 mutant font-rebuild-keeps-buffer-sizes src/ui/fonts.cpp 's/^  restart_renderer_backend();/  ImGui_ImplOpenGL3_DestroyDeviceObjects();/; s/^#include "renderer_backend.h"/#include "renderer_backend.h"\n#include <imgui_impl_opengl3.h>/' "raycam_render_tests" "^render:lecture mode: a font scale changed"
@@ -172,7 +172,7 @@ mutant battery-keeps-last-draw src/check/battery.cpp 's/^    if (all) break;$/  
 mutant cluster-split-at-wrong-centre src/core/sphere_clusters.cpp 's/splits.push_back({axis, centres\[std::size_t(middle)\].at\[axis\], 0, 0});/splits.push_back({axis, centres[std::size_t(middle - 1)].at[axis], 0, 0});/' "$CORE" "^core: ?every split keeps"
 mutant figure-ray-hit-from-the-eye src/figure/construction_figure.cpp 's/nearest_hit_t<2, double>(pixel, u,/nearest_hit_t<2, double>(eye, u,/' "$FIGURE" "^figure: ?every 2D frame's rays"
 mutant figure-png-red-blue-swapped src/figure/figure_files.cpp 's/row\[std::size_t(x) \* 3 + 0\] = (pixel\[x\] >> 16) \& 0xff;/row[std::size_t(x) * 3 + 0] = pixel[x] \& 0xff;/; s/row\[std::size_t(x) \* 3 + 2\] = pixel\[x\] \& 0xff;/row[std::size_t(x) * 3 + 2] = (pixel[x] >> 16) \& 0xff;/' "$FIGURE" "^figure: ?a PNG figure fills"
-mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"reçu : {got} ; attendu : {wanted}"/"reçu : {wanted} ; attendu : {got}"/' "$SESSION" "^session: ?error reasons: a sample"
+mutant french-reason-parts-swapped src/io/reason_table.cpp 's/"{source} : {field} : on attend {what} ; reçu : {value}"/"{source} : {field} : on attend {value} ; reçu : {what}"/' "$SESSION" "^session: ?error reasons: a sample"
 mutant open-keeps-save-as-path src/ui/panel_state.cpp 's/^  if (opened) panels.save_path.clear();  \/\/ Save as starts empty.*$/  \/\/ (Save as kept)/' "raycam_ui_tests" "^ui: ?(the panels follow an opened scene|a scene opened outside the panel)"
 # --- a large course: shards, merge, grade books ---
 SHARDS="^check:.*(slice|shard|--shard|csv records|merge|Gradescope|gradescope|CSV's last column)|^check: (GNU parallel|Gradescope)"
@@ -297,8 +297,7 @@ mutant figure-question-rebuilt-every-frame src/ui/panels.cpp 's/^    const bool 
 mutant overhead-label-at-the-other-end src/ui/overhead_view.cpp 's/^  label(minus, -along,/  label(plus, -along,/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-on-a-disc src/ui/overhead_view.cpp 's/^      if (std::any_of(avoid.begin(), avoid.end(), \[\&\](const ScreenDisc\& d) { return box_meets_disc(box, d); })) continue;$/      (void)avoid;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
 mutant overhead-label-past-the-view src/ui/overhead_view.cpp 's/^      if (!inside) continue;$/      (void)inside;/' "raycam_render_tests" "^render: ?the 2D overhead labels"
-mutant demo-names-in-english src/session/view.cpp 's/^  return view.scene_path.empty() ? demo_object_name(language, name) : name;.*/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
-mutant file-names-translated src/session/view.cpp 's/^  return view.scene_path.empty() ? demo_object_name(language, name) : name;.*/  return demo_object_name(language, name);/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names)"
+mutant demo-names-in-english src/session/view.cpp 's/^  return demo_object_name(language, name);.*/  return name;/' "raycam_ui_tests raycam_session_tests" "^(ui|session): ?(the inspector names|Export figure names|in French no shipped)"
 mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr double kDemoTheta2DDegrees = 70.0;/inline constexpr double kDemoTheta2DDegrees = 90.0;/' "raycam_render_tests" "^render: ?the 2D demo's construction steps"
 # --- #35 lecture layout ---
 # The picture keeps its size under a mistake's or a check's header, the verdict whole and in sight, M_d whole,
@@ -317,7 +316,6 @@ mutant missing-answer-file-a-crash src/check/check_run.cpp 's/^  if (run.end == 
 # --- #33 view model leftovers ---
 mutant dimension-branch-written-again src/io/view_setup.cpp 's/^  preset = merged(preset, flags.camera);$/&\n  const bool is_2d = setup.dimension == 2;\n  if (is_2d \&\& flags.camera.phi_deg) throw std::invalid_argument("--phi: 3D only");\n  if (is_2d \&\& flags.camera.res_rows) throw std::invalid_argument("--res: one in 2D");\n  if (is_2d \&\& preset.size \&\& preset.size->size() != 1) throw std::invalid_argument("--size: N in 2D");\n  if (!is_2d \&\& preset.size \&\& preset.size->empty()) throw std::invalid_argument("--size: WxH in 3D");\n  if (is_2d) setup.camera2d = camera2d_from_preset(preset);/' "raycam_io" "^structure: at most 30 dimension branches"
 # (the six branches make_view_setup had before visit_view_setup: 25 + 6 > 30)
-mutant counted-plural-for-one src/check/check_texts.cpp 's/  return textf(language, n == 1 ? english_one : english_many, n);/  return textf(language, english_many, n);/' "raycam_check_tests raycam-cli" "^check: ?(batch counts one|check's counts|check merge of one shard)"
 mutant merge-says-shards-is-required src/cli/check_merge_command.cpp 's/^  app.add_option("shards", shards, \(.*\));$/  app.add_option("shards", shards, \1)->required();/' "raycam-cli" "^check: merge without shards"
 mutant tr-ignores-the-language src/session/text.cpp 's/return table().lookup(language, english);/return table().lookup(Language::en, english);/' "raycam_session_tests" "^session: ?(each state shows its own language|tr shows French)"
 # --- #34 page verdicts and files ---
@@ -332,7 +330,6 @@ mutant page-text-advances-unrounded src/figure/text_metrics_font.cpp 's/    m.x_
 mutant big-file-open-unannounced src/web/scene_loading.cpp 's/loading = Loading{Step::announce, path,/loading = Loading{Step::parse, path,/' "raycam_web_page" "^web: a big scene file opens"
 # --- raycam-cli figure's demo names ---
 mutant cli-figure-demo-names-english src/cli/figure_command.cpp '/^  name_demo_objects(setup, options.language);/d' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
-mutant cli-figure-file-names-translated src/io/demo_names.cpp 's/^  if (!setup.scene_path.empty()) return;.*/  (void)0;/' "raycam-cli" "^cli: figure (--lang fr names|names a scene file)"
 # --- #33 panel state in ui ---
 mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t scene_opens = 0; .*$/&\n  std::string path_input;  \/\/ the Open box/' "$STRUCTURE" "^structure: src/session reads no panel state"
 mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^    panels.overwrite_pending = asked;$/    (void)asked;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
@@ -460,6 +457,18 @@ mutant page-url-first-error-only src/web/web_main.cpp 's/      errors.push_back(
 mutant fullscreen-label-never-changes src/ui/panels.h 's/return link.in_fullscreen ? "Leave full screen (F11)" : "Fullscreen (F11)";/return "Fullscreen (F11)";/' "web:raycam_web" "^web: the page's host"
 mutant page-steps-as-separate-downloads src/ui/panels.cpp 's/if (state.host.files_are_downloads \&\& files.size() > 1) {  \/\/ the page: one download, an archive/if (false) {/' "web:raycam_web" "^web: the page's verdicts"
 mutant zip-central-directory-offset-off src/io/zip_archive.cpp 's/  put32(out, central_at);/  put32(out, central_at + 1);/' "$CORE" "$ZIP"
+# --- #45 item 4 / #49 items 5-6: counts, numbers, JSON reasons, notation and maths in the window's language ---
+mutant french-zero-plural src/io/local_format.cpp 's/case Language::fr: return count >= 2 || count <= -2;/case Language::fr: return count != 1;/' "raycam_session_tests" "^session: ?a count picks"
+mutant plural-group-ignored src/io/local_format.cpp 's/out += takes_plural(language, count) ? text.substr/out += true ? text.substr/' "raycam_session_tests" "^session: ?the window.s count texts"
+mutant decimal-point-in-french src/io/local_format.cpp "s/if (c == '.') c = ',';/if (c == '.') c = '.';/" "raycam_session_tests raycam_ui_tests" "^(session: ?one number formatter|ui: ?the French window writes)"
+mutant slider-number-from-imgui src/ui/local_numbers.cpp 's/own_(language != Language::en \&\&/own_(false \&\&/' "raycam_ui_tests" "^ui: ?the French window writes"
+mutant bare-count-in-checker-table src/check/check_texts.cpp 's/"%zu {{rendu|rendus}}"/"%zu rendus"/' "raycam_session_tests" "^session: ?no count text"
+mutant json-library-reason-shown src/io/scene_file.cpp 's/return at + "text after the end of the JSON value";/return at + reason;/' "raycam_session_tests" "^session: ?error reasons: a sample"
+mutant docs-path-in-a-table src/session/text_table.cpp 's/chaque pixel comparé à celui de "/chaque pixel comparé (docs\/check.md) à celui de "/' "raycam_session_tests" "^session: ?no text of the window"
+mutant figure-origin-named-o src/figure/construction_figure.cpp 's/"translation $T(\\\\vec{ΩP})$: $M_d/"translation $T(\\\\vec{OP})$: $M_d/' "raycam_session_tests" "^session: ?the window.s construction captions"
+mutant shipped-name-untranslated src/io/demo_names.cpp 's/{"left twin", "jumeau gauche"}, //' "raycam_session_tests" "^session: ?in French no shipped"
+mutant plain-text-maths-in-a-mistake src/core/classic_mistakes.cpp 's/seuls les impacts t ≥ 0 comptent/seuls les impacts t >= 0 comptent/' "raycam_ui_tests" "^ui: ?the mistakes. explanations"
+mutant glyphs-of-the-tables-not-loaded src/ui/fonts.cpp 's/for (const char\* text : shown_table_texts()) builder.AddText(text);/(void)0;/' "raycam_ui_tests" "^ui: ?every character of the window"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

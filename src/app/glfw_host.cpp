@@ -114,7 +114,7 @@ void GlfwHost::stop_recording() {
   state_.recording = false;
   try {
     const int frames = recording->finish();
-    const std::string saved = ui::trf(state_.language, "wrote %s (%d:%02d, %d frames)", recording->path().c_str(),
+    const std::string saved = ui::trf(state_.language, "wrote %s (%d:%02d, %d {{frame|frames}})", recording->path().c_str(),
                                       int(seconds) / 60, int(seconds) % 60, frames);
     session::set_message(state_, session::MessageSource::files, false, saved);
     std::printf("raycam: %s\n", saved.c_str());

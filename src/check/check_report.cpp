@@ -108,10 +108,7 @@ std::string case_reason(Language lang, const CaseResult& r) {
 
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
   const Language lang = h.language;
-  std::string out = textf(lang,
-                          cases.size() == 1 ? "raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n"
-                                            : "raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
-                          cases.size(),
+  std::string out = textf(lang, "raycam-cli check: %zu {{case|cases}} (mode %s, seed %llu), sandbox: %s\n", cases.size(),
                           h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
   if (!h.sandboxed && !h.sandbox_note.empty()) out += textf(lang, "warning: %s\n", h.sandbox_note.c_str());
   if (!h.limits_note.empty()) out += textf(lang, "warning: %s\n", h.limits_note.c_str());
@@ -126,7 +123,7 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
                  wrong.c_str(), why.c_str(), r.md == "differs" ? text(lang, " (md differs)") : "");
   }
   const int n = int(report.results.size());
-  out += textf(lang, n == 1 ? "score: %d / %d case passed (%.0f %%)\n" : "score: %d / %d cases passed (%.0f %%)\n",
+  out += textf(lang, "score: %d / %d {{case|cases}} passed (%.0f %%)\n",
                report.passed(), n,
                n ? 100.0 * report.passed() / n : 0.0);
   if (const RunTotals t = totals_of(report); t.peak > 0)  // nothing ran for answer files
@@ -143,7 +140,7 @@ std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cas
       out += text(lang, "diagnosis (mistakes that reproduce your output exactly):\n");
       for (std::size_t i = 0; i < report.diagnosis.size(); ++i) {
         const Explanation& e = report.diagnosis[i];
-        out += textf(lang, "  %zu. %s: explains %zu of %d failing cases (%s)\n", i + 1, e.id().c_str(),
+        out += textf(lang, "  %zu. %s: explains %zu of %d failing {{case|cases}} (%s)\n", i + 1, e.id().c_str(),
                      e.cases.size(), failing(report), case_list(e.cases).c_str());
         out += "     " + e.text(lang) + "\n";
       }

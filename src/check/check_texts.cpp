@@ -11,11 +11,8 @@ namespace {
 // French in the handout's words. Keep the printf conversions identical in both columns.
 const std::vector<Translation>& table() {
   static const std::vector<Translation> entries = {
-      {"raycam-cli check: %zu cases (mode %s, seed %llu), sandbox: %s\n",
+      {"raycam-cli check: %zu {{case|cases}} (mode %s, seed %llu), sandbox: %s\n",
        "raycam-cli check : %zu cas (mode %s, graine %llu), bac à sable : %s\n"},
-      {"raycam-cli check: %zu case (mode %s, seed %llu), sandbox: %s\n",
-       "raycam-cli check : %zu cas (mode %s, graine %llu), bac à sable : %s\n"},
-      {"score: %d / %d case passed (%.0f %%)\n", "score : %d / %d cas réussi (%.0f %%)\n"},
       {"none", "aucun"},
       {"warning: %s\n", "attention : %s\n"},
       {"case", "cas"},
@@ -24,7 +21,7 @@ const std::vector<Translation>& table() {
       {"wrong pixels", "pixels faux"},
       {"worst pixel or reason", "pire pixel ou raison"},
       {"case %d (%dD)", "cas %d (%dD)"},  // a Gradescope test's name
-      {": %lld / %lld wrong pixels", " : %lld / %lld pixels faux"},
+      {": %lld / %lld wrong {{pixel|pixels}}", " : %lld / %lld {{pixel faux|pixels faux}}"},
       {"pass", "réussi"},
       {"fail", "échec"},
       {"crash", "plantage"},
@@ -34,29 +31,28 @@ const std::vector<Translation>& table() {
       {" (md differs)", " (md diffère)"},
       {"pixel k = %d: expected %d, got %d", "pixel k = %d : attendu %d, obtenu %d"},
       {"row %d, column %d: expected %d, got %d", "ligne %d, colonne %d : attendu %d, obtenu %d"},
-      {"score: %d / %d cases passed (%.0f %%)\n", "score : %d / %d cas réussis (%.0f %%)\n"},
+      {"score: %d / %d {{case|cases}} passed (%.0f %%)\n", "score : %d / %d cas {{réussi|réussis}} (%.0f %%)\n"},
       {"diagnosis: no classic mistake, alone or in pairs, reproduces your output.\n",
        "diagnostic : aucune erreur classique, seule ou par deux, ne reproduit votre sortie.\n"},
       {"diagnosis (mistakes that reproduce your output exactly):\n",
        "diagnostic (erreurs qui reproduisent exactement votre sortie) :\n"},
-      {"  %zu. %s: explains %zu of %d failing cases (%s)\n", "  %zu. %s : explique %zu des %d cas en échec (%s)\n"},
+      {"  %zu. %s: explains %zu of %d failing {{case|cases}} (%s)\n",
+       "  %zu. %s : explique %zu des %d cas en échec (%s)\n"},
       {"stderr of case %d:\n", "stderr du cas %d :\n"},
-      {"wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
-       "%zu fichiers de cas écrits dans %s (les réponses vont dans answer_NN.json à côté)\n"},
-      {"wrote %zu difference images to %s\n", "%zu images de différences écrites dans %s\n"},
+      {"wrote %zu case {{file|files}} to %s (answers go in answer_NN.json beside them)\n",
+       "%zu {{fichier de cas écrit|fichiers de cas écrits}} dans %s (les réponses vont dans answer_NN.json à côté)\n"},
+      {"wrote %zu difference {{image|images}} to %s\n",
+       "%zu {{image de différences écrite|images de différences écrites}} dans %s\n"},
       {"the sandbox cannot start (%s): student programs run only in it, or without one when --no-sandbox is given",
        "le bac à sable ne démarre pas (%s) : les programmes des étudiants ne tournent que dedans, ou sans lui "
        "si --no-sandbox est donné"},
       {"running student programs WITHOUT a sandbox (%s): they can read and write what you can",
        "programmes des étudiants lancés SANS bac à sable (%s) : ils peuvent lire et écrire ce que vous pouvez"},
       {"%s x %s on %s\n", "%s × %s, %s\n"},  // submissions x cases on threads, each counted()
-      {"%zu submission", "%zu rendu"},
-      {"%zu submissions", "%zu rendus"},
-      {"%zu case", "%zu cas"},
-      {"%zu cases", "%zu cas"},
-      {"%zu thread", "%zu exécution à la fois"},
-      {"%zu threads", "%zu exécutions à la fois"},
-      {"wrote %s (%zu students)\n", "%s écrit (%zu étudiants)\n"},
+      {"%zu {{submission|submissions}}", "%zu {{rendu|rendus}}"},
+      {"%zu {{case|cases}}", "%zu cas"},
+      {"%zu {{thread|threads}}", "%zu {{exécution|exécutions}} à la fois"},
+      {"wrote %s (%zu {{student|students}})\n", "%s écrit (%zu {{étudiant|étudiants}})\n"},
       {"memory-limit: the run reached its memory bound (--memory), all its processes together",
        "memory-limit : l'exécution a atteint sa borne de mémoire (--memory), tous ses processus ensemble"},
       {"process-limit: the run reached its bound on processes and threads (--processes)",
@@ -74,7 +70,7 @@ const std::vector<Translation>& table() {
       {"disk-limit: the run filled its writable folder (--disk)",
        "disk-limit : l'exécution a rempli son dossier inscriptible (--disk)"},
       // A batch's progress: runs and students done, and the time left at the pace so far.
-      {"%zu/%zu runs, %zu/%zu students", "%zu/%zu exécutions, %zu/%zu étudiants"},
+      {"%zu/%zu {{run|runs}}, %zu/%zu {{student|students}}", "%zu/%zu {{exécution|exécutions}}, %zu/%zu {{étudiant|étudiants}}"},
       {"about %d s left", "encore %d s environ"},
       {"about %d min %02d s left", "encore %d min %02d s environ"},
       {"about %d h %02d min left", "encore %d h %02d min environ"},
@@ -95,13 +91,9 @@ const char* text(Language language, const char* english) {
 std::string textf(Language language, const char* english_format, ...) {
   va_list args;
   va_start(args, english_format);
-  std::string out = format_text(text(language, english_format), args);
+  std::string out = format_text(language, text(language, english_format), args);
   va_end(args);
   return out;
-}
-
-std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many) {
-  return textf(language, n == 1 ? english_one : english_many, n);
 }
 
 std::string time_left(Language language, std::size_t done, std::size_t total, double elapsed_seconds) {

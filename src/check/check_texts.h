@@ -14,15 +14,13 @@ namespace raycam::check {
 
 // `english` in `language` (english itself if the table lacks it).
 const char* text(Language language, const char* english);
-// text() then printf-style formatting.
+// text() then printf-style formatting in `language`'s way (format_text(): decimal mark, plural groups
+// "%zu {{case|cases}}").
 std::string textf(Language language, const char* english_format, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
-
-// A count and its noun, singular for one: counted(language, n, "%zu thread", "%zu threads") ("1 thread").
-std::string counted(Language language, std::size_t n, const char* english_one, const char* english_many);
 
 // The time a batch has left at its pace so far (`done` of `total` runs in `elapsed_seconds`): "about 3 min
 // 05 s left", in `language`; "" before the first run ends and once the last has.

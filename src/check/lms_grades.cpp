@@ -20,7 +20,7 @@ std::string case_output(Language lang, const CheckCase& c, const CaseResult& r,
                         const std::vector<Explanation>& diagnosis) {
   std::string out = c.purpose + "\n" + text(lang, status_name(r.status));
   if (r.status == CaseStatus::pass || r.status == CaseStatus::fail)
-    out += textf(lang, ": %lld / %lld wrong pixels", r.wrong_pixels, r.pixels);
+    out += textf(lang, ": %lld / %lld wrong {{pixel|pixels}}", r.wrong_pixels, r.pixels);
   const std::string reason = case_reason(lang, r);
   if (!reason.empty()) out += "; " + reason;
   out += "\n";

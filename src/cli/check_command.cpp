@@ -136,7 +136,7 @@ int finish(const CheckFlags& flags, const ReportHeader& header, const std::vecto
     write_text_file(flags.gradescope, gradescope_results_json(header, cases, report, flags.scale, flags.visibility));
   if (!flags.diff_dir.empty()) {
     const std::vector<std::string> written = write_difference_images(flags.diff_dir, cases, references, report);
-    std::printf("%s", textf(header.language, "wrote %zu difference images to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
+    std::printf("%s", textf(header.language, "wrote %zu difference {{image|images}} to %s\n", written.size(), flags.diff_dir.c_str()).c_str());
   }
   return report.passed() == int(cases.size()) ? 0 : 1;
 }
@@ -241,9 +241,9 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   const Language language = header.language;
   std::fprintf(stderr, "%s",
                textf(language, "%s x %s on %s\n",
-                     counted(language, submissions.size(), "%zu submission", "%zu submissions").c_str(),
-                     counted(language, cases.size(), "%zu case", "%zu cases").c_str(),
-                     counted(language, std::size_t(threads), "%zu thread", "%zu threads").c_str())
+                     textf(language, "%zu {{submission|submissions}}", submissions.size()).c_str(),
+                     textf(language, "%zu {{case|cases}}", cases.size()).c_str(),
+                     textf(language, "%zu {{thread|threads}}", std::size_t(threads)).c_str())
                    .c_str());
   const bool terminal = isatty(2);
   std::size_t students_done = 0, runs_done = 0;
@@ -260,7 +260,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
     // Padded: a shorter line (the time left shrinking) must cover the longer one it replaces.
     std::fprintf(stderr, "\r[%s%s] %s%s   ", std::string(std::size_t(filled), '#').c_str(),
                  std::string(std::size_t(width - filled), '.').c_str(),
-                 textf(language, "%zu/%zu runs, %zu/%zu students", done, total, students_done, submissions.size()).c_str(),
+                 textf(language, "%zu/%zu {{run|runs}}, %zu/%zu {{student|students}}", done, total, students_done, submissions.size()).c_str(),
                  left().c_str());
     std::fflush(stderr);
   };
@@ -305,7 +305,7 @@ int run_batch(const CheckFlags& flags, ReportHeader& header, const std::vector<C
   std::string sorted = header_line;
   for (const std::string& row : rows) sorted += row;
   write_text_file(flags.csv, sorted);
-  std::printf("%s", textf(header.language, "wrote %s (%zu students)\n", flags.csv.c_str(), submissions.size()).c_str());
+  std::printf("%s", textf(header.language, "wrote %s (%zu {{student|students}})\n", flags.csv.c_str(), submissions.size()).c_str());
   if (!output_errors.empty()) return 1;
   if (!flags.shard.empty()) return shard_exit_status(reports);
   for (const StudentReport& report : reports)
@@ -436,7 +436,7 @@ int run_check(const Args& args) {
     for (std::size_t i = 0; i < cases.size(); ++i)
       write_text_file(flags.write_cases + "/" + case_file_name(int(i) + 1, int(cases.size())),
                       scene_to_json(cases[i].file));
-    std::printf("%s", textf(header.language, "wrote %zu case files to %s (answers go in answer_NN.json beside them)\n",
+    std::printf("%s", textf(header.language, "wrote %zu case {{file|files}} to %s (answers go in answer_NN.json beside them)\n",
                             cases.size(), flags.write_cases.c_str()).c_str());
     return 0;
   }

@@ -34,7 +34,7 @@ int run_check_merge(const Args& args) {
   check::write_text_file(out, merged.text);
   check::write_text_file(check::battery_sidecar_path(out), check::battery_record_json(merged.record));
   std::printf("wrote %s (%zu students from %s)\n", out.c_str(), merged.record.students.size(),
-              check::counted(Language::en, shards.size(), "%zu shard", "%zu shards").c_str());
+              formatted(Language::en, "%zu {{shard|shards}}", shards.size()).c_str());
   return 0;
 }
 

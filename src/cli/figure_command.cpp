@@ -152,7 +152,7 @@ int run_figure(FigureOptions options) {
   output.font_size_pt = options.font_size;
 
   ViewSetup setup = make_view_setup(options.view);
-  name_demo_objects(setup, options.language);  // the demo's "yellow" is "jaune" in a French figure
+  name_demo_objects(setup, options.language);  // a shipped scene's "yellow" is "jaune" in a French figure
   const std::vector<int> frames = frame_indices(options.frames, setup.dimension);
   const figure::FigureOptions drawing{options.language, options.rays};
   const figure::Figure drawn = visit_view_setup(

@@ -83,7 +83,7 @@ std::vector<int> ray_pixels(int count, int rays) {
   return pixels;
 }
 
-// Points drawn at the same place share one label, "C = O", rather than two labels printed over each other.
+// Points drawn at the same place share one label, "C = Ω", rather than two labels printed over each other.
 void merge_coincident_labels(Frame& frame) {
   for (std::size_t i = 0; i < frame.markers.size(); ++i)
     for (std::size_t j = i + 1; j < frame.markers.size(); ++j) {
@@ -207,18 +207,19 @@ std::string caption_2d(const Camera2D& camera, int index, Language lang) {
   const Orbit2D& orbit = camera.orbit();
   switch (index) {
     case 0:
-      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis, eye $E_0 = (0, 1)$, "
-                        "$\\vec{u}_0 = (0, −1)$",
-                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]$ sur l'axe $x$, œil $E_0 = (0, 1)$, "
-                        "$\\vec{u}_0 = (0, −1)$"}}[lang];
+      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis centred at $Ω$, eye "
+                        "$E_0 = (0, 1)$, $\\vec{u}_0 = (0, −1)$",
+                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]$ sur l'axe $x$ centré en $Ω$, œil "
+                        "$E_0 = (0, 1)$, $\\vec{u}_0 = (0, −1)$"}}[lang];
     case 1:
       return LocalText{{"scaling $H(1, d_f)$, $d_f = ", "homothétie $H(1, d_f)$, $d_f = "}}[lang] +
              decimal(orbit.df, 3, lang) +
              LocalText{{"$: the eye moves back to $E = (0, d_f)$", "$ : l'œil recule en $E = (0, d_f)$"}}[lang];
     case 2:
-      return LocalText{{"rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ",
-                        "rotations $R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = "}}[lang] +
-             degrees_text(std::remainder(view_angle_phi_v(camera), glm::two_pi<double>()), lang) +
+      return LocalText{{"rotation $R(α) = R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ",
+                        "rotation $R(α) = R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = "}}[lang] +
+             degrees_text(std::remainder(view_angle_phi_v(camera), glm::two_pi<double>()), lang) + "$, $α = " +
+             degrees_text(camera.placement().alpha, lang) +
              LocalText{{"$: $\\vec{u}$ is aligned with $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$",
                         "$ : $\\vec{u}$ est aligné sur $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$"}}[lang];
     default:
@@ -271,7 +272,7 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
     frame.labels.push_back({centre + 1.6 * v, "$\\vec{v}$"});
   }
   if (placed) {
-    frame.markers.push_back({Point::origin, glm::dvec2(0.0), "$O$"});
+    frame.markers.push_back({Point::origin, glm::dvec2(0.0), "$Ω$"});  // the handout's Ω: the origin
     frame.segments.push_back({glm::dvec2(0.0), centre, Stroke::construction});  // the translation ΩP
     frame.segments.push_back({centre, orbit.target, Stroke::construction});      // d along v
   }
@@ -298,9 +299,9 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
 std::string caption_3d(const Orbit3D& orbit, int step, Language lang) {
   switch (step) {
     case 0:
-      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]^2$, eye $E_0 = (0, 0, 1)$, "
+      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]^2$ centred at $Ω$, eye $E_0 = (0, 0, 1)$, "
                         "$\\vec{u}_0 = (0, 0, −1)$",
-                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]^2$, œil $E_0 = (0, 0, 1)$, "
+                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]^2$ centré en $Ω$, œil $E_0 = (0, 0, 1)$, "
                         "$\\vec{u}_0 = (0, 0, −1)$"}}[lang];
     case 1:
       return LocalText{{"scaling $H(1, 1, d_f)$, $d_f = ", "homothétie $H(1, 1, d_f)$, $d_f = "}}[lang] +
@@ -365,7 +366,7 @@ Frame frame_3d(const Scene3D& scene, const Camera3D& camera, int step, const Fig
   frame.markers.push_back({Point::screen_centre, oblique_projection(centre), placed ? "$P$" : "$Ω$"});
   frame.markers.push_back({Point::target, oblique_projection(orbit.target), "$C$"});
   if (placed) {
-    frame.markers.push_back({Point::origin, oblique_projection(glm::dvec3(0.0)), "$O$"});
+    frame.markers.push_back({Point::origin, oblique_projection(glm::dvec3(0.0)), "$Ω$"});
     frame.segments.push_back({oblique_projection(centre), oblique_projection(orbit.target), Stroke::construction});
   }
   return frame;

@@ -5,9 +5,13 @@
 namespace raycam {
 
 const std::vector<Translation>& demo_object_name_texts() {
-  // The built-in demo scenes' objects (scenes/classic2d.json, classic3d.json), by their English names.
+  // The shipped scenes' objects (the built-in demos scenes/classic2d.json, classic3d.json, and the other
+  // scenes/*.json), by their English names.
   static const std::vector<Translation> texts = {
-      {"red", "rouge"}, {"green", "vert"}, {"blue", "bleu"}, {"yellow", "jaune"}, {"ground", "sol"},
+      {"red", "rouge"},         {"green", "vert"},        {"blue", "bleu"},
+      {"yellow", "jaune"},      {"ground", "sol"},        {"top", "en haut"},
+      {"on the axis", "sur l'axe"}, {"left twin", "jumeau gauche"}, {"right twin", "jumeau droit"},
+      {"far left", "loin à gauche"}, {"far right", "loin à droite"},
   };
   return texts;
 }
@@ -18,7 +22,6 @@ std::string demo_object_name(Language language, const std::string& english) {
 }
 
 void name_demo_objects(ViewSetup& setup, Language language) {
-  if (!setup.scene_path.empty()) return;  // a file's names are shown as written
   visit_view_setup(setup, [&](const auto&, auto& scene) {
     for (auto& object : objects_of(scene)) object.name = demo_object_name(language, object.name);
   });

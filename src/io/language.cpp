@@ -15,16 +15,6 @@ const char* TranslationTable::lookup(Language language, const char* english) con
   return found == entries_.end() ? english : (*found->second)[language];
 }
 
-std::string format_text(const char* format, va_list args) {
-  va_list copy;
-  va_copy(copy, args);
-  const int size = std::vsnprintf(nullptr, 0, format, copy);
-  va_end(copy);
-  std::string text(size > 0 ? std::size_t(size) : 0, '\0');
-  if (size > 0) std::vsnprintf(text.data(), text.size() + 1, format, args);
-  return text;
-}
-
 std::optional<Language> language_from_code(std::string_view code) {
   const std::string_view first = code.substr(0, code.find(':'));  // LANGUAGE is a list: fr:en
   for (Language language : kLanguages) {

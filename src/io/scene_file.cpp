@@ -1,6 +1,7 @@
 // Scene files (JSON). Section index: field readers · objects · camera preset · parse · write.
 #include "raycam/scene_file.h"
 
+#include <cstring>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -246,6 +247,59 @@ std::string line_column_of(const std::string& text, std::size_t byte) {
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
+
+// The JSON library's name of a token, in raycam's own words (translated by reason_table.cpp).
+std::string token_words(const std::string& name, bool wanted) {
+  if (name == "number literal") return "a number";
+  if (name == "string literal") return wanted ? "a key in double quotes" : "a string";
+  if (name == "true literal" || name == "false literal" || name == "null literal") return "a value";
+  if (name == "'[', '{', or a literal") return "a value";
+  if (name == "end of input") return "the end of the text";
+  if (wanted && name == "'}'") return "',' or '}'";  // after a member, a comma would do too
+  if (wanted && name == "']'") return "',' or ']'";
+  return name;  // a punctuation mark: ':', '}', ']', ',', '[', '{'
+}
+
+// The word the lexer stopped on, from its "last read: '...'" (which starts at the token before).
+std::string last_word(const std::string& message) {
+  const std::size_t at = message.find("last read: '");
+  if (at == std::string::npos) return "";
+  const std::size_t begin = at + 12, end = message.find('\'', begin);
+  std::string read = message.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  const std::size_t cut = read.find_last_of(" \t:,[{");
+  return cut == std::string::npos ? read : read.substr(cut + 1);
+}
+
+// A syntax error in raycam's own sentence: where (line, column, from the error's byte) and what was found
+// or expected, in words a student reads (and reason_table.cpp translates), never the JSON library's own.
+std::string syntax_error_reason(const json::parse_error& error, const std::string& text, const std::string& source) {
+  const std::string message = error.what();
+  const std::string at = source + ": JSON syntax error at " + line_column_of(text, error.byte ? error.byte - 1 : 0) + ": ";
+  const std::size_t dash = message.find(" - ");
+  const std::string reason = dash == std::string::npos ? message : message.substr(dash + 3);
+  auto has = [&](const char* part) { return reason.find(part) != std::string::npos; };
+  auto after = [&](const char* mark) {
+    const std::size_t found = reason.find(mark);
+    if (found == std::string::npos) return std::string();
+    const std::size_t begin = found + std::strlen(mark);
+    return reason.substr(begin, reason.find(';', begin) == std::string::npos ? std::string::npos
+                                                                              : reason.find(';', begin) - begin);
+  };
+  if (has("invalid string: missing closing quote")) return at + "a string has no closing double quote";
+  if (has("invalid string: control character")) return at + "a line break or a tab inside a string (write \\n or \\t)";
+  if (has("invalid string: ill-formed UTF-8")) return at + "the text is not UTF-8";
+  if (has("invalid string")) return at + "a backslash in a string starts one of \\\", \\\\, \\n, \\t, \\uXXXX";
+  if (has("invalid number")) return at + "a malformed number '" + last_word(reason) + "'";
+  if (has("invalid literal") && has("expected end of input")) return at + "text after the end of the JSON value";
+  if (has("invalid literal"))
+    return at + "unknown word '" + last_word(reason) + "': a value is a number, a string, an object, an array, " +
+           "true, false or null";
+  const std::string found = after("unexpected "), wanted = after("; expected ");
+  if (found == "end of input") return at + "the text ends where " + token_words(wanted, true) + " was expected";
+  if (!found.empty() && !wanted.empty())
+    return at + token_words(found, false) + " where " + token_words(wanted, true) + " was expected";
+  return at + "not JSON here";
+}
 }  // namespace
 
 // ---- parse -------------------------------------------------------------------------------------------
@@ -254,9 +308,7 @@ SceneFile parse_scene_json(const std::string& text, const std::string& source) {
   try {
     root = json::parse(text);
   } catch (const json::parse_error& error) {
-    throw std::invalid_argument(source + ": JSON syntax error at " +
-                                line_column_of(text, error.byte ? error.byte - 1 : 0) + ": " +
-                                reason_of(error));
+    throw std::invalid_argument(syntax_error_reason(error, text, source));
   } catch (const json::exception& error) {  // e.g. a number too large for a double
     throw std::invalid_argument(source + ": invalid JSON: " + reason_of(error));
   }

@@ -288,7 +288,7 @@ CheckHeader check_header(Language language, const CheckProgress& progress, const
   }
   if (r.status == check::CaseStatus::pass) return {{tr(language, "CHECK: passed"), tr(language, "✓ passed")}, true};
   if (r.status == check::CaseStatus::fail)
-    return {{trf(language, "CHECK: %lld pixels wrong", r.wrong_pixels), trf(language, "✗ %lld pixels wrong", r.wrong_pixels),
+    return {{trf(language, "CHECK: %lld {{pixel|pixels}} wrong", r.wrong_pixels), trf(language, "✗ %lld {{pixel|pixels}} wrong", r.wrong_pixels),
              trf(language, "✗ %lld wrong", r.wrong_pixels)}};
   const char* status = check::text(language, check::status_name(r.status));
   return {{trf(language, "CHECK: %s", status), std::string("✗ ") + status}};

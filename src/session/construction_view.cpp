@@ -1,11 +1,13 @@
 #include "construction_view.h"
 
 #include <cmath>
+#include <vector>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "raycam/camera3d.h"
 #include "raycam/transform.h"
+#include "text.h"
 
 namespace raycam::session {
 
@@ -42,6 +44,24 @@ glm::dmat4 construction_pose(const Placement3D& p, int step, double fraction) {
   const glm::dmat4 factors[] = {p.scale, p.roll, p.polar, p.azimuth, p.translation};
   const bool rotations[] = {false, true, true, true, false};
   return pose_of(factors, rotations, step, fraction);
+}
+
+const char* construction_caption(int dimension, int step) {
+  static const std::vector<const char*> k2D = {
+      tr_later("a: the canonical camera (identity): screen centred at Ω, eye E₀"),
+      tr_later("b: H(1, d_f) sets the focal distance: the eye moves back to E"),
+      tr_later("c: R(α) = R(φᵥ)·R(ψ₀) turns u₀ onto v = PC/‖PC‖"),
+      tr_later("d: T(ΩP) moves the screen from Ω to P = C + d(cos θ, sin θ)")};
+  static const std::vector<const char*> k3D = {
+      tr_later("the canonical camera (identity): screen centred at Ω, eye E₀"),
+      tr_later("1: H(1, 1, d_f) sets the focal distance: the eye moves back to E"),
+      tr_later("2: Rz(ψ₀), ψ₀ = +90°, rolls the image upright"),
+      tr_later("3: Ry(φ) tilts u₀ into the plane y = 0"),
+      tr_later("4: Rz(θ) turns u₀ onto v"),
+      tr_later("5: T(ΩP) moves the screen from Ω to P: M_d = T·Rz(θ)·Ry(φ)·Rz(ψ₀)·H")};
+  const std::vector<const char*>& captions = dimension == 2 ? k2D : k3D;
+  const int last = int(captions.size()) - 1;
+  return captions[std::size_t(step < 0 || step > last ? last : step)];
 }
 
 bool shows_construction(const Lesson& state) {

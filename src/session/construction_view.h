@@ -18,6 +18,11 @@
 
 namespace raycam::session {
 
+// The construction panel's caption of `step` (0: the canonical camera) in `dimension`: an English key of
+// the text table, shown through tr(). It names the points and rotations the figure's frame names, in the
+// notation of docs/conventions.md (Ω, C, P, E0, E, α = φv + ψ0); tests/session/test_notation.cpp compares.
+const char* construction_caption(int dimension, int step);
+
 // The construction's pose after `step` factors with the last one applied only `fraction` of the way
 // (fraction 1: construction_step(placement, step), exactly). Rotations turn by fraction·angle (the shorter
 // way), H scales by 1 + fraction·(d_f − 1), T moves by fraction·OP.

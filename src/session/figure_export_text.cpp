@@ -31,12 +31,12 @@ std::string file_range(const std::vector<std::string>& files) {
 std::string figure_files_message(Language language, const std::vector<std::string>& files) {
   if (files.empty()) return "";
   if (files.size() == 1) return trf(language, "wrote %s", files[0].c_str());
-  return trf(language, "wrote %d files: %s", int(files.size()), file_range(files).c_str());
+  return trf(language, "wrote %d {{file|files}}: %s", int(files.size()), file_range(files).c_str());
 }
 
 std::string figure_replace_question(Language language, const std::vector<std::string>& existing) {
   if (existing.size() == 1) return trf(language, "%s already exists. Replace it?", existing[0].c_str());
-  return trf(language, "%d files already exist: %s. Replace them?", int(existing.size()), file_range(existing).c_str());
+  return trf(language, "%d {{file already exists|files already exist}}: %s. Replace {{it|them}}?", int(existing.size()), file_range(existing).c_str());
 }
 
 }  // namespace raycam::session

@@ -24,7 +24,7 @@ std::string pixel_edges_does(const Lesson& state, const CastCache& cast) {
       trf(state.language, "Every ray leaves half a pixel (1/n = %.3g) off its centre: a symmetric scene no longer "
           "gives a symmetric image.",
           1.0 / n);
-  if (n > 32) text += " " + trf(state.language, "At n = %d half a pixel is too small to see: show me.", n);
+  if (n > 32) text += " " + trf(state.language, "At n = %d, half a pixel is too small to see: show me.", n);
   return text;
 }
 // A show-me's res is both sides': with "non-square" on, setting only res (the columns') would leave the
@@ -120,11 +120,11 @@ std::string arccos_does(const Lesson& state, const CastCache&) {
   if (dimension(state) == 2)
     return tr(state.language,
         "Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
-        "error √(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). "
+        "error √(2ε), at most ~10⁻⁸ rad in 2D: no pixel moves at any setting (the numbers below show it). "
         "Show me goes to 3D, where the pole makes it visible.");
   return tr(state.language,
       "Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes an "
-      "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
+      "angle error √(2ε); below φ ≈ 10⁻⁸ rad cos φ rounds to 1, φ becomes 0 and θ is lost.");
 }
 void arccos_show(AppState& state) {
   switch_dimension(state, 3);
@@ -165,7 +165,7 @@ const std::vector<MistakeLesson>& mistake_lessons() {
     extend("no_t_min", no_t_min_does, object_behind_screen_show, behind);
     all.push_back(
         {"arccos", nullptr, arccos_does, arccos_show,
-         tr_later("φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare")});
+         tr_later("φ = 10⁻⁷°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare")});
     return all;
   }();
   return lessons;

@@ -20,7 +20,7 @@ const char* tr(Language language, const char* english) { return table().lookup(l
 std::string trf(Language language, const char* english_format, ...) {
   va_list args;
   va_start(args, english_format);
-  std::string text = format_text(tr(language, english_format), args);
+  std::string text = format_text(language, tr(language, english_format), args);
   va_end(args);
   return text;
 }

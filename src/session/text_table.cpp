@@ -15,8 +15,8 @@ const std::vector<Translation>& translation_table() {
       {"Language / Langue###language", "Langue / Language###language"},
 
       // ---- frame.cpp: window titles ----
-      {"Colour bar: n = %d pixels, column 0 = the eye's left###image",
-       "Barre de couleurs : n = %d pixels, colonne 0 = gauche de l'œil###image"},
+      {"Colour bar: n = %d {{pixel|pixels}}, column 0 = the eye's left###image",
+       "Barre de couleurs : n = %d {{pixel|pixels}}, colonne 0 = gauche de l'œil###image"},
       {"Image: %d × %d###image", "Image : %d × %d###image"},
       {"Colour bar: n = %d###image", "Barre de couleurs : n = %d###image"},
       {"%d × %d###image", "%d × %d###image"},
@@ -63,18 +63,25 @@ const std::vector<Translation>& translation_table() {
       // ---- panels.cpp: construction of M_d ----
       {"Construction of M_d###construction", "Construction de M_d###construction"},
       {"step###step", "étape###step"},
-      {"a: the canonical camera (identity)", "a : la caméra canonique (identité)"},
-      {"b: H(1, d_f) sets the focal distance", "b : l'homothétie H(1, d_f) règle la distance focale"},
-      {"c: R(θ − 90°) turns u0 onto v", "c : R(θ − 90°) aligne u0 sur v"},
-      {"d: T(OP) moves the screen to P", "d : T(OP) place l'écran en P"},
-      {"the canonical camera (identity)", "la caméra canonique (identité)"},
-      {"1: H(1, 1, d_f) sets the focal distance", "1 : l'homothétie H(1, 1, d_f) règle la distance focale"},
-      {"2: Rz(+90°) rolls the image upright", "2 : Rz(+90°) redresse l'image"},
-      {"3: Ry(φ) tilts u0 into the plane y = 0", "3 : Ry(φ) place u0 dans le plan y = 0"},
-      {"4: Rz(θ) turns u0 onto v", "4 : Rz(θ) rend u0 colinéaire à v"},
-      {"5: T(OP) moves the screen to P", "5 : T(OP) place l'écran en P"},
-      {"M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°"},
-      {"product of the first %d factors", "produit des %d premiers facteurs"},
+      // ---- construction_view.cpp: each step's caption, in the figures' notation (docs/conventions.md) ----
+      {"a: the canonical camera (identity): screen centred at Ω, eye E₀",
+       "a : la caméra canonique (identité) : écran centré en Ω, œil E₀"},
+      {"b: H(1, d_f) sets the focal distance: the eye moves back to E",
+       "b : l'homothétie H(1, d_f) règle la distance focale : l'œil recule en E"},
+      {"c: R(α) = R(φᵥ)·R(ψ₀) turns u₀ onto v = PC/‖PC‖", "c : R(α) = R(φᵥ)·R(ψ₀) aligne u₀ sur v = PC/‖PC‖"},
+      {"d: T(ΩP) moves the screen from Ω to P = C + d(cos θ, sin θ)",
+       "d : T(ΩP) place l'écran de Ω en P = C + d(cos θ, sin θ)"},
+      {"the canonical camera (identity): screen centred at Ω, eye E₀",
+       "la caméra canonique (identité) : écran centré en Ω, œil E₀"},
+      {"1: H(1, 1, d_f) sets the focal distance: the eye moves back to E",
+       "1 : l'homothétie H(1, 1, d_f) règle la distance focale : l'œil recule en E"},
+      {"2: Rz(ψ₀), ψ₀ = +90°, rolls the image upright", "2 : Rz(ψ₀), ψ₀ = +90°, redresse l'image"},
+      {"3: Ry(φ) tilts u₀ into the plane y = 0", "3 : Ry(φ) place u₀ dans le plan y = 0"},
+      {"4: Rz(θ) turns u₀ onto v", "4 : Rz(θ) rend u₀ colinéaire à v"},
+      {"5: T(ΩP) moves the screen from Ω to P: M_d = T·Rz(θ)·Ry(φ)·Rz(ψ₀)·H",
+       "5 : T(ΩP) place l'écran de Ω en P : M_d = T·Rz(θ)·Ry(φ)·Rz(ψ₀)·H"},
+      {"M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°", "M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°"},
+      {"product of the first %d {{factor|factors}}", "produit des %d {{premier facteur|premiers facteurs}}"},
 
       // ---- panels.cpp: ray inspector ----
       {"Ray inspector###inspector", "Inspecteur de rayon###inspector"},
@@ -117,17 +124,17 @@ const std::vector<Translation>& translation_table() {
        "Dessinés en orange dans les deux vues : l'écran (son bord haut en vert), l'œil, et les axes droite "
        "de "
        "l'image (rouge), haut de l'image (vert), visée (bleu)."},
-      {"Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+      {"Why ψ₀ = +π/2: after Ry(φ)·Rz(ψ₀) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
        "(−cos θ "
        "cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: world up "
        "points "
        "down and the image is upside down.",
-       "Pourquoi ψ0 = +π/2 : après R_y(φ)·R_z(ψ0), le haut de l'image R·(0, 1, 0) doit avoir z > 0. Avec "
+       "Pourquoi ψ₀ = +π/2 : après Ry(φ)·Rz(ψ₀), le haut de l'image R·(0, 1, 0) doit avoir z > 0. Avec "
        "+π/2 "
        "c'est (−cos θ cos φ, −sin θ cos φ, sin φ), et sin φ > 0. Le TD imprime −π/2, le vecteur opposé : le "
        "haut "
        "du monde pointe vers le bas et l'image est à l'envers."},
-      {"show the handout's ψ0 = −π/2", "montrer le ψ0 = −π/2 du TD"},
+      {"show the handout's ψ₀ = −π/2", "montrer le ψ₀ = −π/2 du TD"},
 
       // ---- mistake_lessons.cpp: what each mistake does now, and where to look after "show me" ----
       {"MISTAKE ON: %s", "ERREUR ACTIVE : %s"},
@@ -138,8 +145,8 @@ const std::vector<Translation>& translation_table() {
        "Chaque rayon part à un demi-pixel (1/n = %.3g) de son centre : une scène symétrique ne donne plus "
        "une "
        "image symétrique."},
-      {"At n = %d half a pixel is too small to see: show me.",
-       "Avec n = %d un demi-pixel est trop petit pour se voir : montre-moi."},
+      {"At n = %d, half a pixel is too small to see: show me.",
+       "Avec n = %d, un demi-pixel est trop petit pour se voir : montre-moi."},
       {"Here |u| = %.2f on the axis to %.2f at the edges.", "Ici |u| = %.2f sur l'axe à %.2f aux bords."},
       {"The stable test takes |f − (f·u)u| as the ray's distance to the centre; that is a distance only if "
        "|u| = "
@@ -162,19 +169,19 @@ const std::vector<Translation>& translation_table() {
        "voisins ; t est faux aussi. Avec la formule stable, les objets disparaissent au contraire."},
       {"Placing the camera from P and C with the handout's arccos: an input rounding ε becomes an angle "
        "error "
-       "√(2ε), at most ~1e-8 rad in 2D: no pixel moves at any setting (the numbers below show it). Show me "
+       "√(2ε), at most ~10⁻⁸ rad in 2D: no pixel moves at any setting (the numbers below show it). Show me "
        "goes "
        "to 3D, where the pole makes it visible.",
        "Placer la caméra à partir de P et C avec l'arccos du TD : un arrondi ε de l'entrée devient une "
        "erreur "
-       "d'angle √(2ε), au plus ~1e-8 rad en 2D : aucun pixel ne bouge, quels que soient les réglages (les "
+       "d'angle √(2ε), au plus ~10⁻⁸ rad en 2D : aucun pixel ne bouge, quels que soient les réglages (les "
        "nombres ci-dessous le montrent). « Montre-moi » passe en 3D, où le pôle la rend visible."},
       {"Placing the camera from P and C with the handout's arccos: near a pole an input rounding ε becomes "
        "an "
-       "angle error √(2ε); below φ ≈ 1e-8 rad cos φ rounds to 1, φ becomes 0 and θ is lost.",
+       "angle error √(2ε); below φ ≈ 10⁻⁸ rad cos φ rounds to 1, φ becomes 0 and θ is lost.",
        "Placer la caméra à partir de P et C avec l'arccos du TD : près d'un pôle, un arrondi ε de l'entrée "
        "devient "
-       "une erreur d'angle √(2ε) ; sous φ ≈ 1e-8 rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
+       "une erreur d'angle √(2ε) ; sous φ ≈ 10⁻⁸ rad, cos φ s'arrondit à 1, φ devient 0 et θ est perdu."},
       {"res 0.05: each ray leaves from a pixel's left edge, not its centre; toggle to see the image jump half a "
        "pixel",
        "res 0.05 : chaque rayon part du bord gauche d'un pixel, pas de son centre ; cocher et décocher pour voir "
@@ -202,8 +209,8 @@ const std::vector<Translation>& translation_table() {
        "La plus petite racine est prise quel que soit son signe : un impact derrière le départ du rayon sur "
        "l'écran compte, et l'emporte sur ceux de devant. Le plus souvent il n'y a rien derrière l'écran : "
        "« Montre-moi »."},
-      {"φ = 1e-7°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare",
-       "φ = 1e-7° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
+      {"φ = 10⁻⁷°: arccos returns φ = 0 and θ = 0, so the image turns by θ; toggle to compare",
+       "φ = 10⁻⁷° : arccos rend φ = 0 et θ = 0, donc l'image tourne de θ ; cocher et décocher pour comparer"},
       {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
       {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
 
@@ -235,12 +242,11 @@ const std::vector<Translation>& translation_table() {
       {"samples per pixel###spp", "échantillons par pixel###spp"},
       {"camera-relative rays", "rayons relatifs à la caméra"},
       {"exact bar (area-weighted)", "barre exacte (pondérée par l'aire)"},
-      {"These knobs use the reference caster: slower, and the method above is not used. Which settings to "
-       "use "
-       "for what: README, Accuracy.",
+      {"These knobs use the reference caster: slower, and the method above is not used. For the handout's "
+       "image keep double, stable, 1 sample; float needs the stable formula and camera-relative rays.",
        "Ces réglages utilisent le lanceur de référence : plus lent, et la méthode ci-dessus n'est pas "
-       "utilisée. "
-       "Quels réglages pour quoi : README, Accuracy."},
+       "utilisée. Pour l'image du TD, gardez double, stable, 1 échantillon ; float demande la formule stable "
+       "et les rayons relatifs à la caméra."},
       {"double, 1 sample, world coordinates: the fast caster.",
        "double, 1 échantillon, coordonnées du monde : le lanceur rapide."},
 
@@ -275,14 +281,17 @@ const std::vector<Translation>& translation_table() {
       {"Export every step", "Exporter toutes les étapes"},
       {"not every object's name fits on the figure's %d × %d mm page: raycam-cli figure --size %dx%dmm names them all",
        "les noms des objets ne tiennent pas tous sur la page de la figure (%d × %d mm) : raycam-cli figure --size %dx%dmm les place tous"},
-      {"The step shown or every step, as raycam-cli figure draws them (docs/figures.md).",
-       "L'étape affichée ou toutes les étapes, comme les dessine raycam-cli figure (docs/figures.md)."},
+      {"The step shown or every step: the camera and its screen after each factor of M_d, one figure a step, "
+       "for a handout or slides.",
+       "L'étape affichée ou toutes les étapes : la caméra et son écran après chaque facteur de M_d, une figure "
+       "par étape, pour un polycopié ou des diapositives."},
       {"%s: expected a name ending in .svg, .pdf, .png or .tex", "%s : nom attendu en .svg, .pdf, .png ou .tex"},
       {"format###figure_format", "format###figure_format"},
       {"rays###figure_rays", "rayons###figure_rays"},
       {"matrix###figure_matrix", "matrice###figure_matrix"},
-      {"wrote %d files: %s", "%d fichiers écrits : %s"},
-      {"%d files already exist: %s. Replace them?", "%d fichiers existent déjà : %s. Les remplacer ?"},
+      {"wrote %d {{file|files}}: %s", "%d {{fichier écrit|fichiers écrits}} : %s"},
+      {"%d {{file already exists|files already exist}}: %s. Replace {{it|them}}?",
+       "%d {{fichier existe déjà|fichiers existent déjà}} : %s. {{Le|Les}} remplacer ?"},
       {"Replace###figure_replace", "Remplacer###figure_replace"},
       {"Cancel###figure_cancel", "Annuler###figure_cancel"},
       {"Screenshot (F12)", "Capture d'écran (F12)"},
@@ -290,7 +299,7 @@ const std::vector<Translation>& translation_table() {
       {"Record a video (F9)###record", "Enregistrer une vidéo (F9)###record"},
       {"-recording", "-enregistrement"},
       {"recording the window to %s (F9 stops)", "enregistrement de la fenêtre dans %s (F9 l'arrête)"},
-      {"wrote %s (%d:%02d, %d frames)", "écrit : %s (%d:%02d, %d images)"},
+      {"wrote %s (%d:%02d, %d {{frame|frames}})", "écrit : %s (%d:%02d, %d {{image|images}})"},
       {"cannot record: %s", "impossible d'enregistrer la vidéo : %s"},
       {"the window has no pixels to record", "la fenêtre n'a aucun pixel à enregistrer"},
       {"asked the browser to save %s (%d:%02d)", "téléchargement de %s demandé au navigateur (%d:%02d)"},
@@ -334,8 +343,8 @@ const std::vector<Translation>& translation_table() {
       {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer de rayons %.2f ms"},
       {"cast %.2f ms", "rayons %.2f ms"},
       {"caster: %s", "lanceur : %s"},
-      {"%lld casts in %lld frames", "%lld lancers en %lld images"},
-      {"rays %lld, %lld pixels skipped", "rayons %lld, %lld pixels évités"},
+      {"%lld {{cast|casts}} in %lld {{frame|frames}}", "%lld {{lancer|lancers}} en %lld {{image|images}}"},
+      {"rays %lld, %lld {{pixel|pixels}} skipped", "rayons %lld, %lld {{pixel évité|pixels évités}}"},
       {"intersection tests %lld (%.1f%% of the plain loop)",
        "tests d'intersection %lld (%.1f%% de la boucle simple)"},
       {"objects culled %lld", "objets élagués %lld"},
@@ -391,20 +400,22 @@ const std::vector<Translation>& translation_table() {
       {"pin the ray inspector", "fixer l'inspecteur de rayon"},
 
       // ---- check_panel.cpp: Check my camera ----
-      {"CHECK: %lld pixels wrong", "VÉRIFICATION : %lld pixels faux"},
+      {"CHECK: %lld {{pixel|pixels}} wrong", "VÉRIFICATION : %lld {{pixel faux|pixels faux}}"},
       {"CHECK: %s", "VÉRIFICATION : %s"},
-      {"✗ %lld pixels wrong", "✗ %lld pixels faux"},
+      {"✗ %lld {{pixel|pixels}} wrong", "✗ %lld {{pixel faux|pixels faux}}"},
       {"✗ %lld wrong", "✗ %lld faux"},
       {"CHECK: passed", "VÉRIFICATION : réussie"},
       {"✓ passed", "✓ réussie"},
-      {"Running your program needs the desktop app (docs/web.md).",
-       "Lancer votre programme demande l'application de bureau (docs/web.md)."},
+      {"Running your program needs the desktop app: a page cannot start a program on your computer.",
+       "Lancer votre programme demande l'application de bureau : une page ne peut pas lancer un programme sur "
+       "votre ordinateur."},
       {"Check my camera###check", "Vérifier ma caméra###check"},
       {"Check###check", "Vérifier###check"},
       {"Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; it is checked "
-       "whenever they change (docs/check.md).",
+       "whenever they change: every pixel must equal raycam's, except those where a ray grazes an object.",
        "Votre programme lit cette caméra et cette scène en JSON sur stdin et écrit {\"ids\": …} ; il est "
-       "vérifié à chaque changement (docs/check.md)."},
+       "vérifié à chaque changement : chaque pixel doit être celui de raycam, sauf là où un rayon frôle un "
+       "objet."},
       {"program###check_command", "programme###check_command"},
       {"Your program reads a case (a camera and its scene) as JSON on stdin and prints {\"ids\": …}; a page "
        "cannot run it, so:",
@@ -413,8 +424,9 @@ const std::vector<Translation>& translation_table() {
       {"1. download this camera's case;", "1. téléchargez le cas de cette caméra ;"},
       {"2. run your program on it: python3 my_camera.py < raycam-case.json > answer.json;",
        "2. lancez votre programme dessus : python3 ma_camera.py < raycam-case.json > answer.json ;"},
-      {"3. give the answer file: it is graded for the camera of that case (docs/check.md).",
-       "3. donnez le fichier de réponse : il est noté pour la caméra de ce cas (docs/check.md)."},
+      {"3. give the answer file: it is graded for the camera of that case, every pixel against raycam's.",
+       "3. donnez le fichier de réponse : il est noté pour la caméra de ce cas, chaque pixel comparé à celui de "
+       "raycam."},
       {"no answer yet", "pas encore de réponse"},
       {"graded for the camera shown", "noté pour la caméra affichée"},
       {"answer for an earlier camera: download the new case",
@@ -433,16 +445,16 @@ const std::vector<Translation>& translation_table() {
       {"Check now###check_now", "Vérifier###check_now"},
       {"running… (%.1f s)", "en cours… (%.1f s)"},
       {"pass: every pixel agrees", "réussi : chaque pixel est juste"},
-      {"fail: %lld of %lld pixels wrong (in red on the image)",
-       "échec : %lld pixels faux sur %lld (en rouge sur l'image)"},
+      {"fail: %lld of %lld {{pixel|pixels}} wrong (in red on the image)",
+       "échec : %lld {{pixel faux|pixels faux}} sur %lld (en rouge sur l'image)"},
       {"%s: %s", "%s : %s"},
       {"opening %s: read %.1f of %.1f MB", "ouverture de %s : %.1f Mo lus sur %.1f"},
       {"opening %s: reading the objects of %.1f MB, then packing them…",
        "ouverture de %s : lecture des objets de %.1f Mo, puis leur rangement…"},
       {"opening %s: finding the objects (%.1f of %.1f MB)", "ouverture de %s : recherche des objets (%.1f Mo sur %.1f)"},
-      {"opening %s: objects read %zu of %zu", "ouverture de %s : %zu objets lus sur %zu"},
-      {"opening %s: packing %zu objects…", "ouverture de %s : rangement de %zu objets…"},
-      {"opened %s (%zu objects) in %.1f s", "%s ouvert (%zu objets) en %.1f s"},
+      {"opening %s: objects read %zu of %zu", "ouverture de %s : %zu {{objet lu|objets lus}} sur %zu"},
+      {"opening %s: packing %zu {{object|objects}}…", "ouverture de %s : rangement de %zu {{objet|objets}}…"},
+      {"opened %s (%zu {{object|objects}}) in %.1f s", "%s ouvert (%zu {{objet|objets}}) en %.1f s"},
       {"(for the camera before your last change)", "(pour la caméra d'avant votre dernier changement)"},
       {"no sandbox: bubblewrap is not available here",
        "pas de bac à sable : bubblewrap n'est pas disponible ici"},

@@ -61,8 +61,8 @@ SceneFile scene_file_of(const View& view, const CameraPreset& camera) {
 
 namespace {
 template <class AnyView>
-std::string name_as_shown(Language language, const AnyView& view, const std::string& name) {
-  return view.scene_path.empty() ? demo_object_name(language, name) : name;  // raycam/demo_names.h
+std::string name_as_shown(Language language, const AnyView&, const std::string& name) {
+  return demo_object_name(language, name);  // the shipped scenes' names translated (raycam/demo_names.h)
 }
 template <class AnyView>
 auto with_names_as_shown(Language language, const AnyView& view) {

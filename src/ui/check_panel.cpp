@@ -67,15 +67,16 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   ImGui::PushStyleColor(ImGuiCol_Text, current_theme().hint);
   if (host.runs_programs)
     wrapped_between_words(tr(language, "Your program reads this camera and scene as JSON on stdin and prints {\"ids\": …}; "
-                             "it is checked whenever they change (docs/check.md)."));
+                             "it is checked whenever they change: every pixel must equal raycam's, except those where a ray "
+                             "grazes an object."));
   else  // a page runs no program: the student's route, step by step
     for (const char* step : {tr_later("Your program reads a case (a camera and its scene) as JSON on stdin and "
                                       "prints {\"ids\": …}; a page cannot run it, so:"),
                              tr_later("1. download this camera's case;"),
                              tr_later("2. run your program on it: python3 my_camera.py < raycam-case.json > "
                                       "answer.json;"),
-                             tr_later("3. give the answer file: it is graded for the camera of that case "
-                                      "(docs/check.md).")})
+                             tr_later("3. give the answer file: it is graded for the camera of that case, every pixel "
+                                      "against raycam's.")})
       wrapped_between_words(tr(language, step));
   ImGui::PopStyleColor();
   if (!host.runs_programs) {  // a page: the case goes out as a download, the answer file comes back
@@ -107,7 +108,7 @@ void check_section(CameraCheck& check, const HostCapabilities& host, double now,
   if (r.status == check::CaseStatus::pass)
     wrapped_between_words(tr(language, "pass: every pixel agrees"));
   else if (r.status == check::CaseStatus::fail) {
-    wrapped_between_words(trf(language, "fail: %lld of %lld pixels wrong (in red on the image)", r.wrong_pixels, r.pixels));
+    wrapped_between_words(trf(language, "fail: %lld of %lld {{pixel|pixels}} wrong (in red on the image)", r.wrong_pixels, r.pixels));
     // Found on the image by their frames, and in the answer file by their place: row, column of the ids.
     wrapped_between_words(trf(language, "wrong pixels (row, column), framed on the image: %s", wrong_pixels_named(v).c_str()));
   }

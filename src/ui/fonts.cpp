@@ -9,6 +9,9 @@
 #include <fontconfig/fontconfig.h>
 #endif
 
+#include "check_texts.h"
+#include "raycam/classic_mistakes.h"
+#include "raycam/demo_names.h"
 #include "renderer_backend.h"
 #include "text.h"
 
@@ -24,21 +27,38 @@ bool g_truetype = false;
 
 bool readable(const std::string& path) { return !path.empty() && std::ifstream(path).good(); }
 
-// Latin-1 and Latin Extended-A (œ), Greek (θ φ ψ α Ω), and every character of the string table (·, —, ≤ ...).
-const ImWchar* glyph_ranges() {
+}  // namespace
+
+std::vector<const char*> shown_table_texts() {
+  std::vector<const char*> texts;
+  auto add = [&](const LocalText& t) {
+    for (Language language : kLanguages) texts.push_back(t[language]);
+  };
+  for (const Translation& t : translations()) add(t);
+  for (const Translation& t : check::check_translations()) add(t);
+  for (const ReasonPattern& t : reason_patterns()) add(t);
+  for (const Translation& t : demo_object_name_texts()) add(t);
+  for (const MistakeInfo& m : kClassicMistakes) {
+    add(m.label);
+    add(m.explanation);
+  }
+  return texts;
+}
+
+// Latin-1 and Latin Extended-A (œ), Greek (θ φ ψ α Ω), super- and subscripts (u⁰ₖ, ψ₀, φᵥ), and every
+// character of the tables (·, —, ≥, ⌊ ...).
+const ImWchar* ui_glyph_ranges() {
   static ImVector<ImWchar> ranges;
   if (ranges.empty()) {
     ImFontGlyphRangesBuilder builder;
-    static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x2010, 0x2027, 0x2070, 0x209F, 0x2190,
-                                    0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
+    static const ImWchar kBase[] = {0x0020, 0x017F, 0x0391, 0x03C9, 0x1D62, 0x1D6A, 0x2010, 0x2027, 0x2070,
+                                    0x209F, 0x2190, 0x2193, 0x2212, 0x2212, 0x2248, 0x2248, 0x2260, 0x2265, 0};
     builder.AddRanges(kBase);
-    for (const Translation& t : translations())
-      for (Language language : kLanguages) builder.AddText(t[language]);
+    for (const char* text : shown_table_texts()) builder.AddText(text);
     builder.BuildRanges(&ranges);
   }
   return ranges.Data;
 }
-}  // namespace
 
 std::string find_ui_font() {
 #ifdef RAYCAM_HAVE_FONTCONFIG
@@ -84,7 +104,7 @@ bool update_fonts(float font_scale, float pixel_density) {
     ImFontConfig config;
     config.OversampleH = 2;  // sharper at fractional positions; the atlas stays small at 1 oversample in y
     config.OversampleV = 1;
-    g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), raster_pixels, &config, glyph_ranges()) != nullptr;
+    g_truetype = io.Fonts->AddFontFromFileTTF(path.c_str(), raster_pixels, &config, ui_glyph_ranges()) != nullptr;
   }
   if (!g_truetype) {
     ImFontConfig config;

@@ -3,7 +3,10 @@
 // stretched. Falls back to ImGui's built-in font (ASCII only) when no TrueType font is found.
 #pragma once
 
+#include <imgui.h>
+
 #include <string>
+#include <vector>
 
 namespace raycam::ui {
 
@@ -19,6 +22,13 @@ std::string find_ui_font();
 // a screen of pixel ratio 2): the glyphs are rasterised at that many pixels and drawn at the size they have
 // at density 1, so text stays crisp and the same size to the eye.
 bool update_fonts(float font_scale, float pixel_density = 1.0f);
+
+// Every text the window may show from a table, in every language: the window's table, the checker's, the
+// error reasons', the classic mistakes' labels and explanations, the shipped scenes' object names.
+std::vector<const char*> shown_table_texts();
+
+// The glyph ranges the font is loaded with: Latin, Greek, and every character of shown_table_texts().
+const ImWchar* ui_glyph_ranges();
 
 // True when the TrueType font is in use (false: built-in fallback).
 bool using_truetype_font();

@@ -350,7 +350,7 @@ void FrameRenderer::image_window(AppState& state, const Rect& area, FrameLayout&
   const bool is_bar = image_is_bar(state.view);
   auto shown = [](const std::string& label) { return label.substr(0, label.find("###")); };
   const std::string full =
-      shown(is_bar ? trf(state.language, "Colour bar: n = %d pixels, column 0 = the eye's left###image", state.map.width)
+      shown(is_bar ? trf(state.language, "Colour bar: n = %d {{pixel|pixels}}, column 0 = the eye's left###image", state.map.width)
                    : trf(state.language, "Image: %d × %d###image", state.map.width, state.map.height));
   const std::string brief = shown(is_bar ? trf(state.language, "Colour bar: n = %d###image", state.map.width)
                                          : trf(state.language, "%d × %d###image", state.map.width, state.map.height));

@@ -23,10 +23,12 @@
 #include <vector>
 
 #include "camera_ranges.h"
+#include "construction_view.h"
 #include "figure_export.h"
 #include "image_header.h"  // ellipsized
 #include "shown_files.h"
 #include "inspection.h"
+#include "local_numbers.h"
 #include "mistake_lessons.h"
 #include "raycam/image_files.h"
 #include "raycam/view_setup.h"
@@ -129,11 +131,16 @@ bool labelled(const PanelState& panels, const char* label, Widget widget, float 
 }
 
 // The slider edits the double itself (no float round trip): what the student sets is what the core gets.
-bool slider_double(const PanelState& panels, const char* label, double& value, double lo, double hi,
-                   const char* format, bool logarithmic = false) {
+// Its number in the window's language (LocalNumber: a decimal comma in French).
+bool slider_double(Language language, const PanelState& panels, const char* label, double& value, double lo,
+                   double hi, const char* format, bool logarithmic = false) {
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
   return labelled(panels, label, [&](const char* l) {
-    return ImGui::SliderScalar(l, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+    const LocalNumber number(language, l, format);
+    const bool changed = ImGui::SliderScalar(l, ImGuiDataType_Double, &value, &lo, &hi, number.format(), flags);
+    if (changed) value = number.shown(value);
+    else number.shown(value);
+    return changed;
   });
 }
 
@@ -144,10 +151,35 @@ float drag_doubles_width(int count) {
 }
 
 // `count` doubles dragged in one widget, clamped to ±1000 (the target C).
-bool drag_doubles(const char* label, double* values, int count) {
+// ImGui's DragScalarN, one field at a time so that each shows its number in the window's language.
+bool drag_doubles(Language language, const char* label, double* values, int count) {
   static const double lo = -1000.0, hi = 1000.0;
-  return ImGui::DragScalarN(label, ImGuiDataType_Double, values, count, 0.05f, &lo, &hi, "%.2f",
-                            ImGuiSliderFlags_AlwaysClamp);
+  bool changed = false;
+  ImGui::BeginGroup();
+  ImGui::PushID(label);
+  ImGui::PushMultiItemsWidths(count, ImGui::CalcItemWidth());
+  for (int i = 0; i < count; ++i) {
+    ImGui::PushID(i);
+    if (i > 0) ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    const LocalNumber number(language, "", "%.2f");
+    if (ImGui::DragScalar("", ImGuiDataType_Double, values + i, 0.05f, &lo, &hi, number.format(),
+                          ImGuiSliderFlags_AlwaysClamp)) {
+      values[i] = number.shown(values[i]);
+      changed = true;
+    } else {
+      number.shown(values[i]);
+    }
+    ImGui::PopID();
+    ImGui::PopItemWidth();
+  }
+  ImGui::PopID();
+  const char* label_end = ImGui::FindRenderedTextEnd(label);
+  if (label != label_end) {
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted(label, label_end);
+  }
+  ImGui::EndGroup();
+  return changed;
 }
 
 // The target C's coordinates: side by side where each shows -10.00 whole, else (1024 px at 3×) the label
@@ -156,13 +188,13 @@ bool target_fields(Language language, const PanelState& panels, double* values, 
   const char* label = tr(language, "target C###target");
   const float needed = drag_doubles_width(count);
   if (ImGui::GetContentRegionAvail().x >= needed)
-    return labelled(panels, label, [&](const char* l) { return drag_doubles(l, values, count); }, needed);
+    return labelled(panels, label, [&](const char* l) { return drag_doubles(language, l, values, count); }, needed);
   wrapped_between_words(label_parts(label).shown);
   bool changed = false;
   for (int i = 0; i < count; ++i) {
     const std::string id = "###target" + std::to_string(i);
     ImGui::SetNextItemWidth(-FLT_MIN);
-    changed |= drag_doubles(id.c_str(), values + i, 1);
+    changed |= drag_doubles(language, id.c_str(), values + i, 1);
     record_item_rect(panels, id);
     if (i == 0) record_item_rect(panels, "###target");
   }
@@ -170,10 +202,11 @@ bool target_fields(Language language, const PanelState& panels, double* values, 
 }
 
 // radians: the model's angle; lo_deg, hi_deg: the slider's range in degrees (degrees only on screen).
-bool slider_degrees(const PanelState& panels, const char* label, double& radians, double lo_deg, double hi_deg) {
+bool slider_degrees(Language language, const PanelState& panels, const char* label, double& radians, double lo_deg,
+                    double hi_deg) {
   double degrees = glm::degrees(radians);
   if (lo_deg < 0) degrees = std::remainder(degrees, 360.0);  // show theta in [-180, 180]
-  if (!slider_double(panels, label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
+  if (!slider_double(language, panels, label, degrees, lo_deg, hi_deg, "%.1f°")) return false;
   radians = glm::radians(degrees);
   return true;
 }
@@ -203,17 +236,17 @@ void explain(const char* text) {
 // grid starts on screen (x, y), its font size (z) and its height (w). Past the panel's width (only at the
 // smallest scale) it scrolls sideways in its own strip.
 template <int N, class Matrix>
-ImVec4 matrix_grid(const char* id, const Matrix& m, int first, int count, int decimals, float scale, bool stretch) {
+ImVec4 matrix_grid(Language language, const char* id, const Matrix& m, int first, int count, int decimals, float scale,
+                   bool stretch) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float avail = ImGui::GetContentRegionAvail().x - 1;  // the right border
   const float padding = style.CellPadding.x;
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
   const float font_size = ImGui::GetFontSize() * scale;
-  ImVec2 cell{ImGui::CalcTextSize(text).x * scale + 2 * padding, font_size + 2 * style.CellPadding.y};
+  const float widest_text = ImGui::CalcTextSize(formatted(language, "%.*f", decimals, -widest).c_str()).x;
+  ImVec2 cell{widest_text * scale + 2 * padding, font_size + 2 * style.CellPadding.y};
   const ImVec2 size{count * cell.x + 1, N * cell.y + 1};
   const bool fits = size.x <= avail + 1;
   if (fits && stretch) cell.x = std::floor(avail / count);  // no empty strip at the right
@@ -230,11 +263,12 @@ ImVec4 matrix_grid(const char* id, const Matrix& m, int first, int count, int de
   for (int row = 0; row < N; ++row)
     for (int i = 0; i < count; ++i) {
       const int column = first + i;
-      std::snprintf(text, sizeof text, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
-      const float text_w = ImGui::CalcTextSize(text).x * scale;  // GLM is column-major: m[column][row]
+      // The window's language's decimal mark (French: 0,500).
+      const std::string text = formatted(language, "%.*f", decimals, without_negative_zero(m[column][row], decimals));
+      const float text_w = ImGui::CalcTextSize(text.c_str()).x * scale;  // GLM is column-major: m[column][row]
       draw->AddText(ImGui::GetFont(), font_size,
                     {at.x + (i + 1) * cell.x - padding - text_w, at.y + row * cell.y + style.CellPadding.y},
-                    ImGui::GetColorU32(ImGuiCol_Text), text);
+                    ImGui::GetColorU32(ImGuiCol_Text), text.c_str());
     }
   if (!fits) ImGui::EndChild();
   return {at.x, at.y, font_size, size.y};
@@ -252,29 +286,27 @@ void matrix_table(Language language, const char* id, const Matrix& m, const Pane
   double widest = 0;
   for (int row = 0; row < N; ++row)
     for (int column = 0; column < N; ++column) widest = std::max(widest, std::abs(m[column][row]));
-  char text[64];
   const float avail = ImGui::GetContentRegionAvail().x - 1;  // the right border
   auto column_width = [&](int decimals) {  // the widest value's, the sign included, with its padding
-    std::snprintf(text, sizeof text, "%.*f", decimals, -widest);
-    return ImGui::CalcTextSize(text).x + 2 * style.CellPadding.x;
+    return ImGui::CalcTextSize(formatted(language, "%.*f", decimals, -widest).c_str()).x + 2 * style.CellPadding.x;
   };
   const int decimals = N * column_width(3) <= avail ? 3 : 2;
   ImVec4 drawn;
   // How many columns fit side by side at the panel's font.
   const int per_grid = std::min(N, int(avail / column_width(decimals)));
   if (per_grid >= 1) {
-    drawn = matrix_grid<N>(id, m, 0, per_grid, decimals, 1.0f, true);
+    drawn = matrix_grid<N>(language, id, m, 0, per_grid, decimals, 1.0f, true);
     for (int first = per_grid; first < N; first += per_grid) {  // the others under it, named
       const int count = std::min(per_grid, N - first);
       ImGui::TextDisabled("%s", count == 1 ? trf(language, "column %d:", first + 1).c_str()
                                            : trf(language, "columns %d to %d:", first + 1, first + count).c_str());
-      matrix_grid<N>((std::string(id) + "_" + std::to_string(first)).c_str(), m, first, count, decimals, 1.0f, true);
+      matrix_grid<N>(language, (std::string(id) + "_" + std::to_string(first)).c_str(), m, first, count, decimals, 1.0f, true);
     }
   } else {
     const float scale =
         std::clamp((avail / N - 2 * style.CellPadding.x) / (column_width(decimals) - 2 * style.CellPadding.x),
                    kMinTableFontScale, 1.0f);
-    drawn = matrix_grid<N>(id, m, 0, N, decimals, scale, true);
+    drawn = matrix_grid<N>(language, id, m, 0, N, decimals, scale, true);
   }
   if (panels && panels->widget_rects)
     (*panels->widget_rects)[std::string("###matrix/") + id] = {drawn.x, drawn.y, drawn.x + drawn.z, drawn.y + drawn.w};
@@ -365,14 +397,14 @@ void camera_section(AppState& state, const PanelState& panels) {
   {
     const LabelGroup column{tr(state.language, "d_f focal distance###df"), tr(state.language, "d distance to C###d"),
                             tr(state.language, "θ azimuth###theta"), tr(state.language, "φ polar angle###phi")};
-    changed |= slider_double(panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
+    changed |= slider_double(state.language, panels, tr(state.language, "d_f focal distance###df"), df, kFocalRange.low, kFocalRange.high,
                              "%.3f", true);
-    changed |= slider_double(panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
+    changed |= slider_double(state.language, panels, tr(state.language, "d distance to C###d"), d, kDistanceRange.low, kDistanceRange.high,
                              "%.2f", true);
-    changed |= slider_degrees(panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
+    changed |= slider_degrees(state.language, panels, tr(state.language, "θ azimuth###theta"), theta, -180.0, 180.0);
     std::visit(overloaded{[](View2D&) {},  // the plane has no polar angle
                           [&](View3D& view) {
-                            changed |= slider_degrees(panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
+                            changed |= slider_degrees(state.language, panels, tr(state.language, "φ polar angle###phi"), view.orbit.phi,
                                                       glm::degrees(kPolarRange.low), glm::degrees(kPolarRange.high));
                           }},
                state.view);
@@ -380,10 +412,10 @@ void camera_section(AppState& state, const PanelState& panels) {
   const int max_size = active_max_side(state);
   // The handout's one or two resolution variables (two in 3D, "non-square" on).
   if (dimension(state) == 2 || !state.res_rows) {
-    changed |= slider_double(panels, tr(state.language, "res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(state.language, panels, tr(state.language, "res resolution###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
   } else {  // the handout's two resolution variables: nbc = round(res_c·W), nbl = round(res_l·H)
-    changed |= slider_double(panels, tr(state.language, "res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
-    changed |= slider_double(panels, tr(state.language, "res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
+    changed |= slider_double(state.language, panels, tr(state.language, "res_c columns###res"), state.res, 1.0 / max_size, 1.0, "%.4f", true);
+    changed |= slider_double(state.language, panels, tr(state.language, "res_l rows###res_rows"), *state.res_rows, 1.0 / max_size, 1.0, "%.4f",
                              true);
   }
   bool non_square = state.res_rows.has_value();
@@ -427,14 +459,14 @@ namespace {
 // M_d's factors and their product up to `step`, as the handout writes them in each dimension.
 void placement_tables(AppState& state, PanelState& panels, const View2D& view, int step, int steps) {
   const Placement2D& p = view.camera.placement();
-  ImGui::TextWrapped("%s", trf(state.language, "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", glm::degrees(p.alpha)).c_str());
+  ImGui::TextWrapped("%s", trf(state.language, "M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°", glm::degrees(p.alpha)).c_str());
   if (ImGui::TreeNode("H(1, d_f)")) { matrix_table<3>(state.language, "H", p.scale); ImGui::TreePop(); }
   if (ImGui::TreeNode("R(α)")) {
     matrix_table<3>(state.language, "R", p.rotation);
     ImGui::TreePop();
   }
-  if (ImGui::TreeNode("T(OP)")) { matrix_table<3>(state.language, "T", p.translation); ImGui::TreePop(); }
-  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
+  if (ImGui::TreeNode("T(ΩP)")) { matrix_table<3>(state.language, "T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d {{factor|factors}}", step));
   panels.shown_matrix = glm::dmat4(construction_step(p, step));
   matrix_table<3>(state.language, "M", construction_step(p, step), &panels);
 }
@@ -445,16 +477,16 @@ void placement_tables(AppState& state, PanelState& panels, const View3D& view, i
         "(red), image up (green), view (blue)."));
   if (step >= 2) {  // the roll: why raycam's sign differs from the handout's
     explain(tr(state.language,
-        "Why ψ0 = +π/2: after R_y(φ)·R_z(ψ0) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
+        "Why ψ₀ = +π/2: after Ry(φ)·Rz(ψ₀) the image's up R·(0, 1, 0) must have z > 0. With +π/2 it is "
         "(−cos θ cos φ, −sin θ cos φ, sin φ), and sin φ > 0. The handout prints −π/2, the opposite vector: "
         "world up points down and the image is upside down."));
-    if (checkbox(tr(state.language, "show the handout's ψ0 = −π/2"), &state.mistakes.upside_down))
+    if (checkbox(tr(state.language, "show the handout's ψ₀ = −π/2"), &state.mistakes.upside_down))
       state.cameras_dirty = true;
   }
   const Placement3D& p = view.camera.placement();
-  ImGui::TextWrapped("M_d = T·Rz(θ)·Ry(φ)·Rz(90°)·H");
+  ImGui::TextWrapped("M_d = T(ΩP)·Rz(θ)·Ry(φ)·Rz(ψ₀)·H(1, 1, d_f)");
   if (ImGui::TreeNode("H(1, 1, d_f)")) { matrix_table<4>(state.language, "H", p.scale); ImGui::TreePop(); }
-  if (ImGui::TreeNode("Rz(ψ0 = 90°)")) {
+  if (ImGui::TreeNode("Rz(ψ₀ = 90°)")) {
     matrix_table<4>(state.language, "Roll", p.roll);
     ImGui::TreePop();
   }
@@ -466,8 +498,8 @@ void placement_tables(AppState& state, PanelState& panels, const View3D& view, i
     matrix_table<4>(state.language, "Rz", p.azimuth);
     ImGui::TreePop();
   }
-  if (ImGui::TreeNode("T(OP)")) { matrix_table<4>(state.language, "T", p.translation); ImGui::TreePop(); }
-  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d factors", step));
+  if (ImGui::TreeNode("T(ΩP)")) { matrix_table<4>(state.language, "T", p.translation); ImGui::TreePop(); }
+  wrapped_between_words(step == steps ? std::string("M_d") : trf(state.language, "product of the first %d {{factor|factors}}", step));
   panels.shown_matrix = construction_step(p, step);
   matrix_table<4>(state.language, "M", construction_step(p, step), &panels);
 }
@@ -549,7 +581,8 @@ void figure_export_row(AppState& state, PanelState& panels) {
     if (answer == ReplaceAnswer::replace) export_figure_now(state, panels, all);
   }
   show_message(state, panels, MessageSource::construction);  // right under the buttons, where the eye is
-  explain(tr(state.language, "The step shown or every step, as raycam-cli figure draws them (docs/figures.md)."));
+  explain(tr(state.language, "The step shown or every step: the camera and its screen after each factor of M_d, one "
+                           "figure a step, for a handout or slides."));
 }
 
 void construction_section(AppState& state, PanelState& panels) {
@@ -557,18 +590,9 @@ void construction_section(AppState& state, PanelState& panels) {
     return;
   const int steps = construction_steps(state);
   int step = state.construction_step < 0 ? steps : state.construction_step;
-  static const char* const k2D[] = {
-      tr_later("a: the canonical camera (identity)"), tr_later("b: H(1, d_f) sets the focal distance"),
-      tr_later("c: R(θ − 90°) turns u0 onto v"), tr_later("d: T(OP) moves the screen to P")};
-  static const char* const k3D[] = {tr_later("the canonical camera (identity)"),
-                                    tr_later("1: H(1, 1, d_f) sets the focal distance"),
-                                    tr_later("2: Rz(+90°) rolls the image upright"),
-                                    tr_later("3: Ry(φ) tilts u0 into the plane y = 0"),
-                                    tr_later("4: Rz(θ) turns u0 onto v"),
-                                    tr_later("5: T(OP) moves the screen to P")};
   if (labelled(panels, tr(state.language, "step###step"), [&](const char* l) { return ImGui::SliderInt(l, &step, 0, steps, "%d"); }))
     state.construction_step = step == steps ? -1 : step;
-  explain(tr(state.language, dimension(state) == 2 ? k2D[step] : k3D[step]));
+  explain(tr(state.language, construction_caption(dimension(state), step)));
   std::visit([&](const auto& view) { placement_tables(state, panels, view, step, steps); }, state.view);
   figure_export_row(state, panels);
 }
@@ -584,29 +608,29 @@ void inspector_section(const AppState& state) {
   const InspectedRay ray = inspect_pixel(state, state, *pixel);
   // Four decimals, no "-0.0000"; a tuple wraps between its numbers at lecture sizes.
   const int dimensions = dimension(state);
-  const auto line = [dimensions](const char* name, const glm::dvec3& v) {
+  // French writes 0,5000 and separates a tuple's numbers by " ; ".
+  const Language language = state.language;
+  const auto line = [dimensions, language](const char* name, const glm::dvec3& v) {
     std::string text = std::string(name) + " = (";
-    for (int i = 0; i < dimensions; ++i) {
-      char number[32];
-      std::snprintf(number, sizeof number, "%.4f", without_negative_zero(v[i], 4));
-      text += (i ? ", " : "") + std::string(number);
-    }
+    for (int i = 0; i < dimensions; ++i)
+      text += (i ? (language == Language::fr ? "\u00a0; " : ", ") : "") +
+              formatted(language, "%.4f", without_negative_zero(v[i], 4));
     wrapped_between_words(text + ")");
   };
   std::visit(overloaded{[&](const View2D&) {  // the bar's pixel k, the handout's P_k and u_k
                           wrapped_between_words(
                               trf(state.language, "column %d = pixel k = %d (k = n−1−column)", pixel->column, ray.k));
-                          line("P_k^0", ray.canonical_pixel);
-                          line("u_k^0", ray.canonical_direction);
-                          line("P_k  ", ray.origin);
-                          line("u_k  ", ray.direction);
+                          line("P⁰ₖ", ray.canonical_pixel);
+                          line("u⁰ₖ", ray.canonical_direction);
+                          line("Pₖ", ray.origin);
+                          line("uₖ", ray.direction);
                         },
                         [&](const View3D&) {
                           wrapped_between_words(trf(state.language, "row %d, column %d", pixel->row, pixel->column));
-                          line("P^0", ray.canonical_pixel);
-                          line("u^0", ray.canonical_direction);
-                          line("P  ", ray.origin);
-                          line("u  ", ray.direction);
+                          line("P⁰", ray.canonical_pixel);
+                          line("u⁰", ray.canonical_direction);
+                          line("P", ray.origin);
+                          line("u", ray.direction);
                         }},
              state.view);
   if (ray.hit.id < 0) {
@@ -742,8 +766,9 @@ void caster_section(AppState& state, const PanelState& panels) {
   if (exact_bar_applies(state.view))
     changed |= checkbox(tr(state.language, "exact bar (area-weighted)"), &state.accuracy.exact);
   explain(uses_reference_caster(state)
-              ? tr(state.language, "These knobs use the reference caster: slower, and the method above is not used. Which "
-                   "settings to use for what: README, Accuracy.")
+              ? tr(state.language, "These knobs use the reference caster: slower, and the method above is not used. For "
+                   "the handout's image keep double, stable, 1 sample; float needs the stable formula and "
+                   "camera-relative rays.")
               : tr(state.language, "double, 1 sample, world coordinates: the fast caster."));
   show_message(state, panels, MessageSource::caster);
   if (changed) state.cameras_dirty = true;
@@ -829,7 +854,10 @@ void lecture_section(AppState& state, PanelState& panels) {
   float& editing = panels.font_scale_editing;
   float scale = editing > 0 ? editing : state.font_scale;
   labelled(panels, tr(state.language, "font scale###font_scale"), [&](const char* l) {
-    return ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    const LocalNumber number(state.language, l, "%.2f");
+    const bool changed = ImGui::SliderFloat(l, &scale, 0.75f, 3.0f, number.format(), ImGuiSliderFlags_AlwaysClamp);
+    scale = float(number.shown(scale));
+    return changed;
   });
   if (panels.font_scale_scroll_frames > 0) {
     ImGui::SetScrollHereY(0.5f);
@@ -1012,8 +1040,8 @@ void status_counters(const AppState& state) {
   const double objects = double(active_object_count(state));
   const double plain_tests = double(w.rays) * objects;
   ImGui::TextUnformatted(trf(state.language, "caster: %s", caster).c_str());
-  ImGui::TextUnformatted(trf(state.language, "%lld casts in %lld frames", state.cast_count, state.frame_count).c_str());
-  ImGui::TextUnformatted(trf(state.language, "rays %lld, %lld pixels skipped", w.rays, w.pixels_skipped).c_str());
+  ImGui::TextUnformatted(trf(state.language, "%lld {{cast|casts}} in %lld {{frame|frames}}", state.cast_count, state.frame_count).c_str());
+  ImGui::TextUnformatted(trf(state.language, "rays %lld, %lld {{pixel|pixels}} skipped", w.rays, w.pixels_skipped).c_str());
   ImGui::TextUnformatted(trf(state.language, "intersection tests %lld (%.1f%% of the plain loop)", w.intersection_tests,
                              plain_tests > 0 ? 100.0 * double(w.intersection_tests) / plain_tests : 0.0)
                              .c_str());

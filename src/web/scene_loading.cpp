@@ -121,7 +121,7 @@ bool scene_loading_step(session::AppState& state) {
       } else {
         loading.step = Step::pack;
         session::set_message(state, session::MessageSource::files, false,
-                             ui::trf(state.language, "opening %s: packing %zu objects…", shown_name(state).c_str(),
+                             ui::trf(state.language, "opening %s: packing %zu {{object|objects}}…", shown_name(state).c_str(),
                                      loading.reader->objects()));
       }
       return true;
@@ -140,7 +140,7 @@ bool scene_loading_step(session::AppState& state) {
     case Step::report:
       loading.step = Step::idle;
       session::set_message(state, session::MessageSource::files, false,
-                           ui::trf(state.language, "opened %s (%zu objects) in %.1f s", shown_name(state).c_str(),
+                           ui::trf(state.language, "opened %s (%zu {{object|objects}}) in %.1f s", shown_name(state).c_str(),
                                    session::active_object_count(state),
                                    (emscripten_get_now() - loading.started_ms) / 1000.0));
       return true;

@@ -65,12 +65,14 @@ TEST_CASE("check's texts: French by English key, English when asked or when the 
 
 TEST_CASE("check's counts: one is singular, in both languages (\"on 1 thread\", not \"1 threads\")",
           "[check][language]") {
-  CHECK(check::counted(Language::en, 1, "%zu thread", "%zu threads") == "1 thread");
-  CHECK(check::counted(Language::en, 0, "%zu thread", "%zu threads") == "0 threads");
-  CHECK(check::counted(Language::en, 2, "%zu submission", "%zu submissions") == "2 submissions");
-  CHECK(check::counted(Language::fr, 1, "%zu thread", "%zu threads") == "1 exécution à la fois");
-  CHECK(check::counted(Language::fr, 3, "%zu thread", "%zu threads") == "3 exécutions à la fois");
-  CHECK(check::counted(Language::fr, 1, "%zu submission", "%zu submissions") == "1 rendu");
+  // The plural groups of the one formatter (format_text); French: 0 and 1 singular.
+  CHECK(check::textf(Language::en, "%zu {{thread|threads}}", std::size_t(1)) == "1 thread");
+  CHECK(check::textf(Language::en, "%zu {{thread|threads}}", std::size_t(0)) == "0 threads");
+  CHECK(check::textf(Language::en, "%zu {{submission|submissions}}", std::size_t(2)) == "2 submissions");
+  CHECK(check::textf(Language::fr, "%zu {{thread|threads}}", std::size_t(1)) == "1 exécution à la fois");
+  CHECK(check::textf(Language::fr, "%zu {{thread|threads}}", std::size_t(3)) == "3 exécutions à la fois");
+  CHECK(check::textf(Language::fr, "%zu {{submission|submissions}}", std::size_t(1)) == "1 rendu");
+  CHECK(check::textf(Language::fr, "%zu {{submission|submissions}}", std::size_t(0)) == "0 rendu");
 }
 
 TEST_CASE("a batch's time left: the pace so far, rounded up, in the language, none before or after",

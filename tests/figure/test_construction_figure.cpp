@@ -464,12 +464,12 @@ TEST_CASE("a far C or O is pointed at and named, never a dashed line running off
       if (s.stroke != Stroke::construction) continue;
       INFO("frame " << frame.id << ": a dashed line from (" << s.from.x << ", " << s.from.y << ") to (" << s.to.x
                     << ", " << s.to.y << ")");
-      const glm::dvec2 far = placed ? glm::dvec2(0.0) : orbit.target;  // O in (d), C in (a)–(c)
+      const glm::dvec2 far = placed ? glm::dvec2(0.0) : orbit.target;  // Ω in (d), C in (a)–(c)
       CHECK((s.from != far && s.to != far));
     }
     INFO("frame " << frame.id);
     if (!placed) CHECK(named == std::vector<std::string>{"$C$"});  // (d): C is 6 from P, in view
-    if (placed) CHECK(named == std::vector<std::string>{"$O$"});
+    if (placed) CHECK(named == std::vector<std::string>{"$Ω$"});
   }
 }
 

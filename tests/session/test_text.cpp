@@ -93,7 +93,7 @@ TEST_CASE("every string of the table has both languages, with the same conversio
   // Every French entry differs from its English, but for an explicit list of what reads the same in both
   // (key names, formulas, numbers, the languages' own names): a French entry left in English fails here.
   const std::set<std::string> same_in_both = {
-      "English", "Français", "%d × %d###image", "M_d = T(OP)·R(α)·H(1, d_f), α = %.1f°", "F", "k = 0", "float",
+      "English", "Français", "%d × %d###image", "M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°", "F", "k = 0", "float",
       "double", "long double", "intersection###intersection", "stable (Ray Tracing Gems)", "figure###figure_path", "format###figure_format",
       "F1", "F9", "F11", "F12", "P", "← / →", "θ −/+ 5°", "↑ / ↓", "φ −/+ 5° (3D)", "+ / −", "[ / ]", "Tab", "2D / 3D",
       "1 / 2 / 3", "%.0f ms · %.1f ms"};

@@ -328,10 +328,9 @@ TEST_CASE("Export figure's ray count is offered in 2D only: the 3D steps draw no
   }
 }
 
-// The demo is raycam's own scene: its objects are named in the window's language (the test's own French
-// words, not the table's), where the inspector names the object a ray hit. A file's names stay as written,
-// in any language.
-TEST_CASE("the inspector names the demo's objects in the window's language and a file's as written",
+// The shipped scenes' objects are named in the window's language (the test's own French words, not the
+// table's), where the inspector names the object a ray hit: the demo's, and the demo saved as a file.
+TEST_CASE("the inspector names the shipped objects in the window's language, the demo's and a saved file's",
           "[ui][text]") {
   const std::map<std::string, std::string> kFrench = {
       {"red", "rouge"}, {"green", "vert"}, {"blue", "bleu"}, {"yellow", "jaune"}, {"ground", "sol"}};
@@ -341,7 +340,7 @@ TEST_CASE("the inspector names the demo's objects in the window's language and a
     for (const char* language : {"fr", "en"})
       for (const bool from_file : {false, true}) {
         session::AppState state = state_for({"--view", view, "--lang", language});
-        if (from_file) {  // the demo saved as a file, opened again: a user's file naming its objects in English
+        if (from_file) {  // the demo saved as a file, opened again: the names the table knows are translated
           const std::string file = scratch.path(std::string("demo") + view + ".json");
           REQUIRE(session::save_preset(state, file));
           REQUIRE(session::open_scene(state, file));
@@ -362,11 +361,35 @@ TEST_CASE("the inspector names the demo's objects in the window's language and a
             state.pinned_pixel = session::PixelIndex{row, column};
             const std::string shown = text.capture([&] { ui::inspector_section(state); });
             const std::string& name = names[std::size_t(id)];
-            const bool french = std::string(language) == "fr" && !from_file;
+            const bool french = std::string(language) == "fr";
             const std::string expected = french ? kFrench.at(name) : name;
             INFO(view << " " << language << (from_file ? " file" : " demo") << ": " << shown);
             CHECK(shown.find(" " + std::to_string(id) + " " + expected + " ") != std::string::npos);
           }
         CHECK(seen.size() >= 4);  // every demo object in sight
       }
+}
+
+TEST_CASE("the French window writes its numbers with a decimal comma, sliders and tables included", "[ui][text]") {
+  TextCapture text;
+  for (const char* view : {"2d", "3d"}) {
+    session::AppState state = state_for({"--view", view, "--lang", "fr", "--inspect", "3,0", "--theta", "50"});
+    session::recast_if_needed(state);
+    const std::string shown = text.capture([&] {
+      ImGuiWindow* window = ImGui::GetCurrentWindow();
+      for (const char* id : {"###camera", "###caster", "###lecture", "###construction", "###inspector"})
+        window->StateStorage.SetInt(window->GetID(id), 1);
+      ui::PanelState panels = ui::panel_state_for({}, state);
+      ui::camera_section(state, panels);
+      ui::caster_section(state, panels);
+      ui::lecture_section(state, panels);
+      ui::construction_section(state, panels);
+      ui::inspector_section(state);
+      ui::status_line(state, panels);
+    });
+    INFO(view << ":\n" << shown);
+    CHECK(std::regex_search(shown, std::regex(R"(50,0°)")));  // θ's slider, written by the panel
+    CHECK(std::regex_search(shown, std::regex(R"(\d,\d{4})")));  // the inspector's coordinates
+    CHECK_FALSE(std::regex_search(shown, std::regex(R"(\d\.\d)")));
+  }
 }

@@ -31,8 +31,23 @@ class TranslationTable {
   std::unordered_map<std::string_view, const Translation*> entries_;
 };
 
-// printf into a std::string (`args` is consumed).
-std::string format_text(const char* format, va_list args);
+// printf into a std::string, in `language`'s way (src/io/local_format.cpp), the one formatter of every
+// visible text:
+// - numbers: a floating conversion (%f, %e, %g) is written with the language's decimal mark (French "0,4 s",
+//   English "0.4 s"); integers as printf writes them. Machine outputs (CSV, JSON) do not come here.
+// - plurals: a group "{{one|many}}" holds the singular and the plural of the words after an integer
+//   conversion: the last integer written before the group picks the form by takes_plural() ("%d {{file
+//   written|files written}}", "%lld {{cast|casts}} in %lld {{frame|frames}}"). A group holds no conversion.
+// `args` is consumed.
+std::string format_text(Language language, const char* format, va_list args);
+std::string formatted(Language language, const char* format, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+// Whether `count` takes the plural in `language`: English all but 1 ("0 pixels", "1 pixel"), French 2 and
+// more ("0 pixel", "1 pixel", "2 pixels").
+bool takes_plural(Language language, long long count);
 
 // "fr", "fr_FR.UTF-8", "en_GB:en" ... → the language, or nothing for another language or "C"/"POSIX".
 std::optional<Language> language_from_code(std::string_view code);
