@@ -469,6 +469,7 @@ mutant figure-origin-named-o src/figure/construction_figure.cpp 's/"translation 
 mutant shipped-name-untranslated src/io/demo_names.cpp 's/{"left twin", "jumeau gauche"}, //' "raycam_session_tests" "^session: ?in French no shipped"
 mutant plain-text-maths-in-a-mistake src/core/classic_mistakes.cpp 's/seuls les impacts t ≥ 0 comptent/seuls les impacts t >= 0 comptent/' "raycam_ui_tests" "^ui: ?the mistakes. explanations"
 mutant glyphs-of-the-tables-not-loaded src/ui/fonts.cpp 's/for (const char\* text : shown_table_texts()) builder.AddText(text);/(void)0;/' "raycam_ui_tests" "^ui: ?every character of the window"
+mutant format-star-not-expanded src/io/local_format.cpp@one_conversion 's/  for (std::size_t star = spec.find(.\*.); star != std::string::npos;/  for (std::size_t star = std::string::npos; star != std::string::npos;/' "raycam_session_tests" "^session: ?one number formatter per language"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

@@ -49,7 +49,23 @@ std::string as_long_long(const std::string& spec) {
 
 // One conversion `spec` ("%.2f", "%lld", "%s"...) with its argument taken from `args`; `count` receives an
 // integer conversion's value.
-std::string one_conversion(Language language, const std::string& spec, Arguments& args, long long* count) {
+std::string one_conversion(Language language, const std::string& asked, Arguments& args, long long* count) {
+  // A '*' width or precision takes its int from the arguments, before the value, as printf does: written into
+  // the conversion here ("%.*f" with 3 → "%.3f"). Read as the value, it was a double taken from an int's place
+  // (a precision of millions: gigabytes of digits, some runs).
+  std::string spec = asked;
+  for (std::size_t star = spec.find('*'); star != std::string::npos; star = spec.find('*', star)) {
+    const int number = va_arg(args.list, int);
+    const bool precision = star > 0 && spec[star - 1] == '.';
+    if (precision && number < 0) {  // a negative precision is no precision
+      spec.erase(star - 1, 2);
+      star -= 1;
+      continue;
+    }
+    const std::string digits = std::to_string(number);
+    spec.replace(star, 1, digits);
+    star += digits.size();
+  }
   const char letter = spec.back();
   const bool ll = spec.find("ll") != std::string::npos || spec.find('j') != std::string::npos;
   const bool l = !ll && spec.find('l') != std::string::npos;

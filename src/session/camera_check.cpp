@@ -279,8 +279,8 @@ CheckHeader check_header(Language language, const CheckProgress& progress, const
                                              : "CHECK: passed for your camera — the image shown shows the mistake « %s »", m),
                trf(language, "✓ case passed — the image shows « %s »", m), tr(language, "✓ case passed")},
               true, true};
-    return {{trf(language, downloaded_case ? "CHECK: %lld pixels wrong for the downloaded case — the image shown shows the mistake « %s »"
-                                           : "CHECK: %lld pixels wrong for your camera — the image shown shows the mistake « %s »",
+    return {{trf(language, downloaded_case ? "CHECK: %lld {{pixel|pixels}} wrong for the downloaded case — the image shown shows the mistake « %s »"
+                                           : "CHECK: %lld {{pixel|pixels}} wrong for your camera — the image shown shows the mistake « %s »",
                  r.wrong_pixels, m),
              trf(language, "✗ case: %lld wrong — the image shows « %s »", r.wrong_pixels, m),
              trf(language, "✗ case: %lld wrong", r.wrong_pixels)},

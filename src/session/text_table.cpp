@@ -311,7 +311,7 @@ const std::vector<Translation>& translation_table() {
 
       // ---- issue 45 (the page): downloads as asked, the verdict's pixels, the graded camera ----
       {"asked the browser to save %s", "téléchargement de %s demandé au navigateur"},
-      {"asked the browser to save %s (%d figures)", "téléchargement de %s demandé au navigateur (%d figures)"},
+      {"asked the browser to save %s (%d {{figure|figures}})", "téléchargement de %s demandé au navigateur (%d {{figure|figures}})"},
       {"asked the browser to save the camera preset as %s", "téléchargement de la caméra sous %s demandé au navigateur"},
       {"CHECK: passed for the downloaded case — the image shown shows the mistake « %s »",
        "VÉRIFICATION : réussie pour le cas téléchargé — l'image affichée montre l'erreur « %s »"},
@@ -319,10 +319,10 @@ const std::vector<Translation>& translation_table() {
        "VÉRIFICATION : réussie pour votre caméra — l'image affichée montre l'erreur « %s »"},
       {"✓ case passed — the image shows « %s »", "✓ cas réussi — l'image montre « %s »"},
       {"✓ case passed", "✓ cas réussi"},
-      {"CHECK: %lld pixels wrong for the downloaded case — the image shown shows the mistake « %s »",
-       "VÉRIFICATION : %lld pixels faux pour le cas téléchargé — l'image affichée montre l'erreur « %s »"},
-      {"CHECK: %lld pixels wrong for your camera — the image shown shows the mistake « %s »",
-       "VÉRIFICATION : %lld pixels faux pour votre caméra — l'image affichée montre l'erreur « %s »"},
+      {"CHECK: %lld {{pixel|pixels}} wrong for the downloaded case — the image shown shows the mistake « %s »",
+       "VÉRIFICATION : %lld {{pixel faux|pixels faux}} pour le cas téléchargé — l'image affichée montre l'erreur « %s »"},
+      {"CHECK: %lld {{pixel|pixels}} wrong for your camera — the image shown shows the mistake « %s »",
+       "VÉRIFICATION : %lld {{pixel faux|pixels faux}} pour votre caméra — l'image affichée montre l'erreur « %s »"},
       {"✗ case: %lld wrong — the image shows « %s »", "✗ cas : %lld faux — l'image montre « %s »"},
       {"✗ case: %lld wrong", "✗ cas : %lld faux"},
       {"wrong pixels (row, column), framed on the image: %s", "pixels faux (ligne, colonne), encadrés sur l'image : %s"},

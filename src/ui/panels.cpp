@@ -513,7 +513,7 @@ void export_figure_now(AppState& state, const PanelState& panels, bool all) {
     if (state.host.files_are_downloads && files.size() > 1) {  // the page: one download, an archive
       const std::string archive = as_one_download(files, named_after_scene(state, "-steps.zip"));
       set_message(state, MessageSource::construction, false,
-                  trf(state.language, "asked the browser to save %s (%d figures)",
+                  trf(state.language, "asked the browser to save %s (%d {{figure|figures}})",
                       shown_file_name(state.host, archive).c_str(), int(files.size())));
     } else if (state.host.files_are_downloads) {
       set_message(state, MessageSource::construction, false, written_message(state.host, state.language, files.front()));

@@ -84,6 +84,13 @@ TEST_CASE("one number formatter per language: French decimal comma, English poin
   CHECK(formatted(Language::fr, "%s %d %.0f%%", "a.b", 3, 12.0) == "a.b 3 12%");  // a string keeps its points
   CHECK(formatted(Language::fr, "%02d:%02d", 1, 5) == "01:05");
   CHECK(ui::trf(Language::fr, "running… (%.1f s)", 2.25) == "en cours… (2,2 s)");
+  // A '*' takes its int from the arguments before the value (the M_d tables' "%.*f"): read as the value, it
+  // took a double from an int's place, a precision of millions in some runs.
+  CHECK(formatted(Language::fr, "%.*f", 2, 3.14159) == "3,14");
+  CHECK(formatted(Language::en, "%.*f|%*d|%-*d|", 0, 2.5, 4, 7, 3, 8) == "2|   7|8  |");
+  CHECK(formatted(Language::en, "%.*f", -1, 0.5) == formatted(Language::en, "%f", 0.5));  // no precision
+  for (int decimals = 0; decimals <= 4; ++decimals)
+    CHECK(formatted(Language::fr, "%.*f %d", decimals, -0.123456, 9).size() == std::size_t(decimals + 4 + (decimals > 0)));
 }
 
 namespace {
