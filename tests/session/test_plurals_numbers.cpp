@@ -98,7 +98,7 @@ namespace {
 // words between two counts or after a count that do not agree with it ("%lld of %lld {{pixel|pixels}}",
 // "✗ %lld wrong").
 const std::set<std::string> kNotAgreeing = {"s",  "ms",  "min", "h",   "MB",    "Mo",  "MiB", "Mio", "mm",
-                                            "px", "cas", "of",  "des", "sur",   "wrong", "faux"};
+                                            "px", "cas", "of",  "des", "sur",   "wrong", "faux", "to", "à"};
 
 // Where a count ("%d", "%lld", "%zu"...) is followed by a word that agrees with it, with no plural group
 // before the next conversion: "%d files".
