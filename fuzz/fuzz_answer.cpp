@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "answer.h"
+#include "check/answer.h"
 
 namespace {
 void check(bool condition) {

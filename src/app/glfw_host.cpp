@@ -1,5 +1,5 @@
 // The GLFW host and the window's loop. With main.cpp, the only files that include GLFW.
-#include "glfw_host.h"
+#include "app/glfw_host.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <string>
 
-#include "gl.h"
-#include "renderer_backend.h"
-#include "shown_files.h"
-#include "text.h"
+#include "gl/gl.h"
+#include "ui/renderer_backend.h"
+#include "session/shown_files.h"
+#include "session/text.h"
 
 namespace raycam::app {
 
@@ -46,8 +46,8 @@ void GlfwHost::key_pressed(int key) {
 }
 
 void GlfwHost::install_own_callbacks() {
-  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { host_of(w).note_event(); });
-  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { host_of(w).note_event(); });
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { glfw_host::host_of(w).note_event(); });
+  glfwSetWindowIconifyCallback(window_, [](GLFWwindow* w, int) { glfw_host::host_of(w).note_event(); });
 }
 
 void GlfwHost::wait_for_frame(const session::AppState& state, const ui::PanelState& panels) {
@@ -101,10 +101,10 @@ void GlfwHost::toggle_recording() {
     state_.recording = true;
     state_.recording_seconds = 0.0;
     session::set_message(state_, session::MessageSource::files, false,
-                         ui::trf(state_.language, "recording the window to %s (F9 stops)", path.c_str()));
+                         session::trf(state_.language, "recording the window to %s (F9 stops)", path.c_str()));
   } catch (const std::exception& error) {
     session::set_message(state_, session::MessageSource::files, true,
-                         ui::trf(state_.language, "cannot record: %s", ui::tr_reason(state_.language, error.what()).c_str()));
+                         session::trf(state_.language, "cannot record: %s", session::tr_reason(state_.language, error.what()).c_str()));
   }
 }
 
@@ -114,13 +114,13 @@ void GlfwHost::stop_recording() {
   state_.recording = false;
   try {
     const int frames = recording->finish();
-    const std::string saved = ui::trf(state_.language, "wrote %s (%d:%02d, %d {{frame|frames}})", recording->path().c_str(),
+    const std::string saved = session::trf(state_.language, "wrote %s (%d:%02d, %d {{frame|frames}})", recording->path().c_str(),
                                       int(seconds) / 60, int(seconds) % 60, frames);
     session::set_message(state_, session::MessageSource::files, false, saved);
     std::printf("raycam: %s\n", saved.c_str());
   } catch (const std::exception& error) {
     session::set_message(state_, session::MessageSource::files, true,
-                         ui::trf(state_.language, "cannot record: %s", ui::tr_reason(state_.language, error.what()).c_str()));
+                         session::trf(state_.language, "cannot record: %s", session::tr_reason(state_.language, error.what()).c_str()));
   }
 }
 

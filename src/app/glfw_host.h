@@ -9,9 +9,9 @@
 #include <memory>
 #include <string>
 
-#include "app_options.h"
-#include "glfw_host_base.h"
-#include "live_recording.h"
+#include "session/app_options.h"
+#include "glfw_host/glfw_host_base.h"
+#include "video/live_recording.h"
 
 struct GLFWwindow;
 
@@ -29,13 +29,13 @@ int run_window(const session::AppOptions& options, const ScriptedRun& run, sessi
 
 // The desktop's loop over the shared GLFW host: it sleeps until there is something to draw, toggles full
 // screen and quits on Ctrl+Q.
-class GlfwHost : public GlfwHostBase {
+class GlfwHost : public glfw_host::GlfwHostBase {
  public:
   // The longest sleep between two checks of the quit signal; a timeout draws nothing.
   static constexpr double kIdleWaitSeconds = 0.25;
 
   GlfwHost(GLFWwindow* window, session::AppState& state, bool scripted)
-      : GlfwHostBase(window, state), scripted_(scripted) {}
+      : glfw_host::GlfwHostBase(window, state), scripted_(scripted) {}
   void present() override;
   void frame_drawn(session::AppState& state) override;
 

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "flag_values.h"
-#include "glfw_host.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "flags/flag_values.h"
+#include "app/glfw_host.h"
 
 int main(int argc, char** argv) {
   raycam::session::AppOptions options;

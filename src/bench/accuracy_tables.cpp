@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "accuracy_sweep.h"
+#include "bench/accuracy_sweep.h"
 #include "raycam/camera3d.h"
 #include "raycam/stress_cases.h"
 

@@ -14,10 +14,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "accuracy_sweep.h"
-#include "bench_commands.h"
-#include "flag_values.h"
-#include "progress_line.h"
+#include "bench/accuracy_sweep.h"
+#include "bench/bench_commands.h"
+#include "flags/flag_values.h"
+#include "check/progress_line.h"
 #include "raycam/exact_bar.h"
 #include "raycam/ray_caster.h"
 #include "raycam/reference_caster.h"

@@ -30,20 +30,20 @@
 #include <tuple>
 #include <vector>
 
-#include "bench_commands.h"
-#include "flag_values.h"
+#include "bench/bench_commands.h"
+#include "flags/flag_values.h"
 #include "raycam/process_memory.h"
-#include "progress_line.h"
+#include "check/progress_line.h"
 #include "raycam/parallel.h"
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/speed_families.h"
 #include "raycam/standard_scenes.h"
 #include "raycam/view_setup.h"
-#include "view.h"
-#include "view_options.h"
+#include "session/view.h"
+#include "flags/view_options.h"
 #ifdef RAYCAM_HAVE_EMBREE
-#include "embree_caster.h"
+#include "bench/embree_caster.h"
 #endif
 
 namespace raycam::bench {

@@ -1,4 +1,4 @@
-#include "embree_caster.h"
+#include "bench/embree_caster.h"
 
 #include <embree3/rtcore.h>
 

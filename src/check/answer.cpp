@@ -1,4 +1,4 @@
-#include "answer.h"
+#include "check/answer.h"
 
 #include <algorithm>
 #include <cmath>

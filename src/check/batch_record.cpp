@@ -1,10 +1,10 @@
-#include "batch_record.h"
+#include "check/batch_record.h"
 
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "escaped_text.h"
+#include "check/escaped_text.h"
 
 namespace raycam::check {
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "battery.h"
-#include "shards.h"
+#include "check/battery.h"
+#include "check/shards.h"
 
 namespace raycam::check {
 

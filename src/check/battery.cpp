@@ -1,6 +1,6 @@
 // Section index: jitter · camera frames · the designed 2D cases · the designed 3D cases · random cases ·
 // the battery (draw until each case reveals its mistakes).
-#include "battery.h"
+#include "check/battery.h"
 
 #include <cmath>
 #include <functional>
@@ -9,7 +9,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "case_image.h"
+#include "check/case_image.h"
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 #include "raycam/view_setup.h"

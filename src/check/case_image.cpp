@@ -1,4 +1,4 @@
-#include "case_image.h"
+#include "check/case_image.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>

@@ -1,9 +1,9 @@
-#include "case_verdict.h"
+#include "check/case_verdict.h"
 
 #include <algorithm>
 #include <optional>
 
-#include "check_run.h"
+#include "check/check_run.h"
 #include "raycam/scene_file.h"
 
 namespace raycam::check {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "battery.h"
-#include "grading.h"
+#include "check/battery.h"
+#include "check/grading.h"
 
 namespace raycam::check {
 

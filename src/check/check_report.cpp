@@ -1,6 +1,6 @@
 // Section index: terminal text · JSON report · CSV · difference images.
 #include "raycam/image_files.h"
-#include "check_report.h"
+#include "check/check_report.h"
 
 #include <unistd.h>
 
@@ -12,8 +12,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "check_texts.h"
-#include "escaped_text.h"
+#include "check/check_texts.h"
+#include "check/escaped_text.h"
 #include "raycam/colour_map.h"
 #include "raycam/language.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "check_run.h"
+#include "check/check_run.h"
 
 namespace raycam::check {
 

@@ -1,4 +1,4 @@
-#include "check_run.h"
+#include "check/check_run.h"
 
 #include <atomic>
 #include <cstdio>

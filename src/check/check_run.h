@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "battery.h"
-#include "case_image.h"
-#include "grading.h"
-#include "student_process.h"
+#include "check/battery.h"
+#include "check/case_image.h"
+#include "check/grading.h"
+#include "check/student_process.h"
 
 namespace raycam::check {
 

@@ -1,4 +1,4 @@
-#include "check_texts.h"
+#include "check/check_texts.h"
 
 #include <cstdarg>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "csv_merge.h"
+#include "check/csv_merge.h"
 
 #include <fstream>
 #include <map>
@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "check_report.h"
-#include "escaped_text.h"
+#include "check/check_report.h"
+#include "check/escaped_text.h"
 
 namespace raycam::check {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "batch_record.h"
+#include "check/batch_record.h"
 
 namespace raycam::check {
 

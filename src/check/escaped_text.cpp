@@ -1,4 +1,4 @@
-#include "escaped_text.h"
+#include "check/escaped_text.h"
 
 #include <cstdio>
 

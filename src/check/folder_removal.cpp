@@ -1,4 +1,4 @@
-#include "folder_removal.h"
+#include "check/folder_removal.h"
 
 #include <sys/stat.h>
 

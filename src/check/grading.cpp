@@ -1,4 +1,4 @@
-#include "grading.h"
+#include "check/grading.h"
 
 #include <algorithm>
 #include <cmath>

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "answer.h"
-#include "battery.h"
-#include "case_image.h"
+#include "check/answer.h"
+#include "check/battery.h"
+#include "check/case_image.h"
 #include "raycam/classic_mistakes.h"
 
 namespace raycam::check {

@@ -1,9 +1,9 @@
-#include "lms_grades.h"
+#include "check/lms_grades.h"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 
 namespace raycam::check {
 

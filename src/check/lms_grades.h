@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "check_report.h"
+#include "check/check_report.h"
 
 namespace raycam::check {
 

@@ -1,4 +1,4 @@
-#include "process_calls.h"
+#include "check/process_calls.h"
 
 #include <sys/wait.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "progress_line.h"
+#include "check/progress_line.h"
 
 #include <sys/ioctl.h>
 #include <unistd.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 
 namespace raycam::check {
 

@@ -1,4 +1,4 @@
-#include "run_facts.h"
+#include "check/run_facts.h"
 
 #include <signal.h>
 #include <sys/wait.h>

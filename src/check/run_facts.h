@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "student_process.h"
+#include "check/student_process.h"
 
 namespace raycam::check {
 

@@ -1,5 +1,5 @@
 // Section index: files of a group · where groups can be made (v2, then v1) · one run's group.
-#include "run_group.h"
+#include "check/run_group.h"
 
 #include <fcntl.h>
 #include <signal.h>

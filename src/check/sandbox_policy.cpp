@@ -1,8 +1,8 @@
-#include "sandbox_policy.h"
+#include "check/sandbox_policy.h"
 
 #include <filesystem>
 
-#include "shown_folders.h"
+#include "check/shown_folders.h"
 
 namespace raycam::check {
 

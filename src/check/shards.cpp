@@ -1,4 +1,4 @@
-#include "shards.h"
+#include "check/shards.h"
 
 #include <cstdio>
 #include <stdexcept>

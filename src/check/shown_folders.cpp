@@ -1,4 +1,4 @@
-#include "shown_folders.h"
+#include "check/shown_folders.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -1,8 +1,8 @@
 // Section index: splitting a command · finding programs · the child (after fork: async-signal-safe calls
 // only) · the parent's poll loop · the sandbox.
-#include "student_process.h"
+#include "check/student_process.h"
 
-#include "process_calls.h"
+#include "check/process_calls.h"
 
 #include <fcntl.h>
 #if __has_include(<linux/keyctl.h>)
@@ -31,12 +31,12 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "folder_removal.h"
-#include "run_facts.h"
-#include "run_group.h"
-#include "sandbox_policy.h"
-#include "shown_folders.h"
-#include "syscall_filter.h"
+#include "check/folder_removal.h"
+#include "check/run_facts.h"
+#include "check/run_group.h"
+#include "check/sandbox_policy.h"
+#include "check/shown_folders.h"
+#include "check/syscall_filter.h"
 
 namespace raycam::check {
 

@@ -1,4 +1,4 @@
-#include "syscall_filter.h"
+#include "check/syscall_filter.h"
 
 #include <sched.h>
 #include <seccomp.h>

@@ -1,9 +1,9 @@
 // `raycam-cli bench accuracy|speed`: the two benchmarks behind one command.
 #include <cstdio>
 
-#include "commands.h"
+#include "cli/commands.h"
 #ifdef RAYCAM_HAVE_BENCH
-#include "bench_commands.h"
+#include "bench/bench_commands.h"
 #endif
 
 namespace raycam::cli {

@@ -15,18 +15,18 @@
 #include <pthread.h>
 #include <thread>
 
-#include "batch_record.h"
-#include "check_report.h"
-#include "check_texts.h"
-#include "lms_grades.h"
-#include "escaped_text.h"
-#include "run_group.h"
-#include "shown_folders.h"
-#include "commands.h"
-#include "flag_values.h"
+#include "check/batch_record.h"
+#include "check/check_report.h"
+#include "check/check_texts.h"
+#include "check/lms_grades.h"
+#include "check/escaped_text.h"
+#include "check/run_group.h"
+#include "check/shown_folders.h"
+#include "cli/commands.h"
+#include "flags/flag_values.h"
 #include "raycam/parallel.h"
 #include "raycam/scene_file.h"
-#include "view_options.h"
+#include "flags/view_options.h"
 
 namespace raycam::cli {
 

@@ -5,12 +5,12 @@
 #include <optional>
 #include <stdexcept>
 
-#include "batch_record.h"
-#include "check_report.h"
-#include "check_texts.h"
-#include "commands.h"
-#include "csv_merge.h"
-#include "flag_values.h"
+#include "check/batch_record.h"
+#include "check/check_report.h"
+#include "check/check_texts.h"
+#include "cli/commands.h"
+#include "check/csv_merge.h"
+#include "flags/flag_values.h"
 
 namespace raycam::cli {
 

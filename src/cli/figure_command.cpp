@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "commands.h"
-#include "figure_files.h"
-#include "flag_values.h"
+#include "cli/commands.h"
+#include "figure/figure_files.h"
+#include "flags/flag_values.h"
 #include "raycam/demo_names.h"
-#include "view_options.h"
+#include "flags/view_options.h"
 
 namespace raycam::cli {
 

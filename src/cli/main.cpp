@@ -1,8 +1,8 @@
 // raycam-cli: the headless front end (no display needed). One CLI11 app, one subcommand per job.
 #include <CLI/CLI.hpp>
 
-#include "commands.h"
-#include "flag_values.h"
+#include "cli/commands.h"
+#include "flags/flag_values.h"
 
 int main(int argc, char** argv) {
   CLI::App cli("raycam-cli: the raycam camera chapter without a display (render, figure, check, shot, record, bench)", "raycam-cli");

@@ -15,14 +15,14 @@
 #include <string>
 #include <thread>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "commands.h"
-#include "flag_values.h"
-#include "headless_renderer.h"
-#include "overhead_view.h"
-#include "path_flags.h"
-#include "video_writer.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "cli/commands.h"
+#include "flags/flag_values.h"
+#include "headless/headless_renderer.h"
+#include "ui/overhead_view.h"
+#include "flags/app/path_flags.h"
+#include "video/video_writer.h"
 
 namespace raycam::cli {
 

@@ -4,13 +4,13 @@
 #include <stdexcept>
 
 #include "raycam/image_files.h"
-#include "commands.h"
-#include "flag_values.h"
+#include "cli/commands.h"
+#include "flags/flag_values.h"
 #include "raycam/accuracy_options.h"
 #include "raycam/ray_caster.h"
 #include "raycam/view_setup.h"
-#include "view.h"
-#include "view_options.h"
+#include "session/view.h"
+#include "flags/view_options.h"
 
 namespace raycam::cli {
 

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "commands.h"
-#include "flag_values.h"
-#include "headless_renderer.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "cli/commands.h"
+#include "flags/flag_values.h"
+#include "headless/headless_renderer.h"
 #include "raycam/process_memory.h"
 
 namespace raycam::cli {

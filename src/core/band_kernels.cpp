@@ -1,10 +1,10 @@
-#include "band_kernels.h"
+#include "core/band_kernels.h"
 
 #include <cassert>
 
-#include "primary_ray.h"
+#include "core/primary_ray.h"
 #include "raycam/classic_mistakes.h"
-#include "vector_loops.h"
+#include "core/vector_loops.h"
 
 namespace raycam::detail {
 

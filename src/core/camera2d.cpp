@@ -8,10 +8,10 @@
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
-#include "primary_ray.h"
+#include "core/primary_ray.h"
 #include "raycam/limits.h"
 #include "raycam/transform.h"
-#include "validation.h"
+#include "core/validation.h"
 
 namespace raycam {
 

@@ -25,11 +25,11 @@
 //   no difference loses more than six bits) and the numbers' size below 2⁴⁰ (no overflow); otherwise, or on
 //   a NaN, the sphere is kept. Only for the stable formula and d_f ≥ 10⁻² (Footprint::culls_clusters): the
 //   naive formula's slack grows without bound as a radius shrinks.
-#include "screen_footprint.h"
+#include "core/screen_footprint.h"
 
 #include <cmath>
 
-#include "vector_loops.h"
+#include "core/vector_loops.h"
 
 namespace raycam::detail {
 

@@ -1,4 +1,4 @@
-#include "footprint_caster.h"
+#include "core/footprint_caster.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -6,11 +6,11 @@
 #include <iterator>
 #include <limits>
 
-#include "band_kernels.h"
+#include "core/band_kernels.h"
 #include "raycam/limits.h"
 #include "raycam/parallel.h"
-#include "screen_footprint.h"
-#include "vector_loops.h"
+#include "core/screen_footprint.h"
+#include "core/vector_loops.h"
 
 namespace raycam::detail {
 

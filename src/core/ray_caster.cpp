@@ -4,7 +4,7 @@
 #include <utility>
 #include <variant>
 
-#include "footprint_caster.h"
+#include "core/footprint_caster.h"
 
 namespace raycam {
 

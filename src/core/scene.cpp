@@ -5,7 +5,7 @@
 
 #include "demo_scenes.inc"  // generated: raycam::generated::demo_scene_2d/3d
 #include "raycam/limits.h"
-#include "validation.h"
+#include "core/validation.h"
 
 namespace raycam {
 

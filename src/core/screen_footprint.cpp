@@ -1,6 +1,6 @@
-#include "screen_footprint.h"
+#include "core/screen_footprint.h"
 
-#include "vector_loops.h"
+#include "core/vector_loops.h"
 
 #include <algorithm>
 #include <cmath>

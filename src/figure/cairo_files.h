@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "figure_files.h"
+#include "figure/figure_files.h"
 
 namespace raycam::figure {
 

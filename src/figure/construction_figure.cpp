@@ -1,4 +1,4 @@
-#include "construction_figure.h"
+#include "figure/construction_figure.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "math_text.h"
+#include "figure/math_text.h"
 #include "raycam/intersect.h"
 #include "raycam/transform.h"
 

@@ -1,4 +1,4 @@
-#include "figure_files.h"
+#include "figure/figure_files.h"
 
 #include <algorithm>
 #include <cairo-pdf.h>
@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "cairo_files.h"
+#include "figure/cairo_files.h"
 
 namespace raycam::figure {
 

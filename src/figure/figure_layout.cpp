@@ -1,4 +1,4 @@
-#include "figure_layout.h"
+#include "figure/figure_layout.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <limits>
 #include <memory>
 
-#include "text_metrics.h"
+#include "figure/text_metrics.h"
 
 namespace raycam::figure {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "construction_figure.h"
-#include "math_text.h"
+#include "figure/construction_figure.h"
+#include "figure/math_text.h"
 
 namespace raycam::figure {
 

@@ -7,9 +7,9 @@
 #include <stdexcept>
 #include <unistd.h>
 
-#include "cairo_files.h"
-#include "figure_files.h"
-#include "tikz_file.h"
+#include "figure/cairo_files.h"
+#include "figure/figure_files.h"
+#include "figure/tikz_file.h"
 
 namespace raycam::figure {
 

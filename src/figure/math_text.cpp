@@ -1,4 +1,4 @@
-#include "math_text.h"
+#include "figure/math_text.h"
 
 #include <algorithm>
 #include <cstring>

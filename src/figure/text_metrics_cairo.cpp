@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "figure_layout.h"
-#include "text_metrics.h"
+#include "figure/figure_layout.h"
+#include "figure/text_metrics.h"
 
 namespace raycam::figure {
 

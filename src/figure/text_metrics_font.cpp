@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "text_metrics.h"
+#include "figure/text_metrics.h"
 
 namespace raycam::figure {
 

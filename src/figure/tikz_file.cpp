@@ -1,4 +1,4 @@
-#include "tikz_file.h"
+#include "figure/tikz_file.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "construction_figure.h"
-#include "figure_layout.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_layout.h"
 
 namespace raycam::figure {
 

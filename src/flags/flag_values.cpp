@@ -1,4 +1,4 @@
-#include "flag_values.h"
+#include "flags/flag_values.h"
 
 #include <algorithm>
 #include <cerrno>

@@ -1,11 +1,11 @@
-#include "view_options.h"
+#include "flags/view_options.h"
 
 #include <cstddef>
 #include <iterator>
 #include <string>
 #include <vector>
 
-#include "flag_values.h"
+#include "flags/flag_values.h"
 #include "raycam/limits.h"
 
 namespace raycam::flags {

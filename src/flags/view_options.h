@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "flag_values.h"
+#include "flags/flag_values.h"
 #include "raycam/accuracy_options.h"
 #include "raycam/ray_caster.h"
 #include "raycam/view_setup.h"

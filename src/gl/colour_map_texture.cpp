@@ -1,4 +1,4 @@
-#include "colour_map_texture.h"
+#include "gl/colour_map_texture.h"
 
 namespace raycam::gl {
 

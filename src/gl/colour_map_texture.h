@@ -2,7 +2,7 @@
 // Texel row 0 is the map's row 0 (the top): show it with uv (0,0) at the top-left.
 #pragma once
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "raycam/colour_map.h"
 
 namespace raycam::gl {

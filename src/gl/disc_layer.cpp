@@ -1,4 +1,4 @@
-#include "disc_layer.h"
+#include "gl/disc_layer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 #include <glm/vec2.hpp>
 #include <vector>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "raycam/scene.h"
 
 namespace raycam::gl {

@@ -1,9 +1,9 @@
-#include "framebuffer_image.h"
+#include "gl/framebuffer_image.h"
 
 #include <cstring>
 #include <stdexcept>
 
-#include "gl.h"
+#include "gl/gl.h"
 
 namespace raycam::gl {
 

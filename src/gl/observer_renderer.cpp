@@ -1,4 +1,4 @@
-#include "observer_renderer.h"
+#include "gl/observer_renderer.h"
 
 #include <algorithm>
 #include <cmath>

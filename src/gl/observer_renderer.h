@@ -10,10 +10,10 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
-#include "gl.h"
+#include "gl/gl.h"
 #include "raycam/scene.h"
-#include "shader_program.h"
-#include "sphere_layer.h"
+#include "gl/shader_program.h"
+#include "gl/sphere_layer.h"
 
 namespace raycam::gl {
 

@@ -1,5 +1,5 @@
 // PNG output of an RgbaImage; kept apart from the GL readback so that image tools need no GL library.
-#include "framebuffer_image.h"
+#include "gl/framebuffer_image.h"
 #include "raycam/image_files.h"
 
 namespace raycam::gl {

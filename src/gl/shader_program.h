@@ -6,7 +6,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "gl.h"
+#include "gl/gl.h"
 
 namespace raycam::gl {
 

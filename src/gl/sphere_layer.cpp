@@ -1,4 +1,4 @@
-#include "sphere_layer.h"
+#include "gl/sphere_layer.h"
 
 #include <algorithm>
 #include <cmath>

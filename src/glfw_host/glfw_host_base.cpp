@@ -1,4 +1,4 @@
-#include "glfw_host_base.h"
+#include "glfw_host/glfw_host_base.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -7,10 +7,10 @@
 
 #include <algorithm>
 
-#include "gl.h"
-#include "renderer_backend.h"
+#include "gl/gl.h"
+#include "ui/renderer_backend.h"
 
-namespace raycam::app {
+namespace raycam::glfw_host {
 
 GlfwHostBase& host_of(GLFWwindow* window) { return *static_cast<GlfwHostBase*>(glfwGetWindowUserPointer(window)); }
 
@@ -133,4 +133,4 @@ void GlfwHostBase::apply_title() {
   applied_title_ = state_.window_title;
 }
 
-}  // namespace raycam::app
+}  // namespace raycam::glfw_host

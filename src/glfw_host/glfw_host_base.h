@@ -6,12 +6,12 @@
 // A host overrides only its loop (how it waits for the next frame) and its routes for files and keys.
 #pragma once
 
-#include "frame_host.h"
-#include "key_queue.h"
+#include "ui/frame_host.h"
+#include "ui/key_queue.h"
 
 struct GLFWwindow;
 
-namespace raycam::app {
+namespace raycam::glfw_host {
 
 class GlfwHostBase : public ui::FrameHost {
  public:
@@ -77,4 +77,4 @@ class GlfwHostBase : public ui::FrameHost {
 // The host a GLFW callback belongs to (the window's user pointer).
 GlfwHostBase& host_of(GLFWwindow* window);
 
-}  // namespace raycam::app
+}  // namespace raycam::glfw_host

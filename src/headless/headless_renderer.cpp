@@ -1,4 +1,4 @@
-#include "headless_renderer.h"
+#include "headless/headless_renderer.h"
 
 #include <GL/osmesa.h>  // the only file that includes OSMesa
 #include <imgui.h>
@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "gl.h"
-#include "renderer_backend.h"
+#include "gl/gl.h"
+#include "ui/renderer_backend.h"
 
 namespace raycam::headless {
 

@@ -5,10 +5,10 @@
 
 #include <memory>
 
-#include "app_state.h"
-#include "frame.h"
-#include "frame_host.h"
-#include "framebuffer_image.h"
+#include "session/app_state.h"
+#include "ui/frame.h"
+#include "ui/frame_host.h"
+#include "gl/framebuffer_image.h"
 
 namespace raycam::headless {
 

@@ -27,15 +27,16 @@ std::size_t conversion_end(std::string_view text, std::size_t at) {
   return end < text.size() ? end + 1 : end;
 }
 
-std::string printed(const std::string& spec, ...) {
+// (The spec is a const char*: va_start on a reference parameter is undefined.)
+std::string printed(const char* spec, ...) {
   va_list args;
   va_start(args, spec);
   va_list copy;
   va_copy(copy, args);
-  const int size = std::vsnprintf(nullptr, 0, spec.c_str(), copy);
+  const int size = std::vsnprintf(nullptr, 0, spec, copy);
   va_end(copy);
   std::string text(size > 0 ? std::size_t(size) : 0, '\0');
-  if (size > 0) std::vsnprintf(text.data(), text.size() + 1, spec.c_str(), args);
+  if (size > 0) std::vsnprintf(text.data(), text.size() + 1, spec, args);
   va_end(args);
   return text;
 }
@@ -75,7 +76,7 @@ std::string one_conversion(Language language, const std::string& asked, Argument
       const long long value = ll ? va_arg(args.list, long long) : l ? va_arg(args.list, long)
                               : z ? (long long)va_arg(args.list, std::ptrdiff_t) : va_arg(args.list, int);
       if (count) *count = value;
-      return printed(as_long_long(spec), value);
+      return printed(as_long_long(spec).c_str(), value);
     }
     case 'u': case 'x': case 'X': case 'o': {
       const unsigned long long value = ll ? va_arg(args.list, unsigned long long)
@@ -83,14 +84,14 @@ std::string one_conversion(Language language, const std::string& asked, Argument
                                        : z ? (unsigned long long)va_arg(args.list, std::size_t)
                                            : va_arg(args.list, unsigned);
       if (count) *count = (long long)value;
-      return printed(as_long_long(spec), value);
+      return printed(as_long_long(spec).c_str(), value);
     }
-    case 'c': return printed(spec, va_arg(args.list, int));
-    case 's': return printed(spec, va_arg(args.list, const char*));
-    case 'p': return printed(spec, va_arg(args.list, void*));
+    case 'c': return printed(spec.c_str(), va_arg(args.list, int));
+    case 's': return printed(spec.c_str(), va_arg(args.list, const char*));
+    case 'p': return printed(spec.c_str(), va_arg(args.list, void*));
     case 'f': case 'F': case 'e': case 'E': case 'g': case 'G': case 'a': case 'A': {
-      std::string text = spec.find('L') != std::string::npos ? printed(spec, va_arg(args.list, long double))
-                                                             : printed(spec, va_arg(args.list, double));
+      std::string text = spec.find('L') != std::string::npos ? printed(spec.c_str(), va_arg(args.list, long double))
+                                                             : printed(spec.c_str(), va_arg(args.list, double));
       if (language == Language::fr)
         for (char& c : text)
           if (c == '.') c = ',';

@@ -14,7 +14,7 @@
 #include <type_traits>
 
 #include "raycam/limits.h"
-#include "scene_file_parts.h"
+#include "io/scene_file_parts.h"
 
 namespace raycam {
 

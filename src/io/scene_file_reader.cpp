@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "raycam/limits.h"
-#include "scene_file_parts.h"
+#include "io/scene_file_parts.h"
 
 namespace raycam {
 

@@ -1,9 +1,9 @@
-#include "app_options.h"
+#include "session/app_options.h"
 
 #include <cstdio>
 #include <stdexcept>
 
-#include "text.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

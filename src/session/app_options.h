@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 #include "raycam/accuracy_options.h"
 #include "raycam/view_setup.h"
 

@@ -1,4 +1,4 @@
-#include "app_state.h"
+#include "session/app_state.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,8 +11,8 @@
 #include <string>
 
 #include "raycam/view_setup.h"
-#include "shown_files.h"
-#include "text.h"
+#include "session/shown_files.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

@@ -16,10 +16,10 @@
 #include "raycam/ray_caster.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
-#include "host_capabilities.h"
-#include "host_requests.h"
-#include "text.h"
-#include "view.h"
+#include "session/host_capabilities.h"
+#include "session/host_requests.h"
+#include "session/text.h"
+#include "session/view.h"
 
 namespace raycam::session {
 

@@ -1,5 +1,5 @@
 // Section index: the worker · CameraCheck (debounce) · what the panel reads.
-#include "camera_check.h"
+#include "session/camera_check.h"
 
 #include <sys/stat.h>
 
@@ -11,10 +11,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 #include "raycam/view_setup.h"
-#include "student_process.h"
-#include "text.h"
+#include "check/student_process.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app_state.h"
-#include "case_verdict.h"
+#include "session/app_state.h"
+#include "check/case_verdict.h"
 
 namespace raycam::session {
 

@@ -1,4 +1,4 @@
-#include "camera_path.h"
+#include "session/camera_path.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "camera_ranges.h"
+#include "session/camera_ranges.h"
 
 namespace raycam::session {
 

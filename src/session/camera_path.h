@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 
 namespace raycam::session {
 

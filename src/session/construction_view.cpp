@@ -1,4 +1,4 @@
-#include "construction_view.h"
+#include "session/construction_view.h"
 
 #include <cmath>
 #include <vector>
@@ -7,7 +7,7 @@
 
 #include "raycam/camera3d.h"
 #include "raycam/transform.h"
-#include "text.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

@@ -12,7 +12,7 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
 

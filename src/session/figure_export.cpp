@@ -1,11 +1,11 @@
-#include "figure_export.h"
+#include "session/figure_export.h"
 
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
-#include "figure_files.h"
-#include "text.h"
+#include "figure/figure_files.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

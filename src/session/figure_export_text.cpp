@@ -2,8 +2,8 @@
 // (src/web/figure_export_web.cpp) but shows the same panel.
 #include <filesystem>
 
-#include "figure_export.h"
-#include "text.h"
+#include "session/figure_export.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

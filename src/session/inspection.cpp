@@ -1,4 +1,4 @@
-#include "inspection.h"
+#include "session/inspection.h"
 
 #include <algorithm>
 

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 
 namespace raycam::session {
 

@@ -1,4 +1,4 @@
-#include "mistake_lessons.h"
+#include "session/mistake_lessons.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <glm/trigonometric.hpp>
 #include <stdexcept>
 
-#include "text.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 #include "raycam/classic_mistakes.h"
 
 namespace raycam::session {

@@ -1,4 +1,4 @@
-#include "observer_view.h"
+#include "session/observer_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <vector>
 
-#include "camera_ranges.h"
-#include "construction_view.h"
+#include "session/camera_ranges.h"
+#include "session/construction_view.h"
 
 namespace raycam::session {
 

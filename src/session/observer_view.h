@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-#include "app_state.h"
+#include "session/app_state.h"
 
 namespace raycam::session {
 

@@ -1,4 +1,4 @@
-#include "shown_files.h"
+#include "session/shown_files.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "raycam/zip_archive.h"
-#include "text.h"
+#include "session/text.h"
 
 namespace raycam::session {
 
@@ -28,7 +28,7 @@ std::string with_file_shown(const HostCapabilities& host, std::string text, cons
 }
 
 std::string written_message(const HostCapabilities& host, Language language, const std::string& path) {
-  return ui::trf(language, host.files_are_downloads ? "asked the browser to save %s" : "wrote %s",
+  return trf(language, host.files_are_downloads ? "asked the browser to save %s" : "wrote %s",
                  shown_file_name(host, path).c_str());
 }
 
@@ -68,7 +68,7 @@ std::string export_base(const Lesson& state) {
 }  // namespace
 
 std::string default_export_name(const Lesson& state, ExportKind kind) {
-  return export_base(state) + (kind == ExportKind::colour_map ? ui::tr(state.language, "-colour-map.png") : "-figure.svg");
+  return export_base(state) + (kind == ExportKind::colour_map ? tr(state.language, "-colour-map.png") : "-figure.svg");
 }
 
 std::string next_recording_path(const Lesson& state, const std::string& directory) {
@@ -76,7 +76,7 @@ std::string next_recording_path(const Lesson& state, const std::string& director
     char number[16];
     std::snprintf(number, sizeof number, "-%03d.mp4", i);
     const std::filesystem::path path =
-        std::filesystem::path(directory) / (export_base(state) + ui::tr(state.language, "-recording") + number);
+        std::filesystem::path(directory) / (export_base(state) + tr(state.language, "-recording") + number);
     if (!std::filesystem::exists(path) || i >= 99999) return path.lexically_normal().string();
   }
 }

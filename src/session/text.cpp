@@ -1,8 +1,8 @@
-#include "text.h"
+#include "session/text.h"
 
 #include <cstdarg>
 
-namespace raycam::ui {
+namespace raycam::session {
 
 const std::vector<Translation>& translation_table();  // text_table.cpp
 
@@ -37,4 +37,4 @@ std::string tr_reason(Language language, const std::string& english) {
   return language == Language::fr ? with_no_break_spaces(shown) : shown;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

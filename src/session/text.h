@@ -18,15 +18,9 @@
 
 #include "raycam/language.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
-// The language machinery is raycam/language.h's (shared with the check command); its names, here too.
-using raycam::Language;
-using raycam::language_code;
-using raycam::language_from_code;
-using raycam::language_from_environment;
-using raycam::parse_language_flag;
-using raycam::Translation;
+// (Language, Translation and the language helpers are raycam/language.h's, shared with the check command.)
 
 // The text in `language` (the window's: AppState::language, passed; there is no language global). `english`
 // must be a key of the table (the test enforces it); a missing key is shown as it is, in English.
@@ -53,12 +47,4 @@ std::string tr_reason(Language language, const std::string& english);
 // The whole table (for the tests and for the font's glyph ranges).
 const std::vector<Translation>& translations();
 
-}  // namespace raycam::ui
-
-namespace raycam::session {
-// The session's own code shows its texts through the same lookup.
-using ui::tr;
-using ui::tr_later;
-using ui::tr_reason;
-using ui::trf;
 }  // namespace raycam::session

@@ -3,9 +3,9 @@
 // couleurs, barre de couleurs, rayons primaires, homothétie, M_d = T·R·H. Keep printf conversions and any
 // "###id" identical in both columns (tests/session/test_text.cpp checks). Group entries by the file that shows
 // them, so that branches adding strings rarely touch the same lines.
-#include "text.h"
+#include "session/text.h"
 
-namespace raycam::ui {
+namespace raycam::session {
 
 const std::vector<Translation>& translation_table() {
   static const std::vector<Translation> table = {
@@ -472,4 +472,4 @@ const std::vector<Translation>& translation_table() {
   return table;
 }
 
-}  // namespace raycam::ui
+}  // namespace raycam::session

@@ -1,7 +1,7 @@
-#include "view.h"
+#include "session/view.h"
 
 #include "raycam/demo_names.h"
-#include "text.h"
+#include "session/text.h"
 
 namespace raycam::session {
 

@@ -1,5 +1,5 @@
 // Section index: the panel section · the overlay.
-#include "check_panel.h"
+#include "ui/check_panel.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -8,11 +8,11 @@
 #include <imgui_internal.h>  // ImGui::ScrollToItem
 #include <imgui_stdlib.h>
 
-#include "check_texts.h"
-#include "panels.h"
-#include "shown_files.h"
-#include "text.h"
-#include "theme.h"
+#include "check/check_texts.h"
+#include "ui/panels.h"
+#include "session/shown_files.h"
+#include "ui/words.h"
+#include "ui/theme.h"
 
 namespace raycam::ui {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "camera_check.h"
+#include "session/camera_check.h"
 
 struct ImDrawList;
 

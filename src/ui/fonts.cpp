@@ -1,4 +1,4 @@
-#include "fonts.h"
+#include "ui/fonts.h"
 
 #include <imgui.h>
 
@@ -9,11 +9,11 @@
 #include <fontconfig/fontconfig.h>
 #endif
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 #include "raycam/classic_mistakes.h"
 #include "raycam/demo_names.h"
-#include "renderer_backend.h"
-#include "text.h"
+#include "ui/renderer_backend.h"
+#include "ui/words.h"
 
 namespace raycam::ui {
 

@@ -5,7 +5,7 @@
 //   2. the panel's controls (camera, mistakes, caster, files, lecture) change the state;
 //   3. the cast (only if something changed);
 //   4. everything derived is drawn from that state: the M_d tables, the ray inspector, the image and views.
-#include "frame.h"
+#include "ui/frame.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>  // ImGui::FindWindowByName, the hovered window
@@ -19,18 +19,18 @@
 #include <string>
 #include <vector>
 
-#include "camera_ranges.h"
-#include "construction_view.h"
-#include "fonts.h"
-#include "image_header.h"
-#include "inspection.h"
-#include "mistake_lessons.h"
-#include "observer_renderer.h"
-#include "observer_view.h"
-#include "panels.h"
+#include "session/camera_ranges.h"
+#include "session/construction_view.h"
+#include "ui/fonts.h"
+#include "ui/image_header.h"
+#include "session/inspection.h"
+#include "session/mistake_lessons.h"
+#include "gl/observer_renderer.h"
+#include "session/observer_view.h"
+#include "ui/panels.h"
 #include "raycam/transform.h"
-#include "text.h"
-#include "theme.h"
+#include "ui/words.h"
+#include "ui/theme.h"
 
 namespace raycam::ui {
 

@@ -9,12 +9,12 @@
 #include <glm/mat4x4.hpp>
 #include <memory>
 
-#include "app_state.h"
-#include "check_panel.h"
-#include "colour_map_texture.h"
-#include "observer_view.h"
-#include "overhead_view.h"
-#include "panel_state.h"
+#include "session/app_state.h"
+#include "ui/check_panel.h"
+#include "gl/colour_map_texture.h"
+#include "session/observer_view.h"
+#include "ui/overhead_view.h"
+#include "ui/panel_state.h"
 
 namespace raycam::gl {
 class ObserverRenderer;

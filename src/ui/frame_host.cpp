@@ -1,4 +1,4 @@
-#include "frame_host.h"
+#include "ui/frame_host.h"
 
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
@@ -7,10 +7,10 @@
 #include <cmath>
 #include <exception>
 
-#include "gl.h"
-#include "shown_files.h"
-#include "text.h"
-#include "theme.h"
+#include "gl/gl.h"
+#include "session/shown_files.h"
+#include "ui/words.h"
+#include "ui/theme.h"
 
 namespace raycam::ui {
 

@@ -8,9 +8,9 @@
 
 #include <string>
 
-#include "app_state.h"
-#include "frame.h"
-#include "framebuffer_image.h"
+#include "session/app_state.h"
+#include "ui/frame.h"
+#include "gl/framebuffer_image.h"
 
 namespace raycam::ui {
 

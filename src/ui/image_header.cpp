@@ -1,4 +1,4 @@
-#include "image_header.h"
+#include "ui/image_header.h"
 
 #include <imgui.h>
 

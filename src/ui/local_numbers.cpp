@@ -1,4 +1,4 @@
-#include "local_numbers.h"
+#include "ui/local_numbers.h"
 
 #include <imgui_internal.h>  // TempInputIsActive, RenderTextClipped
 

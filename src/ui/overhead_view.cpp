@@ -1,5 +1,5 @@
 // Section index: fitting · primary-ray fan · drawing (2D, 3D) · picking.
-#include "overhead_view.h"
+#include "ui/overhead_view.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -12,9 +12,9 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "construction_view.h"
+#include "session/construction_view.h"
 #include "raycam/transform.h"
-#include "text.h"
+#include "ui/words.h"
 
 namespace raycam::ui {
 

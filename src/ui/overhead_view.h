@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
-#include "app_state.h"
-#include "disc_layer.h"
-#include "inspection.h"
-#include "panel_state.h"
+#include "session/app_state.h"
+#include "gl/disc_layer.h"
+#include "session/inspection.h"
+#include "ui/panel_state.h"
 
 namespace raycam::ui {
 

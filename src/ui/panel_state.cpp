@@ -1,11 +1,11 @@
-#include "panel_state.h"
+#include "ui/panel_state.h"
 
 #include <filesystem>
 #include <system_error>
 
 #include "raycam/image_files.h"
-#include "shown_files.h"
-#include "text.h"
+#include "session/shown_files.h"
+#include "ui/words.h"
 
 namespace raycam::ui {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "app_options.h"
-#include "app_state.h"
-#include "figure_export.h"
+#include "session/app_options.h"
+#include "session/app_state.h"
+#include "session/figure_export.h"
 
 namespace raycam::ui {
 

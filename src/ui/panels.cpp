@@ -1,6 +1,6 @@
 // Section index: camera · construction of M_d · ray inspector · classic mistakes · files · lecture ·
 // status line · help · shortcuts. Every visible string goes through tr(state.language, )/trf(state.language, ) (text.h).
-#include "panels.h"
+#include "ui/panels.h"
 
 #include <imgui.h>
 #include <imgui_internal.h>  // ImGui::ClearActiveID: Tab leaves a text field
@@ -22,18 +22,18 @@
 #include <string>
 #include <vector>
 
-#include "camera_ranges.h"
-#include "construction_view.h"
-#include "figure_export.h"
-#include "image_header.h"  // ellipsized
-#include "shown_files.h"
-#include "inspection.h"
-#include "local_numbers.h"
-#include "mistake_lessons.h"
+#include "session/camera_ranges.h"
+#include "session/construction_view.h"
+#include "session/figure_export.h"
+#include "ui/image_header.h"  // ellipsized
+#include "session/shown_files.h"
+#include "session/inspection.h"
+#include "ui/local_numbers.h"
+#include "session/mistake_lessons.h"
 #include "raycam/image_files.h"
 #include "raycam/view_setup.h"
-#include "text.h"
-#include "theme.h"
+#include "ui/words.h"
+#include "ui/theme.h"
 
 namespace raycam::ui {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "app_state.h"
-#include "panel_state.h"
+#include "session/app_state.h"
+#include "ui/panel_state.h"
 
 namespace raycam::ui {
 

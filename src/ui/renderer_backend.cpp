@@ -1,4 +1,4 @@
-#include "renderer_backend.h"
+#include "ui/renderer_backend.h"
 
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>

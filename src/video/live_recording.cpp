@@ -1,4 +1,4 @@
-#include "live_recording.h"
+#include "video/live_recording.h"
 
 #include <algorithm>
 #include <cmath>

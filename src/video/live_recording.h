@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "video_writer.h"
+#include "video/video_writer.h"
 
 namespace raycam::video {
 

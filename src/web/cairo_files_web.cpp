@@ -2,7 +2,7 @@
 // alone (HostCapabilities::cairo_figures), so this answers only a call that should not happen.
 #include <stdexcept>
 
-#include "cairo_files.h"
+#include "figure/cairo_files.h"
 
 namespace raycam::figure {
 

@@ -1,4 +1,4 @@
-#include "downloads.h"
+#include "web/downloads.h"
 
 #include <emscripten.h>
 

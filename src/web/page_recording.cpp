@@ -1,11 +1,11 @@
-#include "page_recording.h"
+#include "web/page_recording.h"
 
 #include <emscripten.h>
 
 #include <string>
 
-#include "shown_files.h"
-#include "text.h"
+#include "session/shown_files.h"
+#include "session/text.h"
 
 namespace {
 double started_ms = 0.0;
@@ -58,21 +58,21 @@ void toggle_page_recording(session::AppState& state) {
     state.recording = false;
     const int seconds = int((emscripten_get_now() - started_ms) / 1000.0);
     session::set_message(state, session::MessageSource::files, false,
-                         ui::trf(state.language, "asked the browser to save %s (%d:%02d)", recording_name.c_str(),
+                         session::trf(state.language, "asked the browser to save %s (%d:%02d)", recording_name.c_str(),
                                  seconds / 60, seconds % 60));
     return;
   }
-  recording_name = session::named_after_scene(state, std::string(ui::tr(state.language, "-recording")) + ".webm");
+  recording_name = session::named_after_scene(state, std::string(session::tr(state.language, "-recording")) + ".webm");
   if (!raycam_start_canvas_recorder(recording_name.c_str())) {
     session::set_message(state, session::MessageSource::files, true,
-                         ui::tr(state.language, "this browser cannot record the page (no MediaRecorder)"));
+                         session::tr(state.language, "this browser cannot record the page (no MediaRecorder)"));
     return;
   }
   started_ms = emscripten_get_now();
   state.recording = true;
   state.recording_seconds = 0.0;
   session::set_message(state, session::MessageSource::files, false,
-                       ui::trf(state.language, "recording the window to %s (F9 stops)", recording_name.c_str()));
+                       session::trf(state.language, "recording the window to %s (F9 stops)", recording_name.c_str()));
 }
 
 void update_page_recording(session::AppState& state) {

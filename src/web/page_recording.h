@@ -3,7 +3,7 @@
 // records through FFmpeg instead (src/app/glfw_host.cpp); the panel and the keys are the same.
 #pragma once
 
-#include "app_state.h"
+#include "session/app_state.h"
 
 namespace raycam::web {
 

@@ -2,8 +2,8 @@
 // close_range nor wait4, and no libseccomp: stand-ins for src/check/process_calls.cpp and syscall_filter.cpp.
 #include <cerrno>
 
-#include "process_calls.h"
-#include "syscall_filter.h"
+#include "check/process_calls.h"
+#include "check/syscall_filter.h"
 
 namespace raycam::check {
 

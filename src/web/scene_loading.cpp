@@ -1,4 +1,4 @@
-#include "scene_loading.h"
+#include "web/scene_loading.h"
 
 #include <emscripten.h>
 
@@ -9,9 +9,9 @@
 
 #include "raycam/scene_file.h"
 #include "raycam/scene_file_reader.h"
-#include "shown_files.h"
-#include "text.h"
-#include "web_host.h"
+#include "session/shown_files.h"
+#include "session/text.h"
+#include "web/web_host.h"
 
 namespace raycam::web {
 
@@ -43,9 +43,9 @@ void show_parse_progress(session::AppState& state) {
   const SceneFileReader& reader = *loading.reader;
   const std::string text =
       reader.phase() == SceneFileReader::Phase::finding
-          ? ui::trf(state.language, "opening %s: finding the objects (%.1f of %.1f MB)", shown_name(state).c_str(),
+          ? session::trf(state.language, "opening %s: finding the objects (%.1f of %.1f MB)", shown_name(state).c_str(),
                     megabytes(double(reader.bytes_scanned())), megabytes(double(reader.bytes())))
-          : ui::trf(state.language, "opening %s: objects read %zu of %zu", shown_name(state).c_str(),
+          : session::trf(state.language, "opening %s: objects read %zu of %zu", shown_name(state).c_str(),
                     reader.objects_read(), reader.objects_found());
   session::set_message(state, session::MessageSource::files, false, text);
 }
@@ -91,7 +91,7 @@ void open_scene_in_steps(session::AppState& state, const std::string& path) {
   loading = Loading{Step::announce, path, emscripten_get_now(), nullptr};
   if (!error)
     session::set_message(state, session::MessageSource::files, false,
-                         ui::trf(state.language, "opening %s: reading the objects of %.1f MB, then packing them…",
+                         session::trf(state.language, "opening %s: reading the objects of %.1f MB, then packing them…",
                                  session::shown_file_name(state.host, path).c_str(),
                                  megabytes(double(bytes))));
   wake_page();
@@ -121,7 +121,7 @@ bool scene_loading_step(session::AppState& state) {
       } else {
         loading.step = Step::pack;
         session::set_message(state, session::MessageSource::files, false,
-                             ui::trf(state.language, "opening %s: packing %zu {{object|objects}}…", shown_name(state).c_str(),
+                             session::trf(state.language, "opening %s: packing %zu {{object|objects}}…", shown_name(state).c_str(),
                                      loading.reader->objects()));
       }
       return true;
@@ -140,7 +140,7 @@ bool scene_loading_step(session::AppState& state) {
     case Step::report:
       loading.step = Step::idle;
       session::set_message(state, session::MessageSource::files, false,
-                           ui::trf(state.language, "opened %s (%zu {{object|objects}}) in %.1f s", shown_name(state).c_str(),
+                           session::trf(state.language, "opened %s (%zu {{object|objects}}) in %.1f s", shown_name(state).c_str(),
                                    session::active_object_count(state),
                                    (emscripten_get_now() - loading.started_ms) / 1000.0));
       return true;
@@ -154,7 +154,7 @@ bool scene_loading_step(session::AppState& state) {
 extern "C" EMSCRIPTEN_KEEPALIVE void raycam_scene_read_progress(const char* name, double done, double total) {
   using namespace raycam;
   session::set_message(web::page_state(), session::MessageSource::files, false,
-                       ui::trf(web::page_state().language, "opening %s: read %.1f of %.1f MB", name, web::megabytes(done),
+                       session::trf(web::page_state().language, "opening %s: read %.1f of %.1f MB", name, web::megabytes(done),
                                web::megabytes(total)));
   web::wake_page();
 }

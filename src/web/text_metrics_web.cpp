@@ -1,6 +1,6 @@
 // The page's figures measure their text from the font files (no cairo in the page): the same numbers as
 // cairo's on 99 % of the figures' words (tests/figure/test_text_metrics.cpp).
-#include "text_metrics.h"
+#include "figure/text_metrics.h"
 
 namespace raycam::figure {
 

@@ -1,4 +1,4 @@
-#include "web_host.h"
+#include "web/web_host.h"
 
 #include <GLFW/glfw3.h>
 #include <emscripten.h>
@@ -11,14 +11,14 @@
 #include <cstdio>
 #include <string>
 
-#include "camera_check.h"
-#include "downloads.h"
+#include "session/camera_check.h"
+#include "web/downloads.h"
 #include "raycam/scene_file.h"
-#include "text.h"
-#include "gl.h"
-#include "page_recording.h"
-#include "renderer_backend.h"
-#include "scene_loading.h"
+#include "session/text.h"
+#include "gl/gl.h"
+#include "web/page_recording.h"
+#include "ui/renderer_backend.h"
+#include "web/scene_loading.h"
 
 namespace raycam::web {
 
@@ -133,8 +133,7 @@ void tick() {
   if (!page.host->wants_frame(*page.state, page.frame->panels())) return;  // asleep until an event
   page.state->in_fullscreen = page_in_fullscreen() != 0;  // the panel's button says Leave there
   const ui::FrameResult result = ui::run_frame(*page.host, *page.frame, *page.state);
-  if (!result.drawn) return;
-  page.host->frame_drawn();
+  if (!result.drawn) return;  // (a frame drawn gave ImGui the keys held since: WebHost::frame_drawn)
   last_layout = result.layout;
   // Check my camera in the page: its case out as a download, its answer file asked of the browser.
   session::CheckRequest& request = page.frame->check().request();
@@ -143,7 +142,7 @@ void tick() {
     try {
       save_scene_file(page.frame->check().case_for_download(*page.state), "raycam-case.json");
     } catch (const std::exception& error) {
-      session::set_message(*page.state, session::MessageSource::general, true, ui::tr_reason(page.state->language, error.what()));
+      session::set_message(*page.state, session::MessageSource::general, true, session::tr_reason(page.state->language, error.what()));
     }
   }
   if (page.state->requests.take(session::HostRequestKind::pick_scene_file)) {  // the status line's button
@@ -245,7 +244,7 @@ extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_resized(double pixel_ratio) {
 
 extern "C" EMSCRIPTEN_KEEPALIVE void raycam_page_fullscreen_refused() {
   raycam::session::set_message(*raycam::web::page.state, raycam::session::MessageSource::general, true,
-                               raycam::ui::tr(raycam::web::page.state->language, "The browser refused full screen for this page."));
+                               raycam::session::tr(raycam::web::page.state->language, "The browser refused full screen for this page."));
   raycam::web::wake_page();
 }
 

@@ -8,14 +8,14 @@
 // the same size to the eye). Full screen is the browser's Fullscreen API (F11 or the panel's button).
 #pragma once
 
-#include "frame.h"
-#include "glfw_host_base.h"
+#include "ui/frame.h"
+#include "glfw_host/glfw_host_base.h"
 
 struct GLFWwindow;
 
 namespace raycam::web {
 
-class WebHost : public app::GlfwHostBase {
+class WebHost : public glfw_host::GlfwHostBase {
  public:
   WebHost(GLFWwindow* window, session::AppState& state) : GlfwHostBase(window, state) {}
   void present() override {}  // the browser shows the canvas when the animation frame returns
@@ -23,7 +23,7 @@ class WebHost : public app::GlfwHostBase {
   // True when this animation frame has something to draw; false puts the loop to sleep until an event.
   bool wants_frame(const session::AppState& state, const ui::PanelState& panels);
   // After a frame drawn: ImGui read the keys; the changes held since go to it for the next frame.
-  void frame_drawn() { forward_held_keys(); }
+  void frame_drawn(session::AppState&) override { forward_held_keys(); }
 
   float pixel_density() const override { return pixel_ratio_; }
   // The canvas's new drawing buffer (already sized by the page's script) and the screen's pixel ratio.

@@ -14,19 +14,19 @@
 #include <stdexcept>
 #include <string>
 
-#include "app_options.h"
-#include "app_state.h"
-#include "flag_values.h"
-#include "panels.h"
+#include "session/app_options.h"
+#include "session/app_state.h"
+#include "flags/flag_values.h"
+#include "ui/panels.h"
 #include "raycam/ray_caster.h"
 #include "raycam/image_files.h"
 #include "raycam/language.h"
 #include "raycam/scene.h"
 #include "raycam/view_setup.h"
-#include "scene_loading.h"
-#include "shown_files.h"
-#include "text.h"
-#include "web_host.h"
+#include "web/scene_loading.h"
+#include "session/shown_files.h"
+#include "session/text.h"
+#include "web/web_host.h"
 
 namespace {
 // The value of `key` in the page address's query, or nothing.
@@ -220,7 +220,7 @@ EMSCRIPTEN_KEEPALIVE const char* raycam_shown_frame() {
   json += "\"check_header\": \"" + (header.forms.empty() ? std::string() : header.forms.front()) + "\", ";
   add("check_wrong_pixels", double(check.wrong_pixels()));
   json += std::string("\"fullscreen_button\": \"") +
-          raycam::ui::tr(state.language, raycam::ui::fullscreen_label(state)) + "\", ";
+          raycam::session::tr(state.language, raycam::ui::fullscreen_label(state)) + "\", ";
   json += "\"end\": 0}";
   return json.c_str();
 }
@@ -304,7 +304,7 @@ int main() {
     state.message.clear();
     for (const std::string& error : errors) {
       std::fprintf(stderr, "raycam: error: %s\n", error.c_str());
-      state.message += (state.message.empty() ? "" : "; ") + raycam::ui::tr_reason(state.language, error);
+      state.message += (state.message.empty() ? "" : "; ") + raycam::session::tr_reason(state.language, error);
     }
     state.message_is_error = true;
   }

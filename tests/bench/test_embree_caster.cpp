@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "embree_caster.h"
+#include "bench/embree_caster.h"
 #include "raycam/ray_caster.h"
 
 using namespace raycam;

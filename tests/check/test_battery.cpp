@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "battery.h"
-#include "case_image.h"
-#include "grading.h"
+#include "check/battery.h"
+#include "check/case_image.h"
+#include "check/grading.h"
 #include "raycam/scene_file.h"
 
 using namespace raycam;

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <numeric>
 
-#include "case_verdict.h"
+#include "check/case_verdict.h"
 
 using namespace raycam;
 using namespace raycam::check;

@@ -21,7 +21,7 @@
 #include "raycam/classic_mistakes.h"
 #include "raycam/scene_file.h"
 #include "../scratch_dir.h"
-#include "student_process.h"
+#include "check/student_process.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 #include "raycam/language.h"
 
 using namespace raycam;

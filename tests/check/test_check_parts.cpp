@@ -7,10 +7,10 @@
 #include <random>
 #include <string>
 
-#include "answer.h"
-#include "case_image.h"
-#include "grading.h"
-#include "student_process.h"
+#include "check/answer.h"
+#include "check/case_image.h"
+#include "check/grading.h"
+#include "check/student_process.h"
 
 using namespace raycam;
 using namespace raycam::check;

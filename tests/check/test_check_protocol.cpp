@@ -12,9 +12,9 @@
 #include <string>
 
 #include "../scratch_dir.h"
-#include "batch_record.h"
-#include "battery.h"
-#include "check_report.h"
+#include "check/batch_record.h"
+#include "check/battery.h"
+#include "check/check_report.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "../scratch_dir.h"
-#include "batch_record.h"
-#include "csv_merge.h"
-#include "shards.h"
+#include "check/batch_record.h"
+#include "check/csv_merge.h"
+#include "check/shards.h"
 
 using namespace raycam::check;
 

@@ -18,11 +18,11 @@
 #include <vector>
 
 #include "../scratch_dir.h"
-#include "batch_record.h"
-#include "check_report.h"
-#include "csv_merge.h"
-#include "escaped_text.h"
-#include "lms_grades.h"
+#include "check/batch_record.h"
+#include "check/check_report.h"
+#include "check/csv_merge.h"
+#include "check/escaped_text.h"
+#include "check/lms_grades.h"
 
 using namespace raycam::check;
 using json = nlohmann::json;

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "check_texts.h"
-#include "progress_line.h"
+#include "check/check_texts.h"
+#include "check/progress_line.h"
 
 using raycam::Language;
 using raycam::check::progress_text;

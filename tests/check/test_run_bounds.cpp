@@ -20,11 +20,11 @@
 #include <string>
 
 #include "../scratch_dir.h"
-#include "check_run.h"
-#include "escaped_text.h"
-#include "folder_removal.h"
-#include "run_group.h"
-#include "student_process.h"
+#include "check/check_run.h"
+#include "check/escaped_text.h"
+#include "check/folder_removal.h"
+#include "check/run_group.h"
+#include "check/student_process.h"
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;

@@ -16,11 +16,11 @@
 #include <string>
 
 #include "../scratch_dir.h"
-#include "run_facts.h"
-#include "run_group.h"
-#include "sandbox_policy.h"
-#include "student_process.h"
-#include "syscall_filter.h"
+#include "check/run_facts.h"
+#include "check/run_group.h"
+#include "check/sandbox_policy.h"
+#include "check/student_process.h"
+#include "check/syscall_filter.h"
 
 namespace fs = std::filesystem;
 using namespace raycam::check;

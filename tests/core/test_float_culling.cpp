@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "raycam/ray_caster.h"
-#include "screen_footprint.h"
+#include "core/screen_footprint.h"
 #include "test_support.h"
 
 using namespace raycam;

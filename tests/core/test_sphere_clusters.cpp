@@ -8,7 +8,7 @@
 #include <numeric>
 
 #include "raycam/ray_caster.h"
-#include "screen_footprint.h"
+#include "core/screen_footprint.h"
 #include "test_support.h"
 
 using namespace raycam;

@@ -5,9 +5,9 @@
 #include <random>
 
 
-#include "band_kernels.h"
+#include "core/band_kernels.h"
 #include "raycam/ray_caster.h"
-#include "screen_footprint.h"
+#include "core/screen_footprint.h"
 #include "test_support.h"
 
 using namespace raycam;

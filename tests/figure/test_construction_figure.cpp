@@ -17,8 +17,8 @@
 
 #include "../scratch_dir.h"
 #include "figure_test_support.h"
-#include "construction_figure.h"
-#include "figure_files.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_files.h"
 #include "raycam/ray_caster.h"
 #include "raycam/transform.h"
 

@@ -7,9 +7,9 @@
 #include <stb_image.h>  // implementation provided by Debian's libstb (test_construction_figure.cpp)
 
 #include "../scratch_dir.h"
-#include "construction_figure.h"
-#include "figure_files.h"
-#include "figure_layout.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_files.h"
+#include "figure/figure_layout.h"
 #include "figure_test_support.h"
 
 using namespace raycam;

@@ -15,13 +15,13 @@
 #include <sstream>
 
 #include "../scratch_dir.h"
-#include "construction_figure.h"
-#include "figure_files.h"
-#include "figure_layout.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_files.h"
+#include "figure/figure_layout.h"
 #include "figure_test_support.h"
-#include "math_text.h"
+#include "figure/math_text.h"
 #include "raycam/demo_names.h"
-#include "tikz_file.h"
+#include "figure/tikz_file.h"
 
 using namespace raycam;
 using namespace raycam::figure;

@@ -11,12 +11,12 @@
 #include <regex>
 
 #include "../scratch_dir.h"
-#include "construction_figure.h"
-#include "figure_files.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_files.h"
 #include "figure_test_support.h"
-#include "math_text.h"
+#include "figure/math_text.h"
 #include "raycam/transform.h"
-#include "tikz_file.h"
+#include "figure/tikz_file.h"
 
 using namespace raycam;
 using namespace raycam::figure;

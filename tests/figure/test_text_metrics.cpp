@@ -5,11 +5,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "construction_figure.h"
-#include "figure_layout.h"
+#include "figure/construction_figure.h"
+#include "figure/figure_layout.h"
 #include "figure_test_support.h"
-#include "math_text.h"
-#include "text_metrics.h"
+#include "figure/math_text.h"
+#include "figure/text_metrics.h"
 
 using namespace raycam;
 using namespace raycam::figure;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "flag_values.h"
+#include "flags/flag_values.h"
 
 using namespace raycam::flags;
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "../scratch_dir.h"
-#include "view_options.h"
+#include "flags/view_options.h"
 
 using namespace raycam;
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "flag_values.h"
-#include "view_options.h"
+#include "flags/flag_values.h"
+#include "flags/view_options.h"
 
 using namespace raycam;
 

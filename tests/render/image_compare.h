@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "framebuffer_image.h"
+#include "gl/framebuffer_image.h"
 
 namespace raycam::test {
 

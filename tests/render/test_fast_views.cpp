@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "disc_layer.h"
-#include "gl.h"
-#include "headless_renderer.h"
-#include "observer_renderer.h"
+#include "gl/disc_layer.h"
+#include "gl/gl.h"
+#include "headless/headless_renderer.h"
+#include "gl/observer_renderer.h"
 
 using namespace raycam;
 

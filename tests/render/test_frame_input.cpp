@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "../scratch_dir.h"
-#include "app_flags.h"
-#include "app_options.h"
-#include "gl.h"
-#include "headless_renderer.h"
-#include "panels.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "gl/gl.h"
+#include "headless/headless_renderer.h"
+#include "ui/panels.h"
 #include "raycam/ray_caster.h"
 
 using namespace raycam;
@@ -30,7 +30,7 @@ namespace {
 
 session::AppState state_for(const std::vector<std::string>& args) {
   session::AppOptions options;
-  options.language = ui::Language::en;
+  options.language = raycam::Language::en;
   return session::make_app_state(flags::parse_app_options(args, options));
 }
 

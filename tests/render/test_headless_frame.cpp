@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "headless_renderer.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "headless/headless_renderer.h"
 #include "image_compare.h"
-#include "inspection.h"
+#include "session/inspection.h"
 #include "raycam/ray_caster.h"
 #include "raycam/transform.h"
 

@@ -27,18 +27,18 @@
 
 #include <functional>
 
-#include "app_flags.h"
-#include "construction_view.h"
-#include "app_options.h"
-#include "check_panel.h"
-#include "frame_host.h"
-#include "headless_renderer.h"
-#include "mistake_lessons.h"
-#include "overhead_view.h"
-#include "panels.h"
+#include "flags/app/app_flags.h"
+#include "session/construction_view.h"
+#include "session/app_options.h"
+#include "ui/check_panel.h"
+#include "ui/frame_host.h"
+#include "headless/headless_renderer.h"
+#include "session/mistake_lessons.h"
+#include "ui/overhead_view.h"
+#include "ui/panels.h"
 #include "raycam/scene_file.h"
-#include "answer.h"
-#include "case_image.h"
+#include "check/answer.h"
+#include "check/case_image.h"
 #include <fstream>
 
 using namespace raycam;

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "headless_renderer.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "headless/headless_renderer.h"
 #include "image_compare.h"
-#include "mistake_lessons.h"
+#include "session/mistake_lessons.h"
 #include "raycam/transform.h"
 
 using namespace raycam;

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "app_flags.h"
-#include "app_options.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
 
 namespace raycam::test {
 

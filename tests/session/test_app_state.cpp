@@ -6,7 +6,7 @@
 #include <fstream>
 
 #include "../scratch_dir.h"
-#include "app_options.h"
+#include "session/app_options.h"
 #include "app_state_for.h"
 #include "raycam/exact_bar.h"
 

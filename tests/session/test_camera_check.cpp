@@ -8,10 +8,10 @@
 #include <thread>
 
 #include "../scratch_dir.h"
-#include "app_options.h"
-#include "answer.h"
-#include "camera_check.h"
-#include "case_image.h"
+#include "session/app_options.h"
+#include "check/answer.h"
+#include "session/camera_check.h"
+#include "check/case_image.h"
 
 using namespace raycam;
 using namespace raycam::session;

@@ -17,15 +17,15 @@
 #include <sstream>
 
 #include "../scratch_dir.h"
-#include "answer.h"
-#include "app_options.h"
-#include "app_state.h"
-#include "case_image.h"
-#include "check_report.h"
-#include "check_run.h"
-#include "figure_export.h"
+#include "check/answer.h"
+#include "session/app_options.h"
+#include "session/app_state.h"
+#include "check/case_image.h"
+#include "check/check_report.h"
+#include "check/check_run.h"
+#include "session/figure_export.h"
 #include "raycam/zip_archive.h"
-#include "shown_files.h"
+#include "session/shown_files.h"
 #include <unistd.h>
 #include "raycam/camera2d.h"
 #include "raycam/camera3d.h"
@@ -36,7 +36,7 @@
 #include "raycam/scene.h"
 #include "raycam/scene_file.h"
 #include "raycam/view_setup.h"
-#include "text.h"
+#include "session/text.h"
 
 using namespace raycam;
 namespace fs = std::filesystem;
@@ -525,8 +525,8 @@ TEST_CASE("error reasons: the window's messages and the check report show them i
   // The window's French puts a no-break space before a colon.
   CHECK(state.message ==
         "impossible d'ouvrir\u00a0: " + missing + "\u00a0: impossible d'ouvrir le fichier de scène");
-  CHECK(ui::tr_reason(Language::fr, "exit status 2") == "code de sortie 2");
-  CHECK(ui::tr_reason(Language::en, "exit status 2") == "exit status 2");
+  CHECK(session::tr_reason(Language::fr, "exit status 2") == "code de sortie 2");
+  CHECK(session::tr_reason(Language::en, "exit status 2") == "exit status 2");
 
   check::StudentReport report;
   check::CaseResult crash;

@@ -9,9 +9,9 @@
 
 #include "../scratch_dir.h"
 #include "app_state_for.h"
-#include "figure_export.h"
+#include "session/figure_export.h"
 #include "raycam/transform.h"
-#include "text.h"
+#include "session/text.h"
 
 using namespace raycam;
 
@@ -32,7 +32,7 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
   const test::ScratchDir scratch("figure-export");
   session::AppState state = test::state_for({"--view", "2d"});
 
-  state.language = ui::Language::fr;
+  state.language = raycam::Language::fr;
   state.construction_step = 1;  // the second frame: (b)
   auto files = session::export_construction_figure(state, {}, scratch.path("b.pdf"), false);
   REQUIRE(files == std::vector<std::string>{scratch.path("b.pdf")});
@@ -44,7 +44,7 @@ TEST_CASE("Export figure writes the step shown, or every step, in the window's l
   CHECK(pdf_text(session::export_construction_figure(state, {}, scratch.path("d.pdf"), false)[0]).find("cadre (d)") !=
         std::string::npos);
 
-  state.language = ui::Language::en;
+  state.language = raycam::Language::en;
   files = session::export_construction_figure(state, {}, scratch.path("all.pdf"), true);
   REQUIRE(files.size() == 1);
   text = pdf_text(files[0]);
@@ -69,7 +69,7 @@ TEST_CASE("Export figure in 3D writes the six steps", "[ui][figure]") {
 TEST_CASE("Export figure draws the matrix on screen, with the panel's format, rays and matrix choice", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-panel");
   session::AppState state = test::state_for({"--view", "2d", "--df", "1.25"});
-  state.language = ui::Language::en;
+  state.language = raycam::Language::en;
   // The format chosen in the panel sets the name's extension.
   CHECK(session::with_figure_extension("notes/fig.svg", 3) == "notes/fig.tex");
   CHECK(session::with_figure_extension("notes/fig", 1) == "notes/fig.pdf");
@@ -110,7 +110,7 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
   const test::ScratchDir scratch("figure-export-message");
   session::AppState state = test::state_for({"--view", "3d"});
   std::filesystem::current_path(scratch.path("."));
-  for (const ui::Language language : {ui::Language::en, ui::Language::fr}) {
+  for (const raycam::Language language : {raycam::Language::en, raycam::Language::fr}) {
     state.language = language;
     // A relative name is written in the working folder: the message says which, in full.
     const auto one = session::export_construction_figure(state, {}, "raycam-figure.svg", false);
@@ -140,13 +140,13 @@ TEST_CASE("Export figure's messages name the full path, and several files briefl
 TEST_CASE("Export figure names the demo's objects in the window's language", "[ui][figure]") {
   const test::ScratchDir scratch("figure-export-names");
   session::AppState state = test::state_for({"--view", "2d"});
-  const auto tex_of = [&](ui::Language language) {
+  const auto tex_of = [&](raycam::Language language) {
     state.language = language;
     const auto files = session::export_construction_figure(state, {}, scratch.path("names.tex"), false);
     std::ifstream in(files.at(0));
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   };
-  const std::string french = tex_of(ui::Language::fr), english = tex_of(ui::Language::en);
+  const std::string french = tex_of(raycam::Language::fr), english = tex_of(raycam::Language::en);
   for (const auto& [en, fr] : {std::pair{"{red}", "{rouge}"}, std::pair{"{green}", "{vert}"}}) {
     CHECK(french.find(fr) != std::string::npos);
     CHECK(french.find(en) == std::string::npos);

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "../scratch_dir.h"
-#include "app_flags.h"
-#include "app_options.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
 
 using namespace raycam;
 namespace fs = std::filesystem;
@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 session::AppState state_for(const std::vector<std::string>& args, bool demo_on_bad_scene = false) {
   session::AppOptions options;
-  options.language = ui::Language::en;
+  options.language = raycam::Language::en;
   options.demo_on_bad_scene = demo_on_bad_scene;
   return session::make_app_state(flags::parse_app_options(args, options));
 }

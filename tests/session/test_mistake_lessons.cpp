@@ -6,10 +6,10 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "app_options.h"
+#include "session/app_options.h"
 #include "app_state_for.h"
-#include "inspection.h"
-#include "mistake_lessons.h"
+#include "session/inspection.h"
+#include "session/mistake_lessons.h"
 
 using namespace raycam;
 using raycam::test::state_for;

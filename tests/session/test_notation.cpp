@@ -7,9 +7,9 @@
 #include <string>
 
 #include "app_state_for.h"
-#include "construction_figure.h"
-#include "construction_view.h"
-#include "text.h"
+#include "figure/construction_figure.h"
+#include "session/construction_view.h"
+#include "session/text.h"
 
 using namespace raycam;
 
@@ -60,7 +60,7 @@ TEST_CASE("the window's construction captions name the figure's points and rotat
           [&](const auto& v) { return figure::construction_figure(session::scene_as_shown(language, v), v.camera, options); },
           state.view);
       for (std::size_t step = 0; step < figure.frames.size(); ++step) {
-        const std::string window = ui::tr(language, session::construction_caption(view[0] == '2' ? 2 : 3, int(step)));
+        const std::string window = session::tr(language, session::construction_caption(view[0] == '2' ? 2 : 3, int(step)));
         INFO(view << " step " << step << ": window \"" << window << "\", figure \"" << figure.frames[step].caption
                   << "\"");
         CHECK(named_symbols(window) == named_symbols(figure.frames[step].caption));

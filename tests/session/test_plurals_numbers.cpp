@@ -6,9 +6,9 @@
 #include <set>
 #include <string>
 
-#include "check_texts.h"
+#include "check/check_texts.h"
 #include "raycam/language.h"
-#include "text.h"
+#include "session/text.h"
 
 using namespace raycam;
 
@@ -35,7 +35,7 @@ TEST_CASE("a count picks the singular or the plural by each language's rule", "[
 }
 
 TEST_CASE("the window's count texts over 0, 1, 2 and large counts, in both languages", "[ui][text][plural]") {
-  using ui::trf;
+  using session::trf;
   const char* check = "CHECK: %lld {{pixel|pixels}} wrong";
   CHECK(trf(Language::en, check, 0LL) == "CHECK: 0 pixels wrong");
   CHECK(trf(Language::en, check, 1LL) == "CHECK: 1 pixel wrong");
@@ -83,7 +83,7 @@ TEST_CASE("one number formatter per language: French decimal comma, English poin
   CHECK(formatted(Language::fr, "%.3g / %.1e / %5.2f", 0.125, 1.5e-8, -3.25) == "0,125 / 1,5e-08 / -3,25");
   CHECK(formatted(Language::fr, "%s %d %.0f%%", "a.b", 3, 12.0) == "a.b 3 12%");  // a string keeps its points
   CHECK(formatted(Language::fr, "%02d:%02d", 1, 5) == "01:05");
-  CHECK(ui::trf(Language::fr, "running… (%.1f s)", 2.25) == "en cours… (2,2 s)");
+  CHECK(session::trf(Language::fr, "running… (%.1f s)", 2.25) == "en cours… (2,2 s)");
   // A '*' takes its int from the arguments before the value (the M_d tables' "%.*f"): read as the value, it
   // took a double from an int's place, a precision of millions in some runs.
   CHECK(formatted(Language::fr, "%.*f", 2, 3.14159) == "3,14");
@@ -120,7 +120,7 @@ std::vector<std::string> bare_counts(const std::string& text) {
 
 TEST_CASE("no count text of any table is left without its plural form", "[ui][text][plural]") {
   std::vector<const Translation*> rows;
-  for (const Translation& t : ui::translations()) rows.push_back(&t);
+  for (const Translation& t : session::translations()) rows.push_back(&t);
   for (const Translation& t : check::check_translations()) rows.push_back(&t);
   // The scan catches a bare count (seen failing on "%d files").
   CHECK(bare_counts("wrote %d files: %s") == std::vector<std::string>{"%d files"});
@@ -144,7 +144,7 @@ TEST_CASE("no count text of any table is left without its plural form", "[ui][te
 TEST_CASE("no text of the window's or the checker's table sends to a file the page's user does not have",
           "[ui][text]") {
   std::vector<const Translation*> rows;
-  for (const Translation& t : ui::translations()) rows.push_back(&t);
+  for (const Translation& t : session::translations()) rows.push_back(&t);
   for (const Translation& t : check::check_translations()) rows.push_back(&t);
   for (const Translation* t : rows)
     for (Language language : kLanguages) {

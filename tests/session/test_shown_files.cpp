@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "../scratch_dir.h"
-#include "app_options.h"
-#include "shown_files.h"
+#include "session/app_options.h"
+#include "session/shown_files.h"
 
 using namespace raycam;
 using namespace raycam::session;

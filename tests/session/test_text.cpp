@@ -11,12 +11,12 @@
 #include <sstream>
 
 #include "app_state_for.h"
-#include "check_texts.h"
+#include "check/check_texts.h"
 #include "raycam/classic_mistakes.h"
 #include "raycam/demo_names.h"
 #include "raycam/language.h"
 #include "raycam/ray_caster.h"
-#include "text.h"
+#include "session/text.h"
 
 using namespace raycam;
 
@@ -77,10 +77,10 @@ std::string read(const std::filesystem::path& path) {
 }  // namespace
 
 TEST_CASE("every string of the table has both languages, with the same conversions and ids", "[ui][text]") {
-  const auto& table = ui::translations();
+  const auto& table = session::translations();
   REQUIRE(table.size() > 50);
   std::set<std::string> keys;
-  for (const ui::Translation& t : table) {
+  for (const raycam::Translation& t : table) {
     INFO(t.english());
     REQUIRE(t.english() != nullptr);
     REQUIRE(t[Language::fr] != nullptr);
@@ -97,7 +97,7 @@ TEST_CASE("every string of the table has both languages, with the same conversio
       "double", "long double", "intersection###intersection", "stable (Ray Tracing Gems)", "figure###figure_path", "format###figure_format",
       "F1", "F9", "F11", "F12", "P", "← / →", "θ −/+ 5°", "↑ / ↓", "φ −/+ 5° (3D)", "+ / −", "[ / ]", "Tab", "2D / 3D",
       "1 / 2 / 3", "%.0f ms · %.1f ms"};
-  for (const ui::Translation& t : table)
+  for (const raycam::Translation& t : table)
     if (!same_in_both.count(t.english())) {
       INFO(t.english());
       CHECK(std::string(t.english()) != std::string(t[Language::fr]));
@@ -105,13 +105,13 @@ TEST_CASE("every string of the table has both languages, with the same conversio
   // One decimal separator in each language: the point, as the sliders and tables print numbers (printf in
   // the C locale); a French "0,05" beside a slider's "0.5000" read as two conventions.
   const std::regex decimal_comma(R"(\d,\d)");
-  for (const ui::Translation& t : table) {
+  for (const raycam::Translation& t : table) {
     INFO(t[Language::fr]);
     CHECK_FALSE(std::regex_search(std::string(t[Language::fr]), decimal_comma));
   }
   // The handout's words are there (a French table that kept the English would pass the checks above).
   std::string all_french;
-  for (const ui::Translation& t : table) all_french += std::string(t[Language::fr]) + "\n";
+  for (const raycam::Translation& t : table) all_french += std::string(t[Language::fr]) + "\n";
   for (const char* word : {"distance focale", "cible C", "œil", "écran", "résolution", "carte des couleurs",
                            "barre de couleurs", "homothétie"})
     CHECK_THAT(all_french, Catch::Contains(word));
@@ -122,7 +122,7 @@ TEST_CASE("every string of the table has both languages, with the same conversio
 // here until each of them has its column.
 TEST_CASE("every text of every table has every language", "[ui][text][language]") {
   std::vector<std::pair<std::string, const LocalText*>> texts;
-  for (const Translation& t : ui::translations()) texts.push_back({"window", &t});
+  for (const Translation& t : session::translations()) texts.push_back({"window", &t});
   for (const Translation& t : check::check_translations()) texts.push_back({"check", &t});
   for (const ReasonPattern& p : reason_patterns()) texts.push_back({"reason", &p});
   for (const Translation& t : demo_object_name_texts()) texts.push_back({"demo names", &t});
@@ -142,7 +142,7 @@ TEST_CASE("every text of every table has every language", "[ui][text][language]"
 
 TEST_CASE("every string the window shows is in the table", "[ui][text]") {
   std::set<std::string> keys;
-  for (const ui::Translation& t : ui::translations()) keys.insert(t.english());
+  for (const raycam::Translation& t : session::translations()) keys.insert(t.english());
   // tr(language, "..."), trf(language, "...", ...), tr_later("..."), with adjacent literals joined.
   const std::regex marked(R"re(\b(?:tr|trf|tr_later)\(\s*(?:[\w.:>()-]+,\s*)?((?:"(?:[^"\\]|\\.)*"\s*)+))re");
   // Widgets whose first argument is shown: a raw English literal there bypasses the table.
@@ -177,32 +177,32 @@ TEST_CASE("every string the window shows is in the table", "[ui][text]") {
 }
 
 TEST_CASE("tr shows French when the language is French, and trf formats after translating", "[ui][text]") {
-  CHECK(std::string(ui::tr(ui::Language::fr, "Camera###camera")) == "Caméra###camera");
-  CHECK(ui::trf(ui::Language::fr, "opened %s", "a.json") == "ouvert\u00a0: a.json");  // a no-break space before the colon
-  CHECK(std::string(ui::tr(ui::Language::en, "Camera###camera")) == "Camera###camera");
-  CHECK(ui::trf(ui::Language::en, "opened %s", "a.json") == "opened a.json");
+  CHECK(std::string(session::tr(raycam::Language::fr, "Camera###camera")) == "Caméra###camera");
+  CHECK(session::trf(raycam::Language::fr, "opened %s", "a.json") == "ouvert\u00a0: a.json");  // a no-break space before the colon
+  CHECK(std::string(session::tr(raycam::Language::en, "Camera###camera")) == "Camera###camera");
+  CHECK(session::trf(raycam::Language::en, "opened %s", "a.json") == "opened a.json");
 }
 
 TEST_CASE("the language comes from --lang, else LANGUAGE, LC_ALL, LC_MESSAGES, LANG", "[ui][text]") {
-  CHECK(ui::parse_language_flag("fr") == ui::Language::fr);
-  CHECK(ui::parse_language_flag("en") == ui::Language::en);
-  CHECK_THROWS_WITH(ui::parse_language_flag("de"), "--lang: expected en or fr, got 'de'");
-  CHECK(ui::language_from_code("fr_FR.UTF-8") == ui::Language::fr);
-  CHECK(ui::language_from_code("fr:en") == ui::Language::fr);
-  CHECK(ui::language_from_code("en_GB") == ui::Language::en);
-  CHECK_FALSE(ui::language_from_code("C").has_value());
-  CHECK_FALSE(ui::language_from_code("french").has_value());
+  CHECK(raycam::parse_language_flag("fr") == raycam::Language::fr);
+  CHECK(raycam::parse_language_flag("en") == raycam::Language::en);
+  CHECK_THROWS_WITH(raycam::parse_language_flag("de"), "--lang: expected en or fr, got 'de'");
+  CHECK(raycam::language_from_code("fr_FR.UTF-8") == raycam::Language::fr);
+  CHECK(raycam::language_from_code("fr:en") == raycam::Language::fr);
+  CHECK(raycam::language_from_code("en_GB") == raycam::Language::en);
+  CHECK_FALSE(raycam::language_from_code("C").has_value());
+  CHECK_FALSE(raycam::language_from_code("french").has_value());
 
   for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) unsetenv(name);
-  CHECK(ui::language_from_environment() == ui::Language::en);
+  CHECK(raycam::language_from_environment() == raycam::Language::en);
   setenv("LANG", "fr_FR.UTF-8", 1);
-  CHECK(ui::language_from_environment() == ui::Language::fr);
+  CHECK(raycam::language_from_environment() == raycam::Language::fr);
   setenv("LC_ALL", "en_US.UTF-8", 1);  // LC_ALL overrides LANG
-  CHECK(ui::language_from_environment() == ui::Language::en);
+  CHECK(raycam::language_from_environment() == raycam::Language::en);
   setenv("LANGUAGE", "fr", 1);  // LANGUAGE first, as gettext
-  CHECK(ui::language_from_environment() == ui::Language::fr);
+  CHECK(raycam::language_from_environment() == raycam::Language::fr);
   setenv("LANGUAGE", "", 1);  // empty: not set
-  CHECK(ui::language_from_environment() == ui::Language::en);
+  CHECK(raycam::language_from_environment() == raycam::Language::en);
   for (const char* name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"}) unsetenv(name);
 }
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "../scratch_dir.h"
-#include "app_state.h"
+#include "session/app_state.h"
 #include "app_state_for.h"
 #include "raycam/scene_file.h"
 

@@ -12,8 +12,8 @@
 
 #include "../scratch_dir.h"
 #include "app_state_for.h"
-#include "construction_view.h"
-#include "observer_view.h"
+#include "session/construction_view.h"
+#include "session/observer_view.h"
 
 using namespace raycam;
 using raycam::test::state_for;

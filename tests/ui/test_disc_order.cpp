@@ -8,7 +8,7 @@
 #include <numeric>
 #include <random>
 
-#include "overhead_view.h"
+#include "ui/overhead_view.h"
 
 using namespace raycam;
 

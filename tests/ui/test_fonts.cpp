@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "fonts.h"
+#include "ui/fonts.h"
 #include "raycam/classic_mistakes.h"
-#include "text.h"
+#include "session/text.h"
 
 using namespace raycam;
 
@@ -65,7 +65,7 @@ TEST_CASE("every character of the window's tables is in the font's glyph ranges,
 
 TEST_CASE("the mistakes' explanations and the window's texts write their maths typeset", "[ui][text]") {
   std::vector<std::string> texts;
-  for (const ui::Translation& t : ui::translations())
+  for (const raycam::Translation& t : session::translations())
     for (Language language : kLanguages) texts.push_back(t[language]);
   for (const MistakeInfo& m : kClassicMistakes)
     for (Language language : kLanguages) {

@@ -7,7 +7,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "key_queue.h"
+#include "ui/key_queue.h"
 
 using namespace raycam;
 

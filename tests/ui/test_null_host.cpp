@@ -3,7 +3,7 @@
 #include <imgui.h>
 
 #include "../session/app_state_for.h"
-#include "frame_host.h"
+#include "ui/frame_host.h"
 #include "imgui_context_scope.h"
 #include "raycam/ray_caster.h"
 

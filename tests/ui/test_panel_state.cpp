@@ -9,9 +9,9 @@
 
 #include "../scratch_dir.h"
 #include "../session/app_state_for.h"
-#include "frame_host.h"
+#include "ui/frame_host.h"
 #include "imgui_context_scope.h"
-#include "panel_state.h"
+#include "ui/panel_state.h"
 
 using namespace raycam;
 

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "../scratch_dir.h"
-#include "app_flags.h"
-#include "app_options.h"
-#include "mistake_lessons.h"
-#include "panels.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "session/mistake_lessons.h"
+#include "ui/panels.h"
 
 using namespace raycam;
 

@@ -2,7 +2,7 @@
 // background it is drawn on, computed from the themes' own colours (with their alpha over the window).
 #include <catch2/catch.hpp>
 
-#include "theme.h"
+#include "ui/theme.h"
 
 using namespace raycam::ui;
 

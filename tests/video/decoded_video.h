@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "framebuffer_image.h"
+#include "gl/framebuffer_image.h"
 #include <vector>
 
 namespace raycam::test {

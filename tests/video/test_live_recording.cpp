@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "decoded_video.h"
-#include "live_recording.h"
+#include "video/live_recording.h"
 #include "scratch_dir.h"
 
 using namespace raycam;

@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "app_flags.h"
-#include "app_options.h"
-#include "camera_path.h"
-#include "construction_view.h"
+#include "flags/app/app_flags.h"
+#include "session/app_options.h"
+#include "session/camera_path.h"
+#include "session/construction_view.h"
 #include "decoded_video.h"
-#include "headless_renderer.h"
+#include "headless/headless_renderer.h"
 #include "image_compare.h"
 #include "raycam/transform.h"
 #include "scratch_dir.h"

@@ -1,14 +1,14 @@
-#include "app_flags.h"
+#include "flags/app/app_flags.h"
 
 #include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
-#include "flag_values.h"
+#include "flags/flag_values.h"
 #include "raycam/classic_mistakes.h"
-#include "text.h"
-#include "view_options.h"
+#include "session/text.h"
+#include "flags/view_options.h"
 
 namespace raycam::flags {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app_options.h"
+#include "session/app_options.h"
 
 namespace raycam::flags {
 

@@ -1,4 +1,4 @@
-#include "path_flags.h"
+#include "flags/app/path_flags.h"
 
 #include <algorithm>
 

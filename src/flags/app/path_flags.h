@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "camera_path.h"
-#include "flag_values.h"
+#include "session/camera_path.h"
+#include "flags/flag_values.h"
 
 namespace raycam::flags {
 
