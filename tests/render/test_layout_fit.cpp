@@ -256,6 +256,26 @@ void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& stat
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   } while ((++frames < 30 || ui::frame_needs_redraw(state, renderer.panels())) && std::chrono::steady_clock::now() < deadline);
 }
+
+// A folder of the test's own under the temporary directory (its name and the process id), removed at the end.
+struct ScratchFolder {
+  explicit ScratchFolder(const std::string& name)
+      : path((std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()))).string()) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchFolder() { std::filesystem::remove_all(path); }
+  const std::string path;
+};
+
+// The page's round trip: the check's case downloaded into `folder`, `program` run on it as a student would;
+// returns the answer file it wrote (given back by the caller, after whatever the student does in between).
+std::string answer_of(const std::string& program, headless::HeadlessRenderer& renderer, const session::AppState& state,
+                      const std::string& folder) {
+  const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
+  save_scene_file(renderer.check().case_for_download(state), case_path);
+  REQUIRE(std::system((program + " < " + case_path + " > " + answer).c_str()) == 0);
+  return answer;
+}
 }  // namespace
 
 // What the header says never takes the picture's height: the picture is drawn as big with a mistake on, with
@@ -337,8 +357,7 @@ void check_next_step_in_sight(const char* where) {
 TEST_CASE("after an answer the verdict and its next step are in sight, in the page and the window, both languages",
           "[render][lecture][layout]") {
   const std::string mistaken = std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
-  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-verdict-" + std::to_string(::getpid()))).string();
-  std::filesystem::create_directories(folder);
+  const ScratchFolder folder("raycam-verdict");
   for (const Screen screen : kScreens)
     for (const float scale : {1.0f, 2.0f, 3.0f})
       for (const char* language : {"en", "fr"})
@@ -359,16 +378,12 @@ TEST_CASE("after an answer the verdict and its next step are in sight, in the pa
             REQUIRE(panel);
             renderer.move_mouse(panel->InnerClipRect.GetCenter().x, panel->InnerClipRect.GetCenter().y);
             renderer.run_frame(state);
-            const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
-            save_scene_file(renderer.check().case_for_download(state), case_path);
-            REQUIRE(std::system((mistaken + " < " + case_path + " > " + answer).c_str()) == 0);
-            renderer.check().give_answer(answer);
+            renderer.check().give_answer(answer_of(mistaken, renderer, state, folder.path));
           }
           until_verdict(renderer, state);
           REQUIRE(renderer.check().status() == "fail");
           check_next_step_in_sight(where.str().c_str());
         }
-  std::filesystem::remove_all(folder);
 }
 
 // Issue 45: with a classic mistake on, the page grades the case's camera (the case never carries the mistake)
@@ -376,18 +391,15 @@ TEST_CASE("after an answer the verdict and its next step are in sight, in the pa
 // header (QA: "✓ réussie | ERREUR ACTIVE : image en miroir").
 TEST_CASE("with a mistake on, the header says the verdict is the downloaded case's and the image shows the mistake",
           "[render][layout][check]") {
-  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-graded-" + std::to_string(::getpid()))).string();
-  std::filesystem::create_directories(folder);
+  const ScratchFolder folder("raycam-graded");
   for (const char* language : {"en", "fr"})
     for (const bool right : {true, false}) {
       session::AppState state = lecture_state("3d", language);
       state.host = session::kPageHost;
       headless::HeadlessRenderer renderer(1920, 1080);
       renderer.run_frame(state);
-      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
-      save_scene_file(renderer.check().case_for_download(state), case_path);
       const std::string program = right ? std::string(EXAMPLE_STUDENT_CPP) : std::string(MISTAKEN_STUDENT) + " --mistake mirrored";
-      REQUIRE(std::system((program + " < " + case_path + " > " + answer).c_str()) == 0);
+      const std::string answer = answer_of(program, renderer, state, folder.path);
       session::show_mistake(state, *session::find_lesson("mirrored"));
       renderer.check().give_answer(answer);
       until_verdict(renderer, state);
@@ -408,7 +420,6 @@ TEST_CASE("with a mistake on, the header says the verdict is the downloaded case
                                                       : "wrong for the downloaded case — the image shown shows the mistake « mirrored image »")) !=
             std::string::npos);
     }
-  std::filesystem::remove_all(folder);
 }
 
 // Issue 45: one wrong pixel can be found: the verdict names it as (row, column) of the answer's ids, and the
@@ -416,8 +427,7 @@ TEST_CASE("with a mistake on, the header says the verdict is the downloaded case
 // vanished on a red sphere). The wrong pixel is put on a sphere, in both languages.
 TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that stand out from it",
           "[render][layout][check]") {
-  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-wrong-pixel-" + std::to_string(::getpid()))).string();
-  std::filesystem::create_directories(folder);
+  const ScratchFolder folder("raycam-wrong-pixel");
   for (const char* language : {"en", "fr"}) {
     session::AppState state = lecture_state("3d", language);
     state.host = session::kPageHost;
@@ -434,7 +444,7 @@ TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that st
     answer.columns = right.columns;
     answer.ids = right.ids;
     answer.ids[std::size_t(row * right.columns + column)] = right.ids[0];
-    const std::string path = folder + "/one-wrong.json";
+    const std::string path = folder.path + "/one-wrong.json";
     std::ofstream(path) << check::answer_to_json(answer, right.dimension);
     renderer.check().give_answer(path);
     until_verdict(renderer, state);
@@ -464,15 +474,13 @@ TEST_CASE("a wrong pixel is named as (row, column) and framed in colours that st
     CHECK(white);
     CHECK(std::max(black_distance, white_distance) > 300);  // one of the two frames stands out strongly
   }
-  std::filesystem::remove_all(folder);
 }
 
 // Issue 45: the diagnosis's bullets have a heading saying what they are, and an answer of the wrong size is not
 // told "no classic mistake reproduces this image" (no image of that size was compared), in both languages.
 TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be no classic mistake",
           "[render][layout][check]") {
-  const std::string folder = (std::filesystem::temp_directory_path() / ("raycam-diagnosis-" + std::to_string(::getpid()))).string();
-  std::filesystem::create_directories(folder);
+  const ScratchFolder folder("raycam-diagnosis");
   for (const char* language : {"en", "fr"})
     for (const bool bad_size : {true, false}) {
       session::AppState state = lecture_state("3d", language);
@@ -480,13 +488,10 @@ TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be n
       headless::HeadlessRenderer renderer(1920, 1080);
       renderer.run_frame(state);
       open_every_section();
-      const std::string case_path = folder + "/case.json", answer = folder + "/answer.json";
-      save_scene_file(renderer.check().case_for_download(state), case_path);
-      if (bad_size)
-        std::ofstream(answer) << "{\"ids\": [[0, 1, 2], [0, 1, 2]]}\n";
-      else
-        REQUIRE(std::system((std::string(MISTAKEN_STUDENT) + " --mistake mirrored < " + case_path + " > " + answer).c_str()) == 0);
-      renderer.check().give_answer(answer);
+      const std::string bad_answer = folder.path + "/bad-size.json";
+      if (bad_size) std::ofstream(bad_answer) << "{\"ids\": [[0, 1, 2], [0, 1, 2]]}\n";
+      renderer.check().give_answer(bad_size ? bad_answer
+                                            : answer_of(std::string(MISTAKEN_STUDENT) + " --mistake mirrored", renderer, state, folder.path));
       until_verdict(renderer, state);
       const std::vector<std::string> lines = ui::drawn_diagnosis_lines();
       std::string said;
@@ -506,7 +511,6 @@ TEST_CASE("the diagnosis has a heading and a bad-size answer is not said to be n
         CHECK(lines[1].find(french ? "image en miroir" : "mirrored image") == 0);
       }
     }
-  std::filesystem::remove_all(folder);
 }
 
 // Issue 45: the camera's sliders read as one column, their labels all beside them or all above (QA at 2× on
