@@ -141,7 +141,7 @@ mutant message-below-the-fold-counts-as-shown src/ui/panels.cpp 's/^  if (top < 
 mutant font-rebuild-keeps-buffer-sizes src/ui/fonts.cpp 's/^  restart_renderer_backend();/  ImGui_ImplOpenGL3_DestroyDeviceObjects();/; s/^#include "ui\/renderer_backend.h"/#include "ui\/renderer_backend.h"\n#include <imgui_impl_opengl3.h>/' "raycam_render_tests" "^render:lecture mode: a font scale changed"
 mutant window-bigger-than-the-screen src/app/glfw_host.cpp 's/  if (area_width > 0 && area_height > 0) {/  if (false) {/' "raycam raycam_app_tests" "^app: ?the window fits"
 mutant font-scale-slider-left-out-of-view src/ui/panels.cpp 's/^  if (scale_changed) panels.font_scale_scroll_frames = 2;/  if (scale_changed) panels.font_scale_scroll_frames = 0;/' "raycam_render_tests" "^render: ?lecture mode: after a change"
-mutant target-fields-cut src/ui/panels.cpp 's/  if (label_width <= avail \* 0.45f \&\& avail - label_width >= widget_min_width) {/  if (label_width <= avail * 0.45f) {/; s/  if (ImGui::GetContentRegionAvail().x >= needed)/  if (true)/' "raycam_render_tests" "^render: ?lecture mode: at 1"
+mutant target-fields-cut src/ui/panels.cpp 's/  if (deciding_width <= avail \* 0.45f \&\& avail - deciding_width >= widget_min_width) {/  if (deciding_width <= avail * 0.45f) {/; s/  if (ImGui::GetContentRegionAvail().x >= needed)/  if (true)/' "raycam_render_tests" "^render: ?lecture mode: at 1"
 mutant idle-loop-polls src/app/glfw_host.cpp 's/^    glfwWaitEventsTimeout(std::max(wait, 0.001));/    glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"
@@ -483,7 +483,7 @@ if [ "${1:-}" = "--check" ]; then
   shift
   stale=0 checked=0
   scratch_file=$(mktemp)
-  trap 'rm -f "$scratch_file"' EXIT
+  trap 'rm -f "$scratch_file" "$scratch_file.before"' EXIT
   for i in "${!names[@]}"; do
     if [ $# -gt 0 ] && ! printf '%s\n' "$@" | grep -qxF "${names[$i]}"; then continue; fi
     checked=$((checked + 1))
@@ -506,6 +506,19 @@ if [ "${1:-}" = "--check" ]; then
     elif cmp -s "$ROOT/$file" "$scratch_file"; then
       printf '%-40s %s\n' "${names[$i]}" "does not apply: the code it edits in $file moved"
       stale=$((stale + 1))
+    else
+      # A script of several substitutions ("s/a/b/; s/c/d/"): each one, applied after those before it, must
+      # still change the file, or the mutant is only part of the bug it was written for.
+      cp "$ROOT/$file" "$scratch_file"
+      while IFS= read -r part; do
+        cp "$scratch_file" "$scratch_file.before"
+        apply_edit "$scratch_file" "$part" "$function" 2> /dev/null
+        if cmp -s "$scratch_file.before" "$scratch_file"; then
+          printf '%-40s %s\n' "${names[$i]}" "does not apply: its part '$part' edits nothing in $file"
+          stale=$((stale + 1))
+          break
+        fi
+      done < <(printf '%s\n' "${edits[$i]}" | sed 's/; s\//\ns\//g' | { read -r first && [ "$first" != "${edits[$i]}" ] && { echo "$first"; cat; }; })
     fi
   done
   if [ $# -gt 0 ] && [ $checked -ne $# ]; then
