@@ -3,7 +3,11 @@
 // it, in any order, with the plain loop's answer on a tie (nearer_hit: the lower index).
 #pragma once
 
-#include "raycam/ray_caster.h"
+#include "raycam/camera2d.h"
+#include "raycam/camera3d.h"
+#include "raycam/cast_options.h"
+#include "raycam/colour_map.h"
+#include "raycam/scene.h"
 
 namespace raycam::detail {
 

@@ -81,6 +81,21 @@ if (line := fact(doc, anchor)) is not None:
     said = {w.rstrip("/") for w in backticked(line) if w.startswith("third_party/")}
     same(doc, anchor, said, vendored, "the folders of vendored sources")
 
+# The core's public headers: architecture.md's file tree names each one in its include/raycam/ entry (the
+# lines from that entry to the next folder's).
+doc, anchor = "docs/architecture.md", "include/raycam/   public headers of raycam_core:"
+if fact(doc, anchor) is not None:
+    with open(os.path.join(ROOT, doc), encoding="utf-8") as f:
+        lines = f.read().split(anchor, 1)[1].split("\n")
+    entry = [lines[0]]
+    for line in lines[1:]:
+        if not line.startswith(" "):
+            break
+        entry.append(line)
+    said = set(re.findall(r"\b([a-z0-9_]+\.h)\b", " ".join(entry)))
+    found = {n for n in os.listdir(os.path.join(ROOT, "include/raycam")) if n.endswith(".h")}
+    same(doc, anchor, said, found, "the headers in include/raycam/")
+
 for problem in problems:
     print(f"check_doc_facts: {problem}")
 print(f"check_doc_facts: {len(problems)} problems")
