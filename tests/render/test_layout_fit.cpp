@@ -246,15 +246,16 @@ TEST_CASE("at 1x to 3x, every construction step's drawn labels show whole", "[re
 
 namespace {
 // Runs frames until the check's verdict is in (the quiet time is counted on the frames' 60 Hz clock, the
-// program runs on a thread of its own) and then as long as the app's idle loop would (frame_needs_redraw):
-// what is left on screen is what an idle window shows. At most 60 s.
+// program runs on a thread of its own) and then only as long as the app's idle loop would
+// (frame_needs_redraw): what is left on screen is what an idle window shows. No fixed count of frames after
+// the verdict: extra frames would do the scrolling an idle window never does. At most 60 s.
 void until_verdict(headless::HeadlessRenderer& renderer, session::AppState& state) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  int frames = 0;
   do {
     renderer.run_frame(state);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  } while ((++frames < 30 || ui::frame_needs_redraw(state, renderer.panels())) && std::chrono::steady_clock::now() < deadline);
+  } while ((renderer.check().status().empty() || ui::frame_needs_redraw(state, renderer.panels())) &&
+           std::chrono::steady_clock::now() < deadline);
 }
 
 // A folder of the test's own under the temporary directory (its name and the process id), removed at the end.
