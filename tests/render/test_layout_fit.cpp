@@ -915,6 +915,10 @@ TEST_CASE("the overhead view's labels cover no camera, target, disc or axis name
                 INFO("over the axis name " << name);
                 CHECK_FALSE(rects_meet(r, rects.at(name)));
               }
+            // The side view and its title take one corner: the title is broken and made smaller to the
+            // frame's width (at least 160 px, its lines' narrowest), never one line running out across the
+            // view. The frame is square and the title sits above it, so the box is no wider than it is tall.
+            if (std::string(label) == "###label_side_view") CHECK(r.x1 - r.x0 <= std::max(r.y1 - r.y0, 160.0f) + 8.0f);
           }
           ++checked;
           ++index;
