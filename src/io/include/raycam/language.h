@@ -60,7 +60,10 @@ inline const char* language_code(Language language) { return kLanguageCodes[std:
 
 // An error reason's phrasing in every language, English first. In English, "{name}" stands for a variable
 // part (a path, a number, a field name), kept as it is; "{name*}" for a nested reason, itself translated.
-// Each other language places each name once, as "{name}" (without the star). Any other brace is literal.
+// Each other language places each name once, as "{name}" (without the star). A plural group "{{one|many}}"
+// after a count's placeholder: the English matches either form (the code writes the one its count asks for,
+// "1 column", "2 columns"), each other language's template keeps the form the number filled in before it asks
+// for (takes_plural()). Any other brace is literal.
 using ReasonPattern = LocalText;
 
 // Every reason raycam may show (src/io/reason_table.cpp); the first pattern matching the whole text wins.
