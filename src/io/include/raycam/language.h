@@ -1,7 +1,8 @@
 // What every translated text needs, on top of the core's Language and LocalText (raycam/languages.h): the
 // language from a flag or the environment, a table looked up by its English key, and printf-style
 // formatting. The window's table is src/session/text_table.cpp (tr(), text.h), the check command's
-// src/check/check_texts.cpp; the English text is the key in both, as gettext's msgid. Error reasons (what
+// src/check/check_texts.cpp (the figures' src/figure/figure_texts.cpp has the same shape with a lookup of its
+// own: the figure does not link io); the English text is the key in each, as gettext's msgid. Error reasons (what
 // core, io and the checker throw or report, in English, with paths, numbers and field names inside) are
 // translated by pattern where they are shown: translate_reason().
 #pragma once
