@@ -168,7 +168,8 @@ class AnswerReader final : public nlohmann::json_sax<json> {
   bool too_many() {
     too_big = true;
     return fail(flat_ ? formatted(Language::en, "expected %d {{id|ids}}, got more", columns_)
-                      : formatted(Language::en, "expected %d {{row|rows}} of %d {{id|ids}}, got more", rows_, columns_));
+                      : formatted(Language::en, "expected %d {{row|rows}} of %d {{id|ids}}, got more", rows_,
+                                  columns_));
   }
   bool push(Kind kind) {
     if (stack_.size() >= std::size_t(kMaxIgnoredDepth)) return fail(where() + ": nested too deep");

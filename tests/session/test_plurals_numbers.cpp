@@ -163,7 +163,8 @@ std::vector<std::string> bare_reason_counts(const std::string& pattern) {
 }
 }  // namespace
 
-TEST_CASE("no count of an error reason's pattern is left without its plural form", "[ui][text][plural][reasons]") {
+TEST_CASE("no count of an error reason's pattern is left without its plural form",
+          "[ui][text][plural][reasons]") {
   // The scan catches a bare count (seen failing on "{count} columns").
   CHECK(bare_reason_counts("ids[{row}]: {count} columns where row 0 has {columns}") ==
         std::vector<std::string>{"{count} columns"});

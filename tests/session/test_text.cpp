@@ -170,7 +170,8 @@ std::string without_comments(const std::string& code) {
       const std::size_t end = std::min(out.find("*/", i + 2), out.size() - 2) + 2;
       for (; i < end; ++i)
         if (out[i] != '\n') out[i] = ' ';
-    } else if (out.compare(i, 2, "R\"") == 0 && (i == 0 || !(std::isalnum((unsigned char)out[i - 1]) || out[i - 1] == '_'))) {
+    } else if (out.compare(i, 2, "R\"") == 0 &&
+               (i == 0 || !(std::isalnum((unsigned char)out[i - 1]) || out[i - 1] == '_'))) {
       const std::size_t open = std::min(out.find('(', i), out.size());
       const std::string close = ")" + out.substr(i + 2, open - i - 2) + "\"";
       const std::size_t end = std::min(out.find(close, open), out.size() - close.size()) + close.size();
@@ -240,19 +241,20 @@ std::vector<TextCall> text_calls() {
 
 // "file:line: key (table)" for each text call of `code` whose literal key is missing from its table; `counts`
 // receives the calls found per kind.
-std::vector<std::string> missing_keys(const std::string& name, const std::string& code, std::vector<int>& counts) {
+std::vector<std::string> missing_keys(const std::string& name, const std::string& code,
+                                      std::vector<int>& counts) {
   const std::string bare = without_comments(code);
   const std::vector<TextCall> calls = text_calls();
   counts.assign(calls.size(), 0);
   std::vector<std::string> missing;
   for (std::size_t c = 0; c < calls.size(); ++c)
-    for (auto it = std::sregex_iterator(bare.begin(), bare.end(), calls[c].call); it != std::sregex_iterator();
-         ++it) {
+    for (auto it = std::sregex_iterator(bare.begin(), bare.end(), calls[c].call);
+         it != std::sregex_iterator(); ++it) {
       ++counts[c];
       const std::string key = unescape(joined_literals((*it)[1].str()));
       if (!calls[c].has(key))
-        missing.push_back(name + ":" + std::to_string(line_of(bare, std::size_t(it->position()))) + ": \"" + key +
-                          "\" is not in " + calls[c].table + " table");
+        missing.push_back(name + ":" + std::to_string(line_of(bare, std::size_t(it->position()))) + ": \"" +
+                          key + "\" is not in " + calls[c].table + " table");
     }
   return missing;
 }
@@ -261,15 +263,17 @@ std::vector<std::string> missing_keys(const std::string& name, const std::string
 TEST_CASE("every text call in src/ has its key in the table it looks in", "[ui][text][language]") {
   // The scan sees each kind of call, in a comment-free text, and names the place of a missing key.
   std::vector<int> counts;
-  CHECK(missing_keys("a.cpp", "x = tr(state.language, \"Camera###camera\");\n"
-                              "y = check::textf(lang,\n    \"score: %d / %d {{case|cases}} \"\n"
-                              "    \"passed (%.0f %%)\\n\", 1, 2, 50.0);\n"
-                              "z = figure_text(lang, \"up\");  // tr(language, \"English text\")\n",
+  CHECK(missing_keys("a.cpp",
+                     "x = tr(state.language, \"Camera###camera\");\n"
+                     "y = check::textf(lang,\n    \"score: %d / %d {{case|cases}} \"\n"
+                     "    \"passed (%.0f %%)\\n\", 1, 2, 50.0);\n"
+                     "z = figure_text(lang, \"up\");  // tr(language, \"English text\")\n",
                      counts)
             .empty());
   CHECK(counts == std::vector<int>{1, 1, 1, 0});
   CHECK(missing_keys("b.cpp", "\n  a = figure_text(lang, \"upward\");", counts) ==
-        std::vector<std::string>{"b.cpp:2: \"upward\" is not in the figure's (src/figure/figure_texts.cpp) table"});
+        std::vector<std::string>{
+            "b.cpp:2: \"upward\" is not in the figure's (src/figure/figure_texts.cpp) table"});
   CHECK(missing_keys("c.cpp", "f(R\"(tr(l, \"no such key\"))\");", counts).empty());  // inside a raw string
   CHECK(missing_keys("d.cpp", "text(h.language, \"no such key\")", counts).size() == 1);
   CHECK(missing_keys("e.cpp", "tr_reason(lang, \"no answer within the timeout\")", counts).empty());
