@@ -96,7 +96,7 @@ mutant figure-eye-before-scaling src/figure/construction_figure.cpp 's/const glm
 mutant figure-png-pixel-size src/figure/figure_layout.cpp 's/return {0.75 \* width, 0.75 \* height, 1.0 \/ 0.75};/return {0.75 * width, 0.75 * height, 1.0 \/ 0.8};/' "$FIGURE" "^figure:"
 mutant figure-objects-culled src/figure/figure_files.cpp 's/^  for (const PageDisc\& disc : page.discs) {$/  for (const PageDisc\& disc : page.discs) { if (\&disc - page.discs.data() >= 1000) break;/' "$FIGURE" "^figure:"
 mutant figure-export-ignores-the-step src/session/figure_export.cpp 's/state.construction_step < 0 ? count - 1 : std::min(state.construction_step, count - 1)/count - 1/' "raycam_session_tests" "^session:.*Export figure"
-mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/std::string(LocalText{{"frame (", "cadre ("}}\[lang\])/std::string("frame (")/' "$FIGURE" "^figure:"
+mutant figure-french-titles-in-english src/figure/construction_figure.cpp 's/std::string(figure_text(lang, "frame ("))/std::string("frame (")/' "$FIGURE" "^figure:"
 # --- checker safety ---
 CHECK="raycam_check_tests raycam-cli"
 mutant grading-one-wrong-pixel-passes src/check/grading.cpp 's/result.status = result.wrong_pixels == 0 ? CaseStatus::pass/result.status = result.wrong_pixels <= 1 ? CaseStatus::pass/' "$CHECK" "^check:"
@@ -470,6 +470,17 @@ mutant shipped-name-untranslated src/io/demo_names.cpp 's/{"left twin", "jumeau 
 mutant plain-text-maths-in-a-mistake src/core/classic_mistakes.cpp 's/seuls les impacts t ≥ 0 comptent/seuls les impacts t >= 0 comptent/' "raycam_ui_tests" "^ui: ?the mistakes. explanations"
 mutant glyphs-of-the-tables-not-loaded src/ui/fonts.cpp 's/for (const char\* text : shown_table_texts()) builder.AddText(text);/(void)0;/' "raycam_ui_tests" "^ui: ?every character of the window"
 mutant format-star-not-expanded src/io/local_format.cpp@one_conversion 's/  for (std::size_t star = spec.find(.\*.); star != std::string::npos;/  for (std::size_t star = std::string::npos; star != std::string::npos;/' "raycam_session_tests" "^session: ?one number formatter per language"
+# --- #46 item 3: one table for every word (each call's key in its table; the reasons' plurals) ---
+TEXT_CALLS="^session: ?every text call in src/"
+REASON_PLURALS="^session: ?(error reasons: a count of 1|no count of an error reason)"
+mutant figure-table-key-renamed src/figure/figure_texts.cpp 's/      {"up", "haut"},/      {"upward", "haut"},/' "$SESSION" "$TEXT_CALLS"
+mutant figure-call-key-typo src/figure/construction_figure.cpp 's/figure_text(lang, "step ")/figure_text(lang, "step")/' "$SESSION" "$TEXT_CALLS"
+mutant checker-call-key-typo src/check/check_report.cpp 's/textf(lang, "warning: %s\\n", h.limits_note/textf(lang, "warning %s\\n", h.limits_note/' "$SESSION" "$TEXT_CALLS"
+mutant window-call-key-typo src/session/app_state.cpp 's/tr(state.language, " (drawn with the fast caster)")/tr(state.language, " (drawn by the fast caster)")/' "$SESSION" "$TEXT_CALLS"
+mutant reason-plural-form-fixed src/io/reason_translation.cpp 's/text += takes_plural(language, count) ? (\*it)\[4\].str() : (\*it)\[3\].str();/text += (*it)[4].str();/' "$SESSION" "$REASON_PLURALS"
+mutant reason-count-not-read src/io/reason_translation.cpp 's/if (k < p.names.size()) whole_number(parts\[k\], count);/(void)whole_number;/' "$SESSION" "$REASON_PLURALS"
+mutant reason-plural-group-dropped src/io/reason_table.cpp 's/"ids\[{row}\] : {count} {{colonne|colonnes}} alors que/"ids[{row}] : {count} colonnes alors que/' "$SESSION" "$REASON_PLURALS"
+mutant answer-english-count-bare src/check/answer.cpp 's/"ids\[%d\]: %d {{column|columns}} where row 0 has %d"/"ids[%d]: %d columns where row 0 has %d"/' "$SESSION" "$REASON_PLURALS"
 MUTANTS_END=1
 
 if [ "${1:-}" = "--list" ]; then

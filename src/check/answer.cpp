@@ -5,6 +5,8 @@
 #include <optional>
 #include <nlohmann/json.hpp>
 
+#include "raycam/language.h"
+
 namespace raycam::check {
 
 namespace {
@@ -88,8 +90,8 @@ class AnswerReader final : public nlohmann::json_sax<json> {
     if (kind == Kind::row) {
       if (answer.rows == 0) answer.columns = row_length_;
       if (row_length_ != answer.columns)
-        return fail("ids[" + std::to_string(answer.rows) + "]: " + std::to_string(row_length_) +
-                    " columns where row 0 has " + std::to_string(answer.columns));
+        return fail(formatted(Language::en, "ids[%d]: %d {{column|columns}} where row 0 has %d", answer.rows,
+                              row_length_, answer.columns));
       ++answer.rows;
     } else if (kind == Kind::md_row) {
       if (md_columns_ != dimension_ + 1) return fail(md_expected());
@@ -156,8 +158,8 @@ class AnswerReader final : public nlohmann::json_sax<json> {
     }
   }
   std::string md_expected() const {
-    const std::string side = std::to_string(dimension_ + 1);
-    return "md: expected " + side + " rows of " + side + " numbers";
+    return formatted(Language::en, "md: expected %d {{row|rows}} of %d {{number|numbers}}", dimension_ + 1,
+                     dimension_ + 1);
   }
   bool fail(std::string message) {
     error = std::move(message);
@@ -165,9 +167,9 @@ class AnswerReader final : public nlohmann::json_sax<json> {
   }
   bool too_many() {
     too_big = true;
-    return fail(flat_ ? "expected " + std::to_string(columns_) + " ids, got more"
-                                : "expected " + std::to_string(rows_) + " rows of " + std::to_string(columns_) +
-                                      " ids, got more");
+    return fail(flat_ ? formatted(Language::en, "expected %d {{id|ids}}, got more", columns_)
+                      : formatted(Language::en, "expected %d {{row|rows}} of %d {{id|ids}}, got more", rows_,
+                                  columns_));
   }
   bool push(Kind kind) {
     if (stack_.size() >= std::size_t(kMaxIgnoredDepth)) return fail(where() + ": nested too deep");
@@ -199,8 +201,8 @@ class AnswerReader final : public nlohmann::json_sax<json> {
     if (exact < -(number_integer_t(1) << 31) || exact > (number_integer_t(1) << 31) - 1)
       return fail(where() + ": " + std::to_string(exact) + " is not an id");
     if (!flat_ && answer.rows > 0 && row_length_ >= answer.columns)  // ragged: named before "too many"
-      return fail("ids[" + std::to_string(answer.rows) + "]: " + std::to_string(row_length_ + 1) +
-                  " columns (or more) where row 0 has " + std::to_string(answer.columns));
+      return fail(formatted(Language::en, "ids[%d]: %d {{column|columns}} (or more) where row 0 has %d",
+                            answer.rows, row_length_ + 1, answer.columns));
     if (flat_ ? int(answer.ids.size()) >= columns_ : row_length_ >= columns_) return too_many();
     answer.ids.push_back(int(exact));
     ++row_length_;
@@ -256,10 +258,10 @@ ParsedAnswer parse_answer(const std::string& text, int dimension, int rows, int 
     }
   if (answer.rows != rows || answer.columns != columns) {
     parsed.wrong_size = true;
-    parsed.error = flat ? "expected " + std::to_string(columns) + " ids, got " + std::to_string(answer.columns)
-                                  : "expected " + std::to_string(rows) + " rows of " + std::to_string(columns) +
-                                        " ids, got " + std::to_string(answer.rows) + " of " +
-                                        std::to_string(answer.columns);
+    // (the English names each count's noun in its number: the reason table's patterns take either form)
+    parsed.error = flat ? formatted(Language::en, "expected %d {{id|ids}}, got %d", columns, answer.columns)
+                        : formatted(Language::en, "expected %d {{row|rows}} of %d {{id|ids}}, got %d of %d", rows,
+                                    columns, answer.rows, answer.columns);
   }
   parsed.answer.emplace(std::move(answer));
   return parsed;

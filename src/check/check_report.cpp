@@ -108,19 +108,22 @@ std::string case_reason(Language lang, const CaseResult& r) {
 
 std::string text_report(const ReportHeader& h, const std::vector<CheckCase>& cases, const StudentReport& report) {
   const Language lang = h.language;
-  std::string out = textf(lang, "raycam-cli check: %zu {{case|cases}} (mode %s, seed %llu), sandbox: %s\n", cases.size(),
-                          h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
+  std::string out =
+      textf(lang, "raycam-cli check: %zu {{case|cases}} (mode %s, seed %llu), sandbox: %s\n", cases.size(),
+            h.mode.c_str(), h.seed, h.sandboxed ? "bubblewrap" : text(lang, "none"));
   if (!h.sandboxed && !h.sandbox_note.empty()) out += textf(lang, "warning: %s\n", h.sandbox_note.c_str());
   if (!h.limits_note.empty()) out += textf(lang, "warning: %s\n", h.limits_note.c_str());
-  out += textf(lang, "%5s  %3s  %-10s  %15s  %s\n", text(lang, "case"), text(lang, "dim"), text(lang, "status"),
-               text(lang, "wrong pixels"), text(lang, "worst pixel or reason"));
+  // The table's layout has no words of its own (formatted(), not textf(): nothing to look up).
+  out += formatted(lang, "%5s  %3s  %-10s  %15s  %s\n", text(lang, "case"), text(lang, "dim"),
+                   text(lang, "status"), text(lang, "wrong pixels"), text(lang, "worst pixel or reason"));
   for (const CaseResult& r : report.results) {
     const std::string wrong = r.status == CaseStatus::pass || r.status == CaseStatus::fail
                                   ? std::to_string(r.wrong_pixels) + " / " + std::to_string(r.pixels)
                                   : std::string();
     const std::string why = case_reason(lang, r);
-    out += textf(lang, "%5d  %dD   %-10s  %15s  %s%s\n", r.number, r.dimension, text(lang, status_name(r.status)),
-                 wrong.c_str(), why.c_str(), r.md == "differs" ? text(lang, " (md differs)") : "");
+    out += formatted(lang, "%5d  %dD   %-10s  %15s  %s%s\n", r.number, r.dimension,
+                     text(lang, status_name(r.status)), wrong.c_str(), why.c_str(),
+                     r.md == "differs" ? text(lang, " (md differs)") : "");
   }
   const int n = int(report.results.size());
   out += textf(lang, "score: %d / %d {{case|cases}} passed (%.0f %%)\n",

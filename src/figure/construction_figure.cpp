@@ -11,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "figure/figure_texts.h"
 #include "figure/math_text.h"
 #include "raycam/intersect.h"
 #include "raycam/transform.h"
@@ -104,7 +105,7 @@ std::string mistakes_said(const ClassicMistakes& mistakes, int dimension, Langua
     if (mistakes.*info.flag && exists_in(info, dimension))
       names += (names.empty() ? "" : ", ") + escape_markup(info.label[language]);
   if (names.empty()) return "";
-  return LocalText{{"; classic mistake on: ", " ; erreur classique activée : "}}[language] + names;
+  return figure_text(language, "; classic mistake on: ") + names;
 }
 
 struct Extent {
@@ -207,24 +208,21 @@ std::string caption_2d(const Camera2D& camera, int index, Language lang) {
   const Orbit2D& orbit = camera.orbit();
   switch (index) {
     case 0:
-      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis centred at $Ω$, eye "
-                        "$E_0 = (0, 1)$, $\\vec{u}_0 = (0, −1)$",
-                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]$ sur l'axe $x$ centré en $Ω$, œil "
-                        "$E_0 = (0, 1)$, $\\vec{u}_0 = (0, −1)$"}}[lang];
+      return figure_text(
+          lang,
+          "$M_d = I$: the canonical camera, screen $[−1, 1]$ on the $x$ axis centred at $Ω$, eye "
+          "$E_0 = (0, 1)$, $\\vec{u}_0 = (0, −1)$");
     case 1:
-      return LocalText{{"scaling $H(1, d_f)$, $d_f = ", "homothétie $H(1, d_f)$, $d_f = "}}[lang] +
-             decimal(orbit.df, 3, lang) +
-             LocalText{{"$: the eye moves back to $E = (0, d_f)$", "$ : l'œil recule en $E = (0, d_f)$"}}[lang];
+      return figure_text(lang, "scaling $H(1, d_f)$, $d_f = ") + decimal(orbit.df, 3, lang) +
+             figure_text(lang, "$: the eye moves back to $E = (0, d_f)$");
     case 2:
-      return LocalText{{"rotation $R(α) = R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ",
-                        "rotation $R(α) = R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = "}}[lang] +
-             degrees_text(std::remainder(view_angle_phi_v(camera), glm::two_pi<double>()), lang) + "$, $α = " +
-             degrees_text(camera.placement().alpha, lang) +
-             LocalText{{"$: $\\vec{u}$ is aligned with $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$",
-                        "$ : $\\vec{u}$ est aligné sur $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$"}}[lang];
+      return figure_text(lang, "rotation $R(α) = R(φ_v)·R(ψ_0)$, $ψ_0 = +π/2$, $φ_v = ") +
+             degrees_text(std::remainder(view_angle_phi_v(camera), glm::two_pi<double>()), lang) +
+             "$, $α = " + degrees_text(camera.placement().alpha, lang) +
+             figure_text(lang, "$: $\\vec{u}$ is aligned with $\\vec{v} = \\vec{PC}/‖\\vec{PC}‖$");
     default:
-      return LocalText{{"translation $T(\\vec{ΩP})$: $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = ",
-                        "translation $T(\\vec{ΩP})$ : $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = "}}[lang] +
+      return figure_text(lang,
+                         "translation $T(\\vec{ΩP})$: $M_d = T·R·H$, $P = C + d (cos θ, sin θ)$, $d = ") +
              decimal(orbit.d, 3, lang) + "$, $θ = " + degrees_text(orbit.theta, lang) + "$";
   }
 }
@@ -237,7 +235,7 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
   Frame frame;
   static const char kLetters[] = "abcd";
   frame.id = std::string(1, kLetters[index]);
-  frame.title = std::string(LocalText{{"frame (", "cadre ("}}[lang]) + frame.id + ")";
+  frame.title = std::string(figure_text(lang, "frame (")) + frame.id + ")";
   frame.matrix = rows_of<3>(m);
   frame.matrix_size = 3;
   frame.caption = caption_2d(camera, index, lang) + mistakes_said(camera.mistakes(), 2, lang);
@@ -299,24 +297,21 @@ Frame frame_2d(const Scene2D& scene, const Camera2D& camera, int index, const Fi
 std::string caption_3d(const Orbit3D& orbit, int step, Language lang) {
   switch (step) {
     case 0:
-      return LocalText{{"$M_d = I$: the canonical camera, screen $[−1, 1]^2$ centred at $Ω$, eye $E_0 = (0, 0, 1)$, "
-                        "$\\vec{u}_0 = (0, 0, −1)$",
-                        "$M_d = I$ : la caméra canonique, écran $[−1, 1]^2$ centré en $Ω$, œil $E_0 = (0, 0, 1)$, "
-                        "$\\vec{u}_0 = (0, 0, −1)$"}}[lang];
+      return figure_text(
+          lang,
+          "$M_d = I$: the canonical camera, screen $[−1, 1]^2$ centred at $Ω$, eye $E_0 = (0, 0, 1)$, "
+          "$\\vec{u}_0 = (0, 0, −1)$");
     case 1:
-      return LocalText{{"scaling $H(1, 1, d_f)$, $d_f = ", "homothétie $H(1, 1, d_f)$, $d_f = "}}[lang] +
-             decimal(orbit.df, 3, lang) +
-             LocalText{{"$: the eye moves back to $E = (0, 0, d_f)$", "$ : l'œil recule en $E = (0, 0, d_f)$"}}[lang];
+      return figure_text(lang, "scaling $H(1, 1, d_f)$, $d_f = ") + decimal(orbit.df, 3, lang) +
+             figure_text(lang, "$: the eye moves back to $E = (0, 0, d_f)$");
     case 2:
-      return LocalText{{"rotation $R_z(ψ_0)$, $ψ_0 = +π/2$: the image's up turns within the screen",
-                        "rotation $R_z(ψ_0)$, $ψ_0 = +π/2$ : le haut de l'image tourne dans l'écran"}}[lang];
+      return figure_text(lang, "rotation $R_z(ψ_0)$, $ψ_0 = +π/2$: the image's up turns within the screen");
     case 3:
       return "rotation $R_y(φ)$, $φ = " + degrees_text(orbit.phi, lang) + "$";
     case 4:
       return "rotation $R_z(θ)$, $θ = " + degrees_text(orbit.theta, lang) + "$";
     default:
-      return LocalText{{"translation $T(\\vec{ΩP})$: $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = ",
-                        "translation $T(\\vec{ΩP})$ : $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = "}}[lang] +
+      return figure_text(lang, "translation $T(\\vec{ΩP})$: $M_d = T·R_z(θ)·R_y(φ)·R_z(ψ_0)·H$, $d = ") +
              decimal(orbit.d, 3, lang) + "$";
   }
 }
@@ -327,7 +322,7 @@ Frame frame_3d(const Scene3D& scene, const Camera3D& camera, int step, const Fig
   const Orbit3D& orbit = camera.orbit();
   Frame frame;
   frame.id = std::to_string(step);
-  frame.title = std::string(LocalText{{"step ", "étape "}}[lang]) + frame.id;
+  frame.title = std::string(figure_text(lang, "step ")) + frame.id;
   frame.matrix = rows_of<4>(m);
   frame.matrix_size = 4;
   frame.caption = caption_3d(orbit, step, lang) + mistakes_said(camera.mistakes(), 3, lang);
@@ -354,7 +349,7 @@ Frame frame_3d(const Scene3D& scene, const Camera3D& camera, int step, const Fig
   frame.segments.push_back({oblique_projection(centre), oblique_projection(centre + view), Stroke::arrow});
   frame.labels.push_back({oblique_projection(centre + view), step == 0 ? "$\\vec{u}_0$" : "$\\vec{u}$"});
   frame.segments.push_back({oblique_projection(centre), oblique_projection(centre + 0.8 * up), Stroke::arrow});
-  frame.labels.push_back({oblique_projection(centre + 0.8 * up), LocalText{{"up", "haut"}}[lang]});
+  frame.labels.push_back({oblique_projection(centre + 0.8 * up), figure_text(lang, "up")});
   const glm::dvec3 eye = eye_of(m);
   for (const glm::dvec3& corner : corners)  // the field of view: eye to each corner
     frame.segments.push_back({oblique_projection(eye), oblique_projection(corner), Stroke::construction});

@@ -1,7 +1,9 @@
 // Every error reason raycam shows, English pattern → French (the syntax is raycam/language.h's
 // ReasonPattern). Grouped by the code that writes the English; within a group, a specific pattern comes
 // before a general one that would also match (the first match wins). Field names, paths, numbers and JSON
-// values stay as they are; French typography: a space before ':' and ';', « » around quoted names.
+// values stay as they are; French typography: a space before ':' and ';', « » around quoted names. A count
+// that a noun follows takes a plural group "{{one|many}}" in every language (the English code writes the form
+// its count asks for: "1 column", "2 columns").
 // tests/session/test_error_reasons.cpp produces every message from its real code path and checks each pattern
 // is used.
 #include "raycam/language.h"
@@ -55,8 +57,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"a finite number in {range}", "un nombre fini dans {range}"},
       {"a number", "un nombre"},
       {"an integer in {range}", "un entier dans {range}"},
-      {"an array of {count} numbers", "un tableau de {count} nombres"},
-      {"an array of {count} integers in {range}", "un tableau de {count} entiers dans {range}"},
+      {"an array of {count} {{number|numbers}}", "un tableau de {count} {{nombre|nombres}}"},
+      {"an array of {count} {{integer|integers}} in {range}", "un tableau de {count} {{entier|entiers}} dans {range}"},
       {"a string", "une chaîne de caractères"},
       {"a field \"{key}\" (it is required)", "un champ « {key} » (obligatoire)"},
       {"a JSON object with \"ids\"", "un objet JSON avec « ids »"},
@@ -67,7 +69,7 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"\"{type}\" in a {dimension}D scene", "« {type} » dans une scène {dimension}D"},
       {"[columns, rows]", "[colonnes, lignes]"},
       {"columns x rows <= {count}", "colonnes × lignes <= {count}"},
-      {"at most {count} objects", "au plus {count} objets"},
+      {"at most {count} {{object|objects}}", "au plus {count} {{objet|objets}}"},
 
       // ---- io: writing a scene file, a PNG, an id text ----
       {"{path}: cannot write (no temporary file beside it); left unchanged",
@@ -110,8 +112,8 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"{field} = {value} is out of range: expected {what*}",
        "{field} = {value} hors limites : on attend {what}"},
       {"a finite angle with |angle| <= {max} rad", "un angle fini avec |angle| <= {max} rad"},
-      {"circles: the exact bar takes at most {max} circles (its cost is quadratic), got {count}",
-       "circles : la barre exacte prend au plus {max} cercles (son coût est quadratique) ; reçu : {count}"},
+      {"circles: the exact bar takes at most {max} {{circle|circles}} (its cost is quadratic), got {count}",
+       "circles : la barre exacte prend au plus {max} {{cercle|cercles}} (son coût est quadratique) ; reçu : {count}"},
 
       // ---- the checker: how a run ended (src/check) ----
       {"exit status {code} ({signal*}?)", "code de sortie {code} ({signal} ?)"},
@@ -130,19 +132,20 @@ const std::vector<ReasonPattern>& reason_patterns() {
 
       // ---- the checker: what is wrong with an answer (src/check) ----
       {"not JSON: syntax error at byte {byte}", "pas du JSON : erreur de syntaxe à l'octet {byte}"},
-      // (rows before ids: "{count} ids" would also take "2 rows of 2 ids")
-      {"expected {rows} rows of {columns} ids, got more",
-       "on attend {rows} lignes de {columns} identifiants ; davantage reçues"},
-      {"expected {rows} rows of {columns} ids, got {got_rows} of {got_columns}",
-       "on attend {rows} lignes de {columns} identifiants ; reçu : {got_rows} × {got_columns}"},
-      {"expected {count} ids, got more", "on attend {count} identifiants ; davantage reçus"},
-      {"expected {count} ids, got {got}", "on attend {count} identifiants ; reçu : {got}"},
+      // (rows before ids: "{count} {{id|ids}}" would also take "2 rows of 2 ids")
+      {"expected {rows} {{row|rows}} of {columns} {{id|ids}}, got more",
+       "on attend {rows} {{ligne|lignes}} de {columns} {{identifiant|identifiants}} ; davantage reçues"},
+      {"expected {rows} {{row|rows}} of {columns} {{id|ids}}, got {got_rows} of {got_columns}",
+       "on attend {rows} {{ligne|lignes}} de {columns} {{identifiant|identifiants}} ; reçu : {got_rows} × {got_columns}"},
+      {"expected {count} {{id|ids}}, got more", "on attend {count} {{identifiant|identifiants}} ; davantage reçus"},
+      {"expected {count} {{id|ids}}, got {got}", "on attend {count} {{identifiant|identifiants}} ; reçu : {got}"},
       {"expected {what*}", "on attend {what}"},
       {"{at} = {id}: expected an id in [-1, {max}]",
        "{at} = {id} : on attend un identifiant dans [-1, {max}]"},
-      {"md: expected {rows} rows of {columns} numbers (finite), got {value*}",
-       "md : on attend {rows} lignes de {columns} nombres (finis) ; reçu : {value}"},
-      {"md: expected {rows} rows of {columns} numbers", "md : on attend {rows} lignes de {columns} nombres"},
+      {"md: expected {rows} {{row|rows}} of {columns} {{number|numbers}} (finite), got {value*}",
+       "md : on attend {rows} {{ligne|lignes}} de {columns} {{nombre|nombres}} (finis) ; reçu : {value}"},
+      {"md: expected {rows} {{row|rows}} of {columns} {{number|numbers}}",
+       "md : on attend {rows} {{ligne|lignes}} de {columns} {{nombre|nombres}}"},
       {"{at*}: expected {what*}, got {value*}", "{at} : on attend {what} ; reçu : {value}"},
       {"the answer", "la réponse"},
       {"an integer id", "un identifiant entier"},
@@ -153,10 +156,10 @@ const std::vector<ReasonPattern>& reason_patterns() {
       {"a boolean", "un booléen"},
       {"a list", "une liste"},
       {"{at}: {number} is not an id", "{at} : {number} n'est pas un identifiant"},
-      {"ids[{row}]: {count} columns (or more) where row 0 has {columns}",
-       "ids[{row}] : {count} colonnes (ou plus) alors que la ligne 0 en a {columns}"},
-      {"ids[{row}]: {count} columns where row 0 has {columns}",
-       "ids[{row}] : {count} colonnes alors que la ligne 0 en a {columns}"},
+      {"ids[{row}]: {count} {{column|columns}} (or more) where row 0 has {columns}",
+       "ids[{row}] : {count} {{colonne|colonnes}} (ou plus) alors que la ligne 0 en a {columns}"},
+      {"ids[{row}]: {count} {{column|columns}} where row 0 has {columns}",
+       "ids[{row}] : {count} {{colonne|colonnes}} alors que la ligne 0 en a {columns}"},
       {"{at}: nested too deep", "{at} : imbrication trop profonde"},
   };
   return table;

@@ -1,6 +1,7 @@
 // translate_reason(): each ReasonPattern's English becomes an anchored regular expression once (literal text
-// escaped, each placeholder a lazy group), matched against the whole reason; the asked language's template is
-// then filled with the captured parts.
+// escaped, each placeholder a lazy group, each plural group "{{one|many}}" either form), matched against the
+// whole reason; the asked language's template is then filled with the captured parts, each plural group
+// taking the form the last number filled in before it asks for (takes_plural(), as format_text() does).
 #include <regex>
 
 #include "raycam/language.h"
@@ -8,7 +9,9 @@
 namespace raycam {
 
 namespace {
-const std::regex kPlaceholder(R"(\{([a-z_]+)(\*?)\})");
+// A placeholder "{name}" or "{name*}" (submatches 1, 2), or a plural group "{{one|many}}" (submatches 3, 4).
+const std::regex kPart(R"(\{([a-z_]+)(\*?)\}|\{\{([^{}|]*)\|([^{}|]*)\}\})");
+bool is_plural_group(const std::smatch& part) { return part[3].matched; }
 
 struct CompiledPattern {
   std::regex english;
@@ -32,12 +35,16 @@ CompiledPattern compile(const ReasonPattern& pattern) {
   const std::string en = pattern.english();
   std::string expression;
   std::size_t last = 0;
-  for (auto it = std::sregex_iterator(en.begin(), en.end(), kPlaceholder); it != std::sregex_iterator();
-       ++it) {
-    expression += escaped(en.substr(last, std::size_t(it->position()) - last)) + "(.+?)";
+  for (auto it = std::sregex_iterator(en.begin(), en.end(), kPart); it != std::sregex_iterator(); ++it) {
+    expression += escaped(en.substr(last, std::size_t(it->position()) - last));
+    last = std::size_t(it->position() + it->length());
+    if (is_plural_group(*it)) {  // the code writes the form its count asks for: either matches
+      expression += "(?:" + escaped((*it)[3]) + "|" + escaped((*it)[4]) + ")";
+      continue;
+    }
+    expression += "(.+?)";
     compiled.names.push_back((*it)[1]);
     compiled.nested.push_back((*it)[2].length() > 0);
-    last = std::size_t(it->position() + it->length());
   }
   expression += escaped(en.substr(last));
   compiled.english = std::regex(expression);
@@ -52,6 +59,13 @@ const std::vector<CompiledPattern>& compiled_patterns() {
     return out;
   }();
   return all;
+}
+
+// `text` read as a whole number ("2", "-1") into `count`; anything else ("[0, 255]", "a.json") leaves it.
+void whole_number(const std::string& text, long long& count) {
+  const std::size_t digits = text.find_first_not_of("0123456789", text.size() > 1 && text[0] == '-' ? 1 : 0);
+  if (text.empty() || text == "-" || digits != std::string::npos || text.size() > 18) return;
+  count = std::stoll(text);
 }
 
 // Nested reasons are a few levels deep at most (a detail around a reason around a phrase); the bound only
@@ -76,13 +90,18 @@ std::string translated(Language language, const std::string& english, std::vecto
     const std::string form = (*p.templates)[language];
     std::string text;
     std::size_t last = 0;
-    for (auto it = std::sregex_iterator(form.begin(), form.end(), kPlaceholder);
-         it != std::sregex_iterator(); ++it) {
+    long long count = 0;  // the last part filled in that is a whole number: it picks the next group's form
+    for (auto it = std::sregex_iterator(form.begin(), form.end(), kPart); it != std::sregex_iterator(); ++it) {
       text += form.substr(last, std::size_t(it->position()) - last);
+      last = std::size_t(it->position() + it->length());
+      if (is_plural_group(*it)) {
+        text += takes_plural(language, count) ? (*it)[4].str() : (*it)[3].str();
+        continue;
+      }
       std::size_t k = 0;
       while (k < p.names.size() && p.names[k] != (*it)[1]) ++k;
       text += k < p.names.size() ? parts[k] : it->str();
-      last = std::size_t(it->position() + it->length());
+      if (k < p.names.size()) whole_number(parts[k], count);
     }
     text += form.substr(last);
     return text;

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "raycam/language.h"
 #include "raycam/limits.h"
 #include "io/scene_file_parts.h"
 
@@ -94,7 +95,7 @@ class FieldReader {
 
   std::vector<double> vector_of(const json& value, const FieldName& field, std::size_t count) const {
     if (!value.is_array() || value.size() != count)
-      fail(field, "an array of " + std::to_string(count) + " numbers", &value);
+      fail(field, formatted(Language::en, "an array of %zu {{number|numbers}}", count), &value);
     std::vector<double> out;
     for (std::size_t i = 0; i < count; ++i) {
       const double x = number(value[i], FieldName(field, i));

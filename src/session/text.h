@@ -2,8 +2,11 @@
 // arguments), with the English text as the key, as gettext's _() does; the French of every key is in one
 // table, src/session/text_table.cpp. The table is compiled in: it works on a fresh machine with no locale
 // generated. tests/session/test_text.cpp checks that every entry has both languages with the same printf
-// conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") in src/ui and
-// src/app has an entry.
+// conversions and ImGui "###id", and that every tr("...") / trf("...") / tr_later("...") anywhere under src/
+// (the window's src/session, src/ui, src/app, the page's src/web) has an entry; the same test holds the
+// checker's check::text("...") calls to src/check/check_texts.cpp, the figures' figure_text("...") to
+// src/figure/figure_texts.cpp, and a tr_reason() of a literal to a pattern of src/io/reason_table.cpp
+// (docs/architecture.md, "Where each text lives").
 //
 // Add a string: write tr(state.language, "English text") where it is shown (the language is passed: there is no
 // language global), and add {"English text", "Texte français"} to

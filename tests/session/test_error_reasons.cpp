@@ -506,12 +506,49 @@ TEST_CASE("error reasons: a sample of real reasons reads exactly as French write
       // Answers: what was expected, then what came.
       {answer_error(R"({"ids": [0, 0]})"), "on attend 4 identifiants ; reçu : 2"},
       {answer_error(R"({"ids": [0, 0, 0, 7]})"), "ids[3] = 7 : on attend un identifiant dans [-1, 1]"},
-      {answer_error(R"({"ids": [[0, 0], [0]]})", 3), "ids[1] : 1 colonnes alors que la ligne 0 en a 2"},
+      {answer_error(R"({"ids": [[0, 0], [0]]})", 3), "ids[1] : 1 colonne alors que la ligne 0 en a 2"},
       {answer_error(R"({"ids": [[0, 0], [0, 0], [0, 0]]})", 3), "on attend 2 lignes de 2 identifiants ; davantage reçues"},
   };
   for (const auto& [english, french] : sample) {
     INFO(english);
     CHECK(translate_reason(Language::fr, english) == french);
+  }
+}
+
+// A count in a reason takes its noun's number in each language: English plural but for 1, French for 2 and
+// more. Each reason is the checker's own, for an answer with 1 and with 2 (or more) of the thing counted.
+TEST_CASE("error reasons: a count of 1 and of 2 read right in English and in French",
+          "[session][language][reasons][plural]") {
+  // An answer checked against one row of 1 pixel (3D: rows x columns), or a 2D image of n pixels.
+  auto answer_3d = [](const std::string& text, int rows, int columns) {
+    return check::parse_answer(text, 3, rows, columns, 2).error;
+  };
+  auto answer_2d = [](const std::string& text, int n) { return check::parse_answer(text, 2, 1, n, 2).error; };
+  const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> reasons = {
+      // ragged rows: the row's own count
+      {answer_3d(R"({"ids": [[0, 0], [0]]})", 2, 2),
+       {"ids[1]: 1 column where row 0 has 2", "ids[1] : 1 colonne alors que la ligne 0 en a 2"}},
+      {answer_3d(R"({"ids": [[0, 0, 0], [0, 0]]})", 2, 3),
+       {"ids[1]: 2 columns where row 0 has 3", "ids[1] : 2 colonnes alors que la ligne 0 en a 3"}},
+      {answer_3d(R"({"ids": [[0], [0, 0]]})", 2, 2),
+       {"ids[1]: 2 columns (or more) where row 0 has 1",
+        "ids[1] : 2 colonnes (ou plus) alors que la ligne 0 en a 1"}},
+      // the size expected: one id, or two
+      {answer_2d(R"({"ids": [0, 0]})", 1),
+       {"expected 1 id, got more", "on attend 1 identifiant ; davantage reçus"}},
+      {answer_2d(R"({"ids": [0]})", 2), {"expected 2 ids, got 1", "on attend 2 identifiants ; reçu : 1"}},
+      {answer_2d(R"({"ids": []})", 1), {"expected 1 id, got 0", "on attend 1 identifiant ; reçu : 0"}},
+      // one row of one id, two rows of two
+      {answer_3d(R"({"ids": [[0], [0]]})", 1, 1),
+       {"expected 1 row of 1 id, got more", "on attend 1 ligne de 1 identifiant ; davantage reçues"}},
+      {answer_3d(R"({"ids": [[0, 0]]})", 2, 2),
+       {"expected 2 rows of 2 ids, got 1 of 2", "on attend 2 lignes de 2 identifiants ; reçu : 1 × 2"}},
+  };
+  for (const auto& [english, expected] : reasons) {
+    INFO(english);
+    CHECK(english == expected.first);
+    CHECK(translate_reason(Language::en, english) == expected.first);
+    CHECK(translate_reason(Language::fr, english) == expected.second);
   }
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "check/check_texts.h"
+#include "figure/figure_texts.h"
 #include "raycam/language.h"
 #include "session/text.h"
 
@@ -122,6 +123,7 @@ TEST_CASE("no count text of any table is left without its plural form", "[ui][te
   std::vector<const Translation*> rows;
   for (const Translation& t : session::translations()) rows.push_back(&t);
   for (const Translation& t : check::check_translations()) rows.push_back(&t);
+  for (const LocalText& t : figure::figure_translations()) rows.push_back(&t);
   // The scan catches a bare count (seen failing on "%d files").
   CHECK(bare_counts("wrote %d files: %s") == std::vector<std::string>{"%d files"});
   CHECK(bare_counts("wrote %d {{file|files}}: %s").empty());
@@ -137,6 +139,49 @@ TEST_CASE("no count text of any table is left without its plural form", "[ui][te
         CHECK(bar < end);
         CHECK(text.substr(at, end - at).find('%') == std::string::npos);
         CHECK(std::regex_search(text.substr(0, at), std::regex(R"(%[-+ #0]*[0-9]*(hh|h|ll|l|z|j|t)?[diu])")));
+      }
+    }
+}
+
+namespace {
+// In an error reason's pattern, where a count's placeholder ({count}, {rows}, {columns}, {max}: the names the
+// table gives a number of things) is followed by a word rather than a plural group: "{count} columns". Units
+// keep their form.
+std::vector<std::string> bare_reason_counts(const std::string& pattern) {
+  static const std::regex count(R"(\{(count|rows|columns|max)\})");
+  static const std::regex word(R"(^ ([^ {}\d%()×/=:,.;+−-][^ ,.;:)]*))");
+  static const std::set<std::string> units = {"MiB", "Mio", "rad"};
+  std::vector<std::string> found;
+  for (std::sregex_iterator it(pattern.begin(), pattern.end(), count), end; it != end; ++it) {
+    const std::size_t after = std::size_t(it->position() + it->length());
+    const std::string rest = pattern.substr(after);
+    std::smatch first;  // (a plural group right after the count is no word: '{' does not start one)
+    if (std::regex_search(rest, first, word) && !units.count(first[1].str()))
+      found.push_back(it->str() + first[0].str());
+  }
+  return found;
+}
+}  // namespace
+
+TEST_CASE("no count of an error reason's pattern is left without its plural form",
+          "[ui][text][plural][reasons]") {
+  // The scan catches a bare count (seen failing on "{count} columns").
+  CHECK(bare_reason_counts("ids[{row}]: {count} columns where row 0 has {columns}") ==
+        std::vector<std::string>{"{count} columns"});
+  CHECK(bare_reason_counts("ids[{row}]: {count} {{column|columns}} where row 0 has {columns}").empty());
+  CHECK(bare_reason_counts("more than {size} MiB").empty());
+  CHECK(bare_reason_counts("at most {max} rad").empty());
+  for (const ReasonPattern& pattern : reason_patterns())
+    for (Language language : kLanguages) {
+      const std::string text = pattern[language];
+      INFO(text);
+      CHECK(bare_reason_counts(text).empty());
+      // Each plural group is whole and follows a placeholder, whose number picks its form.
+      for (std::size_t at = text.find("{{"); at != std::string::npos; at = text.find("{{", at + 2)) {
+        const std::size_t bar = text.find('|', at), end = text.find("}}", at);
+        REQUIRE(end != std::string::npos);
+        CHECK(bar < end);
+        CHECK(std::regex_search(text.substr(0, at), std::regex(R"(\{[a-z_]+\} $)")));
       }
     }
 }

@@ -1,7 +1,8 @@
 // What every translated text needs, on top of the core's Language and LocalText (raycam/languages.h): the
 // language from a flag or the environment, a table looked up by its English key, and printf-style
 // formatting. The window's table is src/session/text_table.cpp (tr(), text.h), the check command's
-// src/check/check_texts.cpp; the English text is the key in both, as gettext's msgid. Error reasons (what
+// src/check/check_texts.cpp (the figures' src/figure/figure_texts.cpp has the same shape with a lookup of its
+// own: the figure does not link io); the English text is the key in each, as gettext's msgid. Error reasons (what
 // core, io and the checker throw or report, in English, with paths, numbers and field names inside) are
 // translated by pattern where they are shown: translate_reason().
 #pragma once
@@ -60,7 +61,10 @@ inline const char* language_code(Language language) { return kLanguageCodes[std:
 
 // An error reason's phrasing in every language, English first. In English, "{name}" stands for a variable
 // part (a path, a number, a field name), kept as it is; "{name*}" for a nested reason, itself translated.
-// Each other language places each name once, as "{name}" (without the star). Any other brace is literal.
+// Each other language places each name once, as "{name}" (without the star). A plural group "{{one|many}}"
+// after a count's placeholder: the English matches either form (the code writes the one its count asks for,
+// "1 column", "2 columns"), each other language's template keeps the form the number filled in before it asks
+// for (takes_plural()). Any other brace is literal.
 using ReasonPattern = LocalText;
 
 // Every reason raycam may show (src/io/reason_table.cpp); the first pattern matching the whole text wins.
