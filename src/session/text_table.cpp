@@ -34,7 +34,7 @@ const std::vector<Translation>& translation_table() {
        "Observateur : la caméra parmi les sphères (glisser : tourner la caméra, clic droit : tourner "
        "l'observateur, ctrl+molette : zoom)###observer"},
 
-      // ---- panels.cpp: camera ----
+      // ---- camera_section.cpp: camera ----
       {"Camera###camera", "Caméra###camera"},
       {"Ray###inspector", "Rayon###inspector"},
       {"Mistakes###mistakes", "Erreurs###mistakes"},
@@ -60,7 +60,7 @@ const std::vector<Translation>& translation_table() {
        "glisser dans une vue : tourner ; molette : d ; maj+molette : d_f ; double-clic sur un objet : cible"},
       {"switched to the built-in %dD demo scene", "passage à la scène de démonstration %dD intégrée"},
 
-      // ---- panels.cpp: construction of M_d ----
+      // ---- construction_section.cpp: construction of M_d ----
       {"Construction of M_d###construction", "Construction de M_d###construction"},
       {"step###step", "étape###step"},
       // ---- construction_view.cpp: each step's caption, in the figures' notation (docs/conventions.md) ----
@@ -83,7 +83,7 @@ const std::vector<Translation>& translation_table() {
       {"M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°", "M_d = T(ΩP)·R(α)·H(1, d_f), α = φᵥ + ψ₀ = %.1f°"},
       {"product of the first %d {{factor|factors}}", "produit des %d {{premier facteur|premiers facteurs}}"},
 
-      // ---- panels.cpp: ray inspector ----
+      // ---- inspector_section.cpp: ray inspector ----
       {"Ray inspector###inspector", "Inspecteur de rayon###inspector"},
       {"Hover a pixel of the colour bar or image to see its ray; click to pin it.",
        "Survolez un pixel de la barre de couleurs ou de l'image pour voir son rayon ; cliquez pour le "
@@ -93,13 +93,13 @@ const std::vector<Translation>& translation_table() {
       {"hit: nothing (background)", "touché : rien (fond)"},
       {"hit: object %d %s at t = %.4f", "touché : objet %d %s en t = %.4f"},
 
-      // ---- panels.cpp: classic mistakes ----
+      // ---- mistakes_section.cpp: classic mistakes ----
       {"Classic mistakes###mistakes", "Erreurs classiques###mistakes"},
       {"arccos route near a pole", "calcul par arccos près d'un pôle"},
       {"show me", "montre-moi"},
       {"Look: %s", "Regarder : %s"},
 
-      // ---- frame.cpp / panels.cpp: views that hold still and follow (i11views) ----
+      // ---- frame.cpp / the panel's sections: views that hold still and follow (i11views) ----
       {"Fit view (F)", "Cadrer (F)"},
       {"Fit (F)###fit", "Cadrer (F)###fit"},
       {"holds still while the camera moves; drag: the camera around C",
@@ -117,7 +117,7 @@ const std::vector<Translation>& translation_table() {
       {"column 0", "colonne 0"},
       {"column 0 (eye's left)", "colonne 0 (gauche de l'œil)"},
 
-      // ---- panels.cpp: the 3D construction, step by step (i11views) ----
+      // ---- construction_section.cpp: the 3D construction, step by step (i11views) ----
       {"Drawn in orange in both views: the screen (its top edge green), the eye, and the axes image right "
        "(red), "
        "image up (green), view (blue).",
@@ -214,7 +214,7 @@ const std::vector<Translation>& translation_table() {
       {"θ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur θ : arccos %.1e rad, atan2 %.1e rad"},
       {"φ error now: arccos %.1e rad, atan2 %.1e rad", "erreur sur φ : arccos %.1e rad, atan2 %.1e rad"},
 
-      // ---- panels.cpp: caster and accuracy ----
+      // ---- caster_section.cpp: caster and accuracy ----
       {"Caster and accuracy###caster", "Lancer de rayons et précision###caster"},
       {"method###method", "méthode###method"},
       {"automatic", "automatique"},
@@ -250,7 +250,7 @@ const std::vector<Translation>& translation_table() {
       {"double, 1 sample, world coordinates: the fast caster.",
        "double, 1 échantillon, coordonnées du monde : le lanceur rapide."},
 
-      // ---- panels.cpp: files ----
+      // ---- files_section.cpp: files ----
       {"Scene file###files", "Fichier de scène###files"},
       {"open###open_path", "ouvrir###open_path"},
       {"Open", "Ouvrir"},
@@ -273,7 +273,7 @@ const std::vector<Translation>& translation_table() {
        "TikZ (.tex, pour LaTeX) seulement : SVG, PDF et PNG demandent l'application de bureau (dessinés par cairo)."},
       {"export###export", "exporter###export"},
       {"Export colour map PNG", "Exporter la carte des couleurs (PNG)"},
-      // ---- panels.cpp: the construction's figures ----
+      // ---- construction_section.cpp: the construction's figures ----
       {"figure###figure_path", "figure###figure_path"},
       {"-colour-map.png", "-carte-des-couleurs.png"},
       {"raycam-screenshot", "raycam-capture"},
@@ -331,14 +331,14 @@ const std::vector<Translation>& translation_table() {
       {"graded for the downloaded case: the image shown shows the mistake « %s »",
        "noté pour le cas téléchargé : l'image affichée montre l'erreur « %s »"},
 
-      // ---- panels.cpp: lecture mode ----
+      // ---- lecture_section.cpp: lecture mode ----
       {"Lecture mode###lecture", "Mode cours###lecture"},
       {"font scale###font_scale", "taille du texte###font_scale"},
       {"high contrast", "contraste élevé"},
       {"Fullscreen (F11)", "Plein écran (F11)"},
       {"Help (F1)", "Aide (F1)"},
 
-      // ---- panels.cpp: status line ----
+      // ---- status_line.cpp: status line ----
       {"frame %.1f ms · cast %.2f ms (%s)", "affichage %.1f ms · lancer de rayons %.2f ms (%s)"},
       {"frame %.1f ms · cast %.2f ms", "affichage %.1f ms · lancer de rayons %.2f ms"},
       {"cast %.2f ms", "rayons %.2f ms"},
@@ -358,7 +358,7 @@ const std::vector<Translation>& translation_table() {
       {"hide / show the panel: the views take its room", "cacher / montrer le panneau : les vues prennent sa place"},
       {"coarse preview while dragging", "aperçu grossier pendant le glissement"},
 
-      // ---- panels.cpp: help ----
+      // ---- help_overlay.cpp: help ----
       {"Keyboard and mouse (F1 closes)###help", "Clavier et souris (F1 ferme)###help"},
       {"F1", "F1"},
       {"this help", "cette aide"},

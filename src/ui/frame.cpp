@@ -173,7 +173,7 @@ Rect FrameRenderer::layout_areas(const Lesson& state, const Display& display, in
   const float scale = display.font_scale;
   const float status_height = ImGui::GetFontSize() + 2 * ImGui::GetStyle().WindowPadding.y + 4;
   // The panel never takes more than 40% of the width: the image and the views keep the rest at any scale
-  // (labels that do not fit beside their widget go above it: panels.cpp, labelled()).
+  // (labels that do not fit beside their widget go above it: panel_widgets.cpp, labelled()).
   // Hidden (P), the panel gives the views its whole width.
   const float panel_w =
       display.panel_hidden ? 0.0f : std::clamp(390.0f * scale, std::min(300.0f, width * 0.4f), width * 0.4f);
