@@ -1,7 +1,7 @@
 // The control panel's sections, one function each, as functions of the app state and the panels' own
 // widget state (Dear ImGui style: widgets report "changed", and only then is anything recomputed). Each
 // section is drawn in a file of its own, named for it (camera_section.cpp, …, status_line.cpp, help_overlay.cpp);
-// the widgets they share are in panel_widgets.h.
+// the widgets they share are in panel_widgets.h. Every visible string goes through tr/trf (ui/words.h).
 #pragma once
 
 #include <imgui.h>
