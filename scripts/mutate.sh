@@ -142,9 +142,10 @@ mutant font-rebuild-keeps-buffer-sizes src/ui/fonts.cpp 's/^  restart_renderer_b
 mutant window-bigger-than-the-screen src/app/glfw_host.cpp 's/  if (area_width > 0 && area_height > 0) {/  if (false) {/' "raycam raycam_app_tests" "^app: ?the window fits"
 mutant font-scale-slider-left-out-of-view src/ui/lecture_section.cpp 's/^  if (scale_changed) panels.font_scale_scroll_frames = 2;/  if (scale_changed) panels.font_scale_scroll_frames = 0;/' "raycam_render_tests" "^render: ?lecture mode: after a change"
 # The target's fields cut, in two halves since the split put them in two files: the fields never one a line
-# (target_fields), and a label put beside a widget with less than its minimum width (labelled).
+# (target_fields), and a label put beside a widget with less than its minimum width (labelled: the layout
+# test measures the row with its label, which hides that half, so a ui test asks labelled itself).
 mutant target-fields-cut src/ui/camera_section.cpp 's/  if (ImGui::GetContentRegionAvail().x >= needed)/  if (true)/' "raycam_render_tests" "^render: ?lecture mode: at 1"
-mutant labelled-ignores-widget-min-width src/ui/panel_widgets.cpp 's/  if (deciding_width <= avail \* 0.45f \&\& avail - deciding_width >= widget_min_width) {/  if (deciding_width <= avail * 0.45f) {/' "raycam_render_tests" "^render: ?lecture mode: at 1"
+mutant labelled-ignores-widget-min-width src/ui/panel_widgets.cpp 's/  if (deciding_width <= avail \* 0.45f \&\& avail - deciding_width >= widget_min_width) {/  if (deciding_width <= avail * 0.45f) {/' "raycam_ui_tests" "^ui: ?a labelled widget keeps the width it asks for"
 mutant idle-loop-polls src/app/glfw_host.cpp 's/^    glfwWaitEventsTimeout(std::max(wait, 0.001));/    glfwPollEvents();/' "raycam raycam_app_tests" "^app:an idle window"
 mutant french-entry-left-english src/session/text_table.cpp 's|      {"Export colour map PNG", "[^"]*"},|      {"Export colour map PNG", "Export colour map PNG"},|' "$SESSION" "^session:"
 mutant show-me-focal-left-at-2 src/session/mistake_lessons.cpp 's/^void focal_scale_show(AppState\& state) { focal(state) = 3.0; }/void focal_scale_show(AppState\& state) { if (focal(state) < 1.5) focal(state) = 3.0; }/' "$SESSION" "^session:"

@@ -1,5 +1,5 @@
-// The widgets the control panel's sections draw with (internal to src/ui: each section's file includes it;
-// the frame, the hosts and the tests see the sections through ui/panels.h).
+// The widgets the control panel's sections draw with (internal to src/ui: each section's file includes it,
+// and the ui tests that check a widget's rule; the frame and the hosts see the sections through ui/panels.h).
 #pragma once
 
 #include <imgui.h>

@@ -19,6 +19,7 @@
 #include "flags/app/app_flags.h"
 #include "session/app_options.h"
 #include "session/mistake_lessons.h"
+#include "ui/panel_widgets.h"  // labelled: the rule every labelled widget of the panel follows
 #include "ui/panels.h"
 
 using namespace raycam;
@@ -240,6 +241,35 @@ TEST_CASE("panel text wraps between words, never inside a number, and never past
     joined += (joined.empty() ? "" : " ") + line;
   }
   CHECK(joined == text);  // nothing lost, words in order
+}
+
+// A label sits beside its widget only where the widget keeps the room it asks for (the target C's fields each
+// show -10.00 whole): where beside would leave it less, the label goes above and the widget takes the whole
+// line. The widget reports the width it is given (ImGui's next item width, which labelled sets).
+TEST_CASE("a labelled widget keeps the width it asks for: its label goes above rather than squeeze it",
+          "[ui][lecture]") {
+  TextCapture capture;
+  ui::PanelState panels;
+  const char* text = "a label of some length";
+  for (const float short_by : {10.0f, -10.0f}) {  // beside would leave the widget 10 px too little, or 10 px more
+    float avail = 0.0f, label = 0.0f, asked = 0.0f, given = 0.0f;
+    capture.capture([&] {
+      label = ImGui::CalcTextSize(text).x + ImGui::GetStyle().ItemInnerSpacing.x;
+      ImGui::BeginChild("panel", {3.0f * label, 400});  // the label a third of the line: short enough to sit beside
+      avail = ImGui::GetContentRegionAvail().x;
+      asked = avail - label + short_by;
+      ui::labelled(panels, (std::string(text) + "###field").c_str(), [&](const char*) {
+        given = ImGui::CalcItemWidth();
+        return false;
+      }, asked);
+      ImGui::EndChild();
+    });
+    INFO("line " << avail << " px, label " << label << " px, the widget asks " << asked << " px and is given " << given);
+    REQUIRE(label <= 0.45f * avail);
+    CHECK(given >= asked);
+    if (short_by > 0) CHECK(given == Approx(avail));          // the label above, the widget the whole line
+    else CHECK(given == Approx(avail - label));               // the label beside
+  }
 }
 
 // The French window is French: every section open (a mistake shown, a ray pinned, a file that failed to
