@@ -309,7 +309,7 @@ mutant demo-theta-90 src/io/include/raycam/view_setup.h 's/^inline constexpr dou
 mutant header-line-steals-picture src/ui/frame.cpp 's/^  layout.image_title = header.title;$/&\n  if (!header.tooltip.empty()) ImGui::TextUnformatted("MISTAKE ON");/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^             trf(language, "✗ %lld wrong", r.wrong_pixels)}};$/             }};/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^    ImGui::ScrollToRect(ImGui::GetCurrentWindow(), ImRect(low, {high.x, next_step_bottom}));/    (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size"
-mutant md-table-scrolls-sideways src/ui/construction_section.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
+mutant md-table-scrolls-sideways src/ui/construction_section.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_ui_tests" "^ui: ?M_d.s table shrinks its font"
 mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5),/const ImVec2 at{clip_max.x - 14,/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"

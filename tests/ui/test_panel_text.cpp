@@ -272,6 +272,32 @@ TEST_CASE("a labelled widget keeps the width it asks for: its label goes above r
   }
 }
 
+// Where not even one of M_d's columns fits the panel's width at its font, the table is drawn in a smaller font
+// (down to about half the panel's) rather than at the panel's font in a strip that scrolls sideways.
+TEST_CASE("M_d's table shrinks its font where not one column fits the panel", "[ui][lecture]") {
+  TextCapture capture;
+  for (const char* view : {"2d", "3d"}) {
+    session::AppState state = state_for({"--view", view});
+    ui::PanelState panels;
+    ui::WidgetRects rects;
+    panels.widget_rects = &rects;
+    float panel_font = 0.0f, column = 0.0f;
+    capture.capture([&] {
+      panel_font = ImGui::GetFontSize();
+      column = ImGui::CalcTextSize("0.00").x;  // narrower than any column of the table (none is shorter)
+      ImGui::BeginChild("narrow", {column, 4000});
+      ui::construction_section(state, panels);
+      ImGui::EndChild();
+    });
+    REQUIRE(rects.count("###matrix/M") == 1);
+    const ui::WidgetRect& table = rects.at("###matrix/M");
+    const float font = table.x1 - table.x0;  // the hook's font size
+    INFO(view << ": a panel " << column << " px wide, the table's font " << font << " px, the panel's " << panel_font);
+    CHECK(font < panel_font);
+    CHECK(font >= 0.5f * panel_font);
+  }
+}
+
 // The French window is French: every section open (a mistake shown, a ray pinned, a file that failed to
 // open), its text read back, and no word of a list of English-only words in it. The list holds words a
 // translation left behind would show (not words French shares: image, pixel, distance, rotation…).
