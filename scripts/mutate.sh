@@ -311,7 +311,7 @@ mutant header-verdict-without-short-form src/session/camera_check.cpp 's/^      
 mutant verdict-not-scrolled-into-view src/ui/check_panel.cpp 's/^    ImGui::ScrollToRect(ImGui::GetCurrentWindow(), ImRect(low, {high.x, next_step_bottom}));/    (void)0;/' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant md-table-scrolls-sideways src/ui/construction_section.cpp 's/kMinTableFontScale, 1.0f);/1.0f, 1.0f);/' "raycam_ui_tests" "^ui: ?M_d.s table shrinks its font"
 mutant overhead-x-at-fixed-offset src/ui/overhead_view.cpp 's/const ImVec2 at{clip_max.x - std::max(14.0f, x_size.x + 5),/const ImVec2 at{clip_max.x - 14,/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
-mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?at 1x to 3x, every construction step"
+mutant view-labels-not-fitted src/ui/overhead_view.cpp 's/^  if (measure(text, full).x <= width) return {text, full, measure(text, full)};$/  return {text, full, measure(text, full)};/' "raycam_render_tests" "^render: ?the overhead view's labels cover"
 mutant fonts-kept-for-a-new-context src/ui/fonts.cpp 's/ \&\& atlas_is_ours \&\& / \&\& /' "raycam_render_tests" "^render: ?the picture keeps its size"
 mutant combo-choice-cut src/ui/panel_widgets.cpp 's/ImGui::CalcTextSize(name).x <= room ? whole :/true ? whole :/' "raycam_render_tests" "^render: ?at 1x to 3x on 1024x768"
 mutant idle-window-leaves-verdict-below src/ui/frame.cpp 's/^    panels_.check_waiting |= panel->ScrollTarget.x < FLT_MAX || panel->ScrollTarget.y < FLT_MAX;$/    (void)panel;/' "raycam_render_tests" "^render: ?the picture keeps its size"
@@ -339,7 +339,7 @@ mutant session-keeps-a-panel-field src/session/app_state.h 's/^  std::uint64_t s
 mutant save-as-forgets-the-question src/ui/panel_state.cpp 's/^    panels.overwrite_pending = asked;$/    (void)asked;/' "raycam_ui_tests" "^ui: ?Save as from the panel"
 mutant check-command-not-handed-over src/ui/panel_state.cpp '/^  panels.check_command = options.check_command;$/d' "raycam_ui_tests" "^ui: ?the start-up options reach the panels"
 mutant dropped-scene-not-followed src/ui/frame.cpp 's/^  follow_scene_shown(state, panels_);$/  (void)0;/' "raycam_ui_tests" "^ui: ?a scene opened outside the panel"
-mutant big-file-open-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
+mutant big-file-size-unannounced src/web/scene_loading.cpp 's/^  if (!error)$/  if (false)/' "raycam_web_page" "^web: a big scene file opens"
 mutant big-file-parsed-in-one-go src/web/scene_loading.cpp 's/constexpr double kParseSliceMs = 50.0;/constexpr double kParseSliceMs = 1e9;/' "raycam_web_page" "^web: a big scene file opens"
 # --- #34 big files parsed in steps ---
 # The resumable scene reader (src/io/scene_file_reader.cpp) against parse_scene_json (test_scene_file_reader.cpp).
@@ -536,6 +536,17 @@ if [ "${1:-}" = "--check" ]; then
       done < <(printf '%s\n' "${edits[$i]}" | sed 's/; s\//\ns\//g' | { read -r first && [ "$first" != "${edits[$i]}" ] && { echo "$first"; cat; }; })
     fi
   done
+  # Every "mutant" line of this script is one mutant (a line whose quoting swallowed the next lines into one
+  # argument left 13 unlisted once), and no two share a name.
+  written=$(grep -c '^mutant ' "${BASH_SOURCE[0]}")
+  if [ $# -eq 0 ] && [ "$written" -ne "${#names[@]}" ]; then
+    echo "mutate.sh --check: $written lines begin with 'mutant' but ${#names[@]} mutants were read: a quote is unbalanced" >&2
+    stale=$((stale + 1))
+  fi
+  if [ $# -eq 0 ] && twice=$(printf '%s\n' "${names[@]}" | sort | uniq -d) && [ -n "$twice" ]; then
+    echo "mutate.sh --check: two mutants share each of these names: $twice" >&2
+    stale=$((stale + 1))
+  fi
   if [ $# -gt 0 ] && [ $checked -ne $# ]; then
     echo "mutate.sh --check: $(( $# - checked )) of the names given are not mutants (see --list)" >&2
     exit 2
